@@ -1,0 +1,25 @@
+#include "core/mission/mission.h"
+
+namespace pf::mission {
+
+bool operator==(const AircraftConfig& a, const AircraftConfig& b) {
+    return a.name == b.name && a.model == b.model && a.camera == b.camera && a.altitudeM == b.altitudeM &&
+           a.gsdCm == b.gsdCm && a.overlap.front == b.overlap.front && a.overlap.side == b.overlap.side &&
+           a.cruiseSpeedMps == b.cruiseSpeedMps && a.turnRateDegS == b.turnRateDegS &&
+           a.enduranceMin == b.enduranceMin && a.maxAltitudeM == b.maxAltitudeM && a.colour == b.colour &&
+           a.home == b.home;
+}
+
+bool operator==(const PlannerOptions& a, const PlannerOptions& b) {
+    return a.planner == b.planner && a.gridAngleDeg == b.gridAngleDeg && a.safetyMarginM == b.safetyMarginM &&
+           a.keepInsideArea == b.keepInsideArea && a.insideMarginM == b.insideMarginM &&
+           a.altitudeSeparationM == b.altitudeSeparationM && a.batteryReserve == b.batteryReserve &&
+           a.maxCells == b.maxCells;
+}
+
+bool operator==(const Mission& a, const Mission& b) {
+    return a.name == b.name && a.area == b.area && a.noFlyZones == b.noFlyZones && a.home == b.home &&
+           a.landing == b.landing && a.aircraft == b.aircraft && a.options == b.options;
+}
+
+} // namespace pf::mission

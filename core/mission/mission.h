@@ -1,0 +1,68 @@
+// Mission: what the operator defines (area, no-fly zones, aircraft, options), as plain value types.
+#pragma once
+
+#include "core/geo/types.h"
+#include "core/sensor/camera.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace pf::mission {
+
+struct NoFlyZone {
+    std::string name;
+    geo::GeoPolygon polygon;
+    friend bool operator==(const NoFlyZone& a, const NoFlyZone& b) {
+        return a.name == b.name && a.polygon == b.polygon;
+    }
+};
+
+// One aircraft taking part in the mission, with its camera and flight settings.
+struct AircraftConfig {
+    std::string name;  // unique label shown to the user, e.g. "Falcon 8 #1"
+    std::string model; // catalog aircraft name, or "custom"
+    sensor::Camera camera;
+    // Exactly one of altitude and GSD drives the other; altitude wins when both are set.
+    std::optional<double> altitudeM;
+    std::optional<double> gsdCm;
+    sensor::Overlap overlap;
+    double cruiseSpeedMps = 10.0;
+    double turnRateDegS = 90.0;
+    double enduranceMin = 20.0;
+    double maxAltitudeM = 120.0;
+    std::string colour = "#e6194b"; // #rrggbb, used on the map
+    std::optional<geo::LonLat> home; // take-off and landing point; the mission's home if unset
+    friend bool operator==(const AircraftConfig& a, const AircraftConfig& b);
+};
+
+enum class PlannerKind { Stride, Raster, Wavefront };
+
+struct PlannerOptions {
+    PlannerKind planner = PlannerKind::Stride;
+    std::optional<double> gridAngleDeg; // unset: automatic search for the best angle
+    double safetyMarginM = 5.0;         // keep-out distance around every no-fly zone
+    bool keepInsideArea = false;        // move waypoints inside the area (plus insideMarginM)
+    double insideMarginM = 0.0;
+    double altitudeSeparationM = 10.0;  // between aircraft flying at the same time
+    double batteryReserve = 0.2;        // fraction of endurance kept in reserve
+    std::size_t maxCells = 4'000'000;   // grid cell budget
+    friend bool operator==(const PlannerOptions& a, const PlannerOptions& b);
+};
+
+struct Mission {
+    std::string name;
+    geo::GeoPolygon area;
+    std::vector<NoFlyZone> noFlyZones;
+    std::optional<geo::LonLat> home;    // take-off point
+    std::optional<geo::LonLat> landing; // landing point; home if unset
+    std::vector<AircraftConfig> aircraft;
+    PlannerOptions options;
+    friend bool operator==(const Mission& a, const Mission& b);
+    friend bool operator!=(const Mission& a, const Mission& b) { return !(a == b); }
+};
+
+// Current mission file format version.
+constexpr int kMissionFileVersion = 1;
+
+} // namespace pf::mission

@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Installs what is needed, builds Photoflight and runs the whole test suite (core, UI offscreen,
+# benchmark smoke run). This is the README's test command and what CI runs.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash packaging/install-deps.sh
+jobs=$(nproc 2>/dev/null || echo 2)
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPF_WERROR=ON
+cmake --build build -j"$jobs"
+cd build
+QT_QPA_PLATFORM=offscreen ctest --output-on-failure -j"$jobs" --timeout 600
