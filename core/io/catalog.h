@@ -1,0 +1,29 @@
+// The catalog of cameras and aircraft (resources/catalog.json plus the user's own additions).
+#pragma once
+
+#include "core/fleet/aircraft.h"
+#include "core/result.h"
+#include "core/sensor/camera.h"
+
+#include <string>
+#include <vector>
+
+namespace pf::io {
+
+struct Catalog {
+    std::vector<sensor::Camera> cameras;
+    std::vector<fleet::AircraftSpec> aircraft;
+    const sensor::Camera* findCamera(const std::string& name) const;   // case-insensitive
+    const fleet::AircraftSpec* findAircraft(const std::string& name) const;
+};
+
+Result<Catalog> loadCatalog(const std::string& path);
+// Entries of `extra` are added to `base`; an entry with the same name replaces the base one.
+Catalog mergeCatalogs(Catalog base, const Catalog& extra);
+// The bundled catalog found in $PHOTOFLIGHT_DATA_DIR, the installed data directory or the source
+// tree's resources/, merged with the user's catalog (~/.local/share/photoflight/catalog.json) if any.
+Result<Catalog> loadDefaultCatalog();
+// The directory holding the bundled data (catalog.json, demo/), searched as above; empty if none.
+std::string dataDirectory();
+
+} // namespace pf::io

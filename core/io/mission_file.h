@@ -1,0 +1,20 @@
+// The mission file: a documented, versioned JSON document (see the README's "Mission file").
+#pragma once
+
+#include "core/mission/mission.h"
+#include "core/result.h"
+
+#include <string>
+
+namespace pf::io {
+
+// Reads and checks a mission file. Errors name the file, the field and what is wrong.
+Result<mission::Mission> readMissionFile(const std::string& path);
+// Parses mission JSON text; `sourceName` is used in messages (a path or "<clipboard>").
+Result<mission::Mission> parseMissionJson(const std::string& text, const std::string& sourceName);
+// Serialises a mission; parseMissionJson(missionToJson(m)) == m exactly.
+std::string missionToJson(const mission::Mission& m);
+// Writes atomically: to a temporary file beside `path`, then renames it over `path`.
+Status writeMissionFile(const mission::Mission& m, const std::string& path);
+
+} // namespace pf::io
