@@ -42,6 +42,10 @@ public:
     static Result<Grid> build(const geo::Polygon& area, const std::vector<geo::Polygon>& noFly,
                               const GridOptions& opt);
 
+    // The same for an area made of several polygons (a subarea assigned to one aircraft).
+    static Result<Grid> build(const geo::MultiPolygon& area, const std::vector<geo::Polygon>& noFly,
+                              const GridOptions& opt);
+
     // A synthetic grid for tests and benchmarks: mask[row * cols + col] != 0 means Free. Moves are
     // allowed between 4-adjacent Free cells; origin (0, 0), no rotation.
     static Grid fromMask(int cols, int rows, const std::vector<std::uint8_t>& mask, double cellSize = 1.0);

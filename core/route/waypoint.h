@@ -26,6 +26,14 @@ struct Waypoint {
     }
 };
 
+// A waypoint in the mission's local frame, as the planning stages produce and adjust it.
+struct LocalWaypoint {
+    geo::Vec2 pos{0, 0};     // local metres
+    double headingDeg = 0.0; // clockwise from north
+    WaypointKind kind = WaypointKind::Photo;
+    int cell = -1; // grid cell the waypoint photographs, -1 for none
+};
+
 // One aircraft's flight: the ordered waypoints of one sortie (take-off at home, land at home).
 struct Route {
     std::string aircraft;
