@@ -1,6 +1,7 @@
 // Grid: the approximate cellular decomposition of the admissible area (area minus no-fly zones).
 #pragma once
 
+#include "core/geo/polygon_ops.h"
 #include "core/geo/types.h"
 #include "core/result.h"
 
@@ -27,6 +28,15 @@ constexpr Dir opposite(Dir d) { return static_cast<Dir>((static_cast<int>(d) + 2
 constexpr Dir leftOf(Dir d) { return static_cast<Dir>((static_cast<int>(d) + 1) % 4); }
 constexpr Dir rightOf(Dir d) { return static_cast<Dir>((static_cast<int>(d) + 3) % 4); }
 
+// Conventions (see grid.cpp for the reasons):
+// - The grid frame is the local frame rotated by angleDeg (counter-clockwise from east) about the centre
+//   of the area's bounding box; columns run along the rotated x axis, rows along the rotated y axis. The
+//   grid covers the admissible area's bounding box in that frame, centred on it.
+// - A cell belongs to the coverage problem when it overlaps the admissible area (area minus the
+//   un-buffered no-fly zones) by more than 1e-6 of its own area (slivers below are numerical noise).
+// - Its flight position is its centre if that is outside every no-fly zone buffered by the safety
+//   margin (Free), else the nearest such point of the cell, moved 1 mm further in when it can be
+//   (Shifted), else the cell is Unflyable. Points on a buffered zone's boundary count as safe.
 struct GridOptions {
     double cellSize = 0.0;        // metres, > 0
     double angleDeg = 0.0;        // grid rotation, counter-clockwise from east
@@ -45,6 +55,19 @@ public:
     // The same for an area made of several polygons (a subarea assigned to one aircraft).
     static Result<Grid> build(const geo::MultiPolygon& area, const std::vector<geo::Polygon>& noFly,
                               const GridOptions& opt);
+
+    // Columns and rows a grid of side `cellSize` rotated by `angleDeg` needs to cover `region` (the
+    // admissible area), computed without allocating anything: the cell budget is checked with it.
+    struct Size {
+        long long cols = 0;
+        long long rows = 0;
+        double cells() const { return static_cast<double>(cols) * static_cast<double>(rows); }
+    };
+    static Size sizeFor(const geo::MultiPolygon& region, double cellSize, double angleDeg);
+    // The smallest cell size (rounded up to the centimetre, >= cellSize) whose grid over `region` fits
+    // in `maxCells`.
+    static double cellSizeToFit(const geo::MultiPolygon& region, double cellSize, double angleDeg,
+                                std::size_t maxCells);
 
     // A synthetic grid for tests and benchmarks: mask[row * cols + col] != 0 means Free. Moves are
     // allowed between 4-adjacent Free cells; origin (0, 0), no rotation.
@@ -115,6 +138,9 @@ private:
     std::vector<std::pair<int, geo::Vec2>> m_shifts;
     geo::MultiPolygon m_admissible;
     geo::MultiPolygon m_bufferedNoFly;
+    std::vector<geo::Box> m_noFlyBoxes; // bounding boxes of m_bufferedNoFly, to skip far zones fast
+    double m_cos = 1.0;                 // cos/sin of the grid angle, cached for the cell transforms
+    double m_sin = 0.0;
 
     friend class GridBuilder;
 };

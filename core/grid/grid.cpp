@@ -1,0 +1,626 @@
+// Grid construction: row-span rasterisation of the admissible area and of the buffered no-fly zones, with
+// exact geometry only for the cells a boundary crosses.
+#include "core/grid/grid.h"
+
+#include "core/geo/ogr_adapter.h"
+
+#include <ogr_geometry.h>
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <string>
+
+namespace pf::grid {
+
+using geo::Vec2;
+
+namespace {
+
+// A cell overlapping the admissible area by less than this fraction of its own area is left Outside:
+// such slivers come from rounding where a boundary runs along a cell edge, and photographing a cell for
+// a millionth of its area would only add detours.
+constexpr double kSliverFraction = 1e-6;
+// A point this far (metres) inside a buffered no-fly zone still counts as on its boundary: the nearest
+// flyable point of a cell is computed on that boundary and carries rounding errors of ~1e-9 m.
+constexpr double kSafeTolM = 1e-6;
+// Shifted flight positions are moved this far away from the zone's boundary when the cell allows it, so
+// that they are strictly outside even for callers using an exact point-in-polygon test.
+constexpr double kNudgeM = 1e-3;
+// Slack (in cells) when marking the cells an edge touches: marking one cell too many only costs an
+// exact test, missing one would misclassify it.
+constexpr double kEdgeEps = 1e-9;
+
+enum Mark : std::uint8_t { kOut = 0, kIn = 1, kEdge = 2 };
+
+// A ring in grid units (cell (c, r) is the unit square [c, c+1] x [r, r+1]), with the sign its clipped
+// signed area takes in the region's area (outer rings count positive, holes negative, whatever the
+// orientation the geometry library returned).
+struct URing {
+    std::vector<Vec2> pts;
+    double sign = 1.0;
+    double minX = 0, maxX = 0, minY = 0, maxY = 0;
+};
+
+// The rotation between the local frame and the grid frame.
+struct Frame {
+    Vec2 origin{0, 0};
+    double c = 1.0, s = 0.0, size = 1.0;
+    Vec2 toGrid(const Vec2& p) const { // local metres -> grid units
+        const Vec2 d = p - origin;
+        return Vec2(c * d.x() + s * d.y(), -s * d.x() + c * d.y()) / size;
+    }
+    Vec2 toLocal(const Vec2& u) const {
+        return origin + size * Vec2(c * u.x() - s * u.y(), s * u.x() + c * u.y());
+    }
+};
+
+URing makeURing(const geo::Ring& ring, const Frame& f, bool hole) {
+    URing u;
+    u.pts.reserve(ring.size());
+    for (const auto& p : ring)
+        u.pts.push_back(f.toGrid(p));
+    const double sa = geo::signedArea(u.pts);
+    u.sign = (hole ? -1.0 : 1.0) * (sa >= 0 ? 1.0 : -1.0);
+    const geo::Box b = geo::bounds(u.pts);
+    u.minX = b.min.x();
+    u.maxX = b.max.x();
+    u.minY = b.min.y();
+    u.maxY = b.max.y();
+    return u;
+}
+
+std::vector<URing> makeURings(const geo::MultiPolygon& mp, const Frame& f) {
+    std::vector<URing> out;
+    for (const auto& poly : mp) {
+        if (poly.outer.size() >= 3)
+            out.push_back(makeURing(poly.outer, f, false));
+        for (const auto& h : poly.holes)
+            if (h.size() >= 3)
+                out.push_back(makeURing(h, f, true));
+    }
+    return out;
+}
+
+// Sutherland-Hodgman clip of a ring against the half-plane coord(axis) >= v (keepAbove) or <= v. The
+// result may hold degenerate edges along the clip line, but its signed area is exactly the signed area
+// of the ring's part inside the half-plane, which is all we use it for.
+void clipHalf(const std::vector<Vec2>& in, std::vector<Vec2>& out, int axis, double v, bool keepAbove) {
+    out.clear();
+    const std::size_t n = in.size();
+    if (n == 0)
+        return;
+    auto inside = [&](const Vec2& p) { return keepAbove ? p[axis] >= v : p[axis] <= v; };
+    Vec2 prev = in[n - 1];
+    bool prevIn = inside(prev);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec2& cur = in[i];
+        const bool curIn = inside(cur);
+        if (curIn != prevIn) {
+            const double t = (v - prev[axis]) / (cur[axis] - prev[axis]);
+            Vec2 x = prev + t * (cur - prev);
+            x[axis] = v;
+            out.push_back(x);
+        }
+        if (curIn)
+            out.push_back(cur);
+        prev = cur;
+        prevIn = curIn;
+    }
+}
+
+// Marks every cell whose closed square an edge of the rings touches as kEdge, then fills the remaining
+// cells row by row: a cell no edge touches is entirely inside or entirely outside, which the even-odd
+// rule at its centre decides.
+std::vector<std::uint8_t> rasterise(const std::vector<URing>& rings, int cols, int rows) {
+    std::vector<std::uint8_t> mark(static_cast<std::size_t>(cols) * static_cast<std::size_t>(rows), kOut);
+    std::vector<std::pair<int, double>> crossings;
+    for (const auto& ring : rings) {
+        const std::size_t n = ring.pts.size();
+        for (std::size_t i = 0; i < n; ++i) {
+            const Vec2& a = ring.pts[i];
+            const Vec2& b = ring.pts[(i + 1) % n];
+            const double ylo = std::min(a.y(), b.y()), yhi = std::max(a.y(), b.y());
+            // Cells touched by the edge.
+            const int r0 = std::max(0, static_cast<int>(std::floor(ylo - kEdgeEps)));
+            const int r1 = std::min(rows - 1, static_cast<int>(std::floor(yhi + kEdgeEps)));
+            for (int r = r0; r <= r1; ++r) {
+                double y0 = std::max(ylo, static_cast<double>(r));
+                double y1 = std::min(yhi, static_cast<double>(r) + 1.0);
+                if (y0 > y1)
+                    y0 = y1 = 0.5 * (y0 + y1);
+                double xa, xb;
+                if (yhi - ylo <= 0.0) {
+                    xa = std::min(a.x(), b.x());
+                    xb = std::max(a.x(), b.x());
+                } else {
+                    xa = a.x() + (b.x() - a.x()) * (y0 - a.y()) / (b.y() - a.y());
+                    xb = a.x() + (b.x() - a.x()) * (y1 - a.y()) / (b.y() - a.y());
+                    if (xa > xb)
+                        std::swap(xa, xb);
+                }
+                const int c0 = std::max(0, static_cast<int>(std::floor(xa - kEdgeEps)));
+                const int c1 = std::min(cols - 1, static_cast<int>(std::floor(xb + kEdgeEps)));
+                for (int c = c0; c <= c1; ++c)
+                    mark[static_cast<std::size_t>(r) * cols + c] = kEdge;
+            }
+            // Crossings with the centre lines y = r + 0.5 (half-open rule: ylo <= y < yhi).
+            if (yhi > ylo) {
+                const int s0 = std::max(0, static_cast<int>(std::ceil(ylo - 0.5)));
+                const int s1 = std::min(rows - 1, static_cast<int>(std::ceil(yhi - 0.5)) - 1);
+                for (int r = s0; r <= s1; ++r) {
+                    const double y = r + 0.5;
+                    crossings.emplace_back(r, a.x() + (b.x() - a.x()) * (y - a.y()) / (b.y() - a.y()));
+                }
+            }
+        }
+    }
+    std::sort(crossings.begin(), crossings.end());
+    for (std::size_t k = 0; k + 1 < crossings.size();) {
+        const int r = crossings[k].first;
+        std::size_t end = k;
+        while (end < crossings.size() && crossings[end].first == r)
+            ++end;
+        for (std::size_t j = k; j + 1 < end; j += 2) {
+            const int c0 = std::max(0, static_cast<int>(std::ceil(crossings[j].second - 0.5)));
+            const int c1 = std::min(cols - 1, static_cast<int>(std::ceil(crossings[j + 1].second - 0.5)) - 1);
+            std::uint8_t* row = mark.data() + static_cast<std::size_t>(r) * cols;
+            for (int c = c0; c <= c1; ++c)
+                if (row[c] == kOut)
+                    row[c] = kIn;
+        }
+        k = end;
+    }
+    return mark;
+}
+
+// Replaces the kEdge marks by kIn or kOut from the exact area of the cell inside the region, computed
+// by clipping the rings first to the cell's row band, then to the cell's column.
+void resolveEdgeCells(std::vector<std::uint8_t>& mark, const std::vector<URing>& rings, int cols, int rows) {
+    struct Band {
+        std::vector<Vec2> pts;
+        double sign;
+        double minX, maxX;
+    };
+    std::vector<Band> bands;
+    std::vector<Vec2> tmp, tmp2;
+    for (int r = 0; r < rows; ++r) {
+        std::uint8_t* row = mark.data() + static_cast<std::size_t>(r) * cols;
+        if (std::find(row, row + cols, static_cast<std::uint8_t>(kEdge)) == row + cols)
+            continue;
+        bands.clear();
+        for (const auto& ring : rings) {
+            if (ring.maxY < r || ring.minY > r + 1)
+                continue;
+            clipHalf(ring.pts, tmp, 1, r, true);
+            clipHalf(tmp, tmp2, 1, r + 1.0, false);
+            if (tmp2.size() < 3)
+                continue;
+            const geo::Box b = geo::bounds(tmp2);
+            bands.push_back(Band{tmp2, ring.sign, b.min.x(), b.max.x()});
+        }
+        for (int c = 0; c < cols; ++c) {
+            if (row[c] != kEdge)
+                continue;
+            double a = 0.0;
+            for (const auto& band : bands) {
+                if (band.maxX < c || band.minX > c + 1)
+                    continue;
+                clipHalf(band.pts, tmp, 0, c, true);
+                clipHalf(tmp, tmp2, 0, c + 1.0, false);
+                a += band.sign * geo::signedArea(tmp2);
+            }
+            row[c] = a > kSliverFraction ? kIn : kOut;
+        }
+    }
+}
+
+geo::Box rotatedBounds(const geo::MultiPolygon& region, double c, double s) {
+    geo::Box b{Vec2(std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()),
+               Vec2(-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity())};
+    for (const auto& poly : region)
+        for (const auto& p : poly.outer) { // holes lie inside the outer ring
+            const Vec2 q(c * p.x() + s * p.y(), -s * p.x() + c * p.y());
+            b.min = b.min.cwiseMin(q);
+            b.max = b.max.cwiseMax(q);
+        }
+    return b;
+}
+
+long long cellsAlong(double extent, double cellSize) {
+    // The small slack keeps an extent that is an exact multiple of the cell size from gaining a column.
+    return std::max(1LL, static_cast<long long>(std::ceil(extent / cellSize - 1e-9)));
+}
+
+std::string fmtCount(double n) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.0f", n);
+    std::string s = buf, out;
+    const int len = static_cast<int>(s.size());
+    for (int i = 0; i < len; ++i) {
+        out += s[i];
+        if ((len - i - 1) % 3 == 0 && i + 1 < len)
+            out += ',';
+    }
+    return out;
+}
+
+double nearestOnSegment(const Vec2& p, const Vec2& a, const Vec2& b, Vec2* q) {
+    const Vec2 ab = b - a;
+    const double len2 = ab.squaredNorm();
+    const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+    *q = a + t * ab;
+    return (*q - p).squaredNorm();
+}
+
+} // namespace
+
+class GridBuilder {
+public:
+    static Result<Grid> build(const geo::MultiPolygon& area, const std::vector<geo::Polygon>& noFly,
+                              const GridOptions& opt);
+};
+
+Grid::Size Grid::sizeFor(const geo::MultiPolygon& region, double cellSize, double angleDeg) {
+    const double a = angleDeg * M_PI / 180.0;
+    const geo::Box b = rotatedBounds(region, std::cos(a), std::sin(a));
+    if (region.empty() || !(cellSize > 0))
+        return {};
+    return Size{cellsAlong(b.max.x() - b.min.x(), cellSize), cellsAlong(b.max.y() - b.min.y(), cellSize)};
+}
+
+double Grid::cellSizeToFit(const geo::MultiPolygon& region, double cellSize, double angleDeg,
+                           std::size_t maxCells) {
+    const double budget = static_cast<double>(std::max<std::size_t>(1, maxCells));
+    auto fits = [&](double s) { return sizeFor(region, s, angleDeg).cells() <= budget; };
+    if (fits(cellSize))
+        return cellSize;
+    // The cell count never grows with the cell size, so a binary search over whole centimetres finds the
+    // smallest size that fits.
+    const double now = sizeFor(region, cellSize, angleDeg).cells();
+    long long lo = static_cast<long long>(std::floor(cellSize * 100.0));
+    long long hi = static_cast<long long>(std::ceil(cellSize * std::sqrt(now / budget) * 100.0)) + 1;
+    while (!fits(hi / 100.0))
+        hi *= 2;
+    while (hi - lo > 1) { // invariant: lo does not fit, hi fits
+        const long long mid = lo + (hi - lo) / 2;
+        (fits(mid / 100.0) ? hi : lo) = mid;
+    }
+    return hi / 100.0;
+}
+
+Result<Grid> Grid::build(const geo::Polygon& area, const std::vector<geo::Polygon>& noFly, const GridOptions& opt) {
+    return GridBuilder::build(geo::MultiPolygon{area}, noFly, opt);
+}
+
+Result<Grid> Grid::build(const geo::MultiPolygon& area, const std::vector<geo::Polygon>& noFly,
+                         const GridOptions& opt) {
+    return GridBuilder::build(area, noFly, opt);
+}
+
+Result<Grid> GridBuilder::build(const geo::MultiPolygon& area, const std::vector<geo::Polygon>& noFly,
+                                const GridOptions& opt) {
+    char buf[512];
+    if (!std::isfinite(opt.cellSize) || opt.cellSize <= 0) {
+        std::snprintf(buf, sizeof buf, "the grid cell size must be a positive number of metres (got %g)",
+                      opt.cellSize);
+        return makeError(ErrorCode::InvalidInput, buf);
+    }
+    if (!std::isfinite(opt.angleDeg))
+        return makeError(ErrorCode::InvalidInput, "the grid angle must be a finite number of degrees");
+    if (!std::isfinite(opt.safetyMarginM) || opt.safetyMarginM < 0) {
+        std::snprintf(buf, sizeof buf, "the safety margin must be zero or a positive number of metres (got %g)",
+                      opt.safetyMarginM);
+        return makeError(ErrorCode::InvalidInput, buf);
+    }
+    if (area.empty() || geo::area(area) <= 0)
+        return makeError(ErrorCode::InvalidGeometry, "the area is empty: there is nothing to photograph");
+
+    const geo::MultiPolygon zones(noFly.begin(), noFly.end());
+    geo::MultiPolygon admissible = zones.empty() ? area : geo::difference(area, zones);
+    admissible.erase(std::remove_if(admissible.begin(), admissible.end(),
+                                    [](const geo::Polygon& p) { return p.outer.size() < 3; }),
+                     admissible.end());
+    if (admissible.empty() || geo::area(admissible) <= 0)
+        return makeError(ErrorCode::InvalidGeometry,
+                         "the no-fly zones cover the whole area: nothing admissible is left to photograph");
+
+    // Budget check before any per-cell allocation.
+    const Grid::Size size = Grid::sizeFor(admissible, opt.cellSize, opt.angleDeg);
+    const double budget = static_cast<double>(std::min<std::size_t>(opt.maxCells, INT_MAX));
+    if (size.cells() > budget) {
+        const double fit = Grid::cellSizeToFit(admissible, opt.cellSize, opt.angleDeg,
+                                               static_cast<std::size_t>(budget));
+        std::snprintf(buf, sizeof buf,
+                      "the area is too large for the cell budget: at a cell size of %.2f m its grid would need "
+                      "%s x %s = %s cells, more than the budget of %s; a cell size of at least %.2f m would fit",
+                      opt.cellSize, fmtCount(static_cast<double>(size.cols)).c_str(),
+                      fmtCount(static_cast<double>(size.rows)).c_str(), fmtCount(size.cells()).c_str(),
+                      fmtCount(budget).c_str(), fit);
+        return makeError(ErrorCode::TooLarge, buf);
+    }
+
+    Grid g;
+    g.m_cols = static_cast<int>(size.cols);
+    g.m_rows = static_cast<int>(size.rows);
+    g.m_cellSize = opt.cellSize;
+    g.m_angleDeg = opt.angleDeg;
+    const double rad = opt.angleDeg * M_PI / 180.0;
+    g.m_cos = std::cos(rad);
+    g.m_sin = std::sin(rad);
+
+    // The grid is rotated about the centre of the area's bounding box and centred on the admissible
+    // area's rotated bounding box; origin is corner (col 0, row 0) in the local frame.
+    const geo::Box areaBox = geo::bounds(area);
+    const Vec2 pivot = 0.5 * (areaBox.min + areaBox.max);
+    geo::MultiPolygon centred = admissible;
+    for (auto& poly : centred)
+        for (auto& p : poly.outer)
+            p -= pivot;
+    const geo::Box rb = rotatedBounds(centred, g.m_cos, g.m_sin);
+    const Vec2 slack = 0.5 * (Vec2(g.m_cols, g.m_rows) * opt.cellSize - (rb.max - rb.min));
+    const Vec2 umin = rb.min - slack;
+    g.m_origin = pivot + Vec2(g.m_cos * umin.x() - g.m_sin * umin.y(), g.m_sin * umin.x() + g.m_cos * umin.y());
+
+    Frame frame;
+    frame.origin = g.m_origin;
+    frame.c = g.m_cos;
+    frame.s = g.m_sin;
+    frame.size = opt.cellSize;
+
+    g.m_admissible = std::move(admissible);
+    // GEOS approximates the buffer's round corners by chords inscribed in the true offset curve (8 per
+    // quarter circle), which would cut up to 0.5 % off the margin there; buffering a little more makes
+    // the polygonal zone contain the true offset, so the margin is always honoured in full.
+    if (!zones.empty())
+        g.m_bufferedNoFly = opt.safetyMarginM > 0
+                                ? geo::buffer(geo::unite(zones), opt.safetyMarginM / std::cos(M_PI / 16), 8)
+                                : geo::unite(zones);
+    for (const auto& z : g.m_bufferedNoFly)
+        g.m_noFlyBoxes.push_back(geo::bounds(z));
+
+    // Which cells overlap the admissible area.
+    const std::vector<URing> admRings = makeURings(g.m_admissible, frame);
+    std::vector<std::uint8_t> inArea = rasterise(admRings, g.m_cols, g.m_rows);
+    resolveEdgeCells(inArea, admRings, g.m_cols, g.m_rows);
+
+    // Which cells are entirely clear of, entirely inside, or crossed by a buffered no-fly zone.
+    const std::vector<URing> flyRings = makeURings(g.m_bufferedNoFly, frame);
+    const std::vector<std::uint8_t> fly =
+        flyRings.empty() ? std::vector<std::uint8_t>(inArea.size(), kOut) : rasterise(flyRings, g.m_cols, g.m_rows);
+
+    std::vector<std::unique_ptr<OGRPolygon>> zonesOgr;
+    for (const auto& z : g.m_bufferedNoFly)
+        zonesOgr.push_back(geo::detail::toOgr(z));
+
+    const int n = g.m_cols * g.m_rows;
+    g.m_state.assign(static_cast<std::size_t>(n), static_cast<std::uint8_t>(CellState::Outside));
+    g.m_moves.assign(static_cast<std::size_t>(n), 0);
+    for (int i = 0; i < n; ++i) {
+        if (inArea[i] != kIn)
+            continue;
+        CellState st = CellState::Free;
+        if (fly[i] == kIn) {
+            st = CellState::Unflyable;
+        } else if (fly[i] == kEdge && !g.pointIsSafe(g.cellCenter(i))) {
+            // The centre is unsafe: look for the nearest safe point of the cell (cell minus zones).
+            const auto corners = g.cellCorners(i);
+            const Vec2 centre = g.cellCenter(i);
+            geo::Box cellBox = geo::bounds(corners);
+            geo::detail::OgrGeomPtr rest(geo::detail::toOgr(geo::Polygon{corners, {}}).release());
+            for (std::size_t k = 0; k < zonesOgr.size() && rest && !rest->IsEmpty(); ++k)
+                if (g.m_noFlyBoxes[k].intersects(cellBox))
+                    rest.reset(rest->Difference(zonesOgr[k].get()));
+            const geo::MultiPolygon free = rest ? geo::detail::fromOgr(rest.get()) : geo::MultiPolygon{};
+            double best = std::numeric_limits<double>::infinity();
+            Vec2 bestP = centre;
+            for (const auto& poly : free) {
+                auto scan = [&](const geo::Ring& ring) {
+                    for (std::size_t k = 0; k < ring.size(); ++k) {
+                        Vec2 q;
+                        const double d = nearestOnSegment(centre, ring[k], ring[(k + 1) % ring.size()], &q);
+                        if (d < best) {
+                            best = d;
+                            bestP = q;
+                        }
+                    }
+                };
+                scan(poly.outer);
+                for (const auto& h : poly.holes)
+                    scan(h);
+            }
+            st = CellState::Unflyable;
+            if (std::isfinite(best) && g.pointIsSafe(bestP)) {
+                st = CellState::Shifted;
+                const Vec2 dir = bestP - centre;
+                if (dir.norm() > 0) {
+                    const Vec2 nudged = bestP + kNudgeM * dir.normalized();
+                    const Vec2 u = frame.toGrid(nudged);
+                    const int c = g.col(i), r = g.row(i);
+                    if (u.x() >= c && u.x() <= c + 1 && u.y() >= r && u.y() <= r + 1 &&
+                        !geo::contains(g.m_bufferedNoFly, nudged))
+                        bestP = nudged;
+                }
+                g.m_shifts.emplace_back(i, bestP);
+            }
+        }
+        g.m_state[i] = static_cast<std::uint8_t>(st);
+        if (st == CellState::Free || st == CellState::Shifted)
+            ++g.m_visitCount;
+    }
+
+    // Allowed moves: between two visitable 4-neighbours when the segment between flight positions is
+    // safe. Two Free cells clear of every buffered zone are joined by a segment inside their own squares.
+    for (int i = 0; i < n; ++i) {
+        if (!g.needsVisit(i))
+            continue;
+        for (Dir d : {Dir::East, Dir::North}) {
+            const int j = g.neighbour(i, d);
+            if (j < 0 || !g.needsVisit(j))
+                continue;
+            const bool clear = fly[i] == kOut && fly[j] == kOut;
+            if (clear || g.segmentIsSafe(g.flightPosition(i), g.flightPosition(j))) {
+                g.m_moves[i] |= static_cast<std::uint8_t>(1u << static_cast<int>(d));
+                g.m_moves[j] |= static_cast<std::uint8_t>(1u << static_cast<int>(opposite(d)));
+            }
+        }
+    }
+    return g;
+}
+
+Grid Grid::fromMask(int cols, int rows, const std::vector<std::uint8_t>& mask, double cellSize) {
+    Grid g;
+    g.m_cols = std::max(0, cols);
+    g.m_rows = std::max(0, rows);
+    g.m_cellSize = cellSize;
+    const int n = g.m_cols * g.m_rows;
+    g.m_state.assign(static_cast<std::size_t>(n), static_cast<std::uint8_t>(CellState::Outside));
+    g.m_moves.assign(static_cast<std::size_t>(n), 0);
+    for (int i = 0; i < n && i < static_cast<int>(mask.size()); ++i)
+        if (mask[i]) {
+            g.m_state[i] = static_cast<std::uint8_t>(CellState::Free);
+            ++g.m_visitCount;
+        }
+    for (int i = 0; i < n; ++i) {
+        if (!g.needsVisit(i))
+            continue;
+        for (Dir d : kDirs) {
+            const int j = g.neighbour(i, d);
+            if (j >= 0 && g.needsVisit(j))
+                g.m_moves[i] |= static_cast<std::uint8_t>(1u << static_cast<int>(d));
+        }
+    }
+    return g;
+}
+
+int Grid::neighbour(int i, Dir d) const {
+    const int c = col(i) + kDirDx[static_cast<int>(d)];
+    const int r = row(i) + kDirDy[static_cast<int>(d)];
+    return inBounds(c, r) ? index(c, r) : -1;
+}
+
+bool Grid::onContour(int i) const {
+    if (!needsVisit(i))
+        return false;
+    for (Dir d : kDirs) {
+        const int j = neighbour(i, d);
+        if (j < 0 || !needsVisit(j))
+            return true;
+    }
+    return false;
+}
+
+geo::Vec2 Grid::cellCenter(int i) const {
+    const double u = (col(i) + 0.5) * m_cellSize, v = (row(i) + 0.5) * m_cellSize;
+    return m_origin + Vec2(m_cos * u - m_sin * v, m_sin * u + m_cos * v);
+}
+
+geo::Vec2 Grid::flightPosition(int i) const {
+    if (state(i) == CellState::Shifted) {
+        auto it = std::lower_bound(m_shifts.begin(), m_shifts.end(), i,
+                                   [](const std::pair<int, Vec2>& e, int k) { return e.first < k; });
+        if (it != m_shifts.end() && it->first == i)
+            return it->second;
+    }
+    return cellCenter(i);
+}
+
+std::vector<geo::Vec2> Grid::cellCorners(int i) const {
+    std::vector<Vec2> out;
+    out.reserve(4);
+    const int c = col(i), r = row(i);
+    const int dc[4] = {0, 1, 1, 0}, dr[4] = {0, 0, 1, 1};
+    for (int k = 0; k < 4; ++k) {
+        const double u = (c + dc[k]) * m_cellSize, v = (r + dr[k]) * m_cellSize;
+        out.push_back(m_origin + Vec2(m_cos * u - m_sin * v, m_sin * u + m_cos * v));
+    }
+    return out;
+}
+
+std::optional<int> Grid::cellAt(const geo::Vec2& p) const {
+    const Vec2 d = p - m_origin;
+    const double u = (m_cos * d.x() + m_sin * d.y()) / m_cellSize;
+    const double v = (-m_sin * d.x() + m_cos * d.y()) / m_cellSize;
+    if (!(u >= 0 && v >= 0 && u <= m_cols && v <= m_rows))
+        return std::nullopt;
+    const int c = std::min(m_cols - 1, static_cast<int>(std::floor(u)));
+    const int r = std::min(m_rows - 1, static_cast<int>(std::floor(v)));
+    return index(c, r);
+}
+
+int Grid::nearestVisitable(const geo::Vec2& p) const {
+    if (m_visitCount == 0)
+        return -1;
+    const Vec2 d = p - m_origin;
+    const double u = (m_cos * d.x() + m_sin * d.y()) / m_cellSize;
+    const double v = (-m_sin * d.x() + m_cos * d.y()) / m_cellSize;
+    const int c0 = std::clamp(static_cast<int>(std::floor(u)), 0, m_cols - 1);
+    const int r0 = std::clamp(static_cast<int>(std::floor(v)), 0, m_rows - 1);
+    int best = -1;
+    double bestD = std::numeric_limits<double>::infinity();
+    const int maxK = std::max(m_cols, m_rows);
+    // Rings of growing Chebyshev radius k around the start cell: every point of a cell on ring k is at
+    // least (k - 1) cells away from p, so the search stops once that exceeds the best distance found.
+    for (int k = 0; k <= maxK; ++k) {
+        if (best >= 0 && (k - 1) * m_cellSize > bestD)
+            break;
+        for (int r = r0 - k; r <= r0 + k; ++r) {
+            if (r < 0 || r >= m_rows)
+                continue;
+            const bool edgeRow = (r == r0 - k || r == r0 + k);
+            for (int c = c0 - k; c <= c0 + k; c += edgeRow ? 1 : 2 * std::max(k, 1)) {
+                if (c < 0 || c >= m_cols)
+                    continue;
+                const int i = index(c, r);
+                if (!needsVisit(i))
+                    continue;
+                const double dist = (flightPosition(i) - p).norm();
+                if (dist < bestD) {
+                    bestD = dist;
+                    best = i;
+                }
+            }
+        }
+    }
+    return best;
+}
+
+bool Grid::segmentIsSafe(const geo::Vec2& a, const geo::Vec2& b) const {
+    const geo::Box sb{a.cwiseMin(b), a.cwiseMax(b)};
+    bool any = false;
+    for (const auto& box : m_noFlyBoxes)
+        any = any || box.intersects(sb);
+    if (!any)
+        return true;
+    return !geo::segmentCrossesInterior(m_bufferedNoFly, a, b);
+}
+
+bool Grid::pointIsSafe(const geo::Vec2& p) const {
+    for (std::size_t k = 0; k < m_bufferedNoFly.size(); ++k) {
+        if (!m_noFlyBoxes[k].contains(p))
+            continue;
+        const auto& z = m_bufferedNoFly[k];
+        if (geo::contains(z, p) && geo::distanceToBoundary(z, p) > kSafeTolM)
+            return false;
+    }
+    return true;
+}
+
+std::size_t Grid::memoryBytes() const {
+    auto polyBytes = [](const geo::MultiPolygon& mp) {
+        std::size_t b = mp.capacity() * sizeof(geo::Polygon);
+        for (const auto& p : mp) {
+            b += p.outer.capacity() * sizeof(Vec2) + p.holes.capacity() * sizeof(geo::Ring);
+            for (const auto& h : p.holes)
+                b += h.capacity() * sizeof(Vec2);
+        }
+        return b;
+    };
+    return m_state.capacity() + m_moves.capacity() + m_shifts.capacity() * sizeof(m_shifts[0]) +
+           polyBytes(m_admissible) + polyBytes(m_bufferedNoFly) + m_noFlyBoxes.capacity() * sizeof(geo::Box);
+}
+
+} // namespace pf::grid
