@@ -1,0 +1,58 @@
+#include "core/fleet/capability.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pf::fleet {
+
+double areaRateM2PerS(const Capability& c, double trackLengthM) {
+    const double w = c.footprint.acrossM;
+    const double v = c.cruiseSpeedMps;
+    if (!(w > 0) || !(v > 0) || !(c.turnRateDegS > 0) || !(trackLengthM > 0))
+        return 0.0;
+    const double trackTime = trackLengthM / v;
+    const double turnTime = 180.0 / c.turnRateDegS + w / v;
+    return w * trackLengthM / (trackTime + turnTime);
+}
+
+Result<std::vector<double>> capabilityShares(const std::vector<Capability>& fleet, double areaM2) {
+    if (fleet.empty())
+        return makeError(ErrorCode::InvalidInput, "No aircraft to share the area between.");
+    if (!(areaM2 > 0))
+        return makeError(ErrorCode::InvalidInput, "The area to share has no surface.");
+    const double track = std::sqrt(areaM2);
+    std::vector<double> rates;
+    double sum = 0;
+    for (const auto& c : fleet) {
+        if (!(c.footprint.acrossM > 0) || !(c.footprint.alongM > 0))
+            return makeError(ErrorCode::InvalidInput,
+                             "Aircraft \"" + c.name + "\" has no usable camera footprint (check altitude and overlap).");
+        if (!(c.cruiseSpeedMps > 0))
+            return makeError(ErrorCode::InvalidInput,
+                             "Aircraft \"" + c.name + "\" has a cruise speed that is not positive.");
+        if (!(c.turnRateDegS > 0))
+            return makeError(ErrorCode::InvalidInput,
+                             "Aircraft \"" + c.name + "\" has a turn rate that is not positive.");
+        rates.push_back(areaRateM2PerS(c, track));
+        sum += rates.back();
+    }
+    for (auto& r : rates)
+        r /= sum;
+    return rates;
+}
+
+double aircraftCellSize(const sensor::EffectiveFootprint& fp) { return std::max(fp.acrossM, fp.alongM); }
+
+Result<double> baseCellSize(const std::vector<double>& sizes, double areaM2, double maxCells) {
+    if (sizes.empty())
+        return makeError(ErrorCode::InvalidInput, "No aircraft cell sizes to derive the base grid from.");
+    for (double s : sizes)
+        if (!(s > 0) || !std::isfinite(s))
+            return makeError(ErrorCode::InvalidInput, "An aircraft cell size is not a positive number of metres.");
+    double s = *std::min_element(sizes.begin(), sizes.end());
+    if (areaM2 > 0 && maxCells > 0 && areaM2 / (s * s) > maxCells)
+        s = std::sqrt(areaM2 / maxCells);
+    return s;
+}
+
+} // namespace pf::fleet
