@@ -1,0 +1,283 @@
+#include "core/mission/validation.h"
+
+#include "core/geo/polygon_ops.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace pf::mission {
+
+namespace {
+
+using geo::Problem;
+using geo::Severity;
+
+std::string num(const char* f, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, f, v);
+    return buf;
+}
+
+std::string zoneName(const NoFlyZone& z, std::size_t i) {
+    return z.name.empty() ? "no-fly zone " + std::to_string(i + 1) : "no-fly zone \"" + z.name + "\"";
+}
+
+std::string aircraftName(const AircraftConfig& a, std::size_t i) {
+    return a.name.empty() ? "aircraft " + std::to_string(i + 1) : "aircraft \"" + a.name + "\"";
+}
+
+std::string count(double n) {
+    std::string s = num("%.0f", n), out;
+    const int len = static_cast<int>(s.size());
+    for (int i = 0; i < len; ++i) {
+        out += s[i];
+        if ((len - i - 1) % 3 == 0 && i + 1 < len)
+            out += ',';
+    }
+    return out;
+}
+
+void error(std::vector<Problem>& out, std::string msg) { out.push_back({Severity::Error, std::move(msg)}); }
+void warning(std::vector<Problem>& out, std::string msg) { out.push_back({Severity::Warning, std::move(msg)}); }
+
+} // namespace
+
+std::string ValidationReport::errorSummary() const {
+    std::string s;
+    for (const auto& p : problems)
+        if (p.severity == Severity::Error)
+            s += (s.empty() ? "" : "; ") + p.message;
+    return s;
+}
+
+Result<double> resolvedAltitude(const AircraftConfig& a) {
+    if (a.altitudeM)
+        return *a.altitudeM;
+    if (a.gsdCm)
+        return sensor::altitudeForGsd(a.camera, *a.gsdCm);
+    return makeError(ErrorCode::InvalidInput, "neither a flight altitude nor a ground sample distance is set");
+}
+
+Result<LocalGeometry> localGeometry(const Mission& m) {
+    const auto areaProblems = geo::validatePolygon(m.area, "the area");
+    if (geo::hasError(areaProblems))
+        return makeError(ErrorCode::InvalidGeometry, areaProblems.front().message);
+    const geo::GeoPolygon area = geo::cleanPolygon(m.area);
+    auto frame = geo::LocalFrame::forArea(area);
+    if (!frame)
+        return frame.error();
+    LocalGeometry g{*frame, frame->toLocal(area), {}, {}};
+    for (std::size_t i = 0; i < m.noFlyZones.size(); ++i) {
+        const auto& z = m.noFlyZones[i];
+        const auto problems = geo::validatePolygon(z.polygon, zoneName(z, i));
+        for (const auto& p : problems)
+            if (p.severity == Severity::Error)
+                return makeError(ErrorCode::InvalidGeometry, p.message);
+        geo::Polygon local = frame->toLocal(geo::cleanPolygon(z.polygon));
+        if (geo::intersection(g.area, local).empty())
+            continue; // outside the area: ignored (validateMission warns about it)
+        g.noFly.push_back(std::move(local));
+        g.noFlyNames.push_back(z.name);
+    }
+    return g;
+}
+
+Result<grid::GridOptions> gridOptionsFor(const Mission& m, std::size_t aircraftIndex, double autoAngleDeg) {
+    if (aircraftIndex >= m.aircraft.size())
+        return makeError(ErrorCode::NotFound, "the mission has no aircraft number " + std::to_string(aircraftIndex + 1));
+    const auto& a = m.aircraft[aircraftIndex];
+    const std::string who = aircraftName(a, aircraftIndex);
+    auto alt = resolvedAltitude(a);
+    if (!alt)
+        return makeError(alt.error().code, who + ": " + alt.error().message);
+    auto eff = sensor::effectiveFootprint(a.camera, *alt, a.overlap);
+    if (!eff)
+        return makeError(eff.error().code, who + ": " + eff.error().message);
+    grid::GridOptions opt;
+    opt.cellSize = sensor::cellSizeFor(*eff);
+    opt.angleDeg = m.options.gridAngleDeg.value_or(autoAngleDeg);
+    opt.safetyMarginM = m.options.safetyMarginM;
+    opt.maxCells = m.options.maxCells;
+    return opt;
+}
+
+ValidationReport validateMission(const Mission& m) {
+    ValidationReport r;
+    auto& out = r.problems;
+
+    // Geometry: the area, then each no-fly zone, each as a polygon of its own.
+    const auto areaProblems = geo::validatePolygon(m.area, "the area");
+    out.insert(out.end(), areaProblems.begin(), areaProblems.end());
+    bool zonesOk = true;
+    for (std::size_t i = 0; i < m.noFlyZones.size(); ++i) {
+        const auto zp = geo::validatePolygon(m.noFlyZones[i].polygon, zoneName(m.noFlyZones[i], i));
+        zonesOk = zonesOk && !geo::hasError(zp);
+        out.insert(out.end(), zp.begin(), zp.end());
+    }
+
+    std::optional<LocalGeometry> geom;
+    geo::MultiPolygon admissible;
+    if (!geo::hasError(areaProblems)) {
+        auto frame = geo::LocalFrame::forArea(geo::cleanPolygon(m.area));
+        if (!frame) {
+            error(out, frame.error().message);
+        } else {
+            geom = LocalGeometry{*frame, frame->toLocal(geo::cleanPolygon(m.area)), {}, {}};
+            r.areaM2 = geo::area(geom->area);
+            for (std::size_t i = 0; i < m.noFlyZones.size(); ++i) {
+                const auto& z = m.noFlyZones[i];
+                if (geo::hasError(geo::validatePolygon(z.polygon, zoneName(z, i))))
+                    continue;
+                geo::Polygon local = frame->toLocal(geo::cleanPolygon(z.polygon));
+                const geo::MultiPolygon common = geo::intersection(geom->area, local);
+                if (geo::area(common) <= 0.0) {
+                    warning(out, zoneName(z, i) + " lies entirely outside the area; it is ignored");
+                    continue;
+                }
+                if (geo::difference(geom->area, geo::MultiPolygon{local}).empty())
+                    error(out, zoneName(z, i) + " covers the whole area: nothing admissible is left to photograph");
+                geom->noFly.push_back(std::move(local));
+                geom->noFlyNames.push_back(z.name);
+            }
+            admissible = geom->noFly.empty()
+                             ? geo::MultiPolygon{geom->area}
+                             : geo::difference(geom->area, geo::MultiPolygon(geom->noFly.begin(), geom->noFly.end()));
+            r.admissibleAreaM2 = geo::area(admissible);
+            if (r.admissibleAreaM2 <= 0.0 && !geo::hasError(out))
+                error(out, "the no-fly zones together cover the whole area: nothing admissible is left to photograph");
+        }
+    }
+
+    // Points and options.
+    auto checkPoint = [&](const std::optional<geo::LonLat>& p, const std::string& what) {
+        if (!p)
+            return;
+        if (!std::isfinite(p->lon) || !std::isfinite(p->lat) || std::abs(p->lon) > 180 || std::abs(p->lat) > 90) {
+            error(out, what + " (" + num("%.6f", p->lon) + ", " + num("%.6f", p->lat) +
+                           ") is out of range: longitude must lie within ±180 and latitude within ±90 degrees");
+            return;
+        }
+        if (!geom)
+            return;
+        const geo::Vec2 q = geom->frame.toLocal(*p);
+        for (std::size_t k = 0; k < geom->noFly.size(); ++k)
+            if (geo::contains(geom->noFly[k], q))
+                warning(out, what + " lies inside no-fly zone \"" + geom->noFlyNames[k] + "\"");
+        if ((q - 0.5 * (geo::bounds(geom->area).min + geo::bounds(geom->area).max)).norm() > 20000)
+            warning(out, what + " is more than 20 km from the area");
+    };
+    checkPoint(m.home, "the home point");
+    checkPoint(m.landing, "the landing point");
+    const auto& o = m.options;
+    if (!std::isfinite(o.safetyMarginM) || o.safetyMarginM < 0)
+        error(out, "the safety margin must be zero or a positive number of metres (got " + num("%g", o.safetyMarginM) + ")");
+    if (o.gridAngleDeg && !std::isfinite(*o.gridAngleDeg))
+        error(out, "the grid angle must be a finite number of degrees");
+    if (o.maxCells == 0)
+        error(out, "the cell budget must be at least 1 cell");
+    if (m.aircraft.empty())
+        error(out, "the mission has no aircraft: add at least one");
+
+    // Aircraft: settings, footprint, cell size and the grid each would get.
+    for (std::size_t i = 0; i < m.aircraft.size(); ++i) {
+        const auto& a = m.aircraft[i];
+        const std::string who = aircraftName(a, i);
+        AircraftFigures f;
+        f.name = a.name;
+        bool ok = true;
+        if (auto s = sensor::validate(a.camera); !s) {
+            error(out, who + ": " + s.error().message);
+            ok = false;
+        }
+        for (auto [v, side] : {std::pair{a.overlap.front, "front"}, std::pair{a.overlap.side, "side"}})
+            if (!std::isfinite(v) || v < 0.0 || v >= 1.0) {
+                error(out, who + ": the " + std::string(side) + " overlap must lie in [0, 1), e.g. 0.7 for 70 % (got " +
+                               num("%g", v) + ")");
+                ok = false;
+            }
+        if (a.altitudeM) {
+            f.altitudeM = *a.altitudeM;
+        } else if (a.gsdCm) {
+            if (!std::isfinite(*a.gsdCm) || *a.gsdCm <= 0) {
+                error(out, who + ": the ground sample distance must be greater than 0 cm/px (got " + num("%g", *a.gsdCm) + ")");
+                ok = false;
+            } else if (ok) {
+                auto alt = sensor::altitudeForGsd(a.camera, *a.gsdCm);
+                if (alt)
+                    f.altitudeM = *alt;
+            }
+        } else {
+            error(out, who + ": neither a flight altitude nor a ground sample distance is set");
+            ok = false;
+        }
+        if ((a.altitudeM || a.gsdCm) && ok) {
+            if (!std::isfinite(f.altitudeM) || f.altitudeM <= 0) {
+                error(out, who + ": the flight altitude must be greater than 0 m (got " + num("%g", f.altitudeM) + " m)");
+                ok = false;
+            } else if (f.altitudeM > a.maxAltitudeM) {
+                error(out, who + ": the flight altitude of " + num("%.1f", f.altitudeM) + " m is above its maximum of " +
+                               num("%.1f", a.maxAltitudeM) + " m" + (a.altitudeM ? "" : " (from the wanted GSD)"));
+                ok = false;
+            }
+        }
+        if (ok) {
+            auto eff = sensor::effectiveFootprint(a.camera, f.altitudeM, a.overlap);
+            auto gsd = sensor::gsdCmAt(a.camera, f.altitudeM);
+            if (!eff) {
+                error(out, who + ": " + eff.error().message);
+                ok = false;
+            } else {
+                f.effective = *eff;
+                f.footprint = eff->real;
+                f.cellSizeM = sensor::cellSizeFor(*eff);
+                f.gsdCm = gsd ? *gsd : 0.0;
+                if (eff->alongM > eff->acrossM)
+                    warning(out, who + ": the photo spacing along the track (" + num("%.1f", eff->alongM) +
+                                     " m) exceeds the track spacing (" + num("%.1f", eff->acrossM) +
+                                     " m): raise the front overlap or lower the side overlap");
+            }
+        }
+        f.gridAngleDeg = o.gridAngleDeg.value_or(0.0);
+        if (ok && geom && r.admissibleAreaM2 > 0 && o.maxCells > 0 && std::isfinite(f.gridAngleDeg)) {
+            const auto size = grid::Grid::sizeFor(admissible, f.cellSizeM, f.gridAngleDeg);
+            f.cols = size.cols;
+            f.rows = size.rows;
+            if (size.cells() > static_cast<double>(o.maxCells)) {
+                const double fit = grid::Grid::cellSizeToFit(admissible, f.cellSizeM, f.gridAngleDeg, o.maxCells);
+                // The footprint, and with it the cell, grows in proportion to the altitude.
+                const double fitAlt = std::ceil(f.altitudeM * fit / f.cellSizeM * 10.0) / 10.0;
+                std::string msg = who + ": the area is too large for the cell budget: at " + num("%.1f", f.altitudeM) +
+                                  " m (cell size " + num("%.2f", f.cellSizeM) + " m) its grid would need " +
+                                  count(static_cast<double>(size.cols)) + " x " + count(static_cast<double>(size.rows)) +
+                                  " = " + count(size.cells()) + " cells, more than the budget of " +
+                                  count(static_cast<double>(o.maxCells)) + "; an altitude of at least " +
+                                  num("%.1f", fitAlt) + " m (cell size " + num("%.2f", fit) + " m) would fit";
+                if (fitAlt > a.maxAltitudeM)
+                    msg += ", but that is above its maximum altitude of " + num("%.1f", a.maxAltitudeM) +
+                           " m: raise the cell budget or split the area";
+                error(out, msg);
+            } else if (zonesOk) {
+                grid::GridOptions gopt{f.cellSizeM, f.gridAngleDeg, std::max(0.0, o.safetyMarginM), o.maxCells};
+                auto g = grid::Grid::build(geom->area, geom->noFly, gopt);
+                if (!g) {
+                    error(out, who + ": " + g.error().message);
+                } else {
+                    f.gridBuilt = true;
+                    f.cellsToVisit = g->visitCount();
+                    for (int c = 0; c < g->cellCount(); ++c) {
+                        f.shiftedCells += g->state(c) == grid::CellState::Shifted;
+                        f.unflyableCells += g->state(c) == grid::CellState::Unflyable;
+                    }
+                    if (f.unflyableCells > 0)
+                        warning(out, who + ": " + std::to_string(f.unflyableCells) +
+                                         " cell(s) of the area lie within the safety margin of a no-fly zone and "
+                                         "cannot be photographed from above");
+                }
+            }
+        }
+        r.aircraft.push_back(f);
+    }
+    return r;
+}
+
+} // namespace pf::mission

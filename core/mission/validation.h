@@ -1,0 +1,67 @@
+// Mission-level checks: every problem with its severity, plus the figures a user checks before flying.
+#pragma once
+
+#include "core/geo/local_frame.h"
+#include "core/geo/validation.h"
+#include "core/grid/grid.h"
+#include "core/mission/mission.h"
+#include "core/result.h"
+#include "core/sensor/camera.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace pf::mission {
+
+// What one aircraft would fly: its settings resolved and the grid it would get over the whole area.
+struct AircraftFigures {
+    std::string name;
+    double altitudeM = 0.0;       // given, or derived from the wanted GSD
+    double gsdCm = 0.0;           // 0 when the camera's optics are unknown (field of view only)
+    sensor::Footprint footprint;  // real ground footprint of one photo
+    sensor::EffectiveFootprint effective;
+    double cellSizeM = 0.0;       // longest side of the effective footprint (paper 001)
+    double gridAngleDeg = 0.0;    // the mission's grid angle; 0 when the angle is chosen automatically
+    long long cols = 0, rows = 0; // grid extent over the admissible area
+    int cellsToVisit = 0;         // Free + Shifted cells (0 when the grid could not be built)
+    int shiftedCells = 0;
+    int unflyableCells = 0;
+    bool gridBuilt = false;
+};
+
+struct ValidationReport {
+    std::vector<geo::Problem> problems; // in the order found: area, no-fly zones, options, aircraft
+    double areaM2 = 0.0;
+    double admissibleAreaM2 = 0.0;      // area minus the (un-buffered) no-fly zones
+    std::vector<AircraftFigures> aircraft;
+    bool hasErrors() const { return geo::hasError(problems); }
+    // All error messages joined by "; " (for a one-line Error).
+    std::string errorSummary() const;
+};
+
+// Checks the whole mission: the area and every no-fly zone as polygons, zones outside the area
+// (warning: ignored) or covering all of it (error), the home point, the planner options, and per
+// aircraft the camera, altitude (> 0 and <= the aircraft's maximum) or GSD (> 0), overlaps in [0, 1)
+// and the cell budget (an error that says how many cells and which altitude and cell size would fit).
+// Never fails: every finding is in the report.
+ValidationReport validateMission(const Mission& m);
+
+// The mission's geometry in its local planning frame (centred on the area), as the grid needs it.
+// No-fly zones that do not touch the area are left out. Errors name the first invalid polygon.
+struct LocalGeometry {
+    geo::LocalFrame frame;
+    geo::Polygon area;
+    std::vector<geo::Polygon> noFly;
+    std::vector<std::string> noFlyNames; // parallel to noFly
+};
+Result<LocalGeometry> localGeometry(const Mission& m);
+
+// The flight altitude of an aircraft: its altitude, or the one giving its GSD. Errors name the aircraft.
+Result<double> resolvedAltitude(const AircraftConfig& a);
+
+// Grid options for one aircraft of the mission (cell size from its effective footprint, the mission's
+// grid angle or `autoAngleDeg` when it is automatic, safety margin, cell budget).
+Result<grid::GridOptions> gridOptionsFor(const Mission& m, std::size_t aircraftIndex, double autoAngleDeg = 0.0);
+
+} // namespace pf::mission
