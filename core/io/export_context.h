@@ -1,0 +1,68 @@
+// What the waypoint exporters need besides the routes (mission area, no-fly zones, home, footprints),
+// and what the importers give back for editing.
+#pragma once
+
+#include "core/geo/types.h"
+#include "core/mission/mission.h"
+#include "core/route/waypoint.h"
+#include "core/sensor/camera.h"
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace pf::io {
+
+// Autopilot firmware a QGroundControl .plan is written for (its MAV_AUTOPILOT number).
+enum class QgcFirmware { ArduPilot = 3, PX4 = 12 };
+// What the vehicle does after the last waypoint.
+enum class MissionEnd { ReturnToLaunch, Land };
+// The MAVLink command that takes a photo at a photo waypoint.
+enum class CaptureCommand {
+    ImageStartCapture, // MAV_CMD_IMAGE_START_CAPTURE (2000), one image: cameras speaking the camera protocol
+    DigicamControl,    // MAV_CMD_DO_DIGICAM_CONTROL (203): a camera triggered by the autopilot
+};
+
+struct ExportOptions {
+    QgcFirmware firmware = QgcFirmware::ArduPilot;
+    MissionEnd end = MissionEnd::ReturnToLaunch;
+    CaptureCommand capture = CaptureCommand::ImageStartCapture;
+    std::optional<double> hoverSpeedMps; // .plan hoverSpeed; the route's cruise speed when unset
+};
+
+// Everything an export can draw on. `routes[i]` is flown by the aircraft of the mission whose name is
+// `routes[i].aircraft` (if any). The parallel vectors may be shorter than `routes` (missing entries
+// mean "none").
+struct ExportContext {
+    mission::Mission mission;                          // area, no-fly zones, home, aircraft
+    std::vector<route::Route> routes;                  // one per aircraft (or per sortie)
+    std::vector<std::optional<sensor::Footprint>> footprints; // photo footprint per route, for KML
+    std::vector<std::vector<geo::LonLat>> trajectories;       // smoothed flight path per route, for KML
+
+    // The route's home: its own, else its aircraft's, else the mission's.
+    std::optional<geo::LonLat> homeFor(std::size_t routeIndex) const;
+    // Where the route lands: the mission's landing point, else the home.
+    std::optional<geo::LonLat> landingFor(std::size_t routeIndex) const;
+    // The mission's aircraft flying the route, or nullptr.
+    const mission::AircraftConfig* aircraftFor(std::size_t routeIndex) const;
+    // The route's label in files: its aircraft name, or "Route N".
+    std::string routeLabel(std::size_t routeIndex) const;
+    std::optional<sensor::Footprint> footprintFor(std::size_t routeIndex) const;
+};
+
+// A context for a planned mission: footprints from each aircraft's camera at its altitude (set
+// altitude, else the one giving its GSD), where the camera allows it.
+ExportContext makeExportContext(const mission::Mission& mission, std::vector<route::Route> routes);
+
+// What a waypoint file holds, read back for editing.
+struct ImportedWaypoints {
+    std::vector<route::Route> routes;           // in file order, waypoints in flight order
+    std::vector<mission::NoFlyZone> noFlyZones; // a .plan's exclusion polygons
+    std::optional<geo::LonLat> home;            // planned home / take-off point if the file has one
+};
+
+// A context to write imported waypoints out again (the no-fly zones and home are kept).
+ExportContext contextFromImport(const ImportedWaypoints& imported);
+
+} // namespace pf::io

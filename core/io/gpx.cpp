@@ -1,0 +1,219 @@
+#include "core/io/gpx.h"
+
+#include "core/geo/geodesic.h"
+#include "core/io/waypoint_format_util.h"
+
+#include <ogr_spatialref.h>
+#include <ogrsf_frmts.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+namespace pf::io {
+
+namespace {
+
+using detail::DatasetPtr;
+
+struct FeatureDeleter {
+    void operator()(OGRFeature* f) const { OGRFeature::DestroyFeature(f); }
+};
+using FeaturePtr = std::unique_ptr<OGRFeature, FeatureDeleter>;
+
+std::string pointName(const std::string& label, std::size_t i) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, " %03zu", i + 1);
+    return label + buf;
+}
+
+void setIfField(OGRFeature& f, const char* name, const std::string& value) {
+    if (f.GetFieldIndex(name) >= 0)
+        f.SetField(name, value.c_str());
+}
+
+Status addField(OGRLayer* layer, const char* name, OGRFieldType type, const std::string& path) {
+    if (layer->FindFieldIndex(name, TRUE) >= 0)
+        return {};
+    OGRFieldDefn def(name, type);
+    if (layer->CreateField(&def) != OGRERR_NONE)
+        return makeError(ErrorCode::IoError, "cannot write " + path + ": " + detail::lastGdalError("field " + std::string(name)));
+    return {};
+}
+
+} // namespace
+
+Status writeGpx(const ExportContext& ctx, const std::vector<std::size_t>& routeIndices, const std::string& path) {
+    for (auto i : routeIndices)
+        if (i >= ctx.routes.size())
+            return makeError(ErrorCode::InvalidInput, "there is no route " + std::to_string(i + 1) + " to export");
+    auto ds = detail::createVectorDataset("GPX", path, {"GPX_USE_EXTENSIONS=YES"});
+    if (!ds)
+        return ds.error();
+    OGRSpatialReference wgs84;
+    wgs84.SetWellKnownGeogCS("WGS84");
+    wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+
+    // GPX wants every <wpt> before the first <rte>: waypoints of all routes first.
+    OGRLayer* wpts = (*ds)->CreateLayer("waypoints", &wgs84, wkbPoint, nullptr);
+    if (!wpts)
+        return makeError(ErrorCode::IoError, "cannot write " + path + ": " + detail::lastGdalError("no waypoint layer"));
+    for (const char* f : {"heading", "aircraft"})
+        if (auto st = addField(wpts, f, std::string(f) == "heading" ? OFTReal : OFTString, path); !st)
+            return st;
+    for (auto ri : routeIndices) {
+        const auto& r = ctx.routes[ri];
+        const std::string label = ctx.routeLabel(ri);
+        for (std::size_t i = 0; i < r.waypoints.size(); ++i) {
+            const auto& w = r.waypoints[i];
+            FeaturePtr f(OGRFeature::CreateFeature(wpts->GetLayerDefn()));
+            OGRPoint pt(w.position.lon, w.position.lat);
+            f->SetGeometry(&pt);
+            f->SetField("ele", w.altitudeM);
+            setIfField(*f, "name", pointName(label, i));
+            setIfField(*f, "type", detail::kindName(w.kind));
+            f->SetField("heading", detail::normaliseHeading(w.headingDeg));
+            f->SetField("aircraft", label.c_str());
+            if (wpts->CreateFeature(f.get()) != OGRERR_NONE)
+                return makeError(ErrorCode::IoError, "cannot write " + path + ": " + detail::lastGdalError("waypoint"));
+        }
+    }
+    OGRLayer* rpts = (*ds)->CreateLayer("route_points", &wgs84, wkbPoint, nullptr);
+    if (!rpts)
+        return makeError(ErrorCode::IoError, "cannot write " + path + ": " + detail::lastGdalError("no route layer"));
+    if (auto st = addField(rpts, "heading", OFTReal, path); !st)
+        return st;
+    int routeFid = 0;
+    for (auto ri : routeIndices) {
+        const auto& r = ctx.routes[ri];
+        const std::string label = ctx.routeLabel(ri);
+        for (std::size_t i = 0; i < r.waypoints.size(); ++i) {
+            const auto& w = r.waypoints[i];
+            FeaturePtr f(OGRFeature::CreateFeature(rpts->GetLayerDefn()));
+            OGRPoint pt(w.position.lon, w.position.lat);
+            f->SetGeometry(&pt);
+            f->SetField("route_fid", routeFid);
+            setIfField(*f, "route_name", label);
+            f->SetField("ele", w.altitudeM);
+            setIfField(*f, "name", pointName(label, i));
+            setIfField(*f, "type", detail::kindName(w.kind));
+            f->SetField("heading", detail::normaliseHeading(w.headingDeg));
+            if (rpts->CreateFeature(f.get()) != OGRERR_NONE)
+                return makeError(ErrorCode::IoError, "cannot write " + path + ": " + detail::lastGdalError("route point"));
+        }
+        ++routeFid;
+    }
+    return detail::closeDataset(*ds, path);
+}
+
+namespace {
+
+// Headings for points that had none: towards the next point (the last keeps the one before).
+void fillHeadings(route::Route& r, const std::vector<bool>& hasHeading) {
+    for (std::size_t i = 0; i < r.waypoints.size(); ++i) {
+        if (hasHeading[i])
+            continue;
+        if (i + 1 < r.waypoints.size())
+            r.waypoints[i].headingDeg = geo::initialBearingDeg(r.waypoints[i].position, r.waypoints[i + 1].position);
+        else if (i > 0)
+            r.waypoints[i].headingDeg = r.waypoints[i - 1].headingDeg;
+    }
+}
+
+Result<route::Waypoint> readPoint(OGRFeature& f, const std::string& path, const std::string& what, bool& hasHeading) {
+    const OGRGeometry* g = f.GetGeometryRef();
+    if (!g || wkbFlatten(g->getGeometryType()) != wkbPoint)
+        return makeError(ErrorCode::ParseError, path + ": " + what + " has no position");
+    const auto* p = g->toPoint();
+    route::Waypoint w;
+    w.position = {p->getX(), p->getY()};
+    const int ele = f.GetFieldIndex("ele");
+    if (ele < 0 || !f.IsFieldSetAndNotNull(ele))
+        return makeError(ErrorCode::ParseError, path + ": " + what + " has no <ele> (altitude above take-off)");
+    w.altitudeM = f.GetFieldAsDouble(ele);
+    const int hdg = f.GetFieldIndex("ogr_heading");
+    hasHeading = hdg >= 0 && f.IsFieldSetAndNotNull(hdg);
+    if (hasHeading) {
+        auto v = detail::parseNumber(f.GetFieldAsString(hdg));
+        if (!v)
+            return makeError(ErrorCode::ParseError, path + ": " + what + ": the heading \"" +
+                                                        std::string(f.GetFieldAsString(hdg)) + "\" is not a number");
+        w.headingDeg = detail::normaliseHeading(*v);
+    }
+    const int type = f.GetFieldIndex("type");
+    if (type >= 0 && f.IsFieldSetAndNotNull(type))
+        w.kind = detail::kindFromName(f.GetFieldAsString(type)).value_or(route::WaypointKind::Photo);
+    return w;
+}
+
+} // namespace
+
+Result<ImportedWaypoints> readGpx(const std::string& path) {
+    auto ds = detail::openVectorDataset(path, "GPX");
+    if (!ds)
+        return ds.error();
+    ImportedWaypoints out;
+    CPLErrorReset();
+    CPLPushErrorHandler(CPLQuietErrorHandler);
+    struct Pop {
+        ~Pop() { CPLPopErrorHandler(); }
+    } pop;
+
+    std::vector<std::string> routeNames;
+    if (OGRLayer* routes = (*ds)->GetLayerByName("routes")) {
+        for (auto& f : *routes) {
+            const int n = f->GetFieldIndex("name");
+            routeNames.push_back(n >= 0 && f->IsFieldSetAndNotNull(n) ? f->GetFieldAsString(n) : "");
+        }
+    }
+    std::map<int, std::size_t> routeOf; // route_fid -> index in out.routes
+    std::vector<std::vector<bool>> headings;
+    if (OGRLayer* rpts = (*ds)->GetLayerByName("route_points")) {
+        std::size_t k = 0;
+        for (auto& f : *rpts) {
+            ++k;
+            const int fid = f->GetFieldAsInteger("route_fid");
+            auto [it, inserted] = routeOf.emplace(fid, out.routes.size());
+            if (inserted) {
+                route::Route r;
+                r.aircraft = fid >= 0 && static_cast<std::size_t>(fid) < routeNames.size() ? routeNames[fid] : "";
+                out.routes.push_back(r);
+                headings.emplace_back();
+            }
+            bool has = false;
+            auto w = readPoint(*f, path, "route point " + std::to_string(k), has);
+            if (!w)
+                return w.error();
+            out.routes[it->second].waypoints.push_back(*w);
+            headings[it->second].push_back(has);
+        }
+    }
+    if (out.routes.empty()) {
+        if (OGRLayer* wpts = (*ds)->GetLayerByName("waypoints")) {
+            route::Route r;
+            std::vector<bool> has;
+            std::size_t k = 0;
+            for (auto& f : *wpts) {
+                bool h = false;
+                auto w = readPoint(*f, path, "waypoint " + std::to_string(++k), h);
+                if (!w)
+                    return w.error();
+                r.waypoints.push_back(*w);
+                has.push_back(h);
+            }
+            if (!r.waypoints.empty()) {
+                out.routes.push_back(r);
+                headings.push_back(has);
+            }
+        }
+    }
+    if (CPLGetLastErrorType() >= CE_Failure)
+        return makeError(ErrorCode::ParseError, path + ": " + detail::lastGdalError("the GPX could not be read"));
+    if (out.routes.empty())
+        return makeError(ErrorCode::ParseError, path + ": the file has no route and no waypoint");
+    for (std::size_t i = 0; i < out.routes.size(); ++i)
+        fillHeadings(out.routes[i], headings[i]);
+    return out;
+}
+
+} // namespace pf::io

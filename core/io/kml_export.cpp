@@ -1,0 +1,190 @@
+#include "core/io/kml_export.h"
+
+#include "core/geo/geodesic.h"
+#include "core/io/waypoint_format_util.h"
+
+#include <ogr_spatialref.h>
+#include <ogrsf_frmts.h>
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+
+namespace pf::io {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct FeatureDeleter {
+    void operator()(OGRFeature* f) const { OGRFeature::DestroyFeature(f); }
+};
+using FeaturePtr = std::unique_ptr<OGRFeature, FeatureDeleter>;
+
+// Colours for routes whose aircraft has no valid colour of its own.
+const char* const kPalette[] = {"#e6194b", "#3cb44b", "#4363d8", "#f58231", "#911eb4", "#42d4f4", "#f032e6"};
+
+bool isColour(const std::string& c) {
+    if (c.size() != 7 || c[0] != '#')
+        return false;
+    for (std::size_t i = 1; i < 7; ++i)
+        if (!std::isxdigit(static_cast<unsigned char>(c[i])))
+            return false;
+    return true;
+}
+
+std::unique_ptr<OGRPolygon> polygon(const geo::GeoPolygon& p) {
+    auto poly = std::make_unique<OGRPolygon>();
+    auto ring = [](const geo::GeoRing& r) {
+        auto* lr = new OGRLinearRing();
+        for (const auto& v : r)
+            lr->addPoint(v.lon, v.lat);
+        if (!r.empty())
+            lr->addPoint(r.front().lon, r.front().lat);
+        return lr;
+    };
+    poly->addRingDirectly(ring(p.outer));
+    for (const auto& h : p.holes)
+        poly->addRingDirectly(ring(h));
+    return poly;
+}
+
+class KmlWriter {
+public:
+    KmlWriter(GDALDataset* ds, std::string path) : m_ds(ds), m_path(std::move(path)) {
+        m_srs.SetWellKnownGeogCS("WGS84");
+        m_srs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    }
+
+    Status folder(const std::string& name) {
+        // LIBKML writes a layer as a nested <Document> unless asked for a <Folder>.
+        const char* const opts[] = {"FOLDER=YES", nullptr};
+        m_layer = m_ds->CreateLayer(name.c_str(), &m_srs, wkbUnknown, const_cast<char**>(opts));
+        if (!m_layer)
+            return fail("folder " + name);
+        for (const char* f : {"name", "description"}) {
+            OGRFieldDefn def(f, OFTString);
+            if (m_layer->CreateField(&def) != OGRERR_NONE)
+                return fail(f);
+        }
+        return {};
+    }
+
+    Status add(const OGRGeometry& g, const std::string& name, const std::string& description, const std::string& style) {
+        FeaturePtr f(OGRFeature::CreateFeature(m_layer->GetLayerDefn()));
+        f->SetGeometry(&g);
+        if (!name.empty())
+            f->SetField("name", name.c_str());
+        if (!description.empty())
+            f->SetField("description", description.c_str());
+        f->SetStyleString(style.c_str());
+        if (m_layer->CreateFeature(f.get()) != OGRERR_NONE)
+            return fail("placemark " + name);
+        return {};
+    }
+
+private:
+    Error fail(const std::string& what) const {
+        return makeError(ErrorCode::IoError, "cannot write " + m_path + ": " + detail::lastGdalError(what));
+    }
+    GDALDataset* m_ds;
+    std::string m_path;
+    OGRSpatialReference m_srs;
+    OGRLayer* m_layer = nullptr;
+};
+
+std::string describe(const route::Waypoint& w) {
+    return std::string(detail::kindName(w.kind)) + ", altitude " + detail::formatNumber(w.altitudeM, 2) +
+           " m above take-off, heading " + detail::formatNumber(detail::normaliseHeading(w.headingDeg), 2) + " deg";
+}
+
+} // namespace
+
+geo::GeoRing footprintCorners(geo::LonLat centre, double headingDeg, const sensor::Footprint& fp) {
+    const double along = fp.shortSideM / 2.0, across = fp.longSideM / 2.0;
+    const double dist = std::hypot(along, across);
+    const double a = std::atan2(across, along) * 180.0 / kPi;
+    geo::GeoRing ring;
+    for (double az : {headingDeg + a, headingDeg + 180.0 - a, headingDeg + 180.0 + a, headingDeg - a})
+        ring.push_back(geo::geodesicDirect(centre, az, dist));
+    return ring;
+}
+
+Status writeKml(const ExportContext& ctx, const std::vector<std::size_t>& routeIndices, const std::string& path) {
+    for (auto i : routeIndices)
+        if (i >= ctx.routes.size())
+            return makeError(ErrorCode::InvalidInput, "there is no route " + std::to_string(i + 1) + " to export");
+    GDALAllRegister();
+    const bool libkml = GetGDALDriverManager()->GetDriverByName("LIBKML") != nullptr;
+    auto ds = libkml ? detail::createVectorDataset("LIBKML", path)
+                     : detail::createVectorDataset("KML", path, {"NameField=name", "DescriptionField=description"});
+    if (!ds)
+        return ds.error();
+    KmlWriter w(ds->get(), path);
+
+    // OGR style strings: the KML drivers turn them into <Style> elements with these colours.
+    const std::string areaStyle = "PEN(c:#1e90ff,w:3px);BRUSH(fc:#1e90ff30)";
+    const std::string zoneStyle = "PEN(c:#d00000,w:3px);BRUSH(fc:#d0000060)";
+    if (auto st = w.folder(ctx.mission.name.empty() ? "Mission" : ctx.mission.name); !st)
+        return st;
+    if (!ctx.mission.area.outer.empty())
+        if (auto st = w.add(*polygon(ctx.mission.area), "Area", "area of interest", areaStyle); !st)
+            return st;
+    for (const auto& z : ctx.mission.noFlyZones)
+        if (auto st = w.add(*polygon(z.polygon), z.name.empty() ? "No-fly zone" : z.name, "no-fly zone", zoneStyle); !st)
+            return st;
+    if (ctx.mission.home) {
+        OGRPoint p(ctx.mission.home->lon, ctx.mission.home->lat);
+        if (auto st = w.add(p, "Home", "take-off point", "SYMBOL(c:#000000,s:1.2)"); !st)
+            return st;
+    }
+
+    std::size_t n = 0;
+    for (auto ri : routeIndices) {
+        const auto& r = ctx.routes[ri];
+        const std::string label = ctx.routeLabel(ri);
+        const auto* aircraft = ctx.aircraftFor(ri);
+        const std::string colour =
+            aircraft && isColour(aircraft->colour) ? aircraft->colour : kPalette[n % (sizeof kPalette / sizeof *kPalette)];
+        ++n;
+        if (auto st = w.folder(label); !st)
+            return st;
+        OGRLineString line;
+        for (const auto& wp : r.waypoints)
+            line.addPoint(wp.position.lon, wp.position.lat);
+        if (auto st = w.add(line, label + " path", "waypoint path", "PEN(c:" + colour + ",w:2px)"); !st)
+            return st;
+        if (ri < ctx.trajectories.size() && ctx.trajectories[ri].size() >= 2) {
+            OGRLineString traj;
+            for (const auto& p : ctx.trajectories[ri])
+                traj.addPoint(p.lon, p.lat);
+            if (auto st = w.add(traj, label + " trajectory", "smoothed flight trajectory",
+                                "PEN(c:" + colour + ",w:1px,p:\"4px 4px\")");
+                !st)
+                return st;
+        }
+        const auto fp = ctx.footprintFor(ri);
+        std::size_t photo = 0;
+        for (std::size_t i = 0; i < r.waypoints.size(); ++i) {
+            const auto& wp = r.waypoints[i];
+            if (wp.kind != route::WaypointKind::Photo)
+                continue;
+            ++photo;
+            char name[32];
+            std::snprintf(name, sizeof name, "Photo %zu", photo);
+            OGRPoint p(wp.position.lon, wp.position.lat);
+            if (auto st = w.add(p, name, describe(wp), "SYMBOL(c:" + colour + ",s:0.6)"); !st)
+                return st;
+            if (fp) {
+                geo::GeoPolygon poly{footprintCorners(wp.position, wp.headingDeg, *fp), {}};
+                if (auto st = w.add(*polygon(poly), std::string(name) + " footprint", "ground footprint of the photo",
+                                    "PEN(c:" + colour + ",w:1px);BRUSH(fc:" + colour + "20)");
+                    !st)
+                    return st;
+            }
+        }
+    }
+    return detail::closeDataset(*ds, path);
+}
+
+} // namespace pf::io

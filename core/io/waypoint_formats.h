@@ -1,0 +1,63 @@
+// The waypoint file formats in one place: export by format name, import by file extension.
+//
+// Exporting a planned mission (what `photoflight-cli plan --format ...` and the GUI call):
+//
+//   io::ExportContext ctx = io::makeExportContext(mission, routes); // footprints from each camera
+//   ctx.trajectories = ...;                 // optional: smoothed paths to draw in KML
+//   for (std::size_t i = 0; i < ctx.routes.size(); ++i)
+//       io::exportRoute(ctx, i, io::WaypointFormat::QgcPlan, dir + "/" + io::routeFileName(ctx, i, fmt), opts);
+//   if (io::formatInfo(fmt).combined)
+//       io::exportCombined(ctx, fmt, dir + "/mission.kml", opts);
+//
+// or all at once: io::exportAll(ctx, fmt, dir, "mission", opts) -> the list of files written.
+// Reading a file back for editing: io::importWaypoints(path) (format from the extension).
+#pragma once
+
+#include "core/io/export_context.h"
+#include "core/result.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace pf::io {
+
+enum class WaypointFormat { QgcPlan, QgcWpl, Kml, Gpx, GeoJson, LitchiCsv };
+
+struct WaypointFormatInfo {
+    WaypointFormat format;
+    const char* name;        // as in --format: "plan", "waypoints", "kml", "gpx", "geojson", "csv"
+    const char* extension;   // written extension, with the dot
+    const char* description; // one line for help texts
+    bool canImport;          // every format but KML is read back
+    bool combined;           // one file can hold every aircraft (KML, GPX, GeoJSON)
+};
+
+const std::vector<WaypointFormatInfo>& waypointFormats();
+const WaypointFormatInfo& formatInfo(WaypointFormat format);
+
+// "plan", "waypoints", "kml", "gpx", "geojson" (also "json"), "csv" (also "litchi"), case-insensitive.
+Result<WaypointFormat> formatFromName(const std::string& name);
+// By extension: .plan .waypoints .kml .gpx .geojson .json .csv
+Result<WaypointFormat> formatFromPath(const std::string& path);
+// Parses "plan,kml,gpx"; errors name the unknown entry.
+Result<std::vector<WaypointFormat>> formatListFromString(const std::string& commaSeparated);
+
+// One aircraft's route in one file.
+Status exportRoute(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat format, const std::string& path,
+                   const ExportOptions& options = {});
+// Every route in one file; Unsupported for the formats that hold one vehicle's mission.
+Status exportCombined(const ExportContext& ctx, WaypointFormat format, const std::string& path,
+                      const ExportOptions& options = {});
+
+// "<aircraft>.<ext>" with characters unsafe in file names replaced by '_' ("Route N" if unnamed).
+std::string routeFileName(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat format);
+// Writes "<dir>/<stem>-<aircraft>.<ext>" per route, plus "<dir>/<stem>.<ext>" with every route when the
+// format allows; returns the paths written.
+Result<std::vector<std::string>> exportAll(const ExportContext& ctx, WaypointFormat format, const std::string& dir,
+                                           const std::string& stem, const ExportOptions& options = {});
+
+// Reads .plan, .waypoints, .gpx, .geojson/.json or .csv (chosen by extension).
+Result<ImportedWaypoints> importWaypoints(const std::string& path);
+
+} // namespace pf::io
