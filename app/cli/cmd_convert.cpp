@@ -1,13 +1,116 @@
-// photoflight-cli convert
+// photoflight-cli convert: a waypoint file from one format to another, chosen by the file extensions.
 #include "app/cli/args.h"
 #include "app/cli/commands.h"
 
+#include "core/io/waypoint_formats.h"
+
+#include <iostream>
+
 namespace pf::cli {
 
-const char* const kConvertUsage = "Usage: photoflight-cli convert\n";
+const char* const kConvertUsage =
+    "Usage: photoflight-cli convert IN OUT [options]\n"
+    "\n"
+    "Converts a waypoint file, for example a .waypoints file edited in Mission Planner back to a\n"
+    "QGroundControl .plan. The formats come from the extensions:\n"
+    "  .plan        QGroundControl mission (read and write)\n"
+    "  .waypoints   QGC WPL 110 as written by Mission Planner (read and write)\n"
+    "  .gpx         GPX 1.1 (read and write; several routes in one file)\n"
+    "  .geojson     GeoJSON, also .json (read and write; several routes in one file)\n"
+    "  .csv         Litchi mission hub CSV (read and write)\n"
+    "  .kml         KML for Google Earth (write only)\n"
+    "\n"
+    "Options:\n"
+    "  --aircraft NAME       convert only the route of this aircraft (needed when IN holds several\n"
+    "                        routes and OUT is a .plan, .waypoints or .csv)\n"
+    "  --firmware NAME       ardupilot (default) or px4: the firmwareType of a .plan\n"
+    "  --end ACTION          rtl (default) or land: what the vehicle does after the last waypoint\n"
+    "  --capture COMMAND     image (MAV_CMD_IMAGE_START_CAPTURE, default) or digicam\n"
+    "                        (MAV_CMD_DO_DIGICAM_CONTROL): the photo command after each photo waypoint\n"
+    "  --hover-speed M/S     the .plan hoverSpeed (default: the route's cruise speed)\n"
+    "\n"
+    "Take-off, capture, return and landing items are regenerated from the waypoints; a .plan's geofence\n"
+    "and home are kept when the output can hold them.\n"
+    "Exit codes: 0 written, 2 bad input (the message names the file and the line or JSON key).\n";
 
-int runConvert(const std::vector<std::string>& /*args*/) {
-    return reportError("the convert command is not available yet", kExitInternal);
+int runConvert(const std::vector<std::string>& argv) {
+    auto args = Args::parse(argv, {{"aircraft"}, {"firmware"}, {"end"}, {"capture"}, {"hover-speed"}});
+    if (!args)
+        return reportError(args.error());
+    if (args->positionals().size() != 2)
+        return reportError("convert needs an input and an output file (see photoflight-cli convert --help)");
+    const std::string& in = args->positionals()[0];
+    const std::string& out = args->positionals()[1];
+
+    io::ExportOptions opt;
+    if (auto f = args->value("firmware")) {
+        if (*f == "px4")
+            opt.firmware = io::QgcFirmware::PX4;
+        else if (*f != "ardupilot")
+            return reportError("--firmware: expected ardupilot or px4 but got '" + *f + "'");
+    }
+    if (auto e = args->value("end")) {
+        if (*e == "land")
+            opt.end = io::MissionEnd::Land;
+        else if (*e != "rtl")
+            return reportError("--end: expected rtl or land but got '" + *e + "'");
+    }
+    if (auto c = args->value("capture")) {
+        if (*c == "digicam")
+            opt.capture = io::CaptureCommand::DigicamControl;
+        else if (*c != "image")
+            return reportError("--capture: expected image or digicam but got '" + *c + "'");
+    }
+    auto hover = args->number("hover-speed");
+    if (!hover)
+        return reportError(hover.error());
+    if (*hover) {
+        if (!(**hover > 0))
+            return reportError("--hover-speed: the speed must be positive");
+        opt.hoverSpeedMps = **hover;
+    }
+
+    auto outFormat = io::formatFromPath(out);
+    if (!outFormat)
+        return reportError(outFormat.error());
+    auto imported = io::importWaypoints(in);
+    if (!imported)
+        return reportError(imported.error());
+
+    if (auto name = args->value("aircraft")) {
+        std::vector<route::Route> keep;
+        std::string known;
+        for (const auto& r : imported->routes) {
+            known += (known.empty() ? "" : ", ") + (r.aircraft.empty() ? std::string("(unnamed)") : r.aircraft);
+            if (r.aircraft == *name)
+                keep.push_back(r);
+        }
+        if (keep.empty())
+            return reportError(in + ": no route of aircraft '" + *name + "' (the file has: " + known + ")");
+        imported->routes = keep;
+    }
+    const io::ExportContext ctx = io::contextFromImport(*imported);
+    const auto& info = io::formatInfo(*outFormat);
+    Status written;
+    if (ctx.routes.size() == 1) {
+        written = io::exportRoute(ctx, 0, *outFormat, out, opt);
+    } else if (info.combined) {
+        written = io::exportCombined(ctx, *outFormat, out, opt);
+    } else {
+        std::string names;
+        for (std::size_t i = 0; i < ctx.routes.size(); ++i)
+            names += (i ? ", " : "") + ctx.routeLabel(i);
+        return reportError(in + " holds " + std::to_string(ctx.routes.size()) + " routes (" + names + ") but a " +
+                           info.extension + " file holds one; choose one with --aircraft NAME");
+    }
+    if (!written)
+        return reportError(written.error());
+    std::size_t n = 0;
+    for (const auto& r : ctx.routes)
+        n += r.waypoints.size();
+    std::cout << "wrote " << out << ": " << ctx.routes.size() << (ctx.routes.size() == 1 ? " route, " : " routes, ")
+              << n << " waypoints\n";
+    return kExitOk;
 }
 
 } // namespace pf::cli

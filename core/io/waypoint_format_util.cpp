@@ -187,6 +187,8 @@ Result<CPLJSONObject> parseJson(const std::string& text, const std::string& sour
             why = why.substr(0, p);
         if (why.empty())
             why = "not valid JSON";
+        else if (why == "continue") // json-c's word for input that stops mid-document
+            why = "the file ends before the JSON is complete";
         return makeError(ErrorCode::ParseError, source + ": line " + std::to_string(line) + ", column " +
                                                     std::to_string(col) + ": invalid JSON (" + why + ")");
     }

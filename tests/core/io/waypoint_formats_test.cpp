@@ -1,0 +1,281 @@
+#include "core/io/waypoint_formats.h"
+
+#include "core/io/gpx.h"
+#include "core/io/kml_export.h"
+#include "core/io/litchi_csv.h"
+#include "core/io/qgc_plan.h"
+#include "core/io/qgc_wpl.h"
+#include "core/io/waypoint_geojson.h"
+#include "core/geo/geodesic.h"
+#include "tests/core/io/formats_test_util.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+using namespace pf;
+using namespace pf::io;
+
+namespace {
+
+ExportContext randomContext(std::mt19937& rng, int routes) {
+    std::vector<route::Route> rs;
+    for (int i = 0; i < routes; ++i)
+        rs.push_back(test::randomRoute(rng, "Falcon 8 #" + std::to_string(i + 1)));
+    return makeExportContext(test::demoMission(), rs);
+}
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+} // namespace
+
+// Every importable format gives back the same waypoints, in order, for many random routes.
+TEST(WaypointFormats, RoundTripEveryImportableFormat) {
+    const std::string dir = test::scratchDir("roundtrip");
+    std::mt19937 rng(20261121);
+    for (int trial = 0; trial < 12; ++trial) {
+        ExportContext ctx = randomContext(rng, 1);
+        for (const auto& info : waypointFormats()) {
+            if (!info.canImport)
+                continue;
+            const std::string path = dir + "/route" + std::to_string(trial) + info.extension;
+            ASSERT_TRUE(exportRoute(ctx, 0, info.format, path).ok()) << info.name;
+            auto back = importWaypoints(path);
+            ASSERT_TRUE(back.ok()) << info.name << ": " << back.error().message;
+            ASSERT_EQ(back->routes.size(), 1u) << info.name;
+            const bool kindsExact = info.format == WaypointFormat::Gpx || info.format == WaypointFormat::GeoJson;
+            test::expectSameWaypoints(ctx.routes[0].waypoints, back->routes[0].waypoints, kindsExact,
+                                      std::string(info.name) + " trial " + std::to_string(trial));
+        }
+    }
+}
+
+TEST(WaypointFormats, CombinedFilesKeepEveryAircraftApart) {
+    const std::string dir = test::scratchDir("combined");
+    std::mt19937 rng(7);
+    ExportContext ctx = randomContext(rng, 3);
+    for (auto fmt : {WaypointFormat::Gpx, WaypointFormat::GeoJson}) {
+        const std::string path = dir + "/all" + formatInfo(fmt).extension;
+        ASSERT_TRUE(exportCombined(ctx, fmt, path).ok());
+        auto back = importWaypoints(path);
+        ASSERT_TRUE(back.ok()) << back.error().message;
+        ASSERT_EQ(back->routes.size(), 3u);
+        for (std::size_t i = 0; i < 3; ++i) {
+            EXPECT_EQ(back->routes[i].aircraft, ctx.routes[i].aircraft);
+            test::expectSameWaypoints(ctx.routes[i].waypoints, back->routes[i].waypoints, true, formatInfo(fmt).name);
+        }
+    }
+    auto single = exportCombined(ctx, WaypointFormat::QgcPlan, dir + "/all.plan");
+    ASSERT_FALSE(single.ok());
+    EXPECT_EQ(single.error().message, "a QGroundControl mission (.plan JSON) file holds one aircraft's mission; write "
+                                      "one file per aircraft");
+}
+
+TEST(WaypointFormats, ExportAllWritesOneFilePerAircraftPlusCombined) {
+    const std::string dir = test::scratchDir("all");
+    std::mt19937 rng(8);
+    ExportContext ctx = randomContext(rng, 2);
+    auto kml = exportAll(ctx, WaypointFormat::Kml, dir, "mission");
+    ASSERT_TRUE(kml.ok()) << kml.error().message;
+    ASSERT_EQ(kml->size(), 3u);
+    EXPECT_EQ((*kml)[0], dir + "/mission-Falcon_8__1.kml");
+    EXPECT_EQ((*kml)[2], dir + "/mission.kml");
+    auto plan = exportAll(ctx, WaypointFormat::QgcPlan, dir, "mission");
+    ASSERT_TRUE(plan.ok());
+    EXPECT_EQ(plan->size(), 2u); // no combined .plan
+    for (const auto& p : *kml)
+        EXPECT_TRUE(std::filesystem::exists(p)) << p;
+}
+
+TEST(WaypointFormats, FormatNamesAndExtensions) {
+    EXPECT_EQ(*formatFromName("PLAN"), WaypointFormat::QgcPlan);
+    EXPECT_EQ(*formatFromName("json"), WaypointFormat::GeoJson);
+    EXPECT_EQ(*formatFromName("litchi"), WaypointFormat::LitchiCsv);
+    EXPECT_EQ(*formatFromPath("a/b/Edited.WAYPOINTS"), WaypointFormat::QgcWpl);
+    EXPECT_EQ(*formatFromPath("x.json"), WaypointFormat::GeoJson);
+    auto bad = formatFromName("shp");
+    ASSERT_FALSE(bad.ok());
+    EXPECT_EQ(bad.error().message, "unknown waypoint format \"shp\" (known: plan, waypoints, kml, gpx, geojson, csv)");
+    auto noExt = formatFromPath("dir.v2/route");
+    ASSERT_FALSE(noExt.ok());
+    EXPECT_EQ(noExt.error().message, "dir.v2/route: cannot tell the waypoint format from the extension \"\" (use "
+                                     ".plan, .waypoints, .kml, .gpx, .geojson, .json or .csv)");
+    auto list = formatListFromString("plan, kml,gpx,plan");
+    ASSERT_TRUE(list.ok());
+    EXPECT_EQ(list->size(), 3u);
+    auto badList = formatListFromString("plan,dxf");
+    ASSERT_FALSE(badList.ok());
+    EXPECT_EQ(badList.error().message, "unknown waypoint format \"dxf\" (known: plan, waypoints, kml, gpx, geojson, csv)");
+    auto kml = importWaypoints("x.kml");
+    ASSERT_FALSE(kml.ok());
+    EXPECT_EQ(kml.error().code, ErrorCode::Unsupported);
+}
+
+TEST(WaypointFormats, ExportRejectsMissingOrEmptyRoutes) {
+    ExportContext ctx = makeExportContext(test::demoMission(), {route::Route{"Empty", {}, 5.0, {}}});
+    auto e = qgcPlanJson(ctx, 0);
+    ASSERT_FALSE(e.ok());
+    EXPECT_EQ(e.error().message, "Empty: the route has no waypoints to export");
+    auto missing = qgcWplText(ctx, 3);
+    ASSERT_FALSE(missing.ok());
+    EXPECT_EQ(missing.error().message, "there is no route 4 to export");
+}
+
+TEST(QgcWpl, WritesTheMissionPlannerLayout) {
+    std::mt19937 rng(3);
+    ExportContext ctx = randomContext(rng, 1);
+    auto text = qgcWplText(ctx, 0);
+    ASSERT_TRUE(text.ok());
+    std::istringstream in(*text);
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line, "QGC WPL 110");
+    std::getline(in, line);
+    EXPECT_EQ(line.rfind("0\t1\t0\t16\t", 0), 0u) << line; // home: index 0, current 1, frame 0
+    int n = 1, photos = 0, captures = 0;
+    while (std::getline(in, line)) {
+        int fields = 1;
+        for (char c : line)
+            fields += c == '\t';
+        EXPECT_EQ(fields, 12) << line;
+        EXPECT_EQ(line.rfind(std::to_string(n++) + "\t0\t3\t", 0), 0u) << line;
+        captures += line.find("\t2000\t") != std::string::npos;
+    }
+    for (const auto& w : ctx.routes[0].waypoints)
+        photos += w.kind == route::WaypointKind::Photo;
+    EXPECT_EQ(captures, photos);
+}
+
+TEST(QgcWpl, ReadsWhatMissionPlannerWrites) {
+    // CRLF line endings, home with current = 1 and its AMSL altitude, no final newline, a digicam trigger,
+    // one waypoint in frame 0 (AMSL: 157.5 - 112.5 = 45 m above home).
+    auto r = readQgcWpl(std::string(PF_TEST_DATA_DIR) + "/formats/mission_planner.waypoints");
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    ASSERT_TRUE(r->home.has_value());
+    EXPECT_DOUBLE_EQ(r->home->lat, 49.010741);
+    EXPECT_DOUBLE_EQ(r->home->lon, 8.3270554);
+    ASSERT_EQ(r->routes.size(), 1u);
+    const auto& w = r->routes[0].waypoints;
+    ASSERT_EQ(w.size(), 3u);
+    EXPECT_DOUBLE_EQ(w[0].position.lon, 8.328);
+    EXPECT_DOUBLE_EQ(w[0].altitudeM, 40.0);
+    EXPECT_EQ(w[0].kind, route::WaypointKind::Photo); // DO_DIGICAM_CONTROL follows it
+    EXPECT_EQ(w[1].kind, route::WaypointKind::Turn);  // between two photos
+    EXPECT_DOUBLE_EQ(w[1].altitudeM, 45.5);
+    EXPECT_EQ(w[2].kind, route::WaypointKind::Photo); // IMAGE_START_CAPTURE follows it
+    EXPECT_NEAR(w[2].altitudeM, 45.0, 1e-9);
+    EXPECT_DOUBLE_EQ(w[2].headingDeg, 270.0);
+}
+
+TEST(QgcPlan, ReadsAPlanWrittenByQGroundControl) {
+    auto r = readQgcPlan(std::string(PF_TEST_DATA_DIR) + "/formats/qgc_written.plan");
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    ASSERT_EQ(r->routes.size(), 1u);
+    const auto& w = r->routes[0].waypoints;
+    ASSERT_EQ(w.size(), 2u);
+    EXPECT_EQ(w[0].kind, route::WaypointKind::Photo);
+    EXPECT_EQ(w[1].kind, route::WaypointKind::Transit); // after the last photo
+    EXPECT_DOUBLE_EQ(r->routes[0].cruiseSpeedMps, 8.0);
+    EXPECT_DOUBLE_EQ(r->home->lon, 8.3270554);
+}
+
+TEST(LitchiCsv, HeaderHasTheHubsColumnsAndRowsMatchIt) {
+    const std::string h = litchiCsvHeader();
+    EXPECT_EQ(h.rfind("latitude,longitude,altitude(m),heading(deg),curvesize(m),rotationdir,gimbalmode,"
+                      "gimbalpitchangle,actiontype1,actionparam1,actiontype2,",
+                      0),
+              0u);
+    EXPECT_NE(h.find(",actiontype15,actionparam15,altitudemode,speed(m/s),poi_latitude,poi_longitude,"
+                     "poi_altitude(m),poi_altitudemode,photo_timeinterval,photo_distinterval"),
+              std::string::npos);
+    std::mt19937 rng(9);
+    ExportContext ctx = randomContext(rng, 1);
+    auto text = litchiCsvText(ctx, 0);
+    ASSERT_TRUE(text.ok());
+    std::istringstream in(*text);
+    std::string line;
+    std::getline(in, line);
+    std::size_t i = 0;
+    while (std::getline(in, line)) {
+        const auto fields = std::count(line.begin(), line.end(), ',') + 1;
+        EXPECT_EQ(fields, 46);
+        const bool photo = ctx.routes[0].waypoints[i++].kind == route::WaypointKind::Photo;
+        EXPECT_NE(line.find(photo ? ",2,-90,1,0,-1,0," : ",2,-90,-1,0,-1,0,"), std::string::npos) << line;
+    }
+    EXPECT_EQ(i, ctx.routes[0].waypoints.size());
+    auto hub = readLitchiCsv(std::string(PF_TEST_DATA_DIR) + "/formats/litchi_hub.csv");
+    ASSERT_TRUE(hub.ok()) << hub.error().message;
+    ASSERT_EQ(hub->routes[0].waypoints.size(), 3u);
+    EXPECT_DOUBLE_EQ(hub->routes[0].cruiseSpeedMps, 8.0);
+    EXPECT_EQ(hub->routes[0].waypoints[2].kind, route::WaypointKind::Transit);
+}
+
+TEST(Gpx, PlainWaypointsWithoutHeadingsHeadForTheNextPoint) {
+    auto r = readGpx(std::string(PF_TEST_DATA_DIR) + "/formats/plain_waypoints.gpx");
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    ASSERT_EQ(r->routes.size(), 1u);
+    const auto& w = r->routes[0].waypoints;
+    ASSERT_EQ(w.size(), 2u);
+    EXPECT_NEAR(w[0].headingDeg, 90.0, 0.01); // due east
+    EXPECT_NEAR(w[1].headingDeg, 90.0, 0.01);
+    EXPECT_DOUBLE_EQ(w[1].altitudeM, 41.0);
+}
+
+TEST(WaypointGeoJson, HandDrawnPointsTakeTheirAltitudeFromZ) {
+    auto r = readWaypointGeoJson(std::string(PF_TEST_DATA_DIR) + "/formats/hand_drawn.geojson");
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    ASSERT_EQ(r->routes.size(), 1u);
+    const auto& w = r->routes[0].waypoints;
+    ASSERT_EQ(w.size(), 2u);
+    EXPECT_DOUBLE_EQ(w[1].altitudeM, 42.0);
+    EXPECT_EQ(w[0].kind, route::WaypointKind::Photo);
+}
+
+TEST(WaypointGeoJson, KeepsNoFlyZonesAndHome) {
+    const std::string dir = test::scratchDir("geojson_zones");
+    std::mt19937 rng(10);
+    ExportContext ctx = randomContext(rng, 1);
+    ASSERT_TRUE(writeWaypointGeoJson(ctx, {0}, dir + "/r.geojson").ok());
+    auto r = readWaypointGeoJson(dir + "/r.geojson");
+    ASSERT_TRUE(r.ok());
+    ASSERT_EQ(r->noFlyZones.size(), 2u);
+    EXPECT_EQ(r->noFlyZones[0].name, "Warehouse");
+    EXPECT_EQ(r->noFlyZones[1].polygon.outer.size(), 16u);
+    ASSERT_TRUE(r->home.has_value());
+    EXPECT_NEAR(r->home->lon, 8.3270554, 1e-12);
+}
+
+TEST(Kml, FootprintCornersAreTheFootprintTurnedToTheHeading) {
+    const geo::LonLat c{8.33, 49.012};
+    const sensor::Footprint fp{60.0, 40.0}; // long side across the track
+    for (double hdg : {0.0, 37.0, 90.0, 271.5}) {
+        const auto ring = footprintCorners(c, hdg, fp);
+        ASSERT_EQ(ring.size(), 4u);
+        // Sides: along the track the short side, across it the long side.
+        EXPECT_NEAR(geo::geodesicDistance(ring[0], ring[1]), 40.0, 0.01);
+        EXPECT_NEAR(geo::geodesicDistance(ring[1], ring[2]), 60.0, 0.01);
+        EXPECT_NEAR(geo::geodesicDistance(ring[0], ring[3]), 60.0, 0.01);
+        // The side from corner 1 to 0 points along the heading.
+        EXPECT_LE(test::angleDiffDeg(geo::initialBearingDeg(ring[1], ring[0]), hdg), 0.01);
+    }
+}
+
+TEST(Kml, HasAFolderPerAircraftAndColouredStyles) {
+    const std::string dir = test::scratchDir("kml");
+    std::mt19937 rng(12);
+    ExportContext ctx = randomContext(rng, 2);
+    ctx.mission.aircraft.push_back({});
+    ctx.mission.aircraft.back().name = "Falcon 8 #2";
+    ctx.mission.aircraft.back().colour = "#12ab34";
+    ASSERT_TRUE(exportCombined(ctx, WaypointFormat::Kml, dir + "/m.kml").ok());
+    const std::string kml = slurp(dir + "/m.kml");
+    EXPECT_NE(kml.find("<Folder"), std::string::npos);
+    EXPECT_NE(kml.find("Falcon 8 #1"), std::string::npos);
+    EXPECT_NE(kml.find("Falcon 8 #2"), std::string::npos);
+    EXPECT_NE(kml.find("Warehouse"), std::string::npos);
+    EXPECT_NE(kml.find("<Style"), std::string::npos);
+    EXPECT_NE(kml.find("ff34ab12"), std::string::npos); // #12ab34 in KML's aabbggrr order
+}
