@@ -1,14 +1,107 @@
-// MainWindow: the application's main window: map area, menus, panels.
+// MainWindow: the application's main window: map, tools, docks, menus, documents and base maps.
 #pragma once
+
+#include "core/io/catalog.h"
 
 #include <QMainWindow>
 
+#include <map>
+#include <memory>
+
+class QActionGroup;
+class QGraphicsScene;
+class QLabel;
+class QMenu;
+
 namespace pf::ui {
+
+class AbstractTool;
+class AircraftPanel;
+class Autosave;
+class GroundStation;
+class MapView;
+class MissionDocument;
+class MissionLayer;
+class MissionPanel;
+class TileLayer;
+class TileSource;
+
+enum class ToolId { Pan, Select, DrawArea, DrawNoFly, DrawCircle, Home };
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
-    explicit MainWindow(QWidget* parent = nullptr);
+    // `interactive` false: no dialog is ever shown (tests, --screenshot); errors go to the status bar.
+    explicit MainWindow(QWidget* parent = nullptr, bool interactive = true);
+    ~MainWindow() override;
+
+    MissionDocument* document() const { return m_doc; }
+    MapView* mapView() const { return m_view; }
+    TileLayer* tileLayer() const { return m_tiles; }
+    MissionLayer* missionLayer() const { return m_layer; }
+    AircraftPanel* aircraftPanel() const { return m_aircraft; }
+    GroundStation* groundStation() const { return m_ground; }
+    Autosave* autosave() const { return m_autosave.get(); }
+    AbstractTool* tool(ToolId id) const;
+    void setTool(ToolId id);
+
+    // What to show at start: a recovered autosave (asks), the given mission, or on first start the demo.
+    void startup(const QString& missionPath);
+    bool openMission(const QString& path, QString* error = nullptr);
+    bool openDemoMission(QString* error = nullptr);
+    bool saveMission(const QString& path, QString* error = nullptr);
+    void newMission();
+
+    enum class ImportRole { Ask, Area, NoFlyZones };
+    // Imports polygons: with no area yet, the largest becomes the area and the others no-fly zones;
+    // otherwise the user is asked (Ask) or `role` decides. One undo step. Returns polygons imported.
+    int importAreas(const QString& path, ImportRole role = ImportRole::Ask, QString* error = nullptr);
+
+    // "demo", "osm" or a raster file path.
+    bool setBaseMap(const QString& id, QString* error = nullptr);
+    QString baseMapId() const { return m_baseMapId; }
+
+    void zoomToMission();
+    // Repaints until every visible tile is drawn from its own zoom level (or the timeout passes).
+    bool waitForMap(int timeoutMs);
+    QString statusText() const;
+
+protected:
+    void closeEvent(QCloseEvent* e) override;
+
+private:
+    void buildActions();
+    void buildDocks();
+    void updateTitle();
+    void addRecentFile(const QString& path);
+    void rebuildRecentMenu();
+    bool maybeSave();
+    void showError(const QString& title, const QString& message);
+    void openDropped(const QStringList& paths);
+    void onViewChanged();
+
+    bool m_interactive;
+    MissionDocument* m_doc;
+    QGraphicsScene* m_scene;
+    MapView* m_view;
+    TileLayer* m_tiles;
+    MissionLayer* m_layer;
+    GroundStation* m_ground;
+    std::unique_ptr<Autosave> m_autosave;
+    io::Catalog m_catalog;
+    AircraftPanel* m_aircraft = nullptr;
+    MissionPanel* m_missionPanel = nullptr;
+    std::map<ToolId, AbstractTool*> m_tools;
+    std::map<ToolId, QAction*> m_toolActions;
+    QActionGroup* m_baseMapGroup = nullptr;
+    std::map<QString, QAction*> m_baseMapActions;
+    QString m_baseMapId;
+    QMenu* m_recentMenu = nullptr;
+    QMenu* m_viewMenu = nullptr;
+    QLabel* m_coords;
+    QLabel* m_scale;
+    QLabel* m_mapLabel;
+    QLabel* m_problems;
 };
 
 } // namespace pf::ui

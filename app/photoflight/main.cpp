@@ -1,14 +1,60 @@
-// photoflight: the desktop application.
+// photoflight: the desktop application. Wiring only: command line, main window, screenshot mode.
 #include "ui/main_window.h"
 
 #include <QApplication>
+#include <QCommandLineParser>
+#include <QDir>
+#include <QFileInfo>
+#include <QTimer>
+
+#include <cstdio>
 
 int main(int argc, char** argv) {
     QApplication app(argc, argv);
     QApplication::setApplicationName(QStringLiteral("Photoflight"));
     QApplication::setOrganizationName(QStringLiteral("Photoflight"));
     QApplication::setApplicationVersion(QStringLiteral(PF_VERSION));
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral("Photo-survey flight planning for one or several UAVs."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption screenshot(QStringLiteral("screenshot"),
+                                        QStringLiteral("Render the main window at 1600x1000 to FILE.png and exit."),
+                                        QStringLiteral("FILE.png"));
+    const QCommandLineOption map(QStringLiteral("map"),
+                                 QStringLiteral("Base map: demo, osm, none or a raster file (GeoTIFF, MBTiles, VRT)."),
+                                 QStringLiteral("MAP"));
+    parser.addOption(screenshot);
+    parser.addOption(map);
+    parser.addPositionalArgument(QStringLiteral("mission"), QStringLiteral("Mission file to open."), QStringLiteral("[MISSION]"));
+    parser.process(app);
+    const QString missionPath = parser.positionalArguments().value(0);
+
+    if (parser.isSet(screenshot)) {
+        pf::ui::MainWindow w(nullptr, /*interactive=*/false);
+        w.resize(1600, 1000);
+        w.show();
+        if (parser.isSet(map)) w.setBaseMap(parser.value(map));
+        QString error;
+        const bool loaded = missionPath.isEmpty() ? w.openDemoMission(&error) : w.openMission(missionPath, &error);
+        if (!loaded) std::fprintf(stderr, "photoflight: %s\n", qPrintable(error));
+        QApplication::processEvents();
+        w.zoomToMission();
+        if (!w.waitForMap(20000)) std::fprintf(stderr, "photoflight: some map tiles did not load in time\n");
+        const QString out = parser.value(screenshot);
+        if (!w.grab().save(out)) {
+            std::fprintf(stderr, "photoflight: cannot write %s\n", qPrintable(out));
+            return 1;
+        }
+        std::printf("%s\n", qPrintable(QFileInfo(out).absoluteFilePath()));
+        return loaded ? 0 : 2;
+    }
+
     pf::ui::MainWindow w;
+    if (parser.isSet(map)) w.setBaseMap(parser.value(map));
     w.show();
+    // After show(): recovery and error dialogs need a visible parent.
+    QTimer::singleShot(0, &w, [&w, missionPath] { w.startup(missionPath); });
     return QApplication::exec();
 }

@@ -1,0 +1,406 @@
+#include "ui/map/mission_layer.h"
+
+#include "core/geo/polygon_ops.h"
+#include "core/geo/local_frame.h"
+#include "ui/geo_adapter.h"
+#include "ui/shape_validation.h"
+
+#include <QGraphicsScene>
+#include <QPainter>
+#include <QStyleOptionGraphicsItem>
+
+#include <cmath>
+
+namespace pf::ui {
+
+namespace {
+
+constexpr double kHandlePx = 8.0;
+
+struct Palette {
+    QColor stroke;
+    QColor fill;
+};
+
+Palette paletteFor(ShapeStyle style, bool problem) {
+    if (problem) return {QColor(245, 130, 0), QColor(255, 170, 0, 70)};
+    switch (style) {
+    case ShapeStyle::Area: return {QColor(0, 110, 230), QColor(0, 110, 230, 40)};
+    case ShapeStyle::NoFly: return {QColor(210, 30, 35), QColor(210, 30, 35, 45)};
+    case ShapeStyle::Preview: return {QColor(20, 20, 20), QColor(255, 255, 255, 50)};
+    }
+    return {};
+}
+
+double distanceToSegment(const QPointF& p, const QPointF& a, const QPointF& b, QPointF* nearest) {
+    const QPointF ab = b - a;
+    const double len2 = QPointF::dotProduct(ab, ab);
+    const double t = len2 > 0 ? std::clamp(QPointF::dotProduct(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+    const QPointF q = a + t * ab;
+    if (nearest) *nearest = q;
+    return std::hypot(p.x() - q.x(), p.y() - q.y());
+}
+
+QString formatArea(double m2) {
+    if (m2 >= 10000) return QStringLiteral("%1 ha").arg(m2 / 10000.0, 0, 'f', 2);
+    return QStringLiteral("%1 m²").arg(m2, 0, 'f', 0);
+}
+
+double groundArea(const geo::GeoPolygon& poly) {
+    auto frame = geo::LocalFrame::forArea(poly);
+    if (!frame) return 0.0;
+    return geo::area(frame->toLocal(poly));
+}
+
+} // namespace
+
+// ---------------------------------------------------------------- ShapeItem
+
+ShapeItem::ShapeItem(ShapeStyle style, QGraphicsItem* parent) : QGraphicsItem(parent), m_style(style) {
+    setZValue(style == ShapeStyle::Area ? 10 : style == ShapeStyle::NoFly ? 20 : 50);
+}
+
+void ShapeItem::setRings(const QVector<QPolygonF>& rings) {
+    prepareGeometryChange();
+    m_rings = rings;
+}
+
+void ShapeItem::setProblem(const QString& problem) {
+    m_problem = problem;
+    update();
+}
+
+void ShapeItem::setLabel(const QString& label) {
+    m_label = label;
+    update();
+}
+
+void ShapeItem::setHighlighted(bool on, std::optional<VertexRef> vertex) {
+    m_highlighted = on;
+    m_vertex = vertex;
+    update();
+}
+
+void ShapeItem::setClosed(bool closed) {
+    m_closed = closed;
+    update();
+}
+
+void ShapeItem::setHandleMargin(double sceneMetres) {
+    prepareGeometryChange();
+    m_margin = sceneMetres;
+}
+
+QPainterPath ShapeItem::path() const {
+    QPainterPath p;
+    p.setFillRule(Qt::OddEvenFill);
+    for (const auto& ring : m_rings) {
+        if (ring.isEmpty()) continue;
+        p.moveTo(ring.first());
+        for (int i = 1; i < ring.size(); ++i) p.lineTo(ring[i]);
+        if (m_closed) p.closeSubpath();
+    }
+    return p;
+}
+
+QRectF ShapeItem::boundingRect() const {
+    QRectF r;
+    for (const auto& ring : m_rings) r = r.united(ring.boundingRect());
+    // Labels and handles are drawn in screen pixels around the shape.
+    return r.adjusted(-m_margin, -m_margin, m_margin, m_margin);
+}
+
+QPainterPath ShapeItem::shape() const { return path(); }
+
+void ShapeItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) {
+    if (m_rings.isEmpty()) return;
+    const Palette pal = paletteFor(m_style, !m_problem.isEmpty());
+    const QTransform toDevice = painter->worldTransform();
+    // Everything is drawn in device pixels so line widths, hatching and handles keep their
+    // on-screen size at every zoom.
+    QPainterPath devicePath = toDevice.map(path());
+    devicePath.setFillRule(Qt::OddEvenFill);
+    painter->save();
+    painter->resetTransform();
+    painter->setRenderHint(QPainter::Antialiasing);
+    if (m_closed) {
+        painter->setPen(Qt::NoPen);
+        painter->setBrush(pal.fill);
+        painter->drawPath(devicePath);
+        if (m_style == ShapeStyle::NoFly || !m_problem.isEmpty()) {
+            QBrush hatch(QColor(pal.stroke.red(), pal.stroke.green(), pal.stroke.blue(), 150),
+                         m_problem.isEmpty() ? Qt::BDiagPattern : Qt::DiagCrossPattern);
+            painter->setBrush(hatch);
+            painter->drawPath(devicePath);
+        }
+    }
+    // A white casing under the coloured stroke keeps outlines readable on any base map.
+    const double width = m_highlighted ? 3.5 : 2.5;
+    painter->setBrush(Qt::NoBrush);
+    painter->setPen(QPen(QColor(255, 255, 255, 200), width + 2.5, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+    painter->drawPath(devicePath);
+    QPen stroke(pal.stroke, width, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin);
+    if (!m_problem.isEmpty() || m_style == ShapeStyle::Preview) stroke.setStyle(Qt::DashLine);
+    painter->setPen(stroke);
+    painter->drawPath(devicePath);
+
+    if (m_highlighted || m_style == ShapeStyle::Preview) {
+        for (int r = 0; r < m_rings.size(); ++r) {
+            for (int i = 0; i < m_rings[r].size(); ++i) {
+                const QPointF c = toDevice.map(m_rings[r][i]);
+                const bool sel = m_vertex && m_vertex->ring == r && m_vertex->index == i;
+                painter->setPen(QPen(pal.stroke.darker(120), 1.5));
+                painter->setBrush(sel ? pal.stroke : QColor(Qt::white));
+                const double h = sel ? kHandlePx + 3 : kHandlePx;
+                painter->drawRect(QRectF(c.x() - h / 2, c.y() - h / 2, h, h));
+            }
+        }
+    }
+    if (!m_label.isEmpty()) {
+        const QPointF c = devicePath.boundingRect().center();
+        QFont f = painter->font();
+        f.setPointSizeF(8.5);
+        f.setBold(true);
+        painter->setFont(f);
+        const QRectF box = QRectF(painter->fontMetrics().boundingRect(m_label)).adjusted(-5, -2, 5, 2);
+        const QRectF r = box.translated(c - box.center());
+        if (r.width() < devicePath.boundingRect().width() * 1.5) {
+            painter->setPen(Qt::NoPen);
+            painter->setBrush(QColor(255, 255, 255, 210));
+            painter->drawRoundedRect(r, 3, 3);
+            painter->setPen(pal.stroke.darker(130));
+            painter->drawText(r, Qt::AlignCenter, m_label);
+        }
+    }
+    painter->restore();
+}
+
+// ---------------------------------------------------------------- HomeItem
+
+HomeItem::HomeItem(QGraphicsItem* parent) : QGraphicsItem(parent) {
+    setFlag(ItemIgnoresTransformations);
+    setZValue(40);
+}
+
+QRectF HomeItem::boundingRect() const { return {-16, -16, 32, 32}; }
+
+void HomeItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
+    // A helipad: white disc, dark ring, "H".
+    p->setRenderHint(QPainter::Antialiasing);
+    p->setPen(QPen(QColor(0, 0, 0, 90), 1));
+    p->setBrush(QColor(0, 0, 0, 60));
+    p->drawEllipse(QPointF(1.5, 1.5), 13, 13);
+    p->setPen(QPen(QColor(20, 120, 60), 3));
+    p->setBrush(Qt::white);
+    p->drawEllipse(QPointF(0, 0), 12, 12);
+    QFont f = p->font();
+    f.setPixelSize(14);
+    f.setBold(true);
+    p->setFont(f);
+    p->setPen(QColor(20, 120, 60));
+    p->drawText(QRectF(-12, -12, 24, 24), Qt::AlignCenter, QStringLiteral("H"));
+}
+
+// ---------------------------------------------------------------- MissionLayer
+
+MissionLayer::MissionLayer(MissionDocument* doc, QGraphicsScene* scene, QObject* parent)
+    : QObject(parent), m_doc(doc), m_scene(scene) {
+    connect(doc, &MissionDocument::changed, this, &MissionLayer::rebuild);
+    connect(doc, &MissionDocument::missionReset, this, [this] { select(std::nullopt); });
+    rebuild();
+}
+
+MissionLayer::~MissionLayer() {
+    // The scene may already be gone at shutdown (it deletes its items itself).
+    if (!m_scene) return;
+}
+
+QVector<QPolygonF> MissionLayer::sceneRings(const ShapeRef& ref) const {
+    QVector<QPolygonF> rings;
+    if (!m_doc->hasShape(ref)) return rings;
+    const geo::GeoPolygon poly = m_doc->shape(ref);
+    rings << toScene(poly.outer);
+    for (const auto& h : poly.holes) rings << toScene(h);
+    return rings;
+}
+
+ShapeItem* MissionLayer::itemFor(const ShapeRef& ref) const {
+    if (ref.kind == ShapeRef::Kind::Area) return m_area;
+    return ref.index >= 0 && std::size_t(ref.index) < m_noFly.size() ? m_noFly[std::size_t(ref.index)] : nullptr;
+}
+
+void MissionLayer::rebuild() {
+    const auto& m = m_doc->mission();
+    QStringList problems;
+    const double margin = 60 * m_mpp;
+    if (!m_area) {
+        m_area = new ShapeItem(ShapeStyle::Area);
+        m_scene->addItem(m_area);
+    }
+    m_area->setRings(sceneRings(ShapeRef::area()));
+    m_area->setHandleMargin(margin);
+    if (!m.area.outer.empty()) {
+        const QString problem = shapeProblem(m.area);
+        m_area->setProblem(problem);
+        if (!problem.isEmpty()) problems << tr("Area: %1").arg(problem);
+        m_area->setLabel(problem.isEmpty() ? tr("Area · %1").arg(formatArea(groundArea(m.area))) : tr("Area (invalid)"));
+    } else {
+        m_area->setProblem({});
+        m_area->setLabel({});
+    }
+    while (m_noFly.size() > m.noFlyZones.size()) {
+        delete m_noFly.back();
+        m_noFly.pop_back();
+    }
+    while (m_noFly.size() < m.noFlyZones.size()) {
+        m_noFly.push_back(new ShapeItem(ShapeStyle::NoFly));
+        m_scene->addItem(m_noFly.back());
+    }
+    for (std::size_t i = 0; i < m.noFlyZones.size(); ++i) {
+        ShapeItem* item = m_noFly[i];
+        item->setRings(sceneRings(ShapeRef::noFly(int(i))));
+        item->setHandleMargin(margin);
+        const QString name = QString::fromStdString(m.noFlyZones[i].name);
+        const QString problem = shapeProblem(m.noFlyZones[i].polygon);
+        item->setProblem(problem);
+        item->setLabel(name);
+        if (!problem.isEmpty()) problems << tr("No-fly zone \"%1\": %2").arg(name, problem);
+    }
+    if (m.home) {
+        if (!m_home) {
+            m_home = new HomeItem();
+            m_scene->addItem(m_home);
+        }
+        m_home->setPos(toScene(*m.home));
+        m_home->setToolTip(tr("Home / take-off point"));
+    } else if (m_home) {
+        delete m_home;
+        m_home = nullptr;
+    }
+    // Keep the selection if it still points at something.
+    if (m_selected && !m_doc->hasShape(*m_selected)) {
+        m_selected.reset();
+        m_selectedVertex.reset();
+    }
+    if (m_selected && m_selectedVertex) {
+        const auto rings = sceneRings(*m_selected);
+        if (m_selectedVertex->ring >= rings.size() || m_selectedVertex->index >= rings[m_selectedVertex->ring].size())
+            m_selectedVertex.reset();
+    }
+    applySelection();
+    if (problems != m_problems) {
+        m_problems = problems;
+        emit problemsChanged(m_problems);
+    }
+}
+
+void MissionLayer::applySelection() {
+    if (m_area) m_area->setHighlighted(m_selected && *m_selected == ShapeRef::area(), m_selectedVertex);
+    for (std::size_t i = 0; i < m_noFly.size(); ++i)
+        m_noFly[i]->setHighlighted(m_selected && *m_selected == ShapeRef::noFly(int(i)), m_selectedVertex);
+}
+
+void MissionLayer::select(std::optional<ShapeRef> shape, std::optional<VertexRef> vertex) {
+    if (shape && !m_doc->hasShape(*shape)) shape.reset();
+    m_selected = shape;
+    m_selectedVertex = shape ? vertex : std::nullopt;
+    applySelection();
+    emit selectionChanged();
+}
+
+void MissionLayer::setShapeHidden(const ShapeRef& ref, bool hidden) {
+    if (ShapeItem* item = itemFor(ref)) item->setVisible(!hidden);
+}
+
+void MissionLayer::setHomeHidden(bool hidden) {
+    if (m_home) m_home->setVisible(!hidden);
+}
+
+void MissionLayer::setMetresPerPixel(double mpp) {
+    if (std::abs(mpp - m_mpp) < 1e-12) return;
+    m_mpp = mpp;
+    if (m_area) m_area->setHandleMargin(60 * mpp);
+    for (auto* item : m_noFly) item->setHandleMargin(60 * mpp);
+}
+
+QRectF MissionLayer::missionBounds() const {
+    QRectF r;
+    const auto& m = m_doc->mission();
+    auto add = [&](const QPointF& p) { r = r.isNull() ? QRectF(p, QSizeF(1e-3, 1e-3)) : r.united(QRectF(p, QSizeF(1e-3, 1e-3))); };
+    for (const auto& p : m.area.outer) add(toScene(p));
+    for (const auto& z : m.noFlyZones)
+        for (const auto& p : z.polygon.outer) add(toScene(p));
+    if (m.home) add(toScene(*m.home));
+    return r;
+}
+
+namespace {
+std::vector<ShapeRef> hitOrder(const std::optional<ShapeRef>& selected, std::size_t zones, bool hasArea) {
+    std::vector<ShapeRef> order;
+    if (selected) order.push_back(*selected);
+    for (std::size_t i = zones; i-- > 0;)
+        if (!selected || *selected != ShapeRef::noFly(int(i))) order.push_back(ShapeRef::noFly(int(i)));
+    if (hasArea && (!selected || *selected != ShapeRef::area())) order.push_back(ShapeRef::area());
+    return order;
+}
+} // namespace
+
+std::optional<MissionLayer::VertexHit> MissionLayer::hitVertex(const QPointF& p, double tol) const {
+    for (const auto& ref : hitOrder(m_selected, m_doc->mission().noFlyZones.size(), m_doc->hasShape(ShapeRef::area()))) {
+        const auto rings = sceneRings(ref);
+        std::optional<VertexHit> best;
+        double bestD = tol;
+        for (int r = 0; r < rings.size(); ++r)
+            for (int i = 0; i < rings[r].size(); ++i) {
+                const double d = std::hypot(rings[r][i].x() - p.x(), rings[r][i].y() - p.y());
+                if (d <= bestD) {
+                    bestD = d;
+                    best = VertexHit{ref, VertexRef{r, i}};
+                }
+            }
+        if (best) return best;
+    }
+    return std::nullopt;
+}
+
+std::optional<MissionLayer::EdgeHit> MissionLayer::hitEdge(const QPointF& p, double tol) const {
+    for (const auto& ref : hitOrder(m_selected, m_doc->mission().noFlyZones.size(), m_doc->hasShape(ShapeRef::area()))) {
+        const auto rings = sceneRings(ref);
+        std::optional<EdgeHit> best;
+        double bestD = tol;
+        for (int r = 0; r < rings.size(); ++r) {
+            const QPolygonF& ring = rings[r];
+            for (int i = 0; i < ring.size(); ++i) {
+                QPointF q;
+                const double d = distanceToSegment(p, ring[i], ring[(i + 1) % ring.size()], &q);
+                if (d <= bestD) {
+                    bestD = d;
+                    best = EdgeHit{ref, VertexRef{r, i + 1}, q};
+                }
+            }
+        }
+        if (best) return best;
+    }
+    return std::nullopt;
+}
+
+std::optional<ShapeRef> MissionLayer::hitShape(const QPointF& p) const {
+    for (const auto& ref : hitOrder(std::nullopt, m_doc->mission().noFlyZones.size(), m_doc->hasShape(ShapeRef::area()))) {
+        const auto rings = sceneRings(ref);
+        if (rings.isEmpty()) continue;
+        bool inside = rings[0].containsPoint(p, Qt::OddEvenFill);
+        for (int r = 1; r < rings.size() && inside; ++r)
+            if (rings[r].containsPoint(p, Qt::OddEvenFill)) inside = false;
+        if (inside) return ref;
+    }
+    return std::nullopt;
+}
+
+bool MissionLayer::hitHome(const QPointF& p, double tol) const {
+    const auto& home = m_doc->mission().home;
+    if (!home) return false;
+    const QPointF h = toScene(*home);
+    return std::hypot(h.x() - p.x(), h.y() - p.y()) <= tol;
+}
+
+} // namespace pf::ui

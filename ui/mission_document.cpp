@@ -1,0 +1,152 @@
+#include "ui/mission_document.h"
+
+#include "core/io/mission_file.h"
+
+#include <QFile>
+#include <QFileInfo>
+#include <QSaveFile>
+
+namespace pf::ui {
+
+MissionDocument::MissionDocument(QObject* parent) : QObject(parent) {
+    connect(&m_undo, &QUndoStack::cleanChanged, this, [this](bool clean) { emit dirtyChanged(!clean); });
+}
+
+QString MissionDocument::displayName() const {
+    if (!m_mission.name.empty()) return QString::fromStdString(m_mission.name);
+    if (!m_filePath.isEmpty()) return QFileInfo(m_filePath).completeBaseName();
+    return tr("Untitled");
+}
+
+void MissionDocument::reset(mission::Mission m, const QString& filePath, bool markDirty) {
+    m_mission = std::move(m);
+    m_undo.clear();
+    if (markDirty) {
+        // A recovered mission differs from its file: make the stack unclean so the title shows it.
+        m_undo.resetClean();
+    } else {
+        m_undo.setClean();
+    }
+    if (m_filePath != filePath) {
+        m_filePath = filePath;
+        emit filePathChanged(m_filePath);
+    }
+    emit missionReset();
+    emit areaChanged();
+    emit noFlyZonesChanged();
+    emit homeChanged();
+    emit aircraftChanged();
+    emit changed();
+    emit dirtyChanged(isDirty());
+}
+
+bool MissionDocument::load(const QString& path, QString* error) {
+    auto m = io::readMissionFile(path.toStdString());
+    if (!m) {
+        if (error) *error = QString::fromStdString(m.error().message);
+        return false;
+    }
+    reset(std::move(m).value(), QFileInfo(path).absoluteFilePath());
+    return true;
+}
+
+bool MissionDocument::writeCopy(const QString& path, QString* error) const {
+    QSaveFile f(path);
+    if (!f.open(QIODevice::WriteOnly)) {
+        if (error) *error = tr("Cannot write %1: %2").arg(path, f.errorString());
+        return false;
+    }
+    const std::string json = io::missionToJson(m_mission);
+    f.write(json.data(), qint64(json.size()));
+    if (!f.commit()) {
+        if (error) *error = tr("Cannot write %1: %2").arg(path, f.errorString());
+        return false;
+    }
+    return true;
+}
+
+bool MissionDocument::save(const QString& path, QString* error) {
+    if (!writeCopy(path, error)) return false;
+    const QString abs = QFileInfo(path).absoluteFilePath();
+    if (abs != m_filePath) {
+        m_filePath = abs;
+        emit filePathChanged(m_filePath);
+    }
+    m_undo.setClean();
+    emit dirtyChanged(false);
+    return true;
+}
+
+geo::GeoPolygon MissionDocument::shape(const ShapeRef& ref) const {
+    if (ref.kind == ShapeRef::Kind::Area) return m_mission.area;
+    return hasShape(ref) ? m_mission.noFlyZones[std::size_t(ref.index)].polygon : geo::GeoPolygon{};
+}
+
+bool MissionDocument::hasShape(const ShapeRef& ref) const {
+    if (ref.kind == ShapeRef::Kind::Area) return !m_mission.area.outer.empty();
+    return ref.index >= 0 && std::size_t(ref.index) < m_mission.noFlyZones.size();
+}
+
+void MissionDocument::setShape(const ShapeRef& ref, const geo::GeoPolygon& poly) {
+    if (ref.kind == ShapeRef::Kind::Area) {
+        setArea(poly);
+        return;
+    }
+    auto zone = m_mission.noFlyZones.at(std::size_t(ref.index));
+    zone.polygon = poly;
+    setNoFlyZone(ref.index, zone);
+}
+
+void MissionDocument::setArea(const geo::GeoPolygon& area) {
+    m_mission.area = area;
+    emit areaChanged();
+    emit changed();
+}
+
+void MissionDocument::insertNoFlyZone(int index, const mission::NoFlyZone& zone) {
+    auto& z = m_mission.noFlyZones;
+    z.insert(z.begin() + std::clamp<std::ptrdiff_t>(index, 0, std::ptrdiff_t(z.size())), zone);
+    emit noFlyZonesChanged();
+    emit changed();
+}
+
+void MissionDocument::removeNoFlyZone(int index) {
+    auto& z = m_mission.noFlyZones;
+    z.erase(z.begin() + index);
+    emit noFlyZonesChanged();
+    emit changed();
+}
+
+void MissionDocument::setNoFlyZone(int index, const mission::NoFlyZone& zone) {
+    m_mission.noFlyZones.at(std::size_t(index)) = zone;
+    emit noFlyZonesChanged();
+    emit changed();
+}
+
+void MissionDocument::setHome(const std::optional<geo::LonLat>& home) {
+    m_mission.home = home;
+    emit homeChanged();
+    emit changed();
+}
+
+void MissionDocument::insertAircraft(int index, const mission::AircraftConfig& aircraft) {
+    auto& a = m_mission.aircraft;
+    a.insert(a.begin() + std::clamp<std::ptrdiff_t>(index, 0, std::ptrdiff_t(a.size())), aircraft);
+    emit aircraftChanged();
+    emit changed();
+}
+
+void MissionDocument::removeAircraft(int index) {
+    auto& a = m_mission.aircraft;
+    a.erase(a.begin() + index);
+    emit aircraftChanged();
+    emit changed();
+}
+
+void MissionDocument::setAircraft(int index, const mission::AircraftConfig& aircraft) {
+    m_mission.aircraft.at(std::size_t(index)) = aircraft;
+    emit aircraftChanged();
+    emit changed();
+}
+
+} // namespace pf::ui

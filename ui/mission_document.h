@@ -1,0 +1,79 @@
+// MissionDocument: one open mission, its undo stack, file path and dirty state.
+#pragma once
+
+#include "core/mission/mission.h"
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+
+namespace pf::ui {
+
+// Addresses one editable polygon of the mission: the area or a no-fly zone.
+struct ShapeRef {
+    enum class Kind { Area, NoFlyZone };
+    Kind kind = Kind::Area;
+    int index = 0; // no-fly zone index; 0 for the area
+    static ShapeRef area() { return {Kind::Area, 0}; }
+    static ShapeRef noFly(int i) { return {Kind::NoFlyZone, i}; }
+    friend bool operator==(const ShapeRef& a, const ShapeRef& b) { return a.kind == b.kind && a.index == b.index; }
+    friend bool operator!=(const ShapeRef& a, const ShapeRef& b) { return !(a == b); }
+};
+
+// Edits go through undo commands (ui/commands/), which call the setters below; the setters
+// emit the signals that views listen to. Nothing else should call the setters.
+class MissionDocument : public QObject {
+    Q_OBJECT
+public:
+    explicit MissionDocument(QObject* parent = nullptr);
+
+    const mission::Mission& mission() const { return m_mission; }
+    QUndoStack* undoStack() { return &m_undo; }
+
+    QString filePath() const { return m_filePath; }
+    // The mission's name, or the file name, or "Untitled".
+    QString displayName() const;
+    bool isDirty() const { return !m_undo.isClean(); }
+
+    // Replaces the whole mission (new, open, recover): clears the undo history.
+    // `markDirty` is for recovered autosaves, which differ from what is on disk.
+    void reset(mission::Mission m, const QString& filePath, bool markDirty = false);
+    // Reads a mission file; on failure the document is unchanged and `error` says why.
+    bool load(const QString& path, QString* error);
+    // Writes atomically (QSaveFile) and marks the document clean.
+    bool save(const QString& path, QString* error);
+    // Writes a copy without changing the path or the clean state (autosave).
+    bool writeCopy(const QString& path, QString* error) const;
+
+    // --- setters used by undo commands ---
+    geo::GeoPolygon shape(const ShapeRef& ref) const;
+    bool hasShape(const ShapeRef& ref) const;
+    void setShape(const ShapeRef& ref, const geo::GeoPolygon& poly);
+    void setArea(const geo::GeoPolygon& area);
+    void insertNoFlyZone(int index, const mission::NoFlyZone& zone);
+    void removeNoFlyZone(int index);
+    void setNoFlyZone(int index, const mission::NoFlyZone& zone);
+    void setHome(const std::optional<geo::LonLat>& home);
+    void insertAircraft(int index, const mission::AircraftConfig& aircraft);
+    void removeAircraft(int index);
+    void setAircraft(int index, const mission::AircraftConfig& aircraft);
+
+signals:
+    void areaChanged();
+    void noFlyZonesChanged();
+    void homeChanged();
+    void aircraftChanged();
+    // Any change of content (including reset); views that draw everything listen to this one.
+    void changed();
+    // The whole mission was replaced.
+    void missionReset();
+    void dirtyChanged(bool dirty);
+    void filePathChanged(const QString& path);
+
+private:
+    mission::Mission m_mission;
+    QUndoStack m_undo;
+    QString m_filePath;
+};
+
+} // namespace pf::ui

@@ -1,0 +1,347 @@
+#include "ui/panels/aircraft_panel.h"
+
+#include "core/sensor/camera.h"
+#include "ui/commands/add_aircraft_command.h"
+#include "ui/commands/edit_aircraft_command.h"
+#include "ui/commands/remove_aircraft_command.h"
+#include "ui/mission_document.h"
+
+#include <QColorDialog>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QMenu>
+#include <QPainter>
+#include <QPushButton>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace pf::ui {
+
+namespace {
+
+// Distinct, colour-blind-friendly path colours for successive aircraft.
+const char* const kColours[] = {"#e6194b", "#3cb44b", "#4363d8", "#f58231", "#911eb4", "#42d4f4", "#f032e6", "#9a6324"};
+
+QIcon swatch(const QString& colour) {
+    QPixmap pm(14, 14);
+    pm.fill(Qt::transparent);
+    QPainter p(&pm);
+    p.setRenderHint(QPainter::Antialiasing);
+    p.setPen(QPen(QColor(40, 40, 40), 1));
+    p.setBrush(QColor(colour));
+    p.drawRoundedRect(QRectF(1, 1, 12, 12), 3, 3);
+    return QIcon(pm);
+}
+
+QDoubleSpinBox* spin(double min, double max, int decimals, double step, const QString& suffix) {
+    auto* s = new QDoubleSpinBox;
+    s->setRange(min, max);
+    s->setDecimals(decimals);
+    s->setSingleStep(step);
+    s->setSuffix(suffix);
+    s->setKeyboardTracking(false); // one command per finished entry, not per keystroke
+    s->setAlignment(Qt::AlignRight);
+    return s;
+}
+
+// A generic 1" 20 MP camera for custom aircraft when the catalog has none.
+sensor::Camera genericCamera() {
+    sensor::Camera c;
+    c.name = "Generic 1-inch 20 MP";
+    c.sensorWidthMm = 13.2;
+    c.sensorHeightMm = 8.8;
+    c.focalLengthMm = 8.8;
+    c.imageWidthPx = 5472;
+    c.imageHeightPx = 3648;
+    return c;
+}
+
+// The altitude an aircraft flies at: its own, or the one giving its GSD.
+std::optional<double> effectiveAltitude(const mission::AircraftConfig& a) {
+    if (a.altitudeM) return a.altitudeM;
+    if (a.gsdCm) {
+        auto alt = sensor::altitudeForGsd(a.camera, *a.gsdCm);
+        if (alt) return *alt;
+    }
+    return std::nullopt;
+}
+
+} // namespace
+
+AircraftPanel::AircraftPanel(MissionDocument* doc, io::Catalog catalog, QWidget* parent)
+    : QWidget(parent), m_doc(doc), m_catalog(std::move(catalog)) {
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(6, 6, 6, 6);
+
+    m_list = new QListWidget;
+    m_list->setMaximumHeight(110);
+    m_list->setIconSize(QSize(14, 14));
+    layout->addWidget(m_list);
+
+    auto* buttons = new QHBoxLayout;
+    m_addButton = new QToolButton;
+    m_addButton->setText(tr("Add aircraft"));
+    m_addButton->setIcon(QIcon(QStringLiteral(":/icons/aircraft_add.svg")));
+    m_addButton->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_addButton->setPopupMode(QToolButton::InstantPopup);
+    auto* menu = new QMenu(m_addButton);
+    for (const auto& spec : m_catalog.aircraft) {
+        const QString name = QString::fromStdString(spec.name);
+        menu->addAction(name, this, [this, name] { addFromCatalog(name); });
+    }
+    if (!m_catalog.aircraft.empty()) menu->addSeparator();
+    menu->addAction(tr("Custom aircraft"), this, &AircraftPanel::addCustom);
+    m_addButton->setMenu(menu);
+    m_removeButton = new QPushButton(QIcon(QStringLiteral(":/icons/remove.svg")), tr("Remove"));
+    buttons->addWidget(m_addButton);
+    buttons->addStretch();
+    buttons->addWidget(m_removeButton);
+    layout->addLayout(buttons);
+
+    m_form = new QWidget;
+    auto* form = new QFormLayout(m_form);
+    form->setContentsMargins(0, 6, 0, 0);
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    m_name = new QLineEdit;
+    m_model = new QLabel;
+    m_model->setStyleSheet(QStringLiteral("color: palette(mid);"));
+    m_camera = new QComboBox;
+    for (const auto& cam : m_catalog.cameras) m_camera->addItem(QString::fromStdString(cam.name));
+    m_altitude = spin(1.0, 5000.0, 1, 5.0, tr(" m"));
+    m_gsd = spin(0.01, 500.0, 2, 0.1, tr(" cm/px"));
+    m_footprint = new QLabel;
+    m_footprint->setWordWrap(true);
+    m_front = spin(0.0, 95.0, 0, 5.0, tr(" %"));
+    m_side = spin(0.0, 95.0, 0, 5.0, tr(" %"));
+    m_speed = spin(0.5, 60.0, 1, 0.5, tr(" m/s"));
+    m_endurance = spin(1.0, 600.0, 0, 1.0, tr(" min"));
+    m_colour = new QPushButton;
+    form->addRow(tr("Name"), m_name);
+    form->addRow(tr("Model"), m_model);
+    form->addRow(tr("Camera"), m_camera);
+    form->addRow(tr("Altitude"), m_altitude);
+    form->addRow(tr("GSD"), m_gsd);
+    form->addRow(tr("Footprint"), m_footprint);
+    form->addRow(tr("Front overlap"), m_front);
+    form->addRow(tr("Side overlap"), m_side);
+    form->addRow(tr("Speed"), m_speed);
+    form->addRow(tr("Endurance"), m_endurance);
+    form->addRow(tr("Colour"), m_colour);
+    layout->addWidget(m_form);
+    layout->addStretch();
+
+    connect(m_list, &QListWidget::currentRowChanged, this, [this] { refreshForm(); });
+    connect(m_removeButton, &QPushButton::clicked, this, &AircraftPanel::removeCurrent);
+    connect(m_name, &QLineEdit::editingFinished, this, [this] {
+        const std::string name = m_name->text().trimmed().toStdString();
+        if (!name.empty()) editCurrent(tr("name"), [&](mission::AircraftConfig& a) { a.name = name; });
+    });
+    connect(m_camera, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this](int i) {
+        if (i < 0 || std::size_t(i) >= m_catalog.cameras.size()) return;
+        const sensor::Camera cam = m_catalog.cameras[std::size_t(i)];
+        editCurrent(tr("camera"), [&](mission::AircraftConfig& a) {
+            // Keep the altitude (the flying constraint); the GSD follows from the new camera.
+            const auto alt = effectiveAltitude(a);
+            a.camera = cam;
+            if (alt) {
+                a.altitudeM = alt;
+                a.gsdCm.reset();
+            }
+        });
+    });
+    // Altitude and GSD drive each other: whichever the user edits becomes the one stored.
+    connect(m_altitude, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        editCurrent(tr("altitude"), [&](mission::AircraftConfig& a) {
+            a.altitudeM = v;
+            a.gsdCm.reset();
+        });
+    });
+    connect(m_gsd, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        editCurrent(tr("GSD"), [&](mission::AircraftConfig& a) {
+            a.gsdCm = v;
+            a.altitudeM.reset();
+        });
+    });
+    connect(m_front, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        editCurrent(tr("front overlap"), [&](mission::AircraftConfig& a) { a.overlap.front = v / 100.0; });
+    });
+    connect(m_side, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        editCurrent(tr("side overlap"), [&](mission::AircraftConfig& a) { a.overlap.side = v / 100.0; });
+    });
+    connect(m_speed, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        editCurrent(tr("speed"), [&](mission::AircraftConfig& a) { a.cruiseSpeedMps = v; });
+    });
+    connect(m_endurance, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        editCurrent(tr("endurance"), [&](mission::AircraftConfig& a) { a.enduranceMin = v; });
+    });
+    connect(m_colour, &QPushButton::clicked, this, [this] {
+        const int i = current();
+        if (i < 0) return;
+        const QColor c = QColorDialog::getColor(QColor(QString::fromStdString(m_doc->mission().aircraft[std::size_t(i)].colour)),
+                                                this, tr("Path colour"));
+        if (c.isValid()) setColour(c);
+    });
+    connect(doc, &MissionDocument::aircraftChanged, this, [this] {
+        refreshList();
+        refreshForm();
+    });
+    refreshList();
+    refreshForm();
+}
+
+int AircraftPanel::current() const { return m_list->currentRow(); }
+
+void AircraftPanel::setCurrent(int index) { m_list->setCurrentRow(index); }
+
+void AircraftPanel::setColour(const QColor& colour) {
+    const std::string c = colour.name().toStdString();
+    editCurrent(tr("colour"), [&](mission::AircraftConfig& a) { a.colour = c; });
+}
+
+QString AircraftPanel::nextName(const QString& base) const {
+    for (int n = 1;; ++n) {
+        const QString candidate = QStringLiteral("%1 #%2").arg(base).arg(n);
+        bool used = false;
+        for (const auto& a : m_doc->mission().aircraft) used = used || QString::fromStdString(a.name) == candidate;
+        if (!used) return candidate;
+    }
+}
+
+QString AircraftPanel::nextColour() const {
+    const std::size_t n = m_doc->mission().aircraft.size();
+    return QString::fromLatin1(kColours[n % (sizeof(kColours) / sizeof(kColours[0]))]);
+}
+
+void AircraftPanel::addFromCatalog(const QString& aircraftName) {
+    const fleet::AircraftSpec* spec = m_catalog.findAircraft(aircraftName.toStdString());
+    if (!spec) return;
+    mission::AircraftConfig a;
+    a.name = nextName(aircraftName).toStdString();
+    a.model = spec->name;
+    const sensor::Camera* cam = m_catalog.findCamera(spec->defaultCamera);
+    a.camera = cam ? *cam : (m_catalog.cameras.empty() ? genericCamera() : m_catalog.cameras.front());
+    a.altitudeM = std::min(60.0, spec->maxAltitudeM);
+    a.cruiseSpeedMps = spec->cruiseSpeedMps;
+    a.turnRateDegS = spec->turnRateDegS;
+    a.enduranceMin = spec->enduranceMin;
+    a.maxAltitudeM = spec->maxAltitudeM;
+    a.colour = nextColour().toStdString();
+    m_doc->undoStack()->push(new AddAircraftCommand(m_doc, a));
+    setCurrent(int(m_doc->mission().aircraft.size()) - 1);
+}
+
+void AircraftPanel::addCustom() {
+    mission::AircraftConfig a;
+    a.name = nextName(tr("Custom")).toStdString();
+    a.model = "custom";
+    a.camera = m_catalog.cameras.empty() ? genericCamera() : m_catalog.cameras.front();
+    a.altitudeM = 60.0;
+    a.colour = nextColour().toStdString();
+    m_doc->undoStack()->push(new AddAircraftCommand(m_doc, a));
+    setCurrent(int(m_doc->mission().aircraft.size()) - 1);
+}
+
+void AircraftPanel::removeCurrent() {
+    const int i = current();
+    if (i < 0) return;
+    m_doc->undoStack()->push(new RemoveAircraftCommand(m_doc, i));
+}
+
+void AircraftPanel::editCurrent(const QString& field, const std::function<void(mission::AircraftConfig&)>& change) {
+    if (m_updating) return;
+    const int i = current();
+    if (i < 0 || std::size_t(i) >= m_doc->mission().aircraft.size()) return;
+    mission::AircraftConfig a = m_doc->mission().aircraft[std::size_t(i)];
+    const mission::AircraftConfig before = a;
+    change(a);
+    if (a == before) return;
+    m_doc->undoStack()->push(new EditAircraftCommand(m_doc, i, a, field));
+}
+
+void AircraftPanel::refreshList() {
+    const bool was = m_updating;
+    m_updating = true;
+    const int keep = m_list->currentRow();
+    m_list->blockSignals(true);
+    m_list->clear();
+    for (const auto& a : m_doc->mission().aircraft) {
+        auto* item = new QListWidgetItem(swatch(QString::fromStdString(a.colour)),
+                                         QStringLiteral("%1  —  %2").arg(QString::fromStdString(a.name),
+                                                                         QString::fromStdString(a.camera.name)));
+        m_list->addItem(item);
+    }
+    const int n = m_list->count();
+    m_list->setCurrentRow(n == 0 ? -1 : std::clamp(keep < 0 ? 0 : keep, 0, n - 1));
+    m_list->blockSignals(false);
+    m_updating = was;
+}
+
+void AircraftPanel::refreshForm() {
+    const int i = current();
+    const bool has = i >= 0 && std::size_t(i) < m_doc->mission().aircraft.size();
+    m_form->setEnabled(has);
+    m_removeButton->setEnabled(has);
+    if (!has) {
+        m_footprint->setText(tr("Add an aircraft to choose its camera and altitude."));
+        return;
+    }
+    const mission::AircraftConfig& a = m_doc->mission().aircraft[std::size_t(i)];
+    m_updating = true;
+    const QList<QWidget*> boxes{m_altitude, m_gsd, m_front, m_side, m_speed, m_endurance, m_camera, m_name};
+    for (auto* w : boxes) w->blockSignals(true);
+    m_name->setText(QString::fromStdString(a.name));
+    m_model->setText(a.model == "custom" ? tr("custom aircraft") : QString::fromStdString(a.model));
+    int camIndex = m_camera->findText(QString::fromStdString(a.camera.name));
+    if (camIndex < 0) {
+        // A camera that is not in the catalog (from a mission file): show it, selected.
+        m_camera->addItem(QString::fromStdString(a.camera.name));
+        camIndex = m_camera->count() - 1;
+    }
+    m_camera->setCurrentIndex(camIndex);
+
+    const auto alt = effectiveAltitude(a);
+    std::optional<double> gsd = a.gsdCm;
+    if (!gsd && alt) {
+        auto g = sensor::gsdCmAt(a.camera, *alt);
+        if (g) gsd = *g;
+    }
+    if (alt) m_altitude->setValue(*alt);
+    if (gsd) m_gsd->setValue(*gsd);
+    m_altitude->setMaximum(std::max(5000.0, a.maxAltitudeM));
+    m_front->setValue(a.overlap.front * 100.0);
+    m_side->setValue(a.overlap.side * 100.0);
+    m_speed->setValue(a.cruiseSpeedMps);
+    m_endurance->setValue(a.enduranceMin);
+    for (auto* w : boxes) w->blockSignals(false);
+    m_colour->setIcon(swatch(QString::fromStdString(a.colour)));
+    m_colour->setText(QString::fromStdString(a.colour));
+
+    QString text;
+    if (alt) {
+        auto fp = sensor::effectiveFootprint(a.camera, *alt, a.overlap);
+        if (fp) {
+            text = tr("%1 × %2 m per photo\ntrack spacing %3 m, photo every %4 m")
+                       .arg(fp->real.longSideM, 0, 'f', 1)
+                       .arg(fp->real.shortSideM, 0, 'f', 1)
+                       .arg(fp->acrossM, 0, 'f', 1)
+                       .arg(fp->alongM, 0, 'f', 1);
+        } else {
+            text = QString::fromStdString(fp.error().message);
+        }
+        if (*alt > a.maxAltitudeM)
+            text += tr("\nAbove this aircraft's maximum altitude (%1 m).").arg(a.maxAltitudeM, 0, 'f', 0);
+    } else {
+        text = tr("Set an altitude or a GSD.");
+    }
+    m_footprint->setText(text);
+    m_updating = false;
+}
+
+} // namespace pf::ui

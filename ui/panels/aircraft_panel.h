@@ -1,0 +1,75 @@
+// AircraftPanel: the dock listing the mission's aircraft and editing one (camera, altitude <-> GSD, overlap, ...).
+#pragma once
+
+#include "core/io/catalog.h"
+#include "core/mission/mission.h"
+
+#include <QWidget>
+
+#include <functional>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QListWidget;
+class QPushButton;
+class QToolButton;
+class QSpinBox;
+
+namespace pf::ui {
+
+class MissionDocument;
+
+class AircraftPanel : public QWidget {
+    Q_OBJECT
+public:
+    AircraftPanel(MissionDocument* doc, io::Catalog catalog, QWidget* parent = nullptr);
+
+    // Every edit below pushes one undo command (consecutive edits of one field merge).
+    void addFromCatalog(const QString& aircraftName);
+    void addCustom();
+    void removeCurrent();
+    void setCurrent(int index);
+    int current() const;
+
+    // Widgets exposed for tests and keyboard-driven use.
+    QDoubleSpinBox* altitudeBox() const { return m_altitude; }
+    QDoubleSpinBox* gsdBox() const { return m_gsd; }
+    QComboBox* cameraBox() const { return m_camera; }
+    QDoubleSpinBox* frontOverlapBox() const { return m_front; }
+    QDoubleSpinBox* sideOverlapBox() const { return m_side; }
+    QDoubleSpinBox* speedBox() const { return m_speed; }
+    QDoubleSpinBox* enduranceBox() const { return m_endurance; }
+    QLabel* footprintLabel() const { return m_footprint; }
+    void setColour(const QColor& colour);
+
+private:
+    void refreshList();
+    void refreshForm();
+    void editCurrent(const QString& field, const std::function<void(mission::AircraftConfig&)>& change);
+    QString nextName(const QString& base) const;
+    QString nextColour() const;
+
+    MissionDocument* m_doc;
+    io::Catalog m_catalog;
+    bool m_updating = false;
+
+    QListWidget* m_list;
+    QToolButton* m_addButton;
+    QPushButton* m_removeButton;
+    QWidget* m_form;
+    QLineEdit* m_name;
+    QLabel* m_model;
+    QComboBox* m_camera;
+    QDoubleSpinBox* m_altitude;
+    QDoubleSpinBox* m_gsd;
+    QLabel* m_footprint;
+    QDoubleSpinBox* m_front;
+    QDoubleSpinBox* m_side;
+    QDoubleSpinBox* m_speed;
+    QDoubleSpinBox* m_endurance;
+    QPushButton* m_colour;
+};
+
+} // namespace pf::ui
