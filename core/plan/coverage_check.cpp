@@ -1,0 +1,219 @@
+#include "core/plan/coverage_check.h"
+
+#include "core/geo/polygon_ops.h"
+#include "core/route/safety.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <deque>
+#include <limits>
+#include <numeric>
+
+namespace pf::plan {
+
+namespace {
+
+// A raster over a box: pixel (i, j) has its centre at min + ((i + 0.5) r, (j + 0.5) r).
+struct Raster {
+    geo::Vec2 min{0, 0};
+    double r = 1.0;
+    int nx = 0;
+    int ny = 0;
+    std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(i); }
+};
+
+// Calls f(j, i0, i1) for each row j and each run [i0, i1) of pixels whose centres lie inside the
+// rings, by the even-odd rule (outer rings and holes together).
+template <class F> void scanRings(const Raster& ras, const std::vector<const geo::Ring*>& rings, F f) {
+    double ymin = std::numeric_limits<double>::infinity(), ymax = -ymin;
+    for (const auto* ring : rings)
+        for (const auto& p : *ring) {
+            ymin = std::min(ymin, p.y());
+            ymax = std::max(ymax, p.y());
+        }
+    if (!(ymin <= ymax))
+        return;
+    const int j0 = std::max(0, static_cast<int>(std::floor((ymin - ras.min.y()) / ras.r - 0.5)));
+    const int j1 = std::min(ras.ny - 1, static_cast<int>(std::ceil((ymax - ras.min.y()) / ras.r - 0.5)));
+    std::vector<double> xs;
+    for (int j = j0; j <= j1; ++j) {
+        const double y = ras.min.y() + (j + 0.5) * ras.r;
+        xs.clear();
+        for (const auto* ring : rings) {
+            const std::size_t n = ring->size();
+            for (std::size_t k = 0; k < n; ++k) {
+                const geo::Vec2& a = (*ring)[k];
+                const geo::Vec2& b = (*ring)[(k + 1) % n];
+                if ((a.y() > y) != (b.y() > y))
+                    xs.push_back(a.x() + (y - a.y()) * (b.x() - a.x()) / (b.y() - a.y()));
+            }
+        }
+        std::sort(xs.begin(), xs.end());
+        for (std::size_t k = 0; k + 1 < xs.size(); k += 2) {
+            // Pixels whose centre x is in [xs[k], xs[k+1]).
+            const int i0 = std::max(0, static_cast<int>(std::ceil((xs[k] - ras.min.x()) / ras.r - 0.5)));
+            const int i1 = std::min(ras.nx, static_cast<int>(std::ceil((xs[k + 1] - ras.min.x()) / ras.r - 0.5)));
+            if (i0 < i1)
+                f(j, i0, i1);
+        }
+    }
+}
+
+} // namespace
+
+geo::Ring footprintRing(const PhotoFootprint& f) {
+    const double h = f.headingDeg * M_PI / 180.0;
+    const geo::Vec2 along(std::sin(h), std::cos(h));  // direction of flight
+    const geo::Vec2 right(std::cos(h), -std::sin(h)); // across the track, to the right
+    const geo::Vec2 a = 0.5 * f.alongM * along, c = 0.5 * f.acrossM * right;
+    return {f.pos - a - c, f.pos - a + c, f.pos + a + c, f.pos + a - c};
+}
+
+Result<CoverageReport> checkCoverage(const geo::MultiPolygon& admissible, const std::vector<PhotoFootprint>& photos,
+                                     const CoverageCheckOptions& opt) {
+    if (opt.resolutionM < 0 || !std::isfinite(opt.resolutionM))
+        return makeError(ErrorCode::InvalidInput, "The coverage check resolution must be a positive number of metres.");
+    if (opt.maxPixels < 16)
+        return makeError(ErrorCode::InvalidInput, "The coverage check pixel budget is too small (at least 16).");
+    double shortest = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < photos.size(); ++k) {
+        if (!(photos[k].acrossM > 0) || !(photos[k].alongM > 0))
+            return makeError(ErrorCode::InvalidInput,
+                             "Photo " + std::to_string(k + 1) + " has a footprint side that is not positive.");
+        shortest = std::min({shortest, photos[k].acrossM, photos[k].alongM});
+    }
+    CoverageReport rep;
+    double areaTotal = 0;
+    for (const auto& p : admissible)
+        areaTotal += std::abs(geo::signedArea(p.outer));
+    if (admissible.empty() || areaTotal <= 0) {
+        rep.resolutionM = opt.resolutionM;
+        return rep;
+    }
+    const geo::Box box = geo::bounds(admissible);
+    const double w = box.max.x() - box.min.x(), h = box.max.y() - box.min.y();
+    double r = opt.resolutionM > 0 ? opt.resolutionM : std::min(0.5, std::isfinite(shortest) ? shortest / 20.0 : 0.5);
+    r = std::max(r, std::sqrt(w * h / static_cast<double>(opt.maxPixels)) * 1.0001);
+    Raster ras;
+    ras.min = box.min;
+    ras.r = r;
+    ras.nx = std::max(1, static_cast<int>(std::ceil(w / r)));
+    ras.ny = std::max(1, static_cast<int>(std::ceil(h / r)));
+    while (static_cast<std::size_t>(ras.nx) * static_cast<std::size_t>(ras.ny) > opt.maxPixels) {
+        ras.r *= 1.05;
+        ras.nx = std::max(1, static_cast<int>(std::ceil(w / ras.r)));
+        ras.ny = std::max(1, static_cast<int>(std::ceil(h / ras.r)));
+    }
+    rep.resolutionM = ras.r;
+    // 0: outside, 1: admissible uncovered, 2: admissible covered.
+    std::vector<std::uint8_t> px(static_cast<std::size_t>(ras.nx) * static_cast<std::size_t>(ras.ny), 0);
+    std::vector<const geo::Ring*> rings;
+    for (const auto& p : admissible) {
+        rings.push_back(&p.outer);
+        for (const auto& hole : p.holes)
+            rings.push_back(&hole);
+    }
+    scanRings(ras, rings, [&](int j, int i0, int i1) {
+        for (int i = i0; i < i1; ++i)
+            px[ras.index(i, j)] ^= 1; // even-odd across separate parts too
+    });
+    for (const auto& photo : photos) {
+        const geo::Ring ring = footprintRing(photo);
+        scanRings(ras, {&ring}, [&](int j, int i0, int i1) {
+            for (int i = i0; i < i1; ++i) {
+                auto& v = px[ras.index(i, j)];
+                if (v == 1)
+                    v = 2;
+            }
+        });
+    }
+    const double pixelArea = ras.r * ras.r;
+    std::size_t inside = 0, covered = 0;
+    for (auto v : px) {
+        inside += v != 0;
+        covered += v == 2;
+    }
+    rep.admissibleAreaM2 = static_cast<double>(inside) * pixelArea;
+    rep.coveredAreaM2 = static_cast<double>(covered) * pixelArea;
+    rep.uncoveredAreaM2 = rep.admissibleAreaM2 - rep.coveredAreaM2;
+    rep.coveredFraction = inside > 0 ? static_cast<double>(covered) / static_cast<double>(inside) : 1.0;
+
+    // Uncovered patches: 4-connected components of uncovered admissible pixels.
+    struct Comp {
+        std::vector<std::size_t> pixels;
+    };
+    std::vector<Comp> comps;
+    std::vector<std::uint8_t> seen(px.size(), 0);
+    for (std::size_t s = 0; s < px.size(); ++s) {
+        if (px[s] != 1 || seen[s])
+            continue;
+        Comp c;
+        std::deque<std::size_t> q{s};
+        seen[s] = 1;
+        while (!q.empty()) {
+            const std::size_t p = q.front();
+            q.pop_front();
+            c.pixels.push_back(p);
+            const int i = static_cast<int>(p % static_cast<std::size_t>(ras.nx));
+            const int j = static_cast<int>(p / static_cast<std::size_t>(ras.nx));
+            const int nb[4][2] = {{i + 1, j}, {i - 1, j}, {i, j + 1}, {i, j - 1}};
+            for (const auto& n : nb) {
+                if (n[0] < 0 || n[1] < 0 || n[0] >= ras.nx || n[1] >= ras.ny)
+                    continue;
+                const std::size_t k = ras.index(n[0], n[1]);
+                if (px[k] == 1 && !seen[k]) {
+                    seen[k] = 1;
+                    q.push_back(k);
+                }
+            }
+        }
+        comps.push_back(std::move(c));
+    }
+    rep.patchCount = static_cast<int>(comps.size());
+    std::stable_sort(comps.begin(), comps.end(), [](const Comp& a, const Comp& b) { return a.pixels.size() > b.pixels.size(); });
+    for (std::size_t k = 0; k < comps.size() && k < opt.maxPatches; ++k) {
+        auto& pixels = comps[k].pixels;
+        std::sort(pixels.begin(), pixels.end());
+        UncoveredPatch patch;
+        patch.areaM2 = static_cast<double>(pixels.size()) * pixelArea;
+        geo::Vec2 sum(0, 0);
+        geo::MultiPolygon rects;
+        for (std::size_t a = 0; a < pixels.size();) {
+            std::size_t b = a;
+            while (b + 1 < pixels.size() && pixels[b + 1] == pixels[b] + 1 &&
+                   pixels[b + 1] % static_cast<std::size_t>(ras.nx) != 0)
+                ++b;
+            const int i0 = static_cast<int>(pixels[a] % static_cast<std::size_t>(ras.nx));
+            const int i1 = static_cast<int>(pixels[b] % static_cast<std::size_t>(ras.nx)) + 1;
+            const int j = static_cast<int>(pixels[a] / static_cast<std::size_t>(ras.nx));
+            const double x0 = ras.min.x() + i0 * ras.r, x1 = ras.min.x() + i1 * ras.r;
+            const double y0 = ras.min.y() + j * ras.r, y1 = y0 + ras.r;
+            rects.push_back(geo::Polygon{{geo::Vec2(x0, y0), geo::Vec2(x1, y0), geo::Vec2(x1, y1), geo::Vec2(x0, y1)}, {}});
+            sum += static_cast<double>(i1 - i0) * geo::Vec2(0.5 * (x0 + x1), 0.5 * (y0 + y1));
+            a = b + 1;
+        }
+        patch.centroid = sum / static_cast<double>(pixels.size());
+        patch.shape = geo::unite(rects);
+        rep.patches.push_back(std::move(patch));
+    }
+    return rep;
+}
+
+NoFlyViolations countNoFlyViolations(const std::vector<std::vector<geo::Vec2>>& paths,
+                                     const std::vector<geo::Polygon>& noFly, double marginM) {
+    NoFlyViolations v;
+    const route::NoFlyField field(noFly, marginM);
+    if (field.empty())
+        return v;
+    for (const auto& path : paths)
+        for (std::size_t i = 0; i < path.size(); ++i) {
+            if (!field.pointIsSafe(path[i]))
+                ++v.waypoints;
+            if (i > 0 && !field.segmentIsSafe(path[i - 1], path[i]))
+                ++v.segments;
+        }
+    return v;
+}
+
+} // namespace pf::plan

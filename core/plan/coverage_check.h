@@ -1,0 +1,68 @@
+// Independent coverage check: rasterises the real photo footprints over the admissible area and
+// reports what is left uncovered, plus the waypoints and legs that break a no-fly margin.
+#pragma once
+
+#include "core/geo/types.h"
+#include "core/result.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace pf::plan {
+
+// One photo's ground footprint: a rectangle centred on the waypoint, its long side across the track
+// (paper 001: the sensor's long side is orthogonal to the direction of flight).
+struct PhotoFootprint {
+    geo::Vec2 pos{0, 0};
+    double headingDeg = 0.0; // direction of flight, clockwise from north
+    double acrossM = 0.0;    // side across the track
+    double alongM = 0.0;     // side along the track
+};
+
+// The footprint's corners in local metres, counter-clockwise.
+geo::Ring footprintRing(const PhotoFootprint& f);
+
+struct CoverageCheckOptions {
+    // Pixel side in metres; 0 picks min(0.5 m, shortest footprint side / 20).
+    double resolutionM = 0.0;
+    // The pixel side grows as needed to keep the raster within this many pixels (memory and time).
+    std::size_t maxPixels = 16'000'000;
+    // Patches listed with a polygon, largest first; smaller ones still count in uncoveredAreaM2.
+    std::size_t maxPatches = 100;
+};
+
+struct UncoveredPatch {
+    geo::MultiPolygon shape; // union of its pixels, local metres
+    double areaM2 = 0.0;
+    geo::Vec2 centroid{0, 0};
+};
+
+struct CoverageReport {
+    double resolutionM = 0.0;      // pixel side actually used
+    double admissibleAreaM2 = 0.0; // as rasterised (pixel centres inside the admissible area)
+    double coveredAreaM2 = 0.0;
+    double uncoveredAreaM2 = 0.0;
+    double coveredFraction = 1.0;  // covered / admissible (1 for an empty area)
+    int patchCount = 0;            // connected uncovered pieces (4-connected pixels), all of them
+    std::vector<UncoveredPatch> patches; // the largest maxPatches, largest first
+};
+
+// Rasterises the admissible area and every photo's REAL footprint (not the effective one) and
+// measures what the photos leave uncovered. The admissible area is the area minus the no-fly zones
+// (what must appear on the images). Errors: a footprint side not positive, options out of range.
+Result<CoverageReport> checkCoverage(const geo::MultiPolygon& admissible, const std::vector<PhotoFootprint>& photos,
+                                     const CoverageCheckOptions& opt = {});
+
+struct NoFlyViolations {
+    int waypoints = 0; // waypoints closer to a no-fly zone than the margin (inside one included)
+    int segments = 0;  // straight legs between consecutive waypoints that come closer than the margin
+    int total() const { return waypoints + segments; }
+};
+
+// Counts margin breaches along each path (consecutive points are joined by straight legs), measured
+// as exact distances to the zones with a small tolerance (1 cm + 0.5 % of the margin) so that points
+// placed on a polygonised buffer of the margin are not counted.
+NoFlyViolations countNoFlyViolations(const std::vector<std::vector<geo::Vec2>>& paths,
+                                     const std::vector<geo::Polygon>& noFly, double marginM);
+
+} // namespace pf::plan

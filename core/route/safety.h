@@ -1,0 +1,102 @@
+// Flight safety of a route: no waypoint or leg inside a no-fly zone's margin (shortest detours), and
+// optionally every waypoint kept inside the area without losing the part of the area it covers.
+#pragma once
+
+#include "core/geo/types.h"
+#include "core/result.h"
+#include "core/route/waypoint.h"
+
+#include <string>
+#include <vector>
+
+namespace pf::route {
+
+// No-fly zones with their safety margin, measured exactly (distances to the zones' edges) rather
+// than through a polygonised buffer, so that every stage agrees on what "safe" means.
+class NoFlyField {
+public:
+    NoFlyField() = default;
+    NoFlyField(std::vector<geo::Polygon> zones, double marginM);
+
+    const std::vector<geo::Polygon>& zones() const { return m_zones; }
+    double marginM() const { return m_margin; }
+    bool empty() const { return m_zones.empty(); }
+    // Slack granted below the margin: 1 cm + 0.5 % of it, the gap between a circle and the polygon
+    // GEOS uses for a buffer (8 segments per quarter), so points on such a buffer count as safe.
+    double tolerance() const { return 0.01 + 0.005 * m_margin; }
+
+    // Distance from p (or from the segment ab) to the nearest zone; 0 inside or across one.
+    double clearance(const geo::Vec2& p) const;
+    double clearance(const geo::Vec2& a, const geo::Vec2& b) const;
+    // Inside or touching a zone is never safe, whatever the margin.
+    bool pointIsSafe(const geo::Vec2& p) const { return isSafeClearance(clearance(p)); }
+    bool segmentIsSafe(const geo::Vec2& a, const geo::Vec2& b) const { return isSafeClearance(clearance(a, b)); }
+    bool isSafeClearance(double c) const { return c > 0.0 && c >= m_margin - tolerance(); }
+
+private:
+    std::vector<geo::Polygon> m_zones;
+    std::vector<std::pair<geo::Vec2, geo::Vec2>> m_boxes; // per zone: min, max
+    double m_margin = 0.0;
+};
+
+// Shortest safe paths around the zones: a visibility graph over the vertices of the zones buffered
+// by a little more than the margin (so the graph's straight edges, chords of that buffer, still
+// keep the margin), searched with Dijkstra.
+class SafePathFinder {
+public:
+    explicit SafePathFinder(NoFlyField field = {});
+
+    const NoFlyField& field() const { return m_field; }
+    // The points strictly between a and b of the shortest safe path (empty when the straight
+    // segment is safe). Errors: a or b inside a margin, or no safe way around.
+    Result<std::vector<geo::Vec2>> detour(const geo::Vec2& a, const geo::Vec2& b) const;
+    // The nearest safe point to p (p itself when it is safe): on the inflated margin's boundary.
+    geo::Vec2 nearestSafePoint(const geo::Vec2& p) const;
+
+private:
+    NoFlyField m_field;
+    std::vector<geo::Vec2> m_nodes;
+    std::vector<std::vector<std::pair<int, double>>> m_edges;
+    geo::MultiPolygon m_inflated;
+};
+
+// Heading in degrees clockwise from north, [0, 360), of the direction from a to b.
+double headingDeg(const geo::Vec2& a, const geo::Vec2& b);
+
+struct SafetyReport {
+    int waypointsMoved = 0;    // waypoints pushed out of a no-fly margin (their photo may lose coverage)
+    int detours = 0;           // legs replaced by a detour
+    int detourWaypoints = 0;   // Transit waypoints added by the detours
+    double addedLengthM = 0.0; // extra distance flown because of the detours
+    int keptInside = 0;        // waypoints moved fully inside the area (keepInsideArea)
+    int leftOutside = 0;       // waypoints moved only part of the way: further would open a gap
+    std::vector<std::string> warnings;
+};
+
+// Moves any waypoint inside a margin to the nearest safe point and replaces every leg crossing a
+// margin by the shortest safe detour (Transit waypoints, heading along the direction of travel).
+// Errors: no safe way between two waypoints.
+Result<std::vector<LocalWaypoint>> enforceNoFly(const std::vector<LocalWaypoint>& waypoints,
+                                                const SafePathFinder& finder, SafetyReport* report = nullptr);
+
+// The photo geometry keepInsideArea needs to protect coverage.
+struct PhotoSides {
+    double effectiveAcrossM = 0.0; // the part of the ground each photo is responsible for
+    double effectiveAlongM = 0.0;
+    double realAcrossM = 0.0;      // what the photo actually sees
+    double realAlongM = 0.0;
+};
+
+// Paper 001, sections VI-VII: keeps waypoints inside the area shrunk by `marginM`. Each Photo
+// waypoint outside is projected towards the nearest point of the shrunk area, but only as far as its
+// REAL footprint still contains the admissible part of the ground it was responsible for (its
+// effective footprint at the original position, within `admissible`), so no gap opens; it may stop
+// part way (counted in leftOutside, with a warning). Turn waypoints move fully; Transit waypoints
+// are left alone. A moved point must also stay safe from the no-fly zones of `finder`.
+// Errors: the area shrunk by the margin is empty, sides not positive.
+Result<std::vector<LocalWaypoint>> keepInsideArea(const std::vector<LocalWaypoint>& waypoints,
+                                                  const geo::MultiPolygon& area, const geo::MultiPolygon& admissible,
+                                                  const PhotoSides& sides, double marginM,
+                                                  const SafePathFinder& finder, SafetyReport* report = nullptr);
+
+} // namespace pf::route

@@ -1,0 +1,151 @@
+#include "core/plan/coverage_check.h"
+
+#include "core/geo/polygon_ops.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace pf;
+using namespace pf::plan;
+using geo::Vec2;
+
+namespace {
+
+geo::Polygon square(double x0, double y0, double s) {
+    return geo::Polygon{{Vec2(x0, y0), Vec2(x0 + s, y0), Vec2(x0 + s, y0 + s), Vec2(x0, y0 + s)}, {}};
+}
+
+// 20 m square footprints tiling [0, 100]^2 exactly, optionally leaving one out.
+std::vector<PhotoFootprint> tiles(int skipCol = -1, int skipRow = -1, double heading = 0.0) {
+    std::vector<PhotoFootprint> out;
+    for (int r = 0; r < 5; ++r)
+        for (int c = 0; c < 5; ++c)
+            if (c != skipCol || r != skipRow)
+                out.push_back({Vec2(10 + 20 * c, 10 + 20 * r), heading, 20.0, 20.0});
+    return out;
+}
+
+} // namespace
+
+TEST(FootprintRing, LongSideAcrossTheTrack) {
+    // Flying east (90 deg): the 30 m across side lies north-south, the 10 m along side east-west.
+    const auto ring = footprintRing({Vec2(0, 0), 90.0, 30.0, 10.0});
+    const auto box = geo::bounds(ring);
+    EXPECT_NEAR(box.max.x() - box.min.x(), 10.0, 1e-9);
+    EXPECT_NEAR(box.max.y() - box.min.y(), 30.0, 1e-9);
+    EXPECT_GT(geo::signedArea(ring), 0.0); // counter-clockwise
+    EXPECT_NEAR(geo::signedArea(ring), 300.0, 1e-9);
+}
+
+TEST(CoverageCheck, FullCoverage) {
+    auto rep = checkCoverage({square(0, 0, 100)}, tiles());
+    ASSERT_TRUE(rep.ok()) << rep.error().message;
+    EXPECT_DOUBLE_EQ(rep->coveredFraction, 1.0);
+    EXPECT_EQ(rep->patchCount, 0);
+    EXPECT_TRUE(rep->patches.empty());
+    EXPECT_NEAR(rep->admissibleAreaM2, 10000.0, 1e-6);
+    EXPECT_DOUBLE_EQ(rep->resolutionM, 0.5);
+}
+
+TEST(CoverageCheck, MissingPhotoLeavesItsSquare) {
+    auto rep = checkCoverage({square(0, 0, 100)}, tiles(2, 2));
+    ASSERT_TRUE(rep.ok()) << rep.error().message;
+    ASSERT_EQ(rep->patchCount, 1);
+    ASSERT_EQ(rep->patches.size(), 1u);
+    const auto& p = rep->patches[0];
+    EXPECT_NEAR(p.areaM2, 400.0, 0.25 * 80);   // within one pixel row around the 80 m perimeter
+    EXPECT_NEAR(geo::area(p.shape), p.areaM2, 1e-6);
+    EXPECT_NEAR(p.centroid.x(), 50.0, 0.5);
+    EXPECT_NEAR(p.centroid.y(), 50.0, 0.5);
+    const auto box = geo::bounds(p.shape);
+    EXPECT_NEAR(box.min.x(), 40.0, 0.5);
+    EXPECT_NEAR(box.max.y(), 60.0, 0.5);
+    EXPECT_NEAR(rep->coveredFraction, 1.0 - 400.0 / 10000.0, 0.002);
+    EXPECT_NEAR(rep->uncoveredAreaM2, 400.0, 20.0);
+}
+
+TEST(CoverageCheck, RotatedFootprintLeavesFourCornerTriangles) {
+    // A diamond |x-50| + |y-50| <= 80 (square side 80 sqrt 2 flown at 45 deg) leaves four right
+    // triangles with 20 m legs: 200 m^2 each.
+    const double side = 80.0 * std::sqrt(2.0);
+    auto rep = checkCoverage({square(0, 0, 100)}, {{Vec2(50, 50), 45.0, side, side}});
+    ASSERT_TRUE(rep.ok()) << rep.error().message;
+    ASSERT_EQ(rep->patchCount, 4);
+    for (const auto& p : rep->patches)
+        EXPECT_NEAR(p.areaM2, 200.0, 5.0);
+    // Pixel centres on the diagonal edges: at most half a pixel along the 113 m of diagonal edges.
+    EXPECT_NEAR(rep->uncoveredAreaM2, 800.0, 0.25 * 113);
+    EXPECT_NEAR(rep->coveredFraction, 0.92, 0.003);
+}
+
+TEST(CoverageCheck, HolesInTheAdmissibleAreaNeedNoPhoto) {
+    geo::Polygon area = square(0, 0, 100);
+    area.holes.push_back(square(40, 40, 20).outer); // a no-fly zone
+    auto rep = checkCoverage({area}, tiles(2, 2));
+    ASSERT_TRUE(rep.ok()) << rep.error().message;
+    EXPECT_DOUBLE_EQ(rep->coveredFraction, 1.0);
+    EXPECT_NEAR(rep->admissibleAreaM2, 9600.0, 1e-6);
+}
+
+TEST(CoverageCheck, PatchesSortedAndCapped) {
+    std::vector<PhotoFootprint> photos = tiles(0, 0);
+    photos.erase(photos.end() - 1); // also drop (4, 4)
+    photos.push_back({Vec2(85, 90), 0.0, 10.0, 20.0}); // the west half of the (4, 4) square back
+    CoverageCheckOptions opt;
+    opt.maxPatches = 1;
+    auto rep = checkCoverage({square(0, 0, 100)}, photos, opt);
+    ASSERT_TRUE(rep.ok());
+    EXPECT_EQ(rep->patchCount, 2);
+    ASSERT_EQ(rep->patches.size(), 1u);
+    EXPECT_NEAR(rep->patches[0].areaM2, 400.0, 20.0); // the larger one
+    EXPECT_NEAR(rep->uncoveredAreaM2, 400.0 + 200.0, 30.0);
+}
+
+TEST(CoverageCheck, PixelBudgetCoarsensTheResolution) {
+    CoverageCheckOptions opt;
+    opt.maxPixels = 10'000;
+    auto rep = checkCoverage({square(0, 0, 100)}, tiles(), opt);
+    ASSERT_TRUE(rep.ok());
+    EXPECT_GE(rep->resolutionM, 1.0);
+    EXPECT_DOUBLE_EQ(rep->coveredFraction, 1.0);
+}
+
+TEST(CoverageCheck, BadInputsAreRejectedWithAMessage) {
+    auto zero = checkCoverage({square(0, 0, 10)}, {{Vec2(5, 5), 0.0, 0.0, 5.0}});
+    ASSERT_FALSE(zero.ok());
+    EXPECT_EQ(zero.error().message, "Photo 1 has a footprint side that is not positive.");
+    CoverageCheckOptions opt;
+    opt.resolutionM = -1;
+    auto neg = checkCoverage({square(0, 0, 10)}, {}, opt);
+    ASSERT_FALSE(neg.ok());
+    EXPECT_EQ(neg.error().message, "The coverage check resolution must be a positive number of metres.");
+    opt = {};
+    opt.maxPixels = 4;
+    auto tiny = checkCoverage({square(0, 0, 10)}, {}, opt);
+    ASSERT_FALSE(tiny.ok());
+    EXPECT_EQ(tiny.error().message, "The coverage check pixel budget is too small (at least 16).");
+}
+
+TEST(CoverageCheck, EmptyAreaIsFullyCovered) {
+    auto rep = checkCoverage({}, {});
+    ASSERT_TRUE(rep.ok());
+    EXPECT_DOUBLE_EQ(rep->coveredFraction, 1.0);
+}
+
+TEST(NoFlyViolations, CountsWaypointsAndLegs) {
+    const std::vector<geo::Polygon> zones{square(40, 40, 20)};
+    // Diagonal across the zone: one leg; a point 3 m from the zone: one waypoint (and its two legs).
+    const std::vector<std::vector<Vec2>> paths{
+        {Vec2(0, 0), Vec2(100, 100)},
+        {Vec2(0, 50), Vec2(37, 50), Vec2(37, 0)},
+        {Vec2(0, 30), Vec2(100, 30)}, // 10 m clear
+        {Vec2(0, 36), Vec2(100, 36)}, // 4 m: inside the 5 m margin
+    };
+    const auto v = countNoFlyViolations(paths, zones, 5.0);
+    EXPECT_EQ(v.waypoints, 1);
+    EXPECT_EQ(v.segments, 1 + 2 + 1);
+    EXPECT_EQ(v.total(), 5);
+    EXPECT_EQ(countNoFlyViolations(paths, zones, 0.0).total(), 1);
+    EXPECT_EQ(countNoFlyViolations(paths, {}, 5.0).total(), 0);
+}
