@@ -1,0 +1,359 @@
+#include "app/cli/mission_args.h"
+
+#include "core/io/area_import.h"
+#include "core/io/catalog.h"
+#include "core/io/mission_file.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <optional>
+#include <sstream>
+
+namespace pf::cli {
+
+const char* const kMissionOptionsHelp = PF_CLI_MISSION_OPTIONS_HELP;
+
+std::vector<OptionSpec> missionOptionSpecs() {
+    return {{"area"},     {"nofly", true, true}, {"camera"},      {"hfov"},    {"vfov"},
+            {"altitude"}, {"gsd"},               {"overlap"},     {"front"},   {"side"},
+            {"planner"},  {"grid-angle"},        {"home"},        {"aircraft", true, true},
+            {"safety-margin"}, {"max-cells"}};
+}
+
+namespace {
+
+constexpr double kDefaultAltitudeM = 100.0;
+const char* const kColours[] = {"#e6194b", "#3cb44b", "#4363d8", "#f58231", "#911eb4", "#42d4f4", "#f032e6"};
+
+std::string num(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+Error flagError(const std::string& flag, const std::string& what) {
+    return makeError(ErrorCode::InvalidInput, "--" + flag + ": " + what);
+}
+
+// A numeric flag checked against its range; the error names the flag.
+Result<std::optional<double>> numberIn(const Args& args, const std::string& flag, double lo, bool loOpen, double hi,
+                                       bool hiOpen, const std::string& range) {
+    auto v = args.number(flag);
+    if (!v || !*v)
+        return v;
+    const double x = **v;
+    if ((loOpen ? x <= lo : x < lo) || (hiOpen ? x >= hi : x > hi))
+        return flagError(flag, "must be " + range + " (got " + num(x) + ")");
+    return v;
+}
+
+std::string stem(const std::string& path) {
+    std::string s = path.substr(path.find_last_of('/') + 1);
+    const auto dot = s.find_last_of('.');
+    return dot == std::string::npos || dot == 0 ? s : s.substr(0, dot);
+}
+
+Result<std::vector<io::ImportedPolygon>> polygonsOf(const std::string& path, const std::string& flag) {
+    auto polys = io::importPolygons(path);
+    if (!polys)
+        return makeError(polys.error().code, (flag.empty() ? "" : "--" + flag + ": ") + polys.error().message);
+    if (polys->empty())
+        return makeError(ErrorCode::InvalidInput, (flag.empty() ? "" : "--" + flag + ": ") + path + " holds no polygon");
+    return polys;
+}
+
+Result<geo::GeoPolygon> areaFrom(const std::string& path, const std::string& flag) {
+    auto polys = polygonsOf(path, flag);
+    if (!polys)
+        return polys.error();
+    if (polys->size() > 1)
+        return makeError(ErrorCode::InvalidInput,
+                         (flag.empty() ? "" : "--" + flag + ": ") + path + " holds " + std::to_string(polys->size()) +
+                             " polygons, but the area must be a single polygon (give no-fly zones with --nofly FILE)");
+    return polys->front().polygon;
+}
+
+const io::Catalog* catalogOrError(std::optional<io::Catalog>& cache, Error* err) {
+    if (!cache) {
+        auto c = io::loadDefaultCatalog();
+        if (!c) {
+            *err = c.error();
+            return nullptr;
+        }
+        cache = std::move(c).value();
+    }
+    return &*cache;
+}
+
+mission::AircraftConfig aircraftFromSpec(const fleet::AircraftSpec& spec) {
+    mission::AircraftConfig a;
+    a.name = spec.name;
+    a.model = spec.name;
+    a.cruiseSpeedMps = spec.cruiseSpeedMps;
+    a.turnRateDegS = spec.turnRateDegS;
+    a.enduranceMin = spec.enduranceMin;
+    a.maxAltitudeM = spec.maxAltitudeM;
+    return a;
+}
+
+} // namespace
+
+bool isMissionFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        return false;
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    const std::string text = ss.str();
+    const auto first = text.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
+    if (first == std::string::npos || text[first] != '{')
+        return false; // KML, GML, binary formats...
+    if (text.find("photoflight-mission") != std::string::npos)
+        return true;
+    // GeoJSON always has a "type" naming a geometry or a feature; any other JSON object can only be
+    // meant as a mission file, and the mission reader then says what is missing.
+    const bool geoJson = text.find("\"type\"") != std::string::npos &&
+                         (text.find("\"Feature") != std::string::npos || text.find("Polygon\"") != std::string::npos);
+    return !geoJson;
+}
+
+Result<MissionInput> missionFromArgs(const Args& args, std::size_t positional) {
+    MissionInput in;
+    mission::Mission& m = in.mission;
+    std::optional<io::Catalog> catalog;
+    Error err;
+
+    // 1. The file: a mission, or an area.
+    if (args.positionals().size() > positional + 1)
+        return makeError(ErrorCode::InvalidInput, "unexpected argument '" + args.positionals()[positional + 1] +
+                                                      "' (one mission or area file only)");
+    if (args.positionals().size() > positional) {
+        in.source = args.positionals()[positional];
+        if (isMissionFile(in.source)) {
+            auto mf = io::readMissionFile(in.source);
+            if (!mf)
+                return mf.error();
+            m = std::move(mf).value();
+            in.fromMissionFile = true;
+        } else {
+            auto area = areaFrom(in.source, "");
+            if (!area)
+                return area.error();
+            m.area = std::move(area).value();
+            m.name = stem(in.source);
+        }
+    }
+    if (auto a = args.value("area")) {
+        auto area = areaFrom(*a, "area");
+        if (!area)
+            return area.error();
+        m.area = std::move(area).value();
+        if (in.source.empty()) {
+            in.source = *a;
+            m.name = stem(*a);
+        }
+    }
+    if (in.source.empty())
+        return makeError(ErrorCode::InvalidInput, "no mission or area file given (see --help)");
+    for (const auto& f : args.values("nofly")) {
+        auto polys = polygonsOf(f, "nofly");
+        if (!polys)
+            return polys.error();
+        for (auto& p : *polys)
+            m.noFlyZones.push_back({p.name, std::move(p.polygon)});
+    }
+
+    // 2. Aircraft: replaced by --aircraft, or a default one when the file gave none.
+    const auto aircraftFlags = args.values("aircraft");
+    if (!aircraftFlags.empty()) {
+        const io::Catalog* cat = catalogOrError(catalog, &err);
+        if (!cat)
+            return makeError(err.code, "--aircraft: " + err.message);
+        m.aircraft.clear();
+        for (const auto& spec : aircraftFlags) {
+            std::string name = spec;
+            std::optional<double> alt;
+            if (const auto colon = spec.find_last_of(':'); colon != std::string::npos) {
+                const std::string tail = spec.substr(colon + 1);
+                char* end = nullptr;
+                const double v = std::strtod(tail.c_str(), &end);
+                if (tail.empty() || end != tail.c_str() + tail.size() || !std::isfinite(v))
+                    return flagError("aircraft", "'" + tail + "' after ':' in '" + spec + "' is not an altitude in metres");
+                if (v <= 0)
+                    return flagError("aircraft", "the altitude in '" + spec + "' must be greater than 0 m");
+                alt = v;
+                name = spec.substr(0, colon);
+            }
+            const fleet::AircraftSpec* s = cat->findAircraft(name);
+            if (!s)
+                return flagError("aircraft", "no aircraft named '" + name + "' in the catalog (see: photoflight-cli catalog)");
+            mission::AircraftConfig a = aircraftFromSpec(*s);
+            if (const sensor::Camera* c = cat->findCamera(s->defaultCamera))
+                a.camera = *c;
+            a.altitudeM = alt;
+            m.aircraft.push_back(std::move(a));
+        }
+    } else if (m.aircraft.empty()) {
+        const io::Catalog* cat = catalogOrError(catalog, &err);
+        if (!cat || cat->aircraft.empty()) {
+            if (!args.has("hfov") && !args.has("camera"))
+                return makeError(ErrorCode::InvalidInput,
+                                 "no aircraft: give --aircraft NAME, or a camera with --camera NAME or --hfov/--vfov" +
+                                     (cat ? std::string() : " (the catalog could not be loaded: " + err.message + ")"));
+            mission::AircraftConfig a;
+            a.name = "Aircraft";
+            a.model = "custom";
+            m.aircraft.push_back(a);
+            in.notes.push_back("no aircraft given: using a custom aircraft (maximum altitude " +
+                               num(a.maxAltitudeM) + " m)");
+        } else {
+            const auto& s = cat->aircraft.front();
+            mission::AircraftConfig a = aircraftFromSpec(s);
+            if (const sensor::Camera* c = cat->findCamera(s.defaultCamera))
+                a.camera = *c;
+            m.aircraft.push_back(std::move(a));
+            in.notes.push_back("no aircraft given: using the catalog's " + s.name);
+        }
+    }
+    // Unique labels when the same model flies twice.
+    for (std::size_t i = 0; i < m.aircraft.size(); ++i) {
+        const auto same = std::count_if(m.aircraft.begin(), m.aircraft.end(),
+                                        [&](const auto& b) { return b.model == m.aircraft[i].model; });
+        if (!aircraftFlags.empty()) {
+            if (same > 1) {
+                int k = 0;
+                for (std::size_t j = 0; j <= i; ++j)
+                    k += m.aircraft[j].model == m.aircraft[i].model;
+                m.aircraft[i].name = m.aircraft[i].model + " #" + std::to_string(k);
+            }
+            m.aircraft[i].colour = kColours[i % (sizeof kColours / sizeof kColours[0])];
+        }
+    }
+
+    // 3. Camera, altitude, overlaps: for every aircraft.
+    if (auto c = args.value("camera")) {
+        if (args.has("hfov") || args.has("vfov"))
+            return flagError("camera", "give either --camera or --hfov/--vfov, not both");
+        const io::Catalog* cat = catalogOrError(catalog, &err);
+        if (!cat)
+            return makeError(err.code, "--camera: " + err.message);
+        const sensor::Camera* cam = cat->findCamera(*c);
+        if (!cam)
+            return flagError("camera", "no camera named '" + *c + "' in the catalog (see: photoflight-cli catalog)");
+        for (auto& a : m.aircraft)
+            a.camera = *cam;
+    }
+    auto hfov = numberIn(args, "hfov", 0, true, 180, true, "between 0 and 180 degrees, exclusive");
+    if (!hfov)
+        return hfov.error();
+    auto vfov = numberIn(args, "vfov", 0, true, 180, true, "between 0 and 180 degrees, exclusive");
+    if (!vfov)
+        return vfov.error();
+    if (hfov->has_value() != vfov->has_value())
+        return flagError(hfov->has_value() ? "hfov" : "vfov", "needs --hfov and --vfov together");
+    if (hfov->has_value()) {
+        if (**vfov > **hfov)
+            return flagError("vfov", "the field of view across the short side (" + num(**vfov) +
+                                         ") must not exceed --hfov (" + num(**hfov) + ")");
+        for (auto& a : m.aircraft) {
+            sensor::Camera cam;
+            cam.name = "custom (" + num(**hfov) + " x " + num(**vfov) + " degrees)";
+            cam.hfovDeg = **hfov;
+            cam.vfovDeg = **vfov;
+            const bool hasImage = a.camera.imageWidthPx > 0 && a.camera.imageHeightPx > 0;
+            cam.imageWidthPx = hasImage ? a.camera.imageWidthPx : 4000;
+            cam.imageHeightPx = hasImage ? a.camera.imageHeightPx : 3000;
+            a.camera = cam;
+        }
+    }
+
+    auto altitude = numberIn(args, "altitude", 0, true, 1e6, false, "greater than 0 m");
+    if (!altitude)
+        return altitude.error();
+    auto gsd = numberIn(args, "gsd", 0, true, 1e6, false, "greater than 0 cm/px");
+    if (!gsd)
+        return gsd.error();
+    if (altitude->has_value() && gsd->has_value())
+        return flagError("gsd", "give either --altitude or --gsd, not both");
+    for (std::size_t i = 0; i < m.aircraft.size(); ++i) {
+        auto& a = m.aircraft[i];
+        const bool ownAltitude = !aircraftFlags.empty() && a.altitudeM.has_value();
+        if (altitude->has_value() && !ownAltitude) {
+            a.altitudeM = **altitude;
+            a.gsdCm.reset();
+        } else if (gsd->has_value() && !ownAltitude) {
+            a.gsdCm = **gsd;
+            a.altitudeM.reset();
+        } else if (!a.altitudeM && !a.gsdCm) {
+            a.altitudeM = std::min(kDefaultAltitudeM, a.maxAltitudeM);
+            in.notes.push_back("no altitude given for " + a.name + ": using " + num(*a.altitudeM) + " m");
+        }
+    }
+
+    const std::string overlapRange = "in [0, 1), e.g. 0.7 for 70 %";
+    auto overlap = numberIn(args, "overlap", 0, false, 1, true, overlapRange);
+    if (!overlap)
+        return overlap.error();
+    auto front = numberIn(args, "front", 0, false, 1, true, overlapRange);
+    if (!front)
+        return front.error();
+    auto side = numberIn(args, "side", 0, false, 1, true, overlapRange);
+    if (!side)
+        return side.error();
+    if (overlap->has_value() && (front->has_value() || side->has_value()))
+        return flagError("overlap", "give either --overlap or --front/--side, not both");
+    for (auto& a : m.aircraft) {
+        if (overlap->has_value())
+            a.overlap = {**overlap, **overlap};
+        if (front->has_value())
+            a.overlap.front = **front;
+        if (side->has_value())
+            a.overlap.side = **side;
+    }
+
+    // 4. Planner options and points.
+    if (auto p = args.value("planner")) {
+        if (*p == "stride")
+            m.options.planner = mission::PlannerKind::Stride;
+        else if (*p == "raster")
+            m.options.planner = mission::PlannerKind::Raster;
+        else if (*p == "wavefront")
+            m.options.planner = mission::PlannerKind::Wavefront;
+        else
+            return flagError("planner", "unknown planner '" + *p + "' (expected stride, raster or wavefront)");
+    }
+    if (auto a = args.value("grid-angle")) {
+        if (*a == "auto") {
+            m.options.gridAngleDeg.reset();
+        } else {
+            auto v = args.number("grid-angle");
+            if (!v)
+                return flagError("grid-angle", "'" + *a + "' is neither a number of degrees nor 'auto'");
+            m.options.gridAngleDeg = **v;
+        }
+    }
+    if (auto h = args.value("home")) {
+        auto p = parseLonLat(*h, "--home");
+        if (!p)
+            return p.error();
+        m.home = geo::LonLat{p->first, p->second};
+    }
+    auto margin = numberIn(args, "safety-margin", 0, false, 1e5, false, "0 m or more");
+    if (!margin)
+        return margin.error();
+    if (margin->has_value())
+        m.options.safetyMarginM = **margin;
+    auto cells = numberIn(args, "max-cells", 1, false, 2147483647.0, false, "a whole number from 1 to 2147483647");
+    if (!cells)
+        return cells.error();
+    if (cells->has_value()) {
+        if (std::floor(**cells) != **cells)
+            return flagError("max-cells", "must be a whole number of cells (got " + num(**cells) + ")");
+        m.options.maxCells = static_cast<std::size_t>(**cells);
+    }
+    return in;
+}
+
+} // namespace pf::cli
