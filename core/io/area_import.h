@@ -19,4 +19,29 @@ struct ImportedPolygon {
 // Errors name the file and the problem (cannot open, no polygon, unknown CRS, ...).
 Result<std::vector<ImportedPolygon>> importPolygons(const std::string& path);
 
+// Registers GDAL/OGR's drivers once (thread-safe; later calls are cheap) and keeps GDAL from printing
+// on stderr: its messages become Result errors at the io boundary instead. Every io function calls
+// it; other core code that opens GDAL datasets directly calls it first.
+void initGdal();
+
+namespace detail {
+
+// While alive, collects the GDAL errors raised on this thread (instead of printing them), so that an
+// io function can turn the first one into the message of its Result. Scopes nest.
+class GdalErrorScope {
+public:
+    GdalErrorScope();
+    ~GdalErrorScope();
+    GdalErrorScope(const GdalErrorScope&) = delete;
+    GdalErrorScope& operator=(const GdalErrorScope&) = delete;
+    // The first error (CE_Failure or worse) seen, or "" if none.
+    const std::string& firstError() const { return m_firstError; }
+    void record(const char* message);
+
+private:
+    std::string m_firstError;
+};
+
+} // namespace detail
+
 } // namespace pf::io

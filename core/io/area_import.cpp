@@ -1,0 +1,269 @@
+// Area and no-fly-zone import through OGR: any supported vector format and CRS -> WGS84 2D polygons.
+#include "core/io/area_import.h"
+
+#include <cpl_conv.h>
+#include <cpl_error.h>
+#include <cpl_string.h>
+#include <cpl_vsi.h>
+#include <gdal.h>
+#include <gdal_priv.h>
+#include <ogr_geometry.h>
+#include <ogr_spatialref.h>
+#include <ogrsf_frmts.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <mutex>
+
+namespace pf::io {
+
+namespace {
+
+// GDAL's process-wide handler: drop messages (they reach the user as Result errors through
+// GdalErrorScope), except when GDAL debugging is switched on with CPL_DEBUG.
+void CPL_STDCALL quietHandler(CPLErr cls, CPLErrorNum num, const char* msg) {
+    if (CPLTestBool(CPLGetConfigOption("CPL_DEBUG", "NO")))
+        CPLDefaultErrorHandler(cls, num, msg);
+}
+
+void CPL_STDCALL scopeHandler(CPLErr cls, CPLErrorNum /*num*/, const char* msg) {
+    if (cls < CE_Failure)
+        return;
+    if (auto* scope = static_cast<detail::GdalErrorScope*>(CPLGetErrorHandlerUserData()))
+        scope->record(msg);
+}
+
+std::string lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+}
+
+std::string extensionOf(const std::string& path) {
+    const auto slash = path.find_last_of("/\\");
+    const auto dot = path.find_last_of('.');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+        return "";
+    return lower(path.substr(dot + 1));
+}
+
+struct DatasetCloser {
+    void operator()(GDALDataset* ds) const { GDALClose(ds); }
+};
+using DatasetPtr = std::unique_ptr<GDALDataset, DatasetCloser>;
+
+// The formats this importer promises, by driver name, with the words used in messages.
+struct Format {
+    const char* driver;
+    const char* label;
+};
+constexpr Format kFormats[] = {{"GeoJSON", "GeoJSON"},      {"KML", "KML"},        {"LIBKML", "KML"},
+                               {"ESRI Shapefile", "Shapefile"}, {"GPKG", "GeoPackage"}, {"GML", "GML"}};
+
+const char* labelForExtension(const std::string& ext) {
+    if (ext == "geojson" || ext == "json")
+        return "GeoJSON";
+    if (ext == "kml")
+        return "KML";
+    if (ext == "shp")
+        return "Shapefile";
+    if (ext == "gpkg")
+        return "GeoPackage";
+    if (ext == "gml" || ext == "xml")
+        return "GML";
+    return nullptr;
+}
+
+const Format* formatForDriver(const char* driver) {
+    for (const auto& f : kFormats)
+        if (EQUAL(f.driver, driver))
+            return &f;
+    return nullptr;
+}
+
+constexpr const char* kSupported = "GeoJSON (.geojson), KML (.kml), Shapefile (.shp), GeoPackage (.gpkg) or GML (.gml)";
+
+geo::GeoRing toGeoRing(const OGRLinearRing* ring) {
+    geo::GeoRing out;
+    if (!ring)
+        return out;
+    const int n = ring->getNumPoints();
+    out.reserve(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+        const geo::LonLat p{ring->getX(i), ring->getY(i)};
+        if (out.empty() || out.back() != p) // repeated vertices carry no shape
+            out.push_back(p);
+    }
+    if (out.size() > 1 && out.front() == out.back())
+        out.pop_back(); // rings are stored open
+    return out;
+}
+
+void collectPolygons(const OGRGeometry* g, std::vector<geo::GeoPolygon>& out, int& others) {
+    if (!g || g->IsEmpty())
+        return;
+    const auto type = wkbFlatten(g->getGeometryType());
+    if (type == wkbPolygon) {
+        const auto* poly = g->toPolygon();
+        geo::GeoPolygon p;
+        p.outer = toGeoRing(poly->getExteriorRing());
+        for (int i = 0; i < poly->getNumInteriorRings(); ++i)
+            p.holes.push_back(toGeoRing(poly->getInteriorRing(i)));
+        out.push_back(std::move(p));
+    } else if (OGR_GT_IsSubClassOf(type, wkbGeometryCollection)) {
+        for (const auto* part : *g->toGeometryCollection())
+            collectPolygons(part, out, others);
+    } else {
+        ++others;
+    }
+}
+
+// Longitude/latitude plausibility of a whole layer's extent.
+bool plausibleLonLat(const OGREnvelope& e) {
+    return e.MinX >= -180.0 && e.MaxX <= 180.0 && e.MinY >= -90.0 && e.MaxY <= 90.0;
+}
+
+std::string featureName(OGRFeature& f, OGRLayer& layer) {
+    for (const char* field : {"name", "Name", "NAME"}) {
+        const int idx = f.GetFieldIndex(field);
+        if (idx >= 0 && f.IsFieldSetAndNotNull(idx)) {
+            std::string v = f.GetFieldAsString(idx);
+            if (!v.empty())
+                return v;
+        }
+    }
+    return std::string(layer.GetName()) + " #" + std::to_string(f.GetFID());
+}
+
+} // namespace
+
+namespace detail {
+
+GdalErrorScope::GdalErrorScope() { CPLPushErrorHandlerEx(scopeHandler, this); }
+GdalErrorScope::~GdalErrorScope() { CPLPopErrorHandler(); }
+void GdalErrorScope::record(const char* message) {
+    if (m_firstError.empty() && message)
+        m_firstError = message;
+}
+
+} // namespace detail
+
+void initGdal() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        CPLSetErrorHandler(quietHandler);
+        GDALAllRegister();
+    });
+}
+
+Result<std::vector<ImportedPolygon>> importPolygons(const std::string& path) {
+    initGdal();
+    VSIStatBufL st;
+    if (VSIStatL(path.c_str(), &st) != 0)
+        return makeError(ErrorCode::IoError, path + ": cannot import: the file does not exist");
+    if (VSI_ISDIR(st.st_mode))
+        return makeError(ErrorCode::IoError, path + ": cannot import: this is a folder, not a file");
+
+    const std::string ext = extensionOf(path);
+    detail::GdalErrorScope errors;
+
+    // Refuse formats outside the documented list before opening: GDAL would read many more, but only
+    // these are tested and documented.
+    GDALDriverH identified = GDALIdentifyDriverEx(path.c_str(), GDAL_OF_VECTOR, nullptr, nullptr);
+    if (identified && !formatForDriver(GDALGetDriverShortName(identified)))
+        return makeError(ErrorCode::Unsupported, path + ": unsupported format (" +
+                                                     GDALGetDriverLongName(identified) + "); expected " + kSupported);
+    if (!identified && !labelForExtension(ext))
+        return makeError(ErrorCode::Unsupported,
+                         path + ": unsupported or unrecognised format; expected " + kSupported);
+
+    const char* const drivers[] = {"GeoJSON", "KML", "LIBKML", "ESRI Shapefile", "GPKG", "GML", nullptr};
+    // GML: do not leave a .gfs schema file beside the user's file.
+    const char* const openOptions[] = {"WRITE_GFS=NO", nullptr};
+    const bool isGml = (identified && EQUAL(GDALGetDriverShortName(identified), "GML")) || ext == "gml";
+    DatasetPtr ds(static_cast<GDALDataset*>(GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, drivers,
+                                                       isGml ? openOptions : nullptr, nullptr)));
+    if (!ds) {
+        const char* label = labelForExtension(ext);
+        std::string why = errors.firstError();
+        return makeError(ErrorCode::ParseError,
+                         path + ": cannot read the file: it is damaged or not a valid " +
+                             (label ? label : "GeoJSON, KML, Shapefile, GeoPackage or GML") + " file" +
+                             (why.empty() ? std::string() : " (" + why + ")"));
+    }
+    const Format* format = formatForDriver(ds->GetDriverName());
+    const std::string formatLabel = format ? format->label : ds->GetDriverName();
+
+    OGRSpatialReference wgs84;
+    wgs84.SetWellKnownGeogCS("WGS84");
+    wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+
+    std::vector<ImportedPolygon> out;
+    int otherGeometries = 0;
+    int features = 0;
+    for (OGRLayer* layer : ds->GetLayers()) {
+        std::unique_ptr<OGRCoordinateTransformation> toWgs84;
+        const OGRSpatialReference* layerSrs = layer->GetSpatialRef();
+        if (layerSrs) {
+            std::unique_ptr<OGRSpatialReference> src(layerSrs->Clone());
+            src->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+            toWgs84.reset(OGRCreateCoordinateTransformation(src.get(), &wgs84));
+            if (!toWgs84) {
+                const char* srsName = src->GetName();
+                return makeError(ErrorCode::Unsupported,
+                                 path + ": layer '" + layer->GetName() + "': cannot convert its coordinate system (" +
+                                     (srsName ? srsName : "unnamed") + ") to WGS84 longitude/latitude");
+            }
+        } else if (formatLabel != "GeoJSON" && formatLabel != "KML") {
+            // No CRS: GeoJSON and KML are WGS84 by definition; anything else must at least look like it.
+            OGREnvelope env;
+            if (layer->GetExtent(&env, TRUE) == OGRERR_NONE && !plausibleLonLat(env)) {
+                char buf[200];
+                std::snprintf(buf, sizeof buf, "x %.0f..%.0f, y %.0f..%.0f", env.MinX, env.MaxX, env.MinY, env.MaxY);
+                return makeError(ErrorCode::InvalidInput,
+                                 path + ": layer '" + layer->GetName() +
+                                     "' has no coordinate reference system and its coordinates (" + buf +
+                                     ") are not longitude/latitude; save the file with its CRS (for a "
+                                     "Shapefile, the .prj file beside it)");
+            }
+        }
+
+        layer->ResetReading();
+        for (auto& feature : *layer) {
+            ++features;
+            const OGRGeometry* geom = feature->GetGeometryRef();
+            if (!geom)
+                continue;
+            std::unique_ptr<OGRGeometry> g(geom->hasCurveGeometry() ? geom->getLinearGeometry() : geom->clone());
+            if (!g)
+                continue;
+            g->flattenTo2D();
+            if (toWgs84 && g->transform(toWgs84.get()) != OGRERR_NONE)
+                return makeError(ErrorCode::InvalidInput, path + ": feature '" + featureName(*feature, *layer) +
+                                                              "' could not be converted to WGS84");
+            std::vector<geo::GeoPolygon> polys;
+            collectPolygons(g.get(), polys, otherGeometries);
+            const std::string name = featureName(*feature, *layer);
+            for (std::size_t i = 0; i < polys.size(); ++i) {
+                ImportedPolygon ip;
+                ip.name = polys.size() == 1 ? name : name + " (part " + std::to_string(i + 1) + ")";
+                ip.layer = layer->GetName();
+                ip.polygon = std::move(polys[i]);
+                out.push_back(std::move(ip));
+            }
+        }
+    }
+    if (!errors.firstError().empty() && out.empty())
+        return makeError(ErrorCode::ParseError, path + ": cannot read the file: " + errors.firstError());
+    if (out.empty()) {
+        std::string found = features == 0 ? "it has no features"
+                                          : "it has " + std::to_string(features) + " feature(s)" +
+                                                (otherGeometries > 0 ? ", only points or lines" : ", none with a polygon");
+        return makeError(ErrorCode::InvalidGeometry, path + ": no polygon to import: " + found);
+    }
+    return out;
+}
+
+} // namespace pf::io

@@ -1,0 +1,338 @@
+// The camera and aircraft catalog: reading resources/catalog.json and the user's own catalog.
+#include "core/io/catalog.h"
+
+#include "core/io/area_import.h"
+#include "core/io/mission_file.h"
+
+#include <cpl_json.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <optional>
+#include <sstream>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#ifndef PF_INSTALL_DATA_DIR
+#define PF_INSTALL_DATA_DIR ""
+#endif
+#ifndef PF_SOURCE_DATA_DIR
+#define PF_SOURCE_DATA_DIR ""
+#endif
+
+namespace pf::io {
+
+namespace {
+
+constexpr const char* kCatalogFormat = "photoflight-catalog";
+constexpr int kCatalogVersion = 1;
+
+bool sameName(const std::string& a, const std::string& b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](unsigned char x, unsigned char y) {
+               return std::tolower(x) == std::tolower(y);
+           });
+}
+
+bool isFile(const std::string& path) {
+    struct stat st {};
+    return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+}
+
+// Reads the catalog's fields; the first problem becomes "<file>: <entry>: <field>: <what>".
+class CatalogReader {
+public:
+    explicit CatalogReader(std::string file) : m_file(std::move(file)) {}
+    bool failed() const { return m_error.has_value(); }
+    Error error() const { return *m_error; }
+
+    void fail(const std::string& where, const std::string& what) {
+        if (!m_error)
+            m_error = makeError(ErrorCode::ParseError, m_file + ": " + (where.empty() ? "" : where + ": ") + what);
+    }
+
+    static bool isNumber(const CPLJSONObject& o) {
+        const auto t = o.GetType();
+        return t == CPLJSONObject::Type::Integer || t == CPLJSONObject::Type::Long ||
+               t == CPLJSONObject::Type::Double;
+    }
+
+    double number(const CPLJSONObject& entry, const std::string& where, const char* key, bool required,
+                  double def = 0.0) {
+        CPLJSONObject o = entry.GetObj(key);
+        if (!o.IsValid() || o.GetType() == CPLJSONObject::Type::Null) {
+            if (required)
+                fail(where, std::string(key) + ": missing required field");
+            return def;
+        }
+        if (!isNumber(o)) {
+            fail(where, std::string(key) + ": expected a number");
+            return def;
+        }
+        const double v = o.ToDouble();
+        if (!std::isfinite(v))
+            fail(where, std::string(key) + ": expected a finite number");
+        return v;
+    }
+
+    std::string string(const CPLJSONObject& entry, const std::string& where, const char* key, bool required) {
+        CPLJSONObject o = entry.GetObj(key);
+        if (!o.IsValid() || o.GetType() == CPLJSONObject::Type::Null) {
+            if (required)
+                fail(where, std::string(key) + ": missing required field");
+            return "";
+        }
+        if (o.GetType() != CPLJSONObject::Type::String) {
+            fail(where, std::string(key) + ": expected a string");
+            return "";
+        }
+        return o.ToString();
+    }
+
+    int pixels(const CPLJSONObject& entry, const std::string& where, const char* key) {
+        const double v = number(entry, where, key, true);
+        if (!failed() && (v != std::floor(v) || v < 1 || v > 1'000'000))
+            fail(where, std::string(key) + ": expected a whole number of pixels");
+        return failed() ? 0 : static_cast<int>(v);
+    }
+
+    // "cameras[3] ("Sony RX1R II")" once the name is known.
+    static std::string entryLabel(const char* list, int i, const std::string& name) {
+        std::string s = std::string(list) + "[" + std::to_string(i) + "]";
+        return name.empty() ? s : s + " (\"" + name + "\")";
+    }
+
+    sensor::Camera camera(const CPLJSONObject& o, int i) {
+        sensor::Camera c;
+        std::string where = entryLabel("cameras", i, "");
+        if (o.GetType() != CPLJSONObject::Type::Object) {
+            fail(where, "expected an object");
+            return c;
+        }
+        c.name = string(o, where, "name", true);
+        where = entryLabel("cameras", i, c.name);
+        c.sensorWidthMm = number(o, where, "sensor_width_mm", false);
+        c.sensorHeightMm = number(o, where, "sensor_height_mm", false);
+        c.focalLengthMm = number(o, where, "focal_length_mm", false);
+        c.hfovDeg = number(o, where, "hfov_deg", false);
+        c.vfovDeg = number(o, where, "vfov_deg", false);
+        c.imageWidthPx = pixels(o, where, "image_width_px");
+        c.imageHeightPx = pixels(o, where, "image_height_px");
+        if (!failed()) {
+            if (c.name.empty())
+                fail(where, "name: must not be empty");
+            else if (auto s = sensor::validate(c); !s)
+                fail(where, s.error().message);
+        }
+        return c;
+    }
+
+    fleet::AircraftSpec aircraft(const CPLJSONObject& o, int i) {
+        fleet::AircraftSpec a;
+        std::string where = entryLabel("aircraft", i, "");
+        if (o.GetType() != CPLJSONObject::Type::Object) {
+            fail(where, "expected an object");
+            return a;
+        }
+        a.name = string(o, where, "name", true);
+        where = entryLabel("aircraft", i, a.name);
+        a.cruiseSpeedMps = number(o, where, "cruise_speed_mps", true);
+        a.turnRateDegS = number(o, where, "turn_rate_deg_s", true);
+        a.enduranceMin = number(o, where, "endurance_min", true);
+        a.maxAltitudeM = number(o, where, "max_altitude_m", true);
+        a.defaultCamera = string(o, where, "default_camera", false);
+        a.notes = string(o, where, "note", false);
+        if (failed())
+            return a;
+        if (a.name.empty())
+            fail(where, "name: must not be empty");
+        const std::pair<const char*, double> positive[] = {{"cruise_speed_mps", a.cruiseSpeedMps},
+                                                           {"turn_rate_deg_s", a.turnRateDegS},
+                                                           {"endurance_min", a.enduranceMin},
+                                                           {"max_altitude_m", a.maxAltitudeM}};
+        for (const auto& [key, v] : positive)
+            if (v <= 0.0)
+                fail(where, std::string(key) + ": must be greater than 0");
+        return a;
+    }
+
+    Catalog catalog(const CPLJSONObject& root) {
+        Catalog cat;
+        if (root.GetType() != CPLJSONObject::Type::Object) {
+            fail("", "expected a JSON object");
+            return cat;
+        }
+        if (root.GetString("format") != kCatalogFormat) {
+            fail("format", std::string("not a Photoflight catalog (expected \"format\": \"") + kCatalogFormat + "\")");
+            return cat;
+        }
+        CPLJSONObject version = root.GetObj("version");
+        if (!version.IsValid() || !isNumber(version) || version.ToDouble() != kCatalogVersion) {
+            fail("version", "unknown catalog version " +
+                                (version.IsValid() ? version.Format(CPLJSONObject::PrettyFormat::Plain) : "(missing)") +
+                                " (expected " + std::to_string(kCatalogVersion) + ")");
+            return cat;
+        }
+        for (const char* list : {"cameras", "aircraft"}) {
+            CPLJSONObject o = root.GetObj(list);
+            if (!o.IsValid())
+                continue; // a user catalog may hold only cameras or only aircraft
+            if (o.GetType() != CPLJSONObject::Type::Array) {
+                fail(list, "expected an array");
+                return cat;
+            }
+            CPLJSONArray a = o.ToArray();
+            for (int i = 0; i < a.Size() && !failed(); ++i) {
+                if (std::strcmp(list, "cameras") == 0) {
+                    auto c = camera(a[i], i);
+                    if (!failed() && cat.findCamera(c.name))
+                        fail(entryLabel(list, i, c.name), "a camera with this name is listed twice");
+                    cat.cameras.push_back(std::move(c));
+                } else {
+                    auto ac = aircraft(a[i], i);
+                    if (!failed() && cat.findAircraft(ac.name))
+                        fail(entryLabel(list, i, ac.name), "an aircraft with this name is listed twice");
+                    cat.aircraft.push_back(std::move(ac));
+                }
+            }
+        }
+        return cat;
+    }
+
+private:
+    std::string m_file;
+    std::optional<Error> m_error;
+};
+
+// The bundled data directories, most specific first.
+std::vector<std::string> dataDirectoryCandidates() {
+    std::vector<std::string> dirs;
+    if (const char* env = std::getenv("PHOTOFLIGHT_DATA_DIR"); env && *env)
+        dirs.emplace_back(env);
+    // A relocated installation: <prefix>/bin/photoflight-cli next to <prefix>/share/photoflight.
+    char exe[4096];
+    const ssize_t n = ::readlink("/proc/self/exe", exe, sizeof exe - 1);
+    if (n > 0) {
+        std::string p(exe, static_cast<std::size_t>(n));
+        const auto slash = p.find_last_of('/');
+        if (slash != std::string::npos)
+            dirs.push_back(p.substr(0, slash) + "/../share/photoflight");
+    }
+    if (*PF_INSTALL_DATA_DIR)
+        dirs.emplace_back(PF_INSTALL_DATA_DIR);
+    if (*PF_SOURCE_DATA_DIR)
+        dirs.emplace_back(PF_SOURCE_DATA_DIR);
+    return dirs;
+}
+
+std::string userCatalogPath() {
+    if (const char* xdg = std::getenv("XDG_DATA_HOME"); xdg && *xdg && xdg[0] == '/')
+        return std::string(xdg) + "/photoflight/catalog.json";
+    if (const char* home = std::getenv("HOME"); home && *home)
+        return std::string(home) + "/.local/share/photoflight/catalog.json";
+    return "";
+}
+
+} // namespace
+
+const sensor::Camera* Catalog::findCamera(const std::string& name) const {
+    for (const auto& c : cameras)
+        if (sameName(c.name, name))
+            return &c;
+    return nullptr;
+}
+
+const fleet::AircraftSpec* Catalog::findAircraft(const std::string& name) const {
+    for (const auto& a : aircraft)
+        if (sameName(a.name, name))
+            return &a;
+    return nullptr;
+}
+
+Result<Catalog> loadCatalog(const std::string& path) {
+    initGdal();
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        return makeError(ErrorCode::IoError, path + ": cannot open the catalog: " + std::strerror(errno));
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    const std::string text = ss.str();
+    CPLJSONDocument doc;
+    {
+        detail::GdalErrorScope errors;
+        if (!doc.LoadMemory(text))
+            return makeError(ErrorCode::ParseError,
+                             path + ": not valid JSON: " + detail::describeJsonError(text, errors.firstError()));
+    }
+    CatalogReader reader(path);
+    Catalog cat = reader.catalog(doc.GetRoot());
+    if (reader.failed())
+        return reader.error();
+    return cat;
+}
+
+Catalog mergeCatalogs(Catalog base, const Catalog& extra) {
+    for (const auto& c : extra.cameras) {
+        auto it = std::find_if(base.cameras.begin(), base.cameras.end(),
+                               [&](const sensor::Camera& b) { return sameName(b.name, c.name); });
+        if (it != base.cameras.end())
+            *it = c;
+        else
+            base.cameras.push_back(c);
+    }
+    for (const auto& a : extra.aircraft) {
+        auto it = std::find_if(base.aircraft.begin(), base.aircraft.end(),
+                               [&](const fleet::AircraftSpec& b) { return sameName(b.name, a.name); });
+        if (it != base.aircraft.end())
+            *it = a;
+        else
+            base.aircraft.push_back(a);
+    }
+    return base;
+}
+
+std::string dataDirectory() {
+    for (const auto& dir : dataDirectoryCandidates())
+        if (isFile(dir + "/catalog.json"))
+            return dir;
+    return "";
+}
+
+Result<Catalog> loadDefaultCatalog() {
+    const std::string dir = dataDirectory();
+    if (dir.empty()) {
+        std::string searched;
+        for (const auto& d : dataDirectoryCandidates())
+            searched += (searched.empty() ? "" : ", ") + d;
+        return makeError(ErrorCode::NotFound, "the bundled catalog.json was not found (searched: " + searched +
+                                                  "); set PHOTOFLIGHT_DATA_DIR to the folder holding it");
+    }
+    const std::string bundledPath = dir + "/catalog.json";
+    auto bundled = loadCatalog(bundledPath);
+    if (!bundled)
+        return bundled.error();
+    Catalog cat = std::move(bundled).value();
+
+    const std::string userPath = userCatalogPath();
+    std::string defaultsFrom = bundledPath;
+    if (!userPath.empty() && isFile(userPath)) {
+        auto user = loadCatalog(userPath);
+        if (!user)
+            return user.error(); // a broken user catalog is reported, not silently ignored
+        cat = mergeCatalogs(std::move(cat), *user);
+        defaultsFrom = userPath;
+    }
+    // Default cameras may name a camera from either file, so they are checked after merging.
+    for (const auto& a : cat.aircraft)
+        if (!a.defaultCamera.empty() && !cat.findCamera(a.defaultCamera))
+            return makeError(ErrorCode::NotFound, defaultsFrom + ": aircraft \"" + a.name + "\": default camera \"" +
+                                                      a.defaultCamera + "\" is not in the catalog");
+    return cat;
+}
+
+} // namespace pf::io

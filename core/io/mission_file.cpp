@@ -1,0 +1,662 @@
+// Mission file: versioned JSON (GDAL's CPLJSON) read with field-path errors, written atomically.
+#include "core/io/mission_file.h"
+
+#include "core/io/area_import.h"
+
+#include <cpl_json.h>
+
+#include <atomic>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <optional>
+#include <sstream>
+
+#include <unistd.h>
+
+namespace pf::io {
+
+namespace {
+
+constexpr const char* kFormatName = "photoflight-mission";
+
+// ---------------------------------------------------------------- writing
+
+// A JSON number holding the shortest decimal that reads back to exactly `v`. json-c's own double
+// printing drops the last digit now and then (so a write/read cycle could change a coordinate);
+// json-c keeps the text of a parsed number and writes it back verbatim, so the number is built by
+// parsing its exact text.
+CPLJSONObject jsonNumber(double v) {
+    char buf[64];
+    auto res = std::to_chars(buf, buf + sizeof buf - 3, v);
+    std::string text(buf, res.ptr);
+    if (text.find_first_of(".eEn") == std::string::npos)
+        text += ".0"; // stays a double: large integral values would not fit json-c's int64
+    CPLJSONDocument doc;
+    doc.LoadMemory("[" + text + "]"); // a bare number at the end of input is "incomplete" to json-c
+    return doc.GetRoot().ToArray()[0];
+}
+
+CPLJSONArray jsonPosition(const geo::LonLat& p) {
+    CPLJSONArray a;
+    a.Add(jsonNumber(p.lon));
+    a.Add(jsonNumber(p.lat));
+    return a;
+}
+
+CPLJSONArray jsonRing(const geo::GeoRing& ring) {
+    CPLJSONArray a;
+    for (const auto& p : ring)
+        a.Add(jsonPosition(p));
+    return a;
+}
+
+CPLJSONObject jsonPolygon(const geo::GeoPolygon& poly) {
+    CPLJSONObject o;
+    o.Add("outer", jsonRing(poly.outer));
+    CPLJSONArray holes;
+    for (const auto& h : poly.holes)
+        holes.Add(jsonRing(h));
+    o.Add("holes", holes);
+    return o;
+}
+
+CPLJSONObject jsonCamera(const sensor::Camera& c) {
+    CPLJSONObject o;
+    o.Add("name", c.name);
+    // Only the definition in use is written (optics or field of view); absent values read as 0.
+    if (c.sensorWidthMm != 0.0 || c.sensorHeightMm != 0.0 || c.focalLengthMm != 0.0) {
+        o.Add("sensor_width_mm", jsonNumber(c.sensorWidthMm));
+        o.Add("sensor_height_mm", jsonNumber(c.sensorHeightMm));
+        o.Add("focal_length_mm", jsonNumber(c.focalLengthMm));
+    }
+    if (c.hfovDeg != 0.0 || c.vfovDeg != 0.0) {
+        o.Add("hfov_deg", jsonNumber(c.hfovDeg));
+        o.Add("vfov_deg", jsonNumber(c.vfovDeg));
+    }
+    o.Add("image_width_px", c.imageWidthPx);
+    o.Add("image_height_px", c.imageHeightPx);
+    return o;
+}
+
+const char* plannerName(mission::PlannerKind k) {
+    switch (k) {
+    case mission::PlannerKind::Stride: return "stride";
+    case mission::PlannerKind::Raster: return "raster";
+    case mission::PlannerKind::Wavefront: return "wavefront";
+    }
+    return "stride";
+}
+
+// ---------------------------------------------------------------- reading
+
+// Reads one JSON document, remembering the first problem as "<source>: <field path>: <what>".
+class Reader {
+public:
+    explicit Reader(std::string source) : m_source(std::move(source)) {}
+
+    bool failed() const { return m_error.has_value(); }
+    Error error() const { return *m_error; }
+
+    void fail(const std::string& path, const std::string& what) {
+        if (!m_error)
+            m_error = makeError(ErrorCode::ParseError, m_source + ": " + (path.empty() ? "" : path + ": ") + what);
+    }
+
+    static const char* typeName(const CPLJSONObject& o) {
+        switch (o.GetType()) {
+        case CPLJSONObject::Type::Null: return "null";
+        case CPLJSONObject::Type::Object: return "an object";
+        case CPLJSONObject::Type::Array: return "an array";
+        case CPLJSONObject::Type::Boolean: return "true/false";
+        case CPLJSONObject::Type::String: return "a string";
+        case CPLJSONObject::Type::Integer:
+        case CPLJSONObject::Type::Long:
+        case CPLJSONObject::Type::Double: return "a number";
+        case CPLJSONObject::Type::Unknown: break;
+        }
+        return "an unreadable value";
+    }
+
+    static bool isNumber(const CPLJSONObject& o) {
+        const auto t = o.GetType();
+        return t == CPLJSONObject::Type::Integer || t == CPLJSONObject::Type::Long ||
+               t == CPLJSONObject::Type::Double;
+    }
+
+    static std::string join(const std::string& path, const std::string& key) {
+        return path.empty() ? key : path + "." + key;
+    }
+
+    // The member `key` of `parent`, or an invalid object when absent (JSON null counts as absent).
+    static CPLJSONObject member(const CPLJSONObject& parent, const std::string& key) {
+        CPLJSONObject o = parent.GetObj(key);
+        if (o.IsValid() && o.GetType() == CPLJSONObject::Type::Null)
+            return CPLJSONObject(); // invalid
+        return o;
+    }
+
+    bool expectType(const CPLJSONObject& o, const std::string& path, bool ok, const char* expected) {
+        if (!ok)
+            fail(path, std::string("expected ") + expected + " but found " + typeName(o));
+        return ok;
+    }
+
+    double number(const CPLJSONObject& o, const std::string& path) {
+        if (!expectType(o, path, isNumber(o), "a number"))
+            return 0.0;
+        const double v = o.ToDouble();
+        if (!std::isfinite(v)) {
+            fail(path, "expected a finite number but found " + std::string(std::isnan(v) ? "NaN" : "infinity"));
+            return 0.0;
+        }
+        return v;
+    }
+
+    double number(const CPLJSONObject& parent, const std::string& path, const std::string& key, double def,
+                  bool required = false) {
+        CPLJSONObject o = member(parent, key);
+        if (!o.IsValid()) {
+            if (required)
+                fail(join(path, key), "missing required field");
+            return def;
+        }
+        return number(o, join(path, key));
+    }
+
+    std::optional<double> optionalNumber(const CPLJSONObject& parent, const std::string& path,
+                                         const std::string& key) {
+        CPLJSONObject o = member(parent, key);
+        if (!o.IsValid())
+            return std::nullopt;
+        return number(o, join(path, key));
+    }
+
+    long long integer(const CPLJSONObject& parent, const std::string& path, const std::string& key,
+                      long long def, bool required, long long minValue, long long maxValue) {
+        const std::string p = join(path, key);
+        CPLJSONObject o = member(parent, key);
+        if (!o.IsValid()) {
+            if (required)
+                fail(p, "missing required field");
+            return def;
+        }
+        const double v = number(o, p);
+        if (failed())
+            return def;
+        if (v != std::floor(v)) {
+            fail(p, "expected a whole number but found " + o.ToString());
+            return def;
+        }
+        if (v < static_cast<double>(minValue) || v > static_cast<double>(maxValue)) {
+            fail(p, "value " + o.ToString() + " is out of range (" + std::to_string(minValue) + " to " +
+                        std::to_string(maxValue) + ")");
+            return def;
+        }
+        return o.GetType() == CPLJSONObject::Type::Double ? static_cast<long long>(v) : o.ToLong();
+    }
+
+    std::string string(const CPLJSONObject& parent, const std::string& path, const std::string& key,
+                       const std::string& def, bool required = false) {
+        CPLJSONObject o = member(parent, key);
+        if (!o.IsValid()) {
+            if (required)
+                fail(join(path, key), "missing required field");
+            return def;
+        }
+        if (!expectType(o, join(path, key), o.GetType() == CPLJSONObject::Type::String, "a string"))
+            return def;
+        return o.ToString();
+    }
+
+    bool boolean(const CPLJSONObject& parent, const std::string& path, const std::string& key, bool def) {
+        CPLJSONObject o = member(parent, key);
+        if (!o.IsValid())
+            return def;
+        if (!expectType(o, join(path, key), o.GetType() == CPLJSONObject::Type::Boolean, "true or false"))
+            return def;
+        return o.ToBool();
+    }
+
+    CPLJSONObject object(const CPLJSONObject& parent, const std::string& path, const std::string& key,
+                         bool required) {
+        CPLJSONObject o = member(parent, key);
+        if (!o.IsValid()) {
+            if (required)
+                fail(join(path, key), "missing required field");
+            return CPLJSONObject();
+        }
+        if (!expectType(o, join(path, key), o.GetType() == CPLJSONObject::Type::Object, "an object"))
+            return CPLJSONObject();
+        return o;
+    }
+
+    // An array member; `present` tells whether it was there at all.
+    CPLJSONArray array(const CPLJSONObject& o, const std::string& path) {
+        if (!expectType(o, path, o.GetType() == CPLJSONObject::Type::Array, "an array"))
+            return CPLJSONArray();
+        return o.ToArray();
+    }
+
+    geo::LonLat position(const CPLJSONObject& o, const std::string& path) {
+        if (!expectType(o, path, o.GetType() == CPLJSONObject::Type::Array, "a [longitude, latitude] array"))
+            return {};
+        CPLJSONArray a = o.ToArray();
+        if (a.Size() != 2) {
+            fail(path, "expected a [longitude, latitude] array but found " + std::to_string(a.Size()) + " values");
+            return {};
+        }
+        geo::LonLat p{number(a[0], path + "[0]"), number(a[1], path + "[1]")};
+        if (failed())
+            return {};
+        if (std::abs(p.lon) > 180.0)
+            fail(path + "[0]", "longitude " + a[0].ToString() + " is out of range (-180 to 180)");
+        else if (std::abs(p.lat) > 90.0)
+            fail(path + "[1]", "latitude " + a[1].ToString() + " is out of range (-90 to 90)");
+        return p;
+    }
+
+    std::optional<geo::LonLat> optionalPosition(const CPLJSONObject& parent, const std::string& path,
+                                                const std::string& key) {
+        CPLJSONObject o = member(parent, key);
+        if (!o.IsValid())
+            return std::nullopt;
+        return position(o, join(path, key));
+    }
+
+    geo::GeoRing ring(const CPLJSONObject& o, const std::string& path) {
+        geo::GeoRing out;
+        CPLJSONArray a = array(o, path);
+        for (int i = 0; i < a.Size() && !failed(); ++i)
+            out.push_back(position(a[i], path + "[" + std::to_string(i) + "]"));
+        // Rings are stored open; accept a closed ring as GeoJSON writes it.
+        if (out.size() > 1 && out.front() == out.back())
+            out.pop_back();
+        return out;
+    }
+
+    geo::GeoPolygon polygon(const CPLJSONObject& parent, const std::string& path, const std::string& key) {
+        geo::GeoPolygon poly;
+        CPLJSONObject o = object(parent, path, key, true);
+        if (failed())
+            return poly;
+        const std::string p = join(path, key);
+        CPLJSONObject outer = member(o, "outer");
+        if (!outer.IsValid()) {
+            fail(join(p, "outer"), "missing required field");
+            return poly;
+        }
+        poly.outer = ring(outer, join(p, "outer"));
+        CPLJSONObject holes = member(o, "holes");
+        if (holes.IsValid()) {
+            CPLJSONArray h = array(holes, join(p, "holes"));
+            for (int i = 0; i < h.Size() && !failed(); ++i)
+                poly.holes.push_back(ring(h[i], join(p, "holes") + "[" + std::to_string(i) + "]"));
+        }
+        return poly;
+    }
+
+    sensor::Camera camera(const CPLJSONObject& parent, const std::string& path) {
+        sensor::Camera c;
+        CPLJSONObject o = object(parent, path, "camera", true);
+        if (failed())
+            return c;
+        const std::string p = join(path, "camera");
+        c.name = string(o, p, "name", "");
+        c.sensorWidthMm = number(o, p, "sensor_width_mm", 0.0);
+        c.sensorHeightMm = number(o, p, "sensor_height_mm", 0.0);
+        c.focalLengthMm = number(o, p, "focal_length_mm", 0.0);
+        c.hfovDeg = number(o, p, "hfov_deg", 0.0);
+        c.vfovDeg = number(o, p, "vfov_deg", 0.0);
+        c.imageWidthPx = static_cast<int>(integer(o, p, "image_width_px", 0, true, 1, 1'000'000));
+        c.imageHeightPx = static_cast<int>(integer(o, p, "image_height_px", 0, true, 1, 1'000'000));
+        if (failed())
+            return c;
+        if (auto s = sensor::validate(c); !s)
+            fail(p, s.error().message);
+        return c;
+    }
+
+    std::string colour(const CPLJSONObject& parent, const std::string& path, const std::string& def) {
+        std::string c = string(parent, path, "colour", def);
+        bool ok = c.size() == 7 && c[0] == '#';
+        for (std::size_t i = 1; ok && i < c.size(); ++i)
+            ok = std::isxdigit(static_cast<unsigned char>(c[i])) != 0;
+        if (!failed() && !ok)
+            fail(join(path, "colour"), "expected a colour like \"#e6194b\" but found \"" + c + "\"");
+        return c;
+    }
+
+    mission::AircraftConfig aircraft(const CPLJSONObject& o, const std::string& path) {
+        mission::AircraftConfig a;
+        if (!expectType(o, path, o.GetType() == CPLJSONObject::Type::Object, "an object"))
+            return a;
+        a.name = string(o, path, "name", "", true);
+        a.model = string(o, path, "model", "custom");
+        a.camera = camera(o, path);
+        a.altitudeM = optionalNumber(o, path, "altitude_m");
+        a.gsdCm = optionalNumber(o, path, "gsd_cm");
+        if (!failed() && !a.altitudeM && !a.gsdCm)
+            fail(path, "needs altitude_m or gsd_cm (the flight altitude or the wanted ground sample distance)");
+        a.overlap.front = number(o, path, "front_overlap", a.overlap.front);
+        a.overlap.side = number(o, path, "side_overlap", a.overlap.side);
+        a.cruiseSpeedMps = number(o, path, "cruise_speed_mps", a.cruiseSpeedMps);
+        a.turnRateDegS = number(o, path, "turn_rate_deg_s", a.turnRateDegS);
+        a.enduranceMin = number(o, path, "endurance_min", a.enduranceMin);
+        a.maxAltitudeM = number(o, path, "max_altitude_m", a.maxAltitudeM);
+        a.colour = colour(o, path, a.colour);
+        a.home = optionalPosition(o, path, "home");
+        return a;
+    }
+
+    mission::PlannerOptions planner(const CPLJSONObject& root) {
+        mission::PlannerOptions opt;
+        CPLJSONObject o = object(root, "", "planner", false);
+        if (failed() || !o.IsValid())
+            return opt;
+        const std::string p = "planner";
+        const std::string kind = string(o, p, "planner", "stride");
+        if (kind == "stride")
+            opt.planner = mission::PlannerKind::Stride;
+        else if (kind == "raster")
+            opt.planner = mission::PlannerKind::Raster;
+        else if (kind == "wavefront")
+            opt.planner = mission::PlannerKind::Wavefront;
+        else if (!failed())
+            fail("planner.planner", "unknown planner \"" + kind + "\" (expected stride, raster or wavefront)");
+
+        CPLJSONObject angle = member(o, "grid_angle_deg");
+        if (angle.IsValid()) {
+            if (angle.GetType() == CPLJSONObject::Type::String) {
+                if (angle.ToString() != "auto")
+                    fail("planner.grid_angle_deg",
+                         "expected a number of degrees or \"auto\" but found \"" + angle.ToString() + "\"");
+            } else if (isNumber(angle)) {
+                opt.gridAngleDeg = number(angle, "planner.grid_angle_deg");
+            } else {
+                fail("planner.grid_angle_deg",
+                     std::string("expected a number of degrees or \"auto\" but found ") + typeName(angle));
+            }
+        }
+        opt.safetyMarginM = number(o, p, "safety_margin_m", opt.safetyMarginM);
+        opt.keepInsideArea = boolean(o, p, "keep_inside_area", opt.keepInsideArea);
+        opt.insideMarginM = number(o, p, "inside_margin_m", opt.insideMarginM);
+        opt.altitudeSeparationM = number(o, p, "altitude_separation_m", opt.altitudeSeparationM);
+        opt.batteryReserve = number(o, p, "battery_reserve", opt.batteryReserve);
+        opt.maxCells = static_cast<std::size_t>(integer(o, p, "max_cells", static_cast<long long>(opt.maxCells),
+                                                        false, 1, 1'000'000'000'000LL));
+        return opt;
+    }
+
+    mission::Mission mission(const CPLJSONObject& root) {
+        mission::Mission m;
+        if (!expectType(root, "", root.GetType() == CPLJSONObject::Type::Object, "a JSON object"))
+            return m;
+        CPLJSONObject format = member(root, "format");
+        if (!format.IsValid()) {
+            fail("", "not a Photoflight mission file (no \"format\" field; expected \"" + std::string(kFormatName) +
+                         "\")");
+            return m;
+        }
+        if (format.GetType() != CPLJSONObject::Type::String || format.ToString() != kFormatName) {
+            fail("format", "not a Photoflight mission file (format is " + format.Format(CPLJSONObject::PrettyFormat::Plain) +
+                               ", expected \"" + kFormatName + "\")");
+            return m;
+        }
+        const long long version = integer(root, "", "version", 0, true, -1'000'000, 1'000'000);
+        if (failed())
+            return m;
+        if (version > mission::kMissionFileVersion) {
+            fail("version", "the file has version " + std::to_string(version) + ", newer than the version " +
+                                std::to_string(mission::kMissionFileVersion) +
+                                " this Photoflight reads; please update Photoflight");
+            return m;
+        }
+        if (version < 1) {
+            fail("version", "unknown version " + std::to_string(version) + " (expected 1 to " +
+                                std::to_string(mission::kMissionFileVersion) + ")");
+            return m;
+        }
+
+        m.name = string(root, "", "name", "");
+        m.area = polygon(root, "", "area");
+
+        CPLJSONObject zones = member(root, "no_fly_zones");
+        if (zones.IsValid() && !failed()) {
+            CPLJSONArray a = array(zones, "no_fly_zones");
+            for (int i = 0; i < a.Size() && !failed(); ++i) {
+                const std::string p = "no_fly_zones[" + std::to_string(i) + "]";
+                if (!expectType(a[i], p, a[i].GetType() == CPLJSONObject::Type::Object, "an object"))
+                    break;
+                mission::NoFlyZone z;
+                z.name = string(a[i], p, "name", "");
+                z.polygon = polygon(a[i], p, "polygon");
+                m.noFlyZones.push_back(std::move(z));
+            }
+        }
+        m.home = optionalPosition(root, "", "home");
+        m.landing = optionalPosition(root, "", "landing");
+
+        CPLJSONObject aircraft = member(root, "aircraft");
+        if (!aircraft.IsValid()) {
+            fail("aircraft", "missing required field");
+        } else if (!failed()) {
+            CPLJSONArray a = array(aircraft, "aircraft");
+            for (int i = 0; i < a.Size() && !failed(); ++i)
+                m.aircraft.push_back(this->aircraft(a[i], "aircraft[" + std::to_string(i) + "]"));
+        }
+        if (!failed())
+            m.options = planner(root);
+        return m;
+    }
+
+private:
+    std::string m_source;
+    std::optional<Error> m_error;
+};
+
+} // namespace
+
+// "JSON parsing error: unexpected character (at offset 11)" -> "... at line 1, column 12".
+std::string detail::describeJsonError(const std::string& text, const std::string& gdalMessage) {
+    std::string msg = gdalMessage.empty() ? std::string("the text is not valid JSON") : gdalMessage;
+    // json-c reports a document that stops in the middle as "continue".
+    if (const auto c = msg.find("error: continue"); c != std::string::npos)
+        msg = msg.substr(0, c) + "error: the text ends before the JSON is complete" + msg.substr(c + 15);
+    const std::string marker = "(at offset ";
+    const auto pos = msg.find(marker);
+    if (pos == std::string::npos)
+        return msg;
+    const std::size_t offset = std::strtoul(msg.c_str() + pos + marker.size(), nullptr, 10);
+    std::size_t line = 1, col = 1;
+    for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            col = 1;
+        } else {
+            ++col;
+        }
+    }
+    return msg.substr(0, pos) + "at line " + std::to_string(line) + ", column " + std::to_string(col);
+}
+
+namespace {
+
+// Every double of the mission must be finite, or the file could not be read back.
+std::optional<std::string> firstNonFinite(const mission::Mission& m) {
+    auto bad = [](double v) { return !std::isfinite(v); };
+    auto ringBad = [&](const geo::GeoRing& r) {
+        for (const auto& p : r)
+            if (bad(p.lon) || bad(p.lat))
+                return true;
+        return false;
+    };
+    auto polyBad = [&](const geo::GeoPolygon& p) {
+        if (ringBad(p.outer))
+            return true;
+        for (const auto& h : p.holes)
+            if (ringBad(h))
+                return true;
+        return false;
+    };
+    if (polyBad(m.area))
+        return std::string("area");
+    for (std::size_t i = 0; i < m.noFlyZones.size(); ++i)
+        if (polyBad(m.noFlyZones[i].polygon))
+            return "no_fly_zones[" + std::to_string(i) + "].polygon";
+    if (m.home && (bad(m.home->lon) || bad(m.home->lat)))
+        return std::string("home");
+    if (m.landing && (bad(m.landing->lon) || bad(m.landing->lat)))
+        return std::string("landing");
+    for (std::size_t i = 0; i < m.aircraft.size(); ++i) {
+        const auto& a = m.aircraft[i];
+        const std::string p = "aircraft[" + std::to_string(i) + "]";
+        const auto& c = a.camera;
+        const std::pair<const char*, double> fields[] = {
+            {"camera.sensor_width_mm", c.sensorWidthMm}, {"camera.sensor_height_mm", c.sensorHeightMm},
+            {"camera.focal_length_mm", c.focalLengthMm}, {"camera.hfov_deg", c.hfovDeg},
+            {"camera.vfov_deg", c.vfovDeg},              {"altitude_m", a.altitudeM.value_or(0.0)},
+            {"gsd_cm", a.gsdCm.value_or(0.0)},           {"front_overlap", a.overlap.front},
+            {"side_overlap", a.overlap.side},            {"cruise_speed_mps", a.cruiseSpeedMps},
+            {"turn_rate_deg_s", a.turnRateDegS},         {"endurance_min", a.enduranceMin},
+            {"max_altitude_m", a.maxAltitudeM},          {"home[0]", a.home ? a.home->lon : 0.0},
+            {"home[1]", a.home ? a.home->lat : 0.0}};
+        for (const auto& [name, v] : fields)
+            if (bad(v))
+                return p + "." + name;
+    }
+    const auto& o = m.options;
+    const std::pair<const char*, double> opts[] = {{"grid_angle_deg", o.gridAngleDeg.value_or(0.0)},
+                                                   {"safety_margin_m", o.safetyMarginM},
+                                                   {"inside_margin_m", o.insideMarginM},
+                                                   {"altitude_separation_m", o.altitudeSeparationM},
+                                                   {"battery_reserve", o.batteryReserve}};
+    for (const auto& [name, v] : opts)
+        if (bad(v))
+            return std::string("planner.") + name;
+    return std::nullopt;
+}
+
+} // namespace
+
+std::string missionToJson(const mission::Mission& m) {
+    CPLJSONDocument doc;
+    CPLJSONObject root = doc.GetRoot();
+    root.Add("format", kFormatName);
+    root.Add("version", mission::kMissionFileVersion);
+    root.Add("name", m.name);
+    root.Add("area", jsonPolygon(m.area));
+    CPLJSONArray zones;
+    for (const auto& z : m.noFlyZones) {
+        CPLJSONObject o;
+        o.Add("name", z.name);
+        o.Add("polygon", jsonPolygon(z.polygon));
+        zones.Add(o);
+    }
+    root.Add("no_fly_zones", zones);
+    if (m.home)
+        root.Add("home", jsonPosition(*m.home));
+    if (m.landing)
+        root.Add("landing", jsonPosition(*m.landing));
+    CPLJSONArray aircraft;
+    for (const auto& a : m.aircraft) {
+        CPLJSONObject o;
+        o.Add("name", a.name);
+        o.Add("model", a.model);
+        o.Add("camera", jsonCamera(a.camera));
+        if (a.altitudeM)
+            o.Add("altitude_m", jsonNumber(*a.altitudeM));
+        if (a.gsdCm)
+            o.Add("gsd_cm", jsonNumber(*a.gsdCm));
+        o.Add("front_overlap", jsonNumber(a.overlap.front));
+        o.Add("side_overlap", jsonNumber(a.overlap.side));
+        o.Add("cruise_speed_mps", jsonNumber(a.cruiseSpeedMps));
+        o.Add("turn_rate_deg_s", jsonNumber(a.turnRateDegS));
+        o.Add("endurance_min", jsonNumber(a.enduranceMin));
+        o.Add("max_altitude_m", jsonNumber(a.maxAltitudeM));
+        o.Add("colour", a.colour);
+        if (a.home)
+            o.Add("home", jsonPosition(*a.home));
+        aircraft.Add(o);
+    }
+    root.Add("aircraft", aircraft);
+    CPLJSONObject planner;
+    planner.Add("planner", plannerName(m.options.planner));
+    if (m.options.gridAngleDeg)
+        planner.Add("grid_angle_deg", jsonNumber(*m.options.gridAngleDeg));
+    else
+        planner.Add("grid_angle_deg", "auto");
+    planner.Add("safety_margin_m", jsonNumber(m.options.safetyMarginM));
+    planner.Add("keep_inside_area", m.options.keepInsideArea);
+    planner.Add("inside_margin_m", jsonNumber(m.options.insideMarginM));
+    planner.Add("altitude_separation_m", jsonNumber(m.options.altitudeSeparationM));
+    planner.Add("battery_reserve", jsonNumber(m.options.batteryReserve));
+    planner.Add("max_cells", static_cast<GInt64>(m.options.maxCells));
+    root.Add("planner", planner);
+    return root.Format(CPLJSONObject::PrettyFormat::Pretty) + "\n";
+}
+
+Result<mission::Mission> parseMissionJson(const std::string& text, const std::string& sourceName) {
+    initGdal();
+    CPLJSONDocument doc;
+    {
+        detail::GdalErrorScope errors;
+        if (!doc.LoadMemory(text))
+            return makeError(ErrorCode::ParseError,
+                             sourceName + ": not valid JSON: " + detail::describeJsonError(text, errors.firstError()));
+    }
+    Reader reader(sourceName);
+    mission::Mission m = reader.mission(doc.GetRoot());
+    if (reader.failed())
+        return reader.error();
+    return m;
+}
+
+Result<mission::Mission> readMissionFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        return makeError(ErrorCode::IoError, path + ": cannot open the mission file: " + std::strerror(errno));
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    if (in.bad())
+        return makeError(ErrorCode::IoError, path + ": cannot read the mission file: " + std::strerror(errno));
+    return parseMissionJson(ss.str(), path);
+}
+
+Status writeMissionFile(const mission::Mission& m, const std::string& path) {
+    if (auto field = firstNonFinite(m))
+        return makeError(ErrorCode::InvalidInput,
+                         path + ": not saved: " + *field + " is not a finite number");
+    const std::string text = missionToJson(m);
+
+    // Write beside the target and rename over it: a crash or a full disk leaves either the old file
+    // or the new one, never a truncated mix. The name is unique per process and attempt.
+    static std::atomic<int> counter{0};
+    const std::string tmp = path + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(++counter);
+    std::FILE* f = std::fopen(tmp.c_str(), "wbx");
+    if (!f)
+        return makeError(ErrorCode::IoError, path + ": cannot save the mission: cannot create a temporary file "
+                                                    "beside it (" + std::strerror(errno) + ")");
+    bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+    ok = std::fflush(f) == 0 && ok;
+    ok = ::fsync(::fileno(f)) == 0 && ok; // the data must be on disk before the rename makes it the file
+    const int writeErrno = errno;
+    ok = std::fclose(f) == 0 && ok;
+    if (!ok) {
+        std::remove(tmp.c_str());
+        return makeError(ErrorCode::IoError,
+                         path + ": cannot save the mission: writing failed (" + std::strerror(writeErrno) + ")");
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        const int e = errno;
+        std::remove(tmp.c_str());
+        return makeError(ErrorCode::IoError, path + ": cannot save the mission: " + std::strerror(e));
+    }
+    return {};
+}
+
+} // namespace pf::io
