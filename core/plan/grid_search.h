@@ -1,0 +1,84 @@
+// Breadth-first searches over a grid's allowed moves (Zelinsky's distance transform), shared by planners.
+#pragma once
+
+#include "core/grid/grid.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+namespace pf::plan {
+
+// Offset of the 4-neighbour in direction d, as an index difference (valid whenever canMove is true).
+inline int dirOffset(const grid::Grid& g, int d) { return grid::kDirDx[d] + grid::kDirDy[d] * g.cols(); }
+
+// Reusable scratch for repeated searches on one grid. Per-cell stamps avoid clearing arrays between
+// searches, so a search costs only what it explores: planners run thousands of small searches on
+// large grids and must not pay O(cells) for each.
+class GridSearch {
+public:
+    explicit GridSearch(const grid::Grid& g)
+        : m_grid(g), m_stamp(static_cast<std::size_t>(g.cellCount()), 0),
+          m_from(static_cast<std::size_t>(g.cellCount()), 0) {}
+
+    // Shortest path over allowed 4-moves from `from` to the nearest cell satisfying `target(cell)`,
+    // only passing through cells satisfying `passable(cell)` (the target itself need not be passable).
+    // Returns the cells after `from` up to and including the target, or empty if none is reachable.
+    // Among equally near targets the first found wins (deterministic: neighbours in East, North,
+    // West, South order).
+    template <class Target, class Passable>
+    std::vector<int> pathToNearest(int from, Target target, Passable passable) {
+        const std::uint32_t s = nextStamp();
+        m_queue.clear();
+        m_queue.push_back(from);
+        m_stamp[from] = s;
+        for (std::size_t head = 0; head < m_queue.size(); ++head) {
+            const int c = m_queue[head];
+            for (int d = 0; d < 4; ++d) {
+                if (!m_grid.canMove(c, static_cast<grid::Dir>(d)))
+                    continue;
+                const int n = c + dirOffset(m_grid, d);
+                if (m_stamp[n] == s)
+                    continue;
+                m_stamp[n] = s;
+                m_from[n] = static_cast<std::uint8_t>(d);
+                if (target(n))
+                    return trace(from, n);
+                if (passable(n))
+                    m_queue.push_back(n);
+            }
+        }
+        return {};
+    }
+
+    // Shortest path over allowed 4-moves from `from` to `to` (cells after `from`, ending with `to`);
+    // empty if `to` cannot be reached or equals `from`.
+    std::vector<int> pathTo(int from, int to) {
+        if (from == to)
+            return {};
+        return pathToNearest(from, [to](int c) { return c == to; }, [](int) { return true; });
+    }
+
+private:
+    std::uint32_t nextStamp() {
+        if (++m_current == 0) { // wrapped: clear once every 4 billion searches
+            std::fill(m_stamp.begin(), m_stamp.end(), 0);
+            m_current = 1;
+        }
+        return m_current;
+    }
+    std::vector<int> trace(int from, int to) const {
+        std::vector<int> path;
+        for (int c = to; c != from; c -= dirOffset(m_grid, m_from[c]))
+            path.push_back(c);
+        return std::vector<int>(path.rbegin(), path.rend());
+    }
+
+    const grid::Grid& m_grid;
+    std::vector<std::uint32_t> m_stamp;
+    std::vector<std::uint8_t> m_from; // direction of the move that reached the cell
+    std::vector<int> m_queue;
+    std::uint32_t m_current = 0;
+};
+
+} // namespace pf::plan

@@ -1,0 +1,46 @@
+// Quality figures of a coverage path: the paper's turns, distance and jumps, plus time and a turn bound.
+#pragma once
+
+#include "core/grid/grid.h"
+#include "core/plan/cell_path.h"
+
+namespace pf::plan {
+
+struct MetricsOptions {
+    double speedMps = 10.0;     // V: cruise speed
+    double turnRateDegS = 90.0; // omega: rotation rate while stopped at a turn
+    bool diagonalSteps = false; // diagonal steps between safe neighbours are moves, not jumps (8-connected)
+    bool turnLowerBound = true; // compute the lower bound on turns (a bipartite matching over the grid)
+};
+
+struct PathMetrics {
+    int visitable = 0;          // cells the grid asks to photograph
+    int cells = 0;              // distinct visitable cells the path photographs (non-transit occurrences)
+    int photos = 0;             // photo waypoints (filled in by the waypoint stage; 0 for a bare path)
+    int occurrences = 0;        // cells in the path, transits included
+    double pathLengthM = 0.0;   // sum of the straight legs between consecutive flight positions
+    double distanceM = 0.0;     // the paper's distance: path length plus the leg from the last cell back
+                                // to the first
+    int turns = 0;              // direction changes between consecutive legs (a U-turn counts once)
+    double turnAngleDeg = 0.0;  // sum of the direction changes
+    int jumps = 0;              // consecutive cells joined by no allowed move
+    int revisits = 0;           // transit occurrences
+    double estimatedTimeS = 0.0; // T = S / V + sum(theta) / omega (paper 004), S = path length
+    double planningMs = 0.0;    // wall time of the planner (filled in by the caller)
+    // The minimum number of straight runs of cells (horizontal or vertical, joined by allowed moves)
+    // that cover every visitable cell, minus one: no jump-free 4-connected path can turn fewer times.
+    // -1 when not computed.
+    int turnLowerBound = -1;
+    double turnRatio = 0.0;     // turns / turnLowerBound (1 when both are 0)
+    bool complete() const { return cells == visitable; }
+};
+
+// Measures `path` on grid `g`. Turn directions use the grid steps between cells (so the small offsets of
+// shifted flight positions do not count as turns); lengths use the flight positions in metres.
+PathMetrics computeMetrics(const grid::Grid& g, const CellPath& path, const MetricsOptions& opt = {});
+
+// The minimum number of straight runs covering all visitable cells: by Koenig's theorem, the maximum
+// matching between row segments and column segments (each cell an edge), found with Hopcroft-Karp.
+int minStraightRuns(const grid::Grid& g);
+
+} // namespace pf::plan

@@ -1,0 +1,54 @@
+// What every coverage planner is asked (start, take-off and landing cells) and one entry point over them.
+#pragma once
+
+#include "core/grid/grid.h"
+#include "core/plan/cell_path.h"
+#include "core/result.h"
+
+#include <optional>
+#include <string>
+
+namespace pf::plan {
+
+enum class PlannerKind { Stride, Raster, Wavefront };
+
+// Name used on the command line and in reports ("stride", "raster", "wavefront").
+const char* plannerName(PlannerKind kind);
+std::optional<PlannerKind> parsePlannerKind(const std::string& name);
+
+struct CoverageRequest {
+    // First cell photographed. -1: the take-off cell if set, else the first visitable cell in index
+    // order (the lowest row's leftmost cell, always on the contour).
+    int start = -1;
+    // Cell under the take-off point: when it differs from the start, a transit path over allowed
+    // moves leads from it to the start. -1: none.
+    int takeoff = -1;
+    // Cell under the landing point: a transit path over allowed moves leads from the last cell to it.
+    // For the wavefront planner it is also the goal of the navigation function. -1: none.
+    int landing = -1;
+};
+
+struct WavefrontOptions {
+    bool moore = true;         // 8-connected (Moore) moves; false: 4-connected (von Neumann)
+    int maxCandidates = 8;     // candidate paths compared (branches at recorded ties), >= 1
+    double speedMps = 10.0;    // V in T = S / V + sum(theta) / omega
+    double turnRateDegS = 90.0; // omega
+};
+
+struct PlanOptions {
+    PlannerKind kind = PlannerKind::Stride;
+    WavefrontOptions wavefront;
+};
+
+// Checks the request against the grid: errors name the problem (no cell to photograph, a start,
+// take-off or landing cell outside the grid or not visitable). Returns the resolved start cell.
+Result<int> resolveStart(const grid::Grid& g, const CoverageRequest& req);
+
+// Runs the chosen planner. Every visitable cell appears at least once without the transit flag.
+Result<CellPath> planCoverage(const grid::Grid& g, const CoverageRequest& req, const PlanOptions& opt);
+
+// True if the planner may fly from a to b: an allowed 4-move, or (when `diagonal`) a diagonal step
+// between two visitable cells whose straight segment is safe.
+bool isAllowedStep(const grid::Grid& g, int a, int b, bool diagonal);
+
+} // namespace pf::plan

@@ -1,0 +1,543 @@
+#include "core/plan/stride_planner.h"
+
+#include "core/plan/grid_search.h"
+
+#include <algorithm>
+#include <limits>
+#include <numeric>
+#include <unordered_map>
+
+namespace pf::plan {
+
+using grid::Dir;
+using grid::Grid;
+
+namespace {
+
+int popcount2(unsigned m) { return static_cast<int>((m & 1u) + ((m >> 1) & 1u)); }
+
+// True if the side of c in direction s is a limit: no allowed move there, or the neighbour is visited.
+inline bool blocked(const Grid& g, const std::vector<std::uint8_t>& visited, int c, int s) {
+    return !g.canMove(c, static_cast<Dir>(s)) || visited[c + dirOffset(g, s)] != 0;
+}
+
+inline unsigned limitsOf(const Grid& g, const std::vector<std::uint8_t>& visited, int c, int d) {
+    const int left = (d + 1) % 4, right = (d + 3) % 4;
+    return (blocked(g, visited, c, left) ? kLeftLimit : 0u) | (blocked(g, visited, c, right) ? kRightLimit : 0u);
+}
+
+// Grows a stride; writes its new cells to `out` (cleared) and returns why it stopped.
+StrideStop growStride(const Grid& g, const std::vector<std::uint8_t>& visited, int c0, int d, std::vector<int>& out) {
+    out.clear();
+    if (blocked(g, visited, c0, d))
+        return StrideStop::None;
+    const int off = dirOffset(g, d);
+    const unsigned m0 = limitsOf(g, visited, c0, d);
+    int cl = c0 + off;
+    out.push_back(cl);
+    for (;;) {
+        if (blocked(g, visited, cl, d))
+            return StrideStop::AreaLimit;
+        const int cn = cl + off;
+        if (popcount2(limitsOf(g, visited, cl, d)) != 2) {
+            const unsigned mn = limitsOf(g, visited, cn, d);
+            if (mn == 0)
+                return StrideStop::NoLimit;
+            if (popcount2(mn) != popcount2(m0))
+                return StrideStop::LimitCountDiffers;
+            if (mn != m0) // both have one limit, on opposite sides
+                return StrideStop::LimitOppositeSide;
+        }
+        out.push_back(cn);
+        cl = cn;
+    }
+}
+
+// Union-find over small integer ids.
+struct UnionFind {
+    std::vector<int> parent;
+    void reset(int n) {
+        parent.resize(static_cast<std::size_t>(n));
+        std::iota(parent.begin(), parent.end(), 0);
+    }
+    int find(int x) {
+        while (parent[x] != x) {
+            parent[x] = parent[parent[x]];
+            x = parent[x];
+        }
+        return x;
+    }
+    // Returns the surviving root.
+    int unite(int a, int b) {
+        a = find(a);
+        b = find(b);
+        if (a == b)
+            return a;
+        if (b < a)
+            std::swap(a, b);
+        parent[b] = a;
+        return a;
+    }
+};
+
+class StridePlanner {
+public:
+    StridePlanner(const Grid& g, StrideTrace* trace)
+        : m_g(g), m_n(static_cast<std::size_t>(g.cellCount())), m_visited(m_n, 0), m_search(g),
+          m_seedMark(m_n, 0), m_seedSlot(m_n, 0), m_partMark(m_n, 0), m_partGroup(m_n, 0),
+          m_targetMark(m_n, 0), m_trace(trace) {}
+
+    CellPath run(int start) {
+        m_remaining = m_g.visitCount();
+        visitNew(start);
+        newCellsAdded(&start, 1);
+        if (m_trace)
+            m_trace->segmentEnds.push_back(1);
+        std::vector<int> best, cand;
+        while (m_remaining > 0) {
+            const int cur = m_path.cells.back();
+            // Steps 2-4: the longest stride towards each unvisited neighbour.
+            int bestDir = -1;
+            StrideKey bestKey;
+            for (int d = 0; d < 4; ++d) {
+                if (blocked(m_g, m_visited, cur, d) || !inTarget(cur + dirOffset(m_g, d)))
+                    continue;
+                growStride(m_g, m_visited, cur, d, cand);
+                StrideKey key = keyFor(cur, d, cand);
+                if (bestDir < 0 || better(key, bestKey, cand, best, cur, d, bestDir)) {
+                    bestDir = d;
+                    bestKey = key;
+                    best.swap(cand);
+                }
+            }
+            if (bestDir < 0) {
+                leaveDeadEnd(cur);
+                continue;
+            }
+            // Steps 5-6.
+            for (int c : best)
+                visitNew(c);
+            newCellsAdded(best.data(), best.size());
+            m_heading = bestDir;
+            if (m_trace)
+                m_trace->segmentEnds.push_back(m_g.visitCount() - m_remaining);
+        }
+        if (m_trace)
+            m_trace->scratchBytes = m_n * (1 + 4 + 1 + 4 + 4 + 4 + 4 + 4);
+        return std::move(m_path);
+    }
+
+private:
+    // The tie-breaking keys, compared in the paper's order after the stride length.
+    struct StrideKey {
+        int length = 0;
+        int limits = 0;    // heuristic (1): limits and visited cells beside the neighbour
+        bool contour = false; // heuristic (2): the neighbour lies on the area's contour
+    };
+
+    StrideKey keyFor(int cur, int d, const std::vector<int>& cells) const {
+        StrideKey k;
+        k.length = static_cast<int>(cells.size()) + 1;
+        (void)cur;
+        k.limits = popcount2(limitsOf(m_g, m_visited, cells.front(), d));
+        k.contour = m_g.onContour(cells.front());
+        return k;
+    }
+
+    // True if candidate (a, dir da) beats the current best (b, dir db). Longest stride first; on equal
+    // length: heuristic (1), (2), (3) (the longer next stride), then keeping the current heading, then
+    // the fixed order East, North, West, South (the order candidates are examined, so the earlier wins).
+    bool better(const StrideKey& ka, const StrideKey& kb, const std::vector<int>& a, const std::vector<int>& b,
+                int /*cur*/, int da, int db) {
+        if (ka.length != kb.length)
+            return ka.length > kb.length;
+        if (ka.limits != kb.limits)
+            return ka.limits > kb.limits;
+        if (ka.contour != kb.contour)
+            return ka.contour;
+        const int na = nextStrideLength(a), nb = nextStrideLength(b);
+        if (na != nb)
+            return na > nb;
+        if ((da == m_heading) != (db == m_heading))
+            return da == m_heading;
+        return false;
+    }
+
+    // Heuristic (3): the longest stride available after taking `cells`.
+    int nextStrideLength(const std::vector<int>& cells) {
+        for (int c : cells)
+            m_visited[c] = 1;
+        const int end = cells.back();
+        int longest = 0;
+        for (int d = 0; d < 4; ++d) {
+            if (blocked(m_g, m_visited, end, d))
+                continue;
+            growStride(m_g, m_visited, end, d, m_look);
+            longest = std::max(longest, static_cast<int>(m_look.size()) + 1);
+        }
+        for (int c : cells)
+            m_visited[c] = 0;
+        return longest;
+    }
+
+    void visitNew(int c) {
+        m_visited[c] = 1;
+        m_path.cells.push_back(c);
+        m_path.revisit.push_back(false);
+        --m_remaining;
+        if (!m_targets.empty() && m_targetMark[c] == m_targets.back().id) {
+            --m_targets.back().remaining;
+            while (!m_targets.empty() && m_targets.back().remaining <= 0)
+                m_targets.pop_back();
+        }
+    }
+
+    bool inTarget(int c) const { return m_targets.empty() || m_targetMark[c] == m_targets.back().id; }
+
+    // Dead end: the shortest path over allowed moves, through visited cells, to the nearest unvisited
+    // cell (of the part being visited first, if any), appended as transits (Zelinsky's distance
+    // transform, computed by a breadth-first wave from the current cell).
+    void leaveDeadEnd(int cur) {
+        if (m_trace)
+            ++m_trace->deadEnds;
+        std::vector<int> p = m_search.pathToNearest(
+            cur, [this](int c) { return !m_visited[c] && inTarget(c); }, [this](int c) { return m_visited[c] != 0; });
+        int target;
+        if (!p.empty()) {
+            for (std::size_t k = 0; k + 1 < p.size(); ++k) {
+                m_path.cells.push_back(p[k]);
+                m_path.revisit.push_back(true);
+            }
+            target = p.back();
+        } else {
+            // No allowed move leads to the remaining cells: they lie in a part of the area the grid's
+            // moves do not connect. Jump to the nearest one; the route stage plans that transit.
+            target = nearestUnvisited(cur);
+            m_targets.clear();
+            ++m_path.jumps;
+        }
+        visitNew(target);
+        newCellsAdded(&target, 1);
+        m_heading = -1;
+        if (m_trace)
+            m_trace->segmentEnds.push_back(m_g.visitCount() - m_remaining);
+    }
+
+    int nearestUnvisited(int cur) const {
+        const geo::Vec2 p = m_g.flightPosition(cur);
+        int best = -1;
+        double bestD = std::numeric_limits<double>::infinity();
+        for (int i = 0; i < m_g.cellCount(); ++i) {
+            if (m_visited[i] || !m_g.needsVisit(i))
+                continue;
+            const double d = (m_g.flightPosition(i) - p).squaredNorm();
+            if (d < bestD) {
+                bestD = d;
+                best = i;
+            }
+        }
+        return best;
+    }
+
+    // The partition rule. Cells just visited can only split the free region if their free neighbours
+    // (the seeds) are not already connected around them; that local test settles almost every stride.
+    // Otherwise one breadth-first wave per group of seeds grows in turn, one cell at a time; waves that
+    // meet merge. A wave that runs out of cells has closed off a part, and the first to do so is the
+    // smallest. The search stops when a single wave is left, so it costs about the size of the parts
+    // closed off (times the number of groups), not the size of the whole area.
+    void newCellsAdded(const int* cells, std::size_t count) {
+        if (m_remaining <= 0)
+            return;
+        const std::uint32_t s = ++m_seedStamp;
+        m_seeds.clear();
+        for (std::size_t k = 0; k < count; ++k) {
+            const int c = cells[k];
+            for (int d = 0; d < 4; ++d) {
+                if (blocked(m_g, m_visited, c, d))
+                    continue;
+                const int n = c + dirOffset(m_g, d);
+                if (m_seedMark[n] == s)
+                    continue;
+                m_seedMark[n] = s;
+                m_seedSlot[n] = static_cast<int>(m_seeds.size());
+                m_seeds.push_back(n);
+            }
+        }
+        if (m_seeds.size() <= 1)
+            return;
+        m_uf.reset(static_cast<int>(m_seeds.size()));
+        for (std::size_t k = 0; k < m_seeds.size(); ++k) {
+            const int a = m_seeds[k];
+            for (int d = 0; d < 4; ++d) {
+                if (!m_g.canMove(a, static_cast<Dir>(d)))
+                    continue;
+                const int b = a + dirOffset(m_g, d);
+                if (m_seedMark[b] == s)
+                    m_uf.unite(static_cast<int>(k), m_seedSlot[b]);
+            }
+        }
+        // Two free neighbours of a new cell are also connected through the free corner between them.
+        for (std::size_t k = 0; k < count; ++k) {
+            const int c = cells[k];
+            for (int d1 = 0; d1 < 4; ++d1) {
+                const int d2 = (d1 + 1) % 4;
+                if (blocked(m_g, m_visited, c, d1) || blocked(m_g, m_visited, c, d2))
+                    continue;
+                const int a = c + dirOffset(m_g, d1), b = c + dirOffset(m_g, d2);
+                if (blocked(m_g, m_visited, a, d2))
+                    continue;
+                const int corner = a + dirOffset(m_g, d2);
+                if (blocked(m_g, m_visited, corner, (d1 + 2) % 4))
+                    continue;
+                m_uf.unite(m_seedSlot[a], m_seedSlot[b]);
+            }
+        }
+        // Seed groups.
+        m_groupOfRoot.assign(m_seeds.size(), -1);
+        int groups = 0;
+        for (std::size_t k = 0; k < m_seeds.size(); ++k) {
+            const int r = m_uf.find(static_cast<int>(k));
+            if (m_groupOfRoot[r] < 0)
+                m_groupOfRoot[r] = groups++;
+        }
+        if (groups <= 1)
+            return;
+        searchParts(groups);
+    }
+
+    void searchParts(int groups) {
+        if (m_trace)
+            ++m_trace->partitionSearches;
+        const std::uint32_t s = ++m_partStamp;
+        if (m_queues.size() < static_cast<std::size_t>(groups))
+            m_queues.resize(static_cast<std::size_t>(groups));
+        for (int gi = 0; gi < groups; ++gi)
+            m_queues[gi].clear();
+        m_heads.assign(groups, 0);
+        m_size.assign(groups, 0);
+        m_pending.assign(groups, 0);
+        UnionFind guf;
+        guf.reset(groups);
+        for (std::size_t k = 0; k < m_seeds.size(); ++k) {
+            const int gi = m_groupOfRoot[m_uf.find(static_cast<int>(k))];
+            const int c = m_seeds[k];
+            m_partMark[c] = s;
+            m_partGroup[c] = gi;
+            m_queues[gi].push_back(c);
+            ++m_size[gi];
+            ++m_pending[gi];
+        }
+        int live = groups;
+        struct Closed {
+            int root;
+            int size;
+        };
+        std::vector<Closed> closed;
+        while (live >= 2) {
+            for (int gi = 0; gi < groups && live >= 2; ++gi) {
+                if (m_heads[gi] == m_queues[gi].size())
+                    continue;
+                const int x = m_queues[gi][m_heads[gi]++];
+                int r = guf.find(gi);
+                --m_pending[r];
+                for (int d = 0; d < 4; ++d) {
+                    if (blocked(m_g, m_visited, x, d))
+                        continue;
+                    const int n = x + dirOffset(m_g, d);
+                    if (m_partMark[n] != s) {
+                        m_partMark[n] = s;
+                        m_partGroup[n] = gi;
+                        m_queues[gi].push_back(n);
+                        ++m_size[r];
+                        ++m_pending[r];
+                    } else {
+                        const int h = guf.find(m_partGroup[n]);
+                        if (h != r) {
+                            const int sz = m_size[r] + m_size[h], pend = m_pending[r] + m_pending[h];
+                            r = guf.unite(r, h);
+                            m_size[r] = sz;
+                            m_pending[r] = pend;
+                            --live;
+                        }
+                    }
+                }
+                if (m_pending[r] == 0) {
+                    closed.push_back({r, m_size[r]});
+                    --live;
+                }
+            }
+        }
+        if (closed.empty())
+            return;
+        const Closed* smallest = &closed.front();
+        for (const auto& c : closed)
+            if (c.size < smallest->size)
+                smallest = &c;
+        // The smallest part becomes the target: its cells are marked so that strides and dead-end
+        // paths stay in it until it is done.
+        const std::uint32_t id = ++m_targetId;
+        for (int gi = 0; gi < groups; ++gi)
+            if (guf.find(gi) == smallest->root)
+                for (int c : m_queues[gi])
+                    m_targetMark[c] = id;
+        if (!m_targets.empty())
+            m_targets.back().remaining -= smallest->size;
+        m_targets.push_back({id, smallest->size});
+        if (m_trace) {
+            StrideTrace::Partition p;
+            p.photographed = m_g.visitCount() - m_remaining;
+            for (const auto& c : closed)
+                p.partSizes.push_back(c.size);
+            p.chosenSize = smallest->size;
+            m_trace->partitions.push_back(std::move(p));
+        }
+    }
+
+    const Grid& m_g;
+    std::size_t m_n;
+    std::vector<std::uint8_t> m_visited;
+    GridSearch m_search;
+    CellPath m_path;
+    int m_remaining = 0;
+    int m_heading = -1;
+    std::vector<int> m_look;
+
+    // Partition detection scratch.
+    std::vector<std::uint32_t> m_seedMark;
+    std::vector<int> m_seedSlot;
+    std::uint32_t m_seedStamp = 0;
+    std::vector<int> m_seeds;
+    UnionFind m_uf;
+    std::vector<int> m_groupOfRoot;
+    std::vector<std::uint32_t> m_partMark;
+    std::vector<int> m_partGroup;
+    std::uint32_t m_partStamp = 0;
+    std::vector<std::vector<int>> m_queues;
+    std::vector<std::size_t> m_heads;
+    std::vector<int> m_size, m_pending;
+
+    // Parts to finish first, innermost last.
+    struct Target {
+        std::uint32_t id;
+        int remaining;
+    };
+    std::vector<Target> m_targets;
+    std::vector<std::uint32_t> m_targetMark;
+    std::uint32_t m_targetId = 0;
+
+    StrideTrace* m_trace;
+};
+
+} // namespace
+
+unsigned strideLimits(const Grid& g, const std::vector<std::uint8_t>& visited, int c, Dir d) {
+    return limitsOf(g, visited, c, static_cast<int>(d));
+}
+
+Stride buildStride(const Grid& g, const std::vector<std::uint8_t>& visited, int c0, Dir d) {
+    Stride s;
+    s.dir = d;
+    s.stop = growStride(g, visited, c0, static_cast<int>(d), s.cells);
+    return s;
+}
+
+void appendTransit(const Grid& g, CellPath& path, int to) {
+    if (path.cells.empty() || path.cells.back() == to)
+        return;
+    GridSearch search(g);
+    const std::vector<int> p = search.pathTo(path.cells.back(), to);
+    if (p.empty()) {
+        ++path.jumps;
+        path.cells.push_back(to);
+        path.revisit.push_back(true);
+        return;
+    }
+    for (int c : p) {
+        path.cells.push_back(c);
+        path.revisit.push_back(true);
+    }
+}
+
+void cleanUpRevisits(const Grid& g, CellPath& path) {
+    const std::size_t n = path.cells.size();
+    if (n < 3)
+        return;
+    CellPath out;
+    out.jumps = path.jumps;
+    out.cells.reserve(n);
+    out.revisit.reserve(n);
+    std::unordered_map<int, std::size_t> lastPos;
+    std::size_t windowEnd = 0; // last position of the current window (exclusive bound + 1)
+    std::size_t i = 0;
+    bool pushCurrent = true;
+    while (i < n) {
+        if (pushCurrent) {
+            out.cells.push_back(path.cells[i]);
+            out.revisit.push_back(path.revisit[i]);
+        }
+        pushCurrent = true;
+        if (i + 2 >= n || !path.revisit[i + 1]) {
+            ++i;
+            continue;
+        }
+        // The window: the run of transit occurrences after i, plus the occurrence ending it.
+        if (windowEnd <= i + 1) {
+            std::size_t e = i + 1;
+            while (e + 1 < n && path.revisit[e + 1])
+                ++e;
+            windowEnd = std::min(e + 1, n - 1);
+            lastPos.clear();
+            for (std::size_t k = i + 1; k <= windowEnd; ++k)
+                lastPos[path.cells[k]] = k;
+        }
+        const int c = path.cells[i];
+        std::size_t far = 0;
+        bool same = false;
+        auto consider = [&](int cell, bool isSame) {
+            auto it = lastPos.find(cell);
+            if (it != lastPos.end() && it->second >= i + 2 && it->second > far) {
+                far = it->second;
+                same = isSame;
+            }
+        };
+        consider(c, true);
+        for (int d = 0; d < 4; ++d)
+            if (g.canMove(c, static_cast<Dir>(d)))
+                consider(c + dirOffset(g, d), false);
+        if (far == 0) {
+            ++i;
+            continue;
+        }
+        // Occurrences i+1 .. far-1 are all transits: drop them. When path[far] is the same cell as
+        // path[i] (itself a transit occurrence), drop it too and keep i's occurrence.
+        i = far;
+        pushCurrent = !same;
+    }
+    path = std::move(out);
+}
+
+Result<CellPath> planStride(const Grid& g, const CoverageRequest& req, StrideTrace* trace) {
+    auto start = resolveStart(g, req);
+    if (!start)
+        return start.error();
+    StridePlanner planner(g, trace);
+    CellPath body = planner.run(*start);
+    CellPath path;
+    if (req.takeoff >= 0 && req.takeoff != *start) {
+        path.cells.push_back(req.takeoff);
+        path.revisit.push_back(true);
+        appendTransit(g, path, *start);
+        // The transit ends on the start cell, which the body photographs: drop the duplicate.
+        path.cells.pop_back();
+        path.revisit.pop_back();
+    }
+    path.jumps += body.jumps;
+    path.cells.insert(path.cells.end(), body.cells.begin(), body.cells.end());
+    path.revisit.insert(path.revisit.end(), body.revisit.begin(), body.revisit.end());
+    if (req.landing >= 0)
+        appendTransit(g, path, req.landing);
+    cleanUpRevisits(g, path);
+    return path;
+}
+
+} // namespace pf::plan
