@@ -316,11 +316,21 @@ Result<Grid> GridBuilder::build(const geo::MultiPolygon& area, const std::vector
                       opt.safetyMarginM);
         return makeError(ErrorCode::InvalidInput, buf);
     }
-    if (area.empty() || geo::area(area) <= 0)
+    if (area.empty())
+        return makeError(ErrorCode::InvalidGeometry, "the area is empty: there is nothing to photograph");
+    for (const auto& p : area) {
+        std::string reason;
+        if (!geo::isValid(p, &reason)) // the rasterisation and GEOS's booleans need valid polygons
+            return makeError(ErrorCode::InvalidGeometry,
+                             "the area is not a valid polygon (" + reason + "): check it with the validate command");
+    }
+    if (geo::area(area) <= 0)
         return makeError(ErrorCode::InvalidGeometry, "the area is empty: there is nothing to photograph");
 
     const geo::MultiPolygon zones(noFly.begin(), noFly.end());
-    geo::MultiPolygon admissible = zones.empty() ? area : geo::difference(area, zones);
+    // Several area polygons are united first: the even-odd rasterisation below would cancel overlaps.
+    const geo::MultiPolygon whole = area.size() > 1 ? geo::unite(area) : area;
+    geo::MultiPolygon admissible = zones.empty() ? whole : geo::difference(whole, zones);
     admissible.erase(std::remove_if(admissible.begin(), admissible.end(),
                                     [](const geo::Polygon& p) { return p.outer.size() < 3; }),
                      admissible.end());

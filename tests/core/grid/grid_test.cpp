@@ -164,6 +164,18 @@ TEST(Grid, MultiPolygonAreaAndHoles) {
     ASSERT_TRUE(c);
     EXPECT_EQ(g->state(*c), CellState::Outside);
     EXPECT_NEAR(geo::area(g->admissible()), 3200.0 + 400.0, 1e-6);
+
+    // Overlapping subareas count once (an even-odd fill would leave their overlap out).
+    auto overlapping = Grid::build(geo::MultiPolygon{rect(0, 0, 40, 20), rect(20, 0, 60, 20)}, {},
+                                   GridOptions{10.0, 0.0, 0.0});
+    ASSERT_TRUE(overlapping.ok());
+    EXPECT_EQ(overlapping->visitCount(), 12);
+
+    // An invalid area is not mistaken for one covered by no-fly zones.
+    const geo::Polygon bow{{Vec2(0, 0), Vec2(50, 50), Vec2(50, 0), Vec2(0, 50)}, {}};
+    auto bad = Grid::build(bow, {rect(0, 20, 5, 25)}, GridOptions{10.0, 0.0, 0.0});
+    ASSERT_FALSE(bad.ok());
+    EXPECT_EQ(bad.error().message.rfind("the area is not a valid polygon (", 0), 0u) << bad.error().message;
 }
 
 TEST(Grid, ErrorsNameTheProblem) {
