@@ -12,8 +12,8 @@
 
 using namespace pf;
 using namespace pf::fleet;
-using pf::fleet::testing::activeCount;
-using pf::fleet::testing::generatedShape;
+using pf::fleet::test::activeCount;
+using pf::fleet::test::generatedShape;
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-namespace pf::fleet::testing {
+namespace pf::fleet::test {
 
 // A rectangle with notches cut from its edges and rectangular holes inside, reduced to its largest
 // 4-connected piece. Same seed, same shape.
@@ -76,4 +76,4 @@ inline int activeCount(const BaseGrid& g) {
     return n;
 }
 
-} // namespace pf::fleet::testing
+} // namespace pf::fleet::test
