@@ -7,9 +7,9 @@
 
 namespace pf::ui {
 
-// Empty when the polygon can be used; otherwise why not ("edges cross near 49.01201 N, 8.32911 E").
-// Kept in ui/ as a thin wrapper over the core's geometry checks so the map can call it on every
-// mouse move during a drag.
-QString shapeProblem(const geo::GeoPolygon& poly);
+// Empty when the polygon can be used; otherwise the first error found by the core's validation,
+// a sentence naming the shape by `what` (e.g. "the area intersects itself: edges 2-3 and 5-6 cross
+// near 8.330120, 49.012310"). Cheap enough to call on every mouse move during a drag.
+QString shapeProblem(const geo::GeoPolygon& poly, const QString& what = QStringLiteral("the shape"));
 
 } // namespace pf::ui

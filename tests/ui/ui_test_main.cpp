@@ -1,5 +1,6 @@
 // Entry point of pf_ui_tests: one QApplication for all tests, offscreen unless told otherwise.
 #include <QApplication>
+#include <QStandardPaths>
 
 #include <gtest/gtest.h>
 
@@ -10,5 +11,7 @@ int main(int argc, char** argv) {
     QApplication app(argc, argv);
     QApplication::setApplicationName(QStringLiteral("photoflight-tests"));
     QApplication::setOrganizationName(QStringLiteral("Photoflight"));
+    // Settings, autosaves and caches go to test locations, never the user's.
+    QStandardPaths::setTestModeEnabled(true);
     return RUN_ALL_TESTS();
 }

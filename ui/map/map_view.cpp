@@ -52,6 +52,7 @@ MapView::MapView(QGraphicsScene* scene, QWidget* parent) : QGraphicsView(scene, 
     scene->setSceneRect(-h, -h, 2 * h, 2 * h);
     m_centre = QPointF(0, 0);
     setTransformationAnchor(QGraphicsView::NoAnchor);
+    setAlignment(Qt::AlignLeft | Qt::AlignTop); // with the exact scene rectangle: no rounding
     setResizeAnchor(QGraphicsView::AnchorViewCenter);
     setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
@@ -86,7 +87,7 @@ void MapView::zoomBy(double factor, const QPoint& anchor) {
     const double target = std::clamp(metresPerPixel() / factor, kMinMetresPerPixel, kMaxMetresPerPixel);
     // Keep the scene point under the anchor fixed.
     const QPointF under = mapToScene(anchor);
-    const QPointF offset = QPointF(anchor - viewport()->rect().center());
+    const QPointF offset = QPointF(anchor) - QPointF(viewport()->width() / 2.0, viewport()->height() / 2.0);
     applyView(under - offset * target, target);
 }
 
@@ -94,11 +95,13 @@ void MapView::applyView(const QPointF& centre, double mpp) {
     mpp = std::clamp(mpp, kMinMetresPerPixel, kMaxMetresPerPixel);
     setTransform(QTransform::fromScale(1.0 / mpp, 1.0 / mpp));
     // QGraphicsView scrolls with int scroll bars: a world-wide scene rectangle would overflow them at
-    // close zoom, so the view's own scene rectangle follows the centre with a few screens of slack.
-    const double hw = std::max(1, viewport()->width()) * mpp * 3.0;
-    const double hh = std::max(1, viewport()->height()) * mpp * 3.0;
-    QGraphicsView::setSceneRect(QRectF(centre.x() - hw, centre.y() - hh, 2 * hw, 2 * hh));
-    centerOn(centre);
+    // close zoom. So the view's own scene rectangle is just the visible area (a hair smaller, so it
+    // never needs scrolling); the view still places it on whole pixels, so the centre is exact to
+    // within a pixel.
+    const double w = std::max(1, viewport()->width()) * mpp;
+    const double h = std::max(1, viewport()->height()) * mpp;
+    const double eps = 0.01 * mpp;
+    QGraphicsView::setSceneRect(QRectF(centre.x() - w / 2, centre.y() - h / 2, w - eps, h - eps));
     m_centre = centre;
     emit viewChanged();
 }

@@ -240,9 +240,9 @@ void MissionLayer::rebuild() {
     m_area->setRings(sceneRings(ShapeRef::area()));
     m_area->setHandleMargin(margin);
     if (!m.area.outer.empty()) {
-        const QString problem = shapeProblem(m.area);
+        const QString problem = shapeProblem(m.area, tr("the area"));
         m_area->setProblem(problem);
-        if (!problem.isEmpty()) problems << tr("Area: %1").arg(problem);
+        if (!problem.isEmpty()) problems << problem;
         m_area->setLabel(problem.isEmpty() ? tr("Area · %1").arg(formatArea(groundArea(m.area))) : tr("Area (invalid)"));
     } else {
         m_area->setProblem({});
@@ -261,10 +261,10 @@ void MissionLayer::rebuild() {
         item->setRings(sceneRings(ShapeRef::noFly(int(i))));
         item->setHandleMargin(margin);
         const QString name = QString::fromStdString(m.noFlyZones[i].name);
-        const QString problem = shapeProblem(m.noFlyZones[i].polygon);
+        const QString problem = shapeProblem(m.noFlyZones[i].polygon, tr("no-fly zone \"%1\"").arg(name));
         item->setProblem(problem);
         item->setLabel(name);
-        if (!problem.isEmpty()) problems << tr("No-fly zone \"%1\": %2").arg(name, problem);
+        if (!problem.isEmpty()) problems << problem;
     }
     if (m.home) {
         if (!m_home) {

@@ -109,7 +109,7 @@ void DrawPolygonTool::updatePreview(const std::optional<QPointF>& cursor) {
     }
     m_preview->setProblem(problem);
     emit statusMessage(problem.isEmpty() ? tr("%n vertices", nullptr, m_points.size())
-                                         : tr("Invalid shape: %1").arg(problem));
+                                         : problem);
 }
 
 bool DrawPolygonTool::finish() {
@@ -121,8 +121,7 @@ bool DrawPolygonTool::finish() {
     poly.outer = ringFromScene(m_points);
     const QString problem = shapeProblem(poly);
     if (!problem.isEmpty()) {
-        emit statusMessage(tr("Cannot finish the shape: it %1. Move the mouse and click elsewhere, or press "
-                              "Backspace to remove the last vertex.")
+        emit statusMessage(tr("Cannot finish: %1. Click elsewhere, or press Backspace to remove the last vertex.")
                                .arg(problem));
         return false;
     }

@@ -96,7 +96,7 @@ void SelectTool::updatePreview(const QPointF& p) {
     for (int r = 1; r < rings.size(); ++r) poly.holes.push_back(ringFromScene(rings[r]));
     const QString problem = shapeProblem(poly);
     m_preview->setProblem(problem);
-    emit statusMessage(problem.isEmpty() ? QString() : tr("Invalid shape: %1").arg(problem));
+    emit statusMessage(problem);
 }
 
 void SelectTool::mouseMoved(QMouseEvent* e, const QPointF& p) {

@@ -1,0 +1,142 @@
+// The aircraft panel (altitude <-> GSD linkage, undo) and the ground-station position.
+#include "core/sensor/camera.h"
+#include "ui/ground_station.h"
+#include "ui/mission_document.h"
+#include "ui/panels/aircraft_panel.h"
+#include "ui_test_util.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QSignalSpy>
+#include <QUndoStack>
+
+#include <gtest/gtest.h>
+
+using namespace pf;
+using namespace pf::ui;
+
+TEST(AircraftPanel, AltitudeAndGsdDriveEachOther) {
+    auto w = test::makeWindow();
+    auto* panel = w->aircraftPanel();
+    auto* doc = w->document();
+    panel->addCustom();
+    ASSERT_EQ(doc->mission().aircraft.size(), 1u);
+    const sensor::Camera cam = doc->mission().aircraft[0].camera;
+
+    for (double alt : {30.0, 55.5, 100.0, 240.0}) {
+        panel->altitudeBox()->setValue(alt);
+        const auto& a = doc->mission().aircraft[0];
+        ASSERT_TRUE(a.altitudeM.has_value());
+        EXPECT_DOUBLE_EQ(*a.altitudeM, alt);
+        EXPECT_FALSE(a.gsdCm.has_value());
+        EXPECT_NEAR(panel->gsdBox()->value(), *sensor::gsdCmAt(cam, alt), 0.006) << alt;
+    }
+    for (double gsd : {0.8, 1.5, 3.25}) {
+        panel->gsdBox()->setValue(gsd);
+        const auto& a = doc->mission().aircraft[0];
+        ASSERT_TRUE(a.gsdCm.has_value());
+        EXPECT_DOUBLE_EQ(*a.gsdCm, gsd);
+        EXPECT_FALSE(a.altitudeM.has_value());
+        EXPECT_NEAR(panel->altitudeBox()->value(), *sensor::altitudeForGsd(cam, gsd), 0.06) << gsd;
+    }
+    // The footprint shown is the camera's at the current altitude.
+    const auto fp = sensor::footprintAt(cam, panel->altitudeBox()->value());
+    ASSERT_TRUE(fp.ok());
+    EXPECT_TRUE(panel->footprintLabel()->text().contains(QString::number(fp->longSideM, 'f', 1)))
+        << panel->footprintLabel()->text().toStdString();
+}
+
+TEST(AircraftPanel, EditsAreUndoableAndRepeatedEditsMerge) {
+    auto w = test::makeWindow();
+    auto* panel = w->aircraftPanel();
+    auto* doc = w->document();
+    auto* stack = doc->undoStack();
+    panel->addCustom();
+    const auto added = doc->mission().aircraft[0];
+    const int afterAdd = stack->count();
+    panel->altitudeBox()->setValue(70);
+    panel->altitudeBox()->setValue(80);
+    panel->altitudeBox()->setValue(90);
+    EXPECT_EQ(stack->count(), afterAdd + 1); // one step for the altitude edits
+    panel->speedBox()->setValue(12.5);
+    panel->frontOverlapBox()->setValue(80);
+    panel->sideOverlapBox()->setValue(70);
+    panel->enduranceBox()->setValue(35);
+    panel->setColour(QColor(QStringLiteral("#123456")));
+    const auto& a = doc->mission().aircraft[0];
+    EXPECT_DOUBLE_EQ(a.cruiseSpeedMps, 12.5);
+    EXPECT_DOUBLE_EQ(a.overlap.front, 0.8);
+    EXPECT_DOUBLE_EQ(a.overlap.side, 0.7);
+    EXPECT_DOUBLE_EQ(a.enduranceMin, 35);
+    EXPECT_EQ(a.colour, "#123456");
+    while (stack->count() > afterAdd && stack->index() > afterAdd) stack->undo();
+    EXPECT_EQ(doc->mission().aircraft[0], added);
+    EXPECT_DOUBLE_EQ(panel->altitudeBox()->value(), *added.altitudeM); // the form follows undo
+    stack->undo();
+    EXPECT_TRUE(doc->mission().aircraft.empty());
+}
+
+TEST(AircraftPanel, CatalogAircraftAndCameraChoiceAndRemove) {
+    auto w = test::makeWindow();
+    auto* panel = w->aircraftPanel();
+    auto* doc = w->document();
+    auto catalog = io::loadDefaultCatalog();
+    ASSERT_TRUE(catalog.ok()) << catalog.error().message;
+    ASSERT_FALSE(catalog->aircraft.empty());
+    const auto& spec = catalog->aircraft.front();
+    panel->addFromCatalog(QString::fromStdString(spec.name));
+    ASSERT_EQ(doc->mission().aircraft.size(), 1u);
+    EXPECT_EQ(doc->mission().aircraft[0].model, spec.name);
+    EXPECT_DOUBLE_EQ(doc->mission().aircraft[0].cruiseSpeedMps, spec.cruiseSpeedMps);
+    EXPECT_DOUBLE_EQ(doc->mission().aircraft[0].enduranceMin, spec.enduranceMin);
+
+    // Changing the camera keeps the altitude and recomputes the GSD.
+    const double alt = panel->altitudeBox()->value();
+    const int other = panel->cameraBox()->currentIndex() == 0 ? 1 : 0;
+    ASSERT_GT(panel->cameraBox()->count(), 1);
+    panel->cameraBox()->setCurrentIndex(other);
+    const auto& a = doc->mission().aircraft[0];
+    EXPECT_EQ(QString::fromStdString(a.camera.name), panel->cameraBox()->itemText(other));
+    EXPECT_NEAR(panel->altitudeBox()->value(), alt, 1e-9);
+    EXPECT_NEAR(panel->gsdBox()->value(), *sensor::gsdCmAt(a.camera, alt), 0.006);
+
+    panel->addCustom();
+    EXPECT_EQ(doc->mission().aircraft.size(), 2u);
+    EXPECT_NE(doc->mission().aircraft[0].colour, doc->mission().aircraft[1].colour);
+    panel->setCurrent(0);
+    panel->removeCurrent();
+    ASSERT_EQ(doc->mission().aircraft.size(), 1u);
+    EXPECT_EQ(doc->mission().aircraft[0].model, "custom");
+    doc->undoStack()->undo();
+    EXPECT_EQ(doc->mission().aircraft.size(), 2u);
+    EXPECT_EQ(doc->mission().aircraft[0].model, spec.name);
+}
+
+TEST(GroundStation, ReplaysAnNmeaLogAndCentresOnTheOperator) {
+    auto w = test::makeWindow();
+    auto* gs = w->groundStation();
+    QSignalSpy spy(gs, &GroundStation::statusChanged);
+    QString error;
+    ASSERT_TRUE(gs->openNmeaFile(QStringLiteral(PF_UI_TEST_DATA_DIR "/operator.nmea"), &error)) << error.toStdString();
+    QTRY_VERIFY_WITH_TIMEOUT(gs->position().has_value(), 5000);
+    EXPECT_GE(spy.count(), 1); // "reading operator.nmea"
+    // 4900.6300 N 00819.5900 E = 49.0105 N, 8.326500 E; the log walks east by 1e-5 degrees a second.
+    EXPECT_NEAR(gs->position()->lat, 49.0105, 2e-6);
+    EXPECT_GE(gs->position()->lon, 8.3265 - 1e-9);
+    EXPECT_LE(gs->position()->lon, 8.32652 + 1e-9);
+    w->mapView()->centreOn({8.3300, 49.0125});
+    const geo::LonLat me = *gs->position();
+    w->mapView()->centreOn(me);
+    EXPECT_LT(test::metresBetween(w->mapView()->centreLonLat(), me), 0.01);
+    // The replay goes on at the log's pace: the operator walks east.
+    QTRY_VERIFY_WITH_TIMEOUT(gs->position()->lon > 8.32651 + 5e-6, 5000);
+}
+
+TEST(GroundStation, MissingSourceIsAnError) {
+    auto w = test::makeWindow();
+    QString error;
+    EXPECT_FALSE(w->groundStation()->openNmeaFile(QStringLiteral("/nonexistent/gps.nmea"), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("/nonexistent/gps.nmea"))) << error.toStdString();
+    EXPECT_FALSE(w->groundStation()->isActive());
+}
