@@ -255,7 +255,9 @@ Result<std::vector<ImportedPolygon>> importPolygons(const std::string& path) {
             }
         }
     }
-    if (!errors.firstError().empty() && out.empty())
+    // A driver that stumbles half-way reports it as an error and stops: importing the features read
+    // so far would silently drop the rest of the area.
+    if (!errors.firstError().empty())
         return makeError(ErrorCode::ParseError, path + ": cannot read the file: " + errors.firstError());
     if (out.empty()) {
         std::string found = features == 0 ? "it has no features"
