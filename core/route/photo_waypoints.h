@@ -1,0 +1,39 @@
+// Photo waypoints from a cell path (paper 001, section IV): several photos per cell along the track.
+#pragma once
+
+#include "core/grid/grid.h"
+#include "core/plan/cell_path.h"
+#include "core/route/waypoint.h"
+#include "core/sensor/camera.h"
+
+#include <vector>
+
+namespace pf::route {
+
+// How many photos a cell needs: along the track, cell side / effective short side; across the track,
+// cell side / effective long side (1 unless the overlaps make the long side the shorter one), each
+// rounded up.
+struct PhotosPerCell {
+    int along = 1;
+    int across = 1;
+};
+PhotosPerCell photosPerCell(double cellSizeM, const sensor::EffectiveFootprint& fp);
+
+// Heading of a direction in the local frame, clockwise from north (local +y), in [0, 360).
+double headingDeg(const geo::Vec2& dir);
+
+// The waypoints of a cell path, in flight order:
+// - a photographed cell gets its photos (kind Photo) with the sensor's long side across the direction of
+//   flight into the cell (out of it for the first cell): `along` photos spaced by cell / along <= the
+//   effective short side, centred on the cell's flight position so that together they cover the whole
+//   cell (the middle one sits on the flight position when `along` is odd). At a turn the aircraft turns
+//   at the cell's last photo.
+// - a revisited cell gets no second photo: a Transit waypoint where the path changes direction there,
+//   and at the path's ends, keeps the transit on its safe cell-to-cell legs.
+// - a cell flown over before it is photographed (the way from the take-off cell to the start) gets a
+//   Turn waypoint where the path changes direction there: a turn point without a photo.
+// Every waypoint carries the cell it belongs to.
+std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellPath& path,
+                                          const sensor::EffectiveFootprint& fp);
+
+} // namespace pf::route

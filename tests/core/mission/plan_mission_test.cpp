@@ -1,0 +1,143 @@
+#include "core/mission/plan_mission.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace pf::mission {
+namespace {
+
+// The demo site: "Rheinhafen training ground" with its two no-fly zones.
+Mission demoMission() {
+    Mission m;
+    m.name = "Rheinhafen";
+    m.area.outer = {{8.3272608, 49.0109209}, {8.3324653, 49.0108309}, {8.3327392, 49.0123597},
+                    {8.3308218, 49.0125396}, {8.3305478, 49.0133489}, {8.3273978, 49.013259}};
+    NoFlyZone warehouse;
+    warehouse.name = "Warehouse";
+    warehouse.polygon.outer = {{8.3291782, 49.0118201}, {8.3297261, 49.0118201}, {8.3297261, 49.0121799},
+                               {8.3291782, 49.0121799}};
+    m.noFlyZones.push_back(warehouse);
+    NoFlyZone mast;
+    mast.name = "Radio mast";
+    for (int k = 0; k < 16; ++k) {
+        const double a = 2 * M_PI * k / 16;
+        mast.polygon.outer.push_back({8.3316435 + 20.0 * std::cos(a) / (111320.0 * std::cos(49.0115504 * M_PI / 180)),
+                                      49.0115504 + 20.0 * std::sin(a) / 111320.0});
+    }
+    m.noFlyZones.push_back(mast);
+    m.home = geo::LonLat{8.3270554, 49.010741};
+    AircraftConfig a;
+    a.name = "Falcon 1";
+    a.model = "custom";
+    a.camera.name = "test";
+    a.camera.hfovDeg = 70;
+    a.camera.vfovDeg = 55;
+    a.camera.imageWidthPx = 4000;
+    a.camera.imageHeightPx = 3000;
+    a.altitudeM = 50;
+    a.overlap = {0.6, 0.4};
+    m.aircraft.push_back(a);
+    m.options.gridAngleDeg = 0.0;
+    return m;
+}
+
+TEST(PlanMission, DemoSiteStrideCoversEverythingWithoutJumps) {
+    const Mission m = demoMission();
+    auto plan = planMission(m);
+    ASSERT_TRUE(plan.ok()) << plan.error().message;
+    ASSERT_EQ(plan->aircraft.size(), 1u);
+    const AircraftPlan& a = plan->aircraft.front();
+    EXPECT_EQ(a.aircraft, "Falcon 1");
+    EXPECT_TRUE(a.metrics.complete());
+    EXPECT_GT(a.metrics.visitable, 50);
+    EXPECT_EQ(a.metrics.jumps, 0);
+    EXPECT_GE(a.metrics.photos, a.metrics.cells);
+    EXPECT_GE(a.metrics.turnLowerBound, 0);
+    EXPECT_EQ(a.anglesTried, 1);
+    EXPECT_TRUE(plan->warnings.empty());
+    // Every cell of the path is flown at a safe position, and the route mirrors the local waypoints.
+    for (int c : a.path.cells)
+        EXPECT_TRUE(a.grid.pointIsSafe(a.grid.flightPosition(c)));
+    ASSERT_EQ(a.route.waypoints.size(), a.localWaypoints.size());
+    ASSERT_TRUE(a.route.home.has_value());
+    EXPECT_NEAR(a.route.home->lon, 8.3270554, 1e-9);
+    for (const auto& w : a.route.waypoints) {
+        EXPECT_DOUBLE_EQ(w.altitudeM, 50.0);
+        EXPECT_GT(w.position.lon, 8.325);
+        EXPECT_LT(w.position.lon, 8.335);
+    }
+    EXPECT_EQ(plan->totals.photos, a.metrics.photos);
+    EXPECT_DOUBLE_EQ(plan->totals.estimatedTimeS, a.metrics.estimatedTimeS);
+    // Take-off and landing near home: the path starts and ends at the cell nearest to it.
+    EXPECT_EQ(a.path.cells.front(), a.path.cells.back());
+}
+
+TEST(PlanMission, AutoAngleIsNoWorseThanZero) {
+    Mission m = demoMission();
+    auto fixed = planMission(m);
+    ASSERT_TRUE(fixed.ok());
+    m.options.gridAngleDeg.reset();
+    auto autoPlan = planMission(m);
+    ASSERT_TRUE(autoPlan.ok()) << autoPlan.error().message;
+    const AircraftPlan& a = autoPlan->aircraft.front();
+    EXPECT_GE(a.anglesTried, 36);
+    EXPECT_LE(a.metrics.estimatedTimeS, fixed->aircraft.front().metrics.estimatedTimeS + 1e-9);
+    EXPECT_TRUE(a.metrics.complete());
+}
+
+TEST(PlanMission, EveryPlannerCompletes) {
+    for (PlannerKind k : {PlannerKind::Stride, PlannerKind::Raster, PlannerKind::Wavefront}) {
+        Mission m = demoMission();
+        m.options.planner = k;
+        auto plan = planMission(m);
+        ASSERT_TRUE(plan.ok()) << plan.error().message;
+        EXPECT_TRUE(plan->aircraft.front().metrics.complete());
+    }
+}
+
+TEST(PlanMission, SeveralAircraftWarnAndPlanOnlyTheFirst) {
+    Mission m = demoMission();
+    AircraftConfig b = m.aircraft.front();
+    b.name = "Falcon 2";
+    m.aircraft.push_back(b);
+    auto plan = planMission(m);
+    ASSERT_TRUE(plan.ok());
+    EXPECT_EQ(plan->aircraft.size(), 1u);
+    ASSERT_EQ(plan->warnings.size(), 1u);
+    EXPECT_NE(plan->warnings.front().find("multi-aircraft partitioning not available"), std::string::npos);
+    EXPECT_NE(plan->warnings.front().find("\"Falcon 2\""), std::string::npos);
+}
+
+TEST(PlanMission, BadInputs) {
+    Mission m = demoMission();
+    m.aircraft.clear();
+    auto plan = planMission(m);
+    ASSERT_FALSE(plan.ok());
+    EXPECT_EQ(plan.error().message, "the mission has no aircraft: add one to plan a flight");
+
+    m = demoMission();
+    m.aircraft.front().altitudeM.reset();
+    plan = planMission(m);
+    ASSERT_FALSE(plan.ok());
+    EXPECT_EQ(plan.error().message,
+              "aircraft \"Falcon 1\": neither a flight altitude nor a ground sample distance is set");
+
+    m = demoMission();
+    m.options.maxCells = 10;
+    plan = planMission(m);
+    ASSERT_FALSE(plan.ok());
+    EXPECT_EQ(plan.error().code, ErrorCode::TooLarge);
+    EXPECT_EQ(plan.error().message.rfind("aircraft \"Falcon 1\": ", 0), 0u);
+}
+
+TEST(PlanMission, AngleCandidatesIncludeLongestEdge) {
+    const geo::MultiPolygon region{geo::Polygon{{{0, 0}, {100, 10}, {100, 20}, {0, 20}}, {}}};
+    const auto angles = candidateAngles(region);
+    EXPECT_EQ(angles.size(), 37u); // 36 steps + atan(10/100); the other long edge (180 deg) is 0
+    EXPECT_NEAR(angles.back(), std::atan2(10.0, 100.0) * 180.0 / M_PI, 1e-3);
+}
+
+} // namespace
+} // namespace pf::mission

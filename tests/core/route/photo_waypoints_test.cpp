@@ -1,0 +1,133 @@
+#include "core/route/photo_waypoints.h"
+
+#include "core/plan/stride_planner.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+namespace pf::route {
+namespace {
+
+sensor::EffectiveFootprint footprint(double across, double along) {
+    sensor::EffectiveFootprint fp;
+    fp.acrossM = across;
+    fp.alongM = along;
+    return fp;
+}
+
+TEST(PhotoWaypoints, Heading) {
+    EXPECT_DOUBLE_EQ(headingDeg({0, 1}), 0.0);
+    EXPECT_DOUBLE_EQ(headingDeg({1, 0}), 90.0);
+    EXPECT_DOUBLE_EQ(headingDeg({0, -1}), 180.0);
+    EXPECT_DOUBLE_EQ(headingDeg({-1, 0}), 270.0);
+}
+
+TEST(PhotoWaypoints, PhotosPerCell) {
+    // 24 m cells (the long side), 13.5 m along: two photos per cell.
+    EXPECT_EQ(photosPerCell(24, footprint(24, 13.5)).along, 2);
+    EXPECT_EQ(photosPerCell(24, footprint(24, 13.5)).across, 1);
+    EXPECT_EQ(photosPerCell(24, footprint(24, 24)).along, 1);
+    EXPECT_EQ(photosPerCell(24, footprint(24, 7.9)).along, 4);
+    // Overlaps that make the long side the shorter effective side: photos across as well.
+    EXPECT_EQ(photosPerCell(20, footprint(12, 20)).across, 2);
+}
+
+TEST(PhotoWaypoints, StraightRowSpacingAndHeading) {
+    std::vector<std::uint8_t> mask(3, 1);
+    const grid::Grid g = grid::Grid::fromMask(3, 1, mask, 24.0);
+    plan::CellPath path;
+    path.cells = {0, 1, 2};
+    path.revisit = {false, false, false};
+    const auto wps = photoWaypoints(g, path, footprint(24, 13.5));
+    ASSERT_EQ(wps.size(), 6u);
+    for (std::size_t k = 0; k < wps.size(); ++k) {
+        EXPECT_EQ(wps[k].kind, WaypointKind::Photo);
+        EXPECT_DOUBLE_EQ(wps[k].headingDeg, 90.0); // flying east
+        EXPECT_NEAR(wps[k].pos.y(), 12.0, 1e-9);
+        EXPECT_NEAR(wps[k].pos.x(), 6.0 + 12.0 * k, 1e-9); // evenly spaced by 12 m <= 13.5 m
+        EXPECT_EQ(wps[k].cell, static_cast<int>(k / 2));
+    }
+}
+
+TEST(PhotoWaypoints, EveryCellCoveredAlongTheTrack) {
+    // For any path, each photographed cell's photos span the whole cell along their heading.
+    std::vector<std::uint8_t> mask(6 * 5, 1);
+    mask[2 * 6 + 2] = 0;
+    const grid::Grid g = grid::Grid::fromMask(6, 5, mask, 30.0);
+    auto path = plan::planStride(g, {});
+    ASSERT_TRUE(path.ok());
+    const auto fp = footprint(30, 11);
+    const auto wps = photoWaypoints(g, *path, fp);
+    std::map<int, std::vector<const LocalWaypoint*>> byCell;
+    for (const auto& w : wps)
+        if (w.kind == WaypointKind::Photo)
+            byCell[w.cell].push_back(&w);
+    EXPECT_EQ(static_cast<int>(byCell.size()), g.visitCount());
+    for (const auto& [cell, photos] : byCell) {
+        ASSERT_EQ(photos.size(), 3u); // ceil(30 / 11)
+        const double h = photos.front()->headingDeg * M_PI / 180.0;
+        const geo::Vec2 dir(std::sin(h), std::cos(h));
+        double lo = 1e9, hi = -1e9;
+        for (const auto* w : photos) {
+            EXPECT_DOUBLE_EQ(w->headingDeg, photos.front()->headingDeg);
+            const double t = (w->pos - g.flightPosition(cell)).dot(dir);
+            lo = std::min(lo, t - fp.alongM / 2);
+            hi = std::max(hi, t + fp.alongM / 2);
+            // Centred on the track through the cell.
+            EXPECT_NEAR((w->pos - g.flightPosition(cell) - t * dir).norm(), 0.0, 1e-9);
+        }
+        EXPECT_LE(lo, -15.0 + 1e-9);
+        EXPECT_GE(hi, 15.0 - 1e-9);
+    }
+}
+
+TEST(PhotoWaypoints, RevisitsAndTakeoffLegGetNoPhoto) {
+    std::vector<std::uint8_t> mask(3 * 3, 1);
+    const grid::Grid g = grid::Grid::fromMask(3, 3, mask, 10.0);
+    plan::CellPath path;
+    // Take-off leg over (2,2) -> (2,1) -> (2,0), turn west, photos on row 0, back over (1,0) as a transit
+    // and up to (1,1).
+    path.cells = {g.index(1, 2), g.index(2, 2), g.index(2, 1), g.index(2, 0), g.index(1, 0), g.index(0, 0),
+                  g.index(1, 0), g.index(1, 1)};
+    path.revisit = {true, true, true, false, false, false, true, false};
+    const auto wps = photoWaypoints(g, path, footprint(10, 10));
+    int photos = 0, turns = 0, transits = 0;
+    for (const auto& w : wps) {
+        photos += w.kind == WaypointKind::Photo;
+        turns += w.kind == WaypointKind::Turn;
+        transits += w.kind == WaypointKind::Transit;
+    }
+    EXPECT_EQ(photos, 4);
+    // (1,2) is the first point, (2,2) turns south: two turn points without photos.
+    EXPECT_EQ(turns, 2);
+    // (1,0) revisited where the path turns north.
+    EXPECT_EQ(transits, 1);
+    for (const auto& w : wps) {
+        if (w.kind == WaypointKind::Transit) {
+            EXPECT_EQ(w.cell, g.index(1, 0));
+        }
+    }
+}
+
+TEST(PhotoWaypoints, RotatedGridHeadings) {
+    geo::Polygon area{{{0, 0}, {100, 0}, {100, 100}, {0, 100}}, {}};
+    grid::GridOptions opt;
+    opt.cellSize = 20;
+    opt.angleDeg = 30;
+    auto g = grid::Grid::build(area, {}, opt);
+    ASSERT_TRUE(g.ok()) << g.error().message;
+    auto path = plan::planStride(*g, {});
+    ASSERT_TRUE(path.ok());
+    const auto wps = photoWaypoints(*g, *path, footprint(20, 20));
+    // Grid east is 30 deg counter-clockwise from local east: heading 60; grid north: heading 330.
+    for (const auto& w : wps) {
+        const double h = w.headingDeg;
+        const bool axis = std::fabs(std::remainder(h - 60.0, 90.0)) < 1e-6;
+        EXPECT_TRUE(axis) << h;
+    }
+}
+
+} // namespace
+} // namespace pf::route
