@@ -161,23 +161,53 @@ public:
         return reached == size(k) - 1;
     }
 
-    // The best cell of `from` to hand to `to`: adjacent to `to` by a move, removable from `from`,
-    // maximising neighbours in `to` minus neighbours in `from` (keeps both compact). -1 if none.
-    int bestTransfer(int from, int to) const {
-        int best = -1, bestScore = std::numeric_limits<int>::min();
-        for (int c = 0; c < m_g.cellCount(); ++c) {
-            if (owner(c) != from)
-                continue;
-            const int inTo = neighboursIn(c, to);
-            if (inTo == 0)
-                continue;
-            const int score = 2 * inTo - neighboursIn(c, from);
-            if (score > bestScore && removable(c)) {
-                bestScore = score;
-                best = c;
+    // Hands up to `count` cells of `from` to `to`, one at a time, each time the best boundary cell:
+    // adjacent to `to` by a move, removable from `from` without splitting it, maximising neighbours
+    // in `to` minus neighbours in `from` (keeps both compact). Only the shared boundary is scanned
+    // per pick, so large grids stay fast. Returns the cells moved, in order.
+    std::vector<int> transfer(int from, int to, int count) {
+        std::vector<int> moved;
+        if (count <= 0)
+            return moved;
+        std::vector<int> cand;
+        std::vector<std::uint8_t> inCand(static_cast<std::size_t>(m_g.cellCount()), 0);
+        auto consider = [&](int c) {
+            if (c >= 0 && owner(c) == from && !inCand[static_cast<std::size_t>(c)] && neighboursIn(c, to) > 0) {
+                inCand[static_cast<std::size_t>(c)] = 1;
+                cand.push_back(c);
             }
+        };
+        for (int c = 0; c < m_g.cellCount(); ++c)
+            consider(c);
+        while (static_cast<int>(moved.size()) < count) {
+            // Drop stale candidates, score the rest, try them best first.
+            std::vector<std::pair<int, int>> scored;
+            std::vector<int> keep;
+            for (int c : cand) {
+                if (owner(c) != from || neighboursIn(c, to) == 0) {
+                    inCand[static_cast<std::size_t>(c)] = 0;
+                    continue;
+                }
+                keep.push_back(c);
+                scored.emplace_back(-(2 * neighboursIn(c, to) - neighboursIn(c, from)), c);
+            }
+            cand.swap(keep);
+            std::sort(scored.begin(), scored.end());
+            int pick = -1;
+            for (const auto& [negScore, c] : scored)
+                if (removable(c)) {
+                    pick = c;
+                    break;
+                }
+            if (pick < 0)
+                break;
+            assign(pick, to);
+            moved.push_back(pick);
+            for (int d = 0; d < 4; ++d)
+                if (m_g.canMove(pick, d))
+                    consider(m_g.neighbour(pick, d));
         }
-        return best;
+        return moved;
     }
 
     // Shared move-edges between subareas: adj[a][b].
@@ -323,7 +353,7 @@ void partitionPiece(const BaseGrid& g, const std::vector<int>& piece, const std:
     // Redistribution to the targets (paper fig. 9), along chains of adjacent subareas.
     std::set<std::pair<int, int>> blocked;
     const int maxMoves = 4 * static_cast<int>(piece.size()) + 16;
-    for (int moves = 0; moves < maxMoves;) {
+    for (int moves = 0, rounds = 0; moves < maxMoves && rounds < maxMoves; ++rounds) {
         int over = -1;
         for (int k : fleet)
             if (as.size(k) > targets[static_cast<std::size_t>(k)] &&
@@ -358,18 +388,20 @@ void partitionPiece(const BaseGrid& g, const std::vector<int>& piece, const std:
             blocked.insert({over, -1});
             continue;
         }
-        // Move one cell along each edge of the chain, from the receiving end backwards.
+        // Move cells along each edge of the chain, from the receiving end backwards, so that the
+        // subareas in between end up with as many cells as before.
+        int amount = std::min(as.size(over) - targets[static_cast<std::size_t>(over)],
+                              targets[static_cast<std::size_t>(under)] - as.size(under));
         bool stuck = false;
         for (int b = under; prev[static_cast<std::size_t>(b)] >= 0 && !stuck; b = prev[static_cast<std::size_t>(b)]) {
             const int a = prev[static_cast<std::size_t>(b)];
-            const int c = as.bestTransfer(a, b);
-            if (c < 0) {
+            const int done = static_cast<int>(as.transfer(a, b, amount).size());
+            moves += done;
+            if (done == 0) {
                 blocked.insert({a, b});
                 stuck = true;
-            } else {
-                as.assign(c, b);
-                ++moves;
             }
+            amount = done;
         }
         if (!stuck)
             blocked.clear();
@@ -629,14 +661,7 @@ Result<BalanceReport> balanceByTime(const BaseGrid& g, Partition& p, const TimeE
         m = std::clamp(m, 1, std::max(1, as.size(s) - 1));
         bool accepted = false;
         while (m >= 1 && !accepted) {
-            std::vector<int> done;
-            for (int i = 0; i < m; ++i) {
-                const int c = as.bestTransfer(s, r);
-                if (c < 0)
-                    break;
-                as.assign(c, r);
-                done.push_back(c);
-            }
+            const std::vector<int> done = as.transfer(s, r, m);
             if (done.empty())
                 break;
             auto nts = est(s);

@@ -1,0 +1,177 @@
+// Fleet stages: partition speed, time balancing with the real planner, coverage check, detours.
+#include "core/fleet/capability.h"
+#include "core/fleet/partition.h"
+#include "core/geo/local_frame.h"
+#include "core/geo/polygon_ops.h"
+#include "core/grid/grid.h"
+#include "core/mission/plan_mission.h"
+#include "core/plan/coverage_check.h"
+#include "core/route/safety.h"
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <random>
+
+using namespace pf;
+
+namespace {
+
+// A square mask with notches and holes, reduced to nothing fancy: big enough to time the partition.
+fleet::BaseGrid bigMask(int n, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::vector<std::uint8_t> mask(static_cast<std::size_t>(n * n), 1);
+    auto cut = [&](int x0, int y0, int w, int h) {
+        for (int y = std::max(0, y0); y < std::min(n, y0 + h); ++y)
+            for (int x = std::max(0, x0); x < std::min(n, x0 + w); ++x)
+                mask[static_cast<std::size_t>(y * n + x)] = 0;
+    };
+    cut(0, 0, n / 3, n / 3);           // concave corner
+    cut(n / 2, n - n / 4, n / 6, n);   // notch from the top
+    std::uniform_int_distribution<int> pos(n / 8, n - n / 4);
+    for (int i = 0; i < 6; ++i)        // holes
+        cut(pos(rng), pos(rng), n / 16 + 1, n / 12 + 1);
+    return fleet::BaseGrid::fromMask(n, n, mask, 10.0);
+}
+
+void BM_PartitionCells(benchmark::State& state) {
+    const auto g = bigMask(static_cast<int>(state.range(0)), 7);
+    const std::vector<double> shares{1.0, 1.7, 0.8, 1.3};
+    for (auto _ : state) {
+        auto p = fleet::partitionCells(g, shares);
+        benchmark::DoNotOptimize(p);
+    }
+    state.counters["cells"] = static_cast<double>(std::accumulate(g.active.begin(), g.active.end(), 0));
+}
+BENCHMARK(BM_PartitionCells)->Arg(40)->Arg(120)->Arg(300)->Unit(benchmark::kMillisecond);
+
+struct Demo {
+    geo::LocalFrame frame;
+    geo::Polygon area;
+    std::vector<geo::Polygon> noFly;
+    geo::Vec2 home;
+};
+
+Demo demo() {
+    const geo::GeoPolygon area{{{8.3272608, 49.0109209}, {8.3324653, 49.0108309}, {8.3327392, 49.0123597},
+                                {8.3308218, 49.0125396}, {8.3305478, 49.0133489}, {8.3273978, 49.013259}},
+                               {}};
+    auto frame = geo::LocalFrame::forArea(area);
+    Demo d{*frame, frame->toLocal(area), {}, frame->toLocal(geo::LonLat{8.3270554, 49.010741})};
+    d.noFly.push_back(frame->toLocal(geo::GeoPolygon{
+        {{8.3291782, 49.0118201}, {8.3297261, 49.0118201}, {8.3297261, 49.0121799}, {8.3291782, 49.0121799}}, {}}));
+    const geo::Vec2 mast = frame->toLocal(geo::LonLat{8.3316435, 49.0115504});
+    geo::Polygon zone;
+    for (int i = 0; i < 16; ++i)
+        zone.outer.push_back(mast + 20.0 * geo::Vec2(std::cos(i * M_PI / 8), std::sin(i * M_PI / 8)));
+    d.noFly.push_back(zone);
+    return d;
+}
+
+// A mixed fleet: the same 1" camera at different altitudes, speeds and turn rates.
+std::vector<mission::AircraftConfig> mixedFleet(int n) {
+    sensor::Camera cam;
+    cam.name = "1-inch 20 MP";
+    cam.sensorWidthMm = 13.2;
+    cam.sensorHeightMm = 8.8;
+    cam.focalLengthMm = 8.8;
+    cam.imageWidthPx = 5472;
+    cam.imageHeightPx = 3648;
+    const double alt[4] = {40, 70, 55, 30};
+    const double speed[4] = {8, 12, 6, 10};
+    const double turn[4] = {90, 60, 120, 45};
+    std::vector<mission::AircraftConfig> out;
+    for (int k = 0; k < n; ++k) {
+        mission::AircraftConfig a;
+        a.name = "A" + std::to_string(k + 1);
+        a.camera = cam;
+        a.altitudeM = alt[k];
+        a.cruiseSpeedMps = speed[k];
+        a.turnRateDegS = turn[k];
+        out.push_back(a);
+    }
+    return out;
+}
+
+// Partition of the demo site for n aircraft, then balancing with planRegion as the estimator;
+// counters: makespan / ideal before and after, estimator calls.
+void BM_BalanceDemoWithStridePlanner(benchmark::State& state) {
+    const int n = static_cast<int>(state.range(0));
+    const auto d = demo();
+    const auto fleetCfg = mixedFleet(n);
+    std::vector<fleet::Capability> caps;
+    std::vector<double> sizes;
+    for (const auto& a : fleetCfg) {
+        auto fp = sensor::effectiveFootprint(a.camera, *a.altitudeM, a.overlap);
+        caps.push_back({a.name, *fp, a.cruiseSpeedMps, a.turnRateDegS});
+        sizes.push_back(fleet::aircraftCellSize(*fp));
+    }
+    const double areaM2 = geo::area(d.area);
+    const double base = *fleet::baseCellSize(sizes, areaM2);
+    grid::GridOptions go;
+    go.cellSize = base;
+    go.safetyMarginM = 5;
+    auto g = grid::Grid::build(d.area, d.noFly, go);
+    const auto b = fleet::BaseGrid::fromGrid(*g);
+    mission::PlannerOptions po;
+    po.gridAngleDeg = 0.0;
+    po.safetyMarginM = 5;
+    auto estimate = [&](int k, const std::vector<int>& cells) -> Result<double> {
+        const auto region = fleet::cellsPolygon(b, cells, g->admissible());
+        auto ap = mission::planRegion(region, d.noFly, fleetCfg[static_cast<std::size_t>(k)], po, d.frame, d.home);
+        if (!ap)
+            return ap.error();
+        return ap->metrics.estimatedTimeS;
+    };
+    double before = 0, after = 0, calls = 0;
+    for (auto _ : state) {
+        auto p = fleet::partitionCells(b, *fleet::capabilityShares(caps, areaM2));
+        std::vector<double> t;
+        for (int k = 0; k < n; ++k)
+            t.push_back(*estimate(k, p->cells[static_cast<std::size_t>(k)]));
+        before = *std::max_element(t.begin(), t.end()) / (std::accumulate(t.begin(), t.end(), 0.0) / n);
+        auto rep = fleet::balanceByTime(b, *p, estimate);
+        if (!rep) {
+            state.SkipWithError(rep.error().message.c_str());
+            return;
+        }
+        after = rep->makespan / rep->ideal;
+        calls = rep->estimatorCalls;
+    }
+    state.counters["makespan_over_ideal_before"] = before;
+    state.counters["makespan_over_ideal_after"] = after;
+    state.counters["estimator_calls"] = calls;
+}
+BENCHMARK(BM_BalanceDemoWithStridePlanner)->Arg(2)->Arg(3)->Arg(4)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// Coverage check of the demo site tiled by 30 x 20 m footprints at 0.5 m pixels.
+void BM_CoverageCheckDemo(benchmark::State& state) {
+    const auto d = demo();
+    const auto admissible = geo::difference(d.area, geo::MultiPolygon(d.noFly.begin(), d.noFly.end()));
+    const auto box = geo::bounds(admissible);
+    std::vector<plan::PhotoFootprint> photos;
+    for (double y = box.min.y() + 6; y < box.max.y(); y += 12)
+        for (double x = box.min.x() + 4; x < box.max.x(); x += 8)
+            photos.push_back({geo::Vec2(x, y), 90.0, 30.0, 20.0});
+    for (auto _ : state) {
+        auto rep = plan::checkCoverage(admissible, photos);
+        benchmark::DoNotOptimize(rep);
+    }
+    state.counters["photos"] = static_cast<double>(photos.size());
+}
+BENCHMARK(BM_CoverageCheckDemo)->Unit(benchmark::kMillisecond);
+
+// Shortest safe detour across the demo site, between the two no-fly zones.
+void BM_SafeDetourDemo(benchmark::State& state) {
+    const auto d = demo();
+    for (auto _ : state) {
+        const route::SafePathFinder finder(route::NoFlyField(d.noFly, 5.0));
+        auto path = finder.detour(d.home, d.home + geo::Vec2(300, 130));
+        benchmark::DoNotOptimize(path);
+    }
+}
+BENCHMARK(BM_SafeDetourDemo)->Unit(benchmark::kMicrosecond);
+
+} // namespace
