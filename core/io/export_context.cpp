@@ -1,5 +1,7 @@
 #include "core/io/export_context.h"
 
+#include "core/geo/local_frame.h"
+
 namespace pf::io {
 
 const mission::AircraftConfig* ExportContext::aircraftFor(std::size_t i) const {
@@ -59,6 +61,33 @@ ExportContext makeExportContext(const mission::Mission& mission, std::vector<rou
         ctx.footprints.push_back(fp);
     }
     return ctx;
+}
+
+Status addTrajectories(ExportContext& ctx, const route::TrajectoryOptions& options) {
+    ctx.trajectories.assign(ctx.routes.size(), {});
+    std::optional<geo::LonLat> origin;
+    for (const auto& r : ctx.routes)
+        if (!origin && !r.waypoints.empty())
+            origin = r.waypoints.front().position;
+    if (!origin)
+        return {};
+    auto frame = ctx.mission.area.outer.empty() ? geo::LocalFrame::create(*origin)
+                                                : geo::LocalFrame::forArea(ctx.mission.area);
+    if (!frame)
+        return frame.error();
+    std::vector<geo::GeoPolygon> zones;
+    for (const auto& z : ctx.mission.noFlyZones)
+        zones.push_back(z.polygon);
+    const geo::MultiPolygon keepOut = route::keepOutZones(zones, *frame, ctx.mission.options.safetyMarginM);
+    for (std::size_t i = 0; i < ctx.routes.size(); ++i) {
+        route::Route r = ctx.routes[i];
+        r.home = ctx.homeFor(i);
+        auto t = route::buildTrajectory(r, *frame, keepOut, options);
+        if (!t)
+            return makeError(t.error().code, ctx.routeLabel(i) + ": " + t.error().message);
+        ctx.trajectories[i] = route::toGeo(*t, *frame);
+    }
+    return {};
 }
 
 ExportContext contextFromImport(const ImportedWaypoints& imported) {

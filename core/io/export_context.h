@@ -4,6 +4,8 @@
 
 #include "core/geo/types.h"
 #include "core/mission/mission.h"
+#include "core/result.h"
+#include "core/route/trajectory.h"
 #include "core/route/waypoint.h"
 #include "core/sensor/camera.h"
 
@@ -54,6 +56,11 @@ struct ExportContext {
 // A context for a planned mission: footprints from each aircraft's camera at its altitude (set
 // altitude, else the one giving its GSD), where the camera allows it.
 ExportContext makeExportContext(const mission::Mission& mission, std::vector<route::Route> routes);
+
+// Fills ctx.trajectories (drawn by the KML export) with each route's smoothed flight path: a
+// route::buildTrajectory in the mission's local frame, from and to the home, kept out of the no-fly
+// zones grown by the mission's safety margin.
+Status addTrajectories(ExportContext& ctx, const route::TrajectoryOptions& options = {});
 
 // What a waypoint file holds, read back for editing.
 struct ImportedWaypoints {

@@ -61,11 +61,17 @@ public:
             std::vector<bool> bad(legs(), false);
             bool any = false;
             if (!m_keepOut.empty()) {
+                // Most samples are nowhere near a zone: a box test spares the exact one.
+                const geo::Box zoneBox = geo::bounds(m_keepOut);
                 for (std::size_t i = 1; i < pts->size(); ++i) {
                     const Point3& p = (*pts)[i];
                     if (m_straight[p.leg] || bad[p.leg])
                         continue;
-                    if (geo::segmentCrossesInterior(m_keepOut, (*pts)[i - 1].pos, p.pos)) {
+                    const geo::Vec2& q = (*pts)[i - 1].pos;
+                    const geo::Box seg{q.cwiseMin(p.pos), q.cwiseMax(p.pos)};
+                    if (!seg.intersects(zoneBox))
+                        continue;
+                    if (geo::segmentCrossesInterior(m_keepOut, q, p.pos)) {
                         bad[p.leg] = true;
                         any = true;
                     }

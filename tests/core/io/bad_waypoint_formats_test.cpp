@@ -38,6 +38,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         BadFile{"truncated.plan", "line 16, column 30: invalid JSON (the file ends before the JSON is complete)"},
         BadFile{"empty.plan", "the file is empty"},
+        BadFile{"missing_comma.plan", "line 10, column 5: invalid JSON (object value separator ',' expected)"},
         BadFile{"wrong_filetype.plan", "fileType: expected \"Plan\" but found \"Mission\""},
         BadFile{"missing_mission.plan", "mission: missing"},
         BadFile{"missing_params.plan", "mission.items[3].params: missing"},

@@ -7,6 +7,7 @@
 #include "core/io/qgc_wpl.h"
 #include "core/io/waypoint_geojson.h"
 #include "core/geo/geodesic.h"
+#include "core/geo/polygon_ops.h"
 #include "tests/core/io/formats_test_util.h"
 
 #include <gtest/gtest.h>
@@ -278,4 +279,42 @@ TEST(Kml, HasAFolderPerAircraftAndColouredStyles) {
     EXPECT_NE(kml.find("Warehouse"), std::string::npos);
     EXPECT_NE(kml.find("<Style"), std::string::npos);
     EXPECT_NE(kml.find("ff34ab12"), std::string::npos); // #12ab34 in KML's aabbggrr order
+}
+
+TEST(Kml, DrawsTheSmoothedTrajectoryOutsideTheBufferedZones) {
+    const std::string dir = test::scratchDir("kml_traj");
+    mission::Mission m = test::demoMission();
+    route::Route r{"Falcon 8 #1", std::nullopt, 8.0, {}};
+    // A tight, irregular zig-zag under the warehouse whose upper turns lie 0.3 m outside its 5 m
+    // safety margin: the unconstrained curve swings into the margin.
+    const double lons[] = {8.32920, 8.32930, 8.32934, 8.32950, 8.32952, 8.32966, 8.32970, 8.32990};
+    const double lats[] = {49.011772, 49.0112, 49.011772, 49.0114, 49.011772, 49.0110, 49.011772, 49.0112};
+    for (int i = 0; i < 8; ++i)
+        r.waypoints.push_back({{lons[i], lats[i]}, 40, 90, route::WaypointKind::Photo});
+    ExportContext ctx = makeExportContext(m, {r});
+    ASSERT_TRUE(addTrajectories(ctx).ok());
+    ASSERT_EQ(ctx.trajectories.size(), 1u);
+    ASSERT_GT(ctx.trajectories[0].size(), r.waypoints.size());
+    for (const auto& end : {ctx.trajectories[0].front(), ctx.trajectories[0].back()}) { // from home and back
+        EXPECT_NEAR(end.lon, m.home->lon, 1e-9);
+        EXPECT_NEAR(end.lat, m.home->lat, 1e-9);
+    }
+    auto frame = geo::LocalFrame::forArea(m.area);
+    ASSERT_TRUE(frame.ok());
+    const auto keepOut = route::keepOutZones({m.noFlyZones[0].polygon, m.noFlyZones[1].polygon}, *frame,
+                                             m.options.safetyMarginM);
+    route::Route fromHome = r;
+    fromHome.home = m.home;
+    auto free = route::buildTrajectory(fromHome, *frame, {}, {});
+    ASSERT_TRUE(free.ok());
+    int freeIntrusions = 0;
+    for (std::size_t i = 1; i < free->samples.size(); ++i)
+        freeIntrusions += geo::segmentCrossesInterior(keepOut, free->samples[i - 1].pos, free->samples[i].pos);
+    ASSERT_GT(freeIntrusions, 0) << "the test needs a curve that would cut in";
+    for (std::size_t i = 1; i < ctx.trajectories[0].size(); ++i)
+        EXPECT_FALSE(geo::segmentCrossesInterior(keepOut, frame->toLocal(ctx.trajectories[0][i - 1]),
+                                                 frame->toLocal(ctx.trajectories[0][i])))
+            << "sample " << i;
+    ASSERT_TRUE(exportRoute(ctx, 0, WaypointFormat::Kml, dir + "/t.kml").ok());
+    EXPECT_NE(slurp(dir + "/t.kml").find("Falcon 8 #1 trajectory"), std::string::npos);
 }
