@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -230,6 +231,19 @@ std::vector<std::string> dataDirectoryCandidates() {
     return dirs;
 }
 
+// A JSON number holding the shortest text that reads back to exactly `v` (json-c's own printing can
+// lose the last digit; the text of a parsed number is written back verbatim).
+CPLJSONObject jsonNumber(double v) {
+    char buf[64];
+    auto res = std::to_chars(buf, buf + sizeof buf - 3, v);
+    std::string text(buf, res.ptr);
+    if (text.find_first_of(".eEn") == std::string::npos)
+        text += ".0";
+    CPLJSONDocument doc;
+    doc.LoadMemory("[" + text + "]");
+    return doc.GetRoot().ToArray()[0];
+}
+
 std::string userCatalogPath() {
     if (const char* xdg = std::getenv("XDG_DATA_HOME"); xdg && *xdg && xdg[0] == '/')
         return std::string(xdg) + "/photoflight/catalog.json";
@@ -274,6 +288,47 @@ Result<Catalog> loadCatalog(const std::string& path) {
     if (reader.failed())
         return reader.error();
     return cat;
+}
+
+std::string catalogToJson(const Catalog& catalog) {
+    CPLJSONDocument doc;
+    CPLJSONObject root = doc.GetRoot();
+    root.Add("format", kCatalogFormat);
+    root.Add("version", kCatalogVersion);
+    CPLJSONArray cameras;
+    for (const auto& c : catalog.cameras) {
+        CPLJSONObject o;
+        o.Add("name", c.name);
+        if (c.sensorWidthMm != 0.0 || c.sensorHeightMm != 0.0 || c.focalLengthMm != 0.0) {
+            o.Add("sensor_width_mm", jsonNumber(c.sensorWidthMm));
+            o.Add("sensor_height_mm", jsonNumber(c.sensorHeightMm));
+            o.Add("focal_length_mm", jsonNumber(c.focalLengthMm));
+        }
+        if (c.hfovDeg != 0.0 || c.vfovDeg != 0.0) {
+            o.Add("hfov_deg", jsonNumber(c.hfovDeg));
+            o.Add("vfov_deg", jsonNumber(c.vfovDeg));
+        }
+        o.Add("image_width_px", c.imageWidthPx);
+        o.Add("image_height_px", c.imageHeightPx);
+        cameras.Add(o);
+    }
+    root.Add("cameras", cameras);
+    CPLJSONArray aircraft;
+    for (const auto& a : catalog.aircraft) {
+        CPLJSONObject o;
+        o.Add("name", a.name);
+        o.Add("cruise_speed_mps", jsonNumber(a.cruiseSpeedMps));
+        o.Add("turn_rate_deg_s", jsonNumber(a.turnRateDegS));
+        o.Add("endurance_min", jsonNumber(a.enduranceMin));
+        o.Add("max_altitude_m", jsonNumber(a.maxAltitudeM));
+        if (!a.defaultCamera.empty())
+            o.Add("default_camera", a.defaultCamera);
+        if (!a.notes.empty())
+            o.Add("note", a.notes);
+        aircraft.Add(o);
+    }
+    root.Add("aircraft", aircraft);
+    return root.Format(CPLJSONObject::PrettyFormat::Pretty) + "\n";
 }
 
 Catalog mergeCatalogs(Catalog base, const Catalog& extra) {

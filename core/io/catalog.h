@@ -18,6 +18,9 @@ struct Catalog {
 };
 
 Result<Catalog> loadCatalog(const std::string& path);
+// The catalog in the catalog file format (resources/catalog.json); loadCatalog reads it back to an
+// equal catalog, so a user can save the bundled list, edit it and use it as their own catalog.
+std::string catalogToJson(const Catalog& catalog);
 // Entries of `extra` are added to `base`; an entry with the same name replaces the base one.
 Catalog mergeCatalogs(Catalog base, const Catalog& extra);
 // The bundled catalog found in $PHOTOFLIGHT_DATA_DIR, the installed data directory or the source

@@ -4,11 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <optional>
 
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 using namespace pf;
@@ -245,4 +247,79 @@ TEST(CatalogErrors, EntriesAreNamed) {
               "c.json: aircraft[0] (\"NoTime\"): endurance_min: missing required field");
     EXPECT_EQ(errorOfText(R"({"format": "photoflight-catalog", "version": 1, "aircraft": {}})"),
               "c.json: aircraft: expected an array");
+}
+
+// ---- photoflight-cli catalog ----
+
+namespace {
+
+struct RunResult {
+    int exitCode = -1;
+    std::string out;
+};
+
+RunResult runCli(const std::string& args) {
+    RunResult r;
+    const std::string cmd = std::string("'") + PF_CLI_PATH + "' " + args + " 2>&1";
+    FILE* p = ::popen(cmd.c_str(), "r");
+    if (!p)
+        return r;
+    char buf[4096];
+    std::size_t n;
+    while ((n = std::fread(buf, 1, sizeof buf, p)) > 0)
+        r.out.append(buf, n);
+    const int status = ::pclose(p);
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+} // namespace
+
+TEST(CatalogCli, ListsCamerasAndAircraftInColumns) {
+    ScopedEnv xdg("XDG_DATA_HOME", "/nonexistent/xdg"); // no user additions
+    const RunResult r = runCli("catalog --catalog '" + kBundled + "'");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    // Falcon 8 camera at 100 m: 120 x 90 m; GSD = 120 m / 4000 px = 3.00 cm/px.
+    EXPECT_NE(r.out.find("Falcon 8 camera"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("120.0 x 90.0 m"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("3.00 cm/px"), std::string::npos) << r.out;
+    // Phantom 4 Pro camera: 150 x 100 m, 2.74 cm/px.
+    EXPECT_NE(r.out.find("13.2 x 8.8 mm, f 8.8 mm"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("150.0 x 100.0 m"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("2.74 cm/px"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("AscTec Pelican"), std::string::npos) << r.out;
+    // Columns are aligned: in the aircraft table, "SPEED" starts where every speed starts.
+    const auto header = r.out.find("AIRCRAFT");
+    ASSERT_NE(header, std::string::npos);
+    const auto lineStart = [&](std::size_t pos) { return r.out.rfind('\n', pos) + 1; };
+    const std::size_t speedCol = r.out.find("SPEED", header) - header;
+    const auto falconLine = r.out.find("\nFalcon 8  ", header) + 1;
+    EXPECT_EQ(r.out.find("8 m/s", falconLine) - lineStart(falconLine), speedCol) << r.out;
+}
+
+TEST(CatalogCli, JsonOutputIsACatalogThatReadsBackEqual) {
+    const RunResult r = runCli("catalog --json --catalog '" + kBundled + "'");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const std::string dir = makeTempDir();
+    writeText(dir + "/out.json", r.out);
+    auto back = loadCatalog(dir + "/out.json");
+    auto bundled = loadCatalog(kBundled);
+    ASSERT_TRUE(back) << back.error().message;
+    ASSERT_TRUE(bundled);
+    EXPECT_EQ(back->cameras, bundled->cameras);
+    EXPECT_EQ(back->aircraft, bundled->aircraft);
+    std::remove((dir + "/out.json").c_str());
+    ::rmdir(dir.c_str());
+}
+
+TEST(CatalogCli, BadCatalogAndArguments) {
+    RunResult r = runCli("catalog --catalog /nonexistent/c.json");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.out, "photoflight-cli: error: /nonexistent/c.json: cannot open the catalog: No such file or directory\n");
+    r = runCli("catalog cameras");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.out, "photoflight-cli: error: catalog: unexpected argument 'cameras' (see --help)\n");
+    r = runCli("catalog --help");
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_EQ(r.out.rfind("Usage: photoflight-cli catalog", 0), 0u) << r.out;
 }
