@@ -124,7 +124,9 @@ Result<std::string> qgcPlanJson(const ExportContext& ctx, std::size_t routeIndex
     rally.Add("points", points);
     root.Add("rallyPoints", rally);
 
-    return root.Format(CPLJSONObject::PrettyFormat::Pretty) + "\n";
+    CPLJSONDocument doc;
+    doc.SetRoot(root);
+    return doc.SaveAsString();
 }
 
 Status writeQgcPlan(const ExportContext& ctx, std::size_t routeIndex, const std::string& path,
