@@ -216,3 +216,33 @@ TEST(CliGrid, BadInput) {
     EXPECT_TRUE(has(help.out, "--out FILE")) << help.out;
     EXPECT_TRUE(has(help.out, "unflyable")) << help.out;
 }
+
+TEST(CliDemo, DemoMissionValidatesAndGrids) {
+    const std::string demo = std::string(PF_RESOURCES_DIR) + "/demo/demo_mission.json";
+    if (!std::ifstream(demo))
+        GTEST_SKIP() << "no demo mission at " << demo;
+    const CliRun r = cli("validate '" + demo + "'");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(has(r.out, "Rheinhafen training ground")) << r.out;
+    EXPECT_TRUE(has(r.out, "(area minus 2 no-fly zones)")) << r.out;
+    EXPECT_TRUE(has(r.out, "OK: 0 errors")) << r.out;
+    // About 9 ha.
+    const auto at = r.out.find("Area:             ");
+    ASSERT_NE(at, std::string::npos);
+    std::string digits;
+    for (char c : r.out.substr(at + 18, 12))
+        if (c >= '0' && c <= '9')
+            digits += c;
+        else if (c != ',')
+            break;
+    const double m2 = std::stod(digits);
+    EXPECT_GT(m2, 80000);
+    EXPECT_LT(m2, 100000);
+
+    const std::string out = testing::TempDir() + "pf_cli_demo_grid.geojson";
+    const CliRun g = cli("grid '" + demo + "' --index 2 --grid-angle 30 --out '" + out + "'");
+    EXPECT_EQ(g.code, 0) << g.err;
+    EXPECT_TRUE(has(g.out, "angle 30.0 deg")) << g.out;
+    EXPECT_TRUE(has(slurp(out), "\"state\":\"shifted\"") || has(slurp(out), "\"state\":\"unflyable\""));
+    std::remove(out.c_str());
+}
