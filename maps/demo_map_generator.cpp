@@ -133,7 +133,7 @@ void drawTree(QPainter& p, QPointF centre, double radius, std::mt19937& rng) {
 
 void drawBuilding(QPainter& p, const QPolygonF& roof, QColor colour, double shadowPx) {
     p.setPen(Qt::NoPen);
-    p.setBrush(QColor(0, 0, 0, 90));
+    p.setBrush(QColor(20, 20, 10, 70));
     p.drawPolygon(roof.translated(shadowPx, -shadowPx));
     p.setBrush(colour);
     p.setPen(QPen(colour.darker(135), 1.5));
@@ -236,7 +236,7 @@ QImage paintTerrain(const Canvas& c) {
     // The warehouse (no-fly zone "Warehouse"): a corrugated metal roof with a ridge.
     const QPolygonF warehouse = ring(c, {{8.3291782, 49.0118201}, {8.3297261, 49.0118201},
                                          {8.3297261, 49.0121799}, {8.3291782, 49.0121799}});
-    drawBuilding(p, warehouse, QColor(150, 158, 166), 9 * m);
+    drawBuilding(p, warehouse, QColor(150, 158, 166), 3.5 * m);
     const QRectF wr = warehouse.boundingRect();
     p.setPen(QPen(QColor(128, 136, 144), 1.0));
     for (double x = wr.left() + 3; x < wr.right(); x += 4) p.drawLine(QPointF(x, wr.top()), QPointF(x, wr.bottom()));
@@ -265,7 +265,7 @@ QImage paintTerrain(const Canvas& c) {
                                 {8.33600, 49.01240, 8.33690, 49.01320}, {8.32300, 49.01150, 8.32420, 49.01210}};
     for (const auto& b : blocks) {
         const int g = grey(rng);
-        drawBuilding(p, ring(c, {{b[0], b[1]}, {b[2], b[1]}, {b[2], b[3]}, {b[0], b[3]}}), QColor(g, g - 6, g - 14), 7 * m);
+        drawBuilding(p, ring(c, {{b[0], b[1]}, {b[2], b[1]}, {b[2], b[3]}, {b[0], b[3]}}), QColor(g, g - 6, g - 14), 3.5 * m);
     }
     // A car park with parked cars.
     p.setPen(Qt::NoPen);

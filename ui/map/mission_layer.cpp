@@ -10,6 +10,7 @@
 #include <QStyleOptionGraphicsItem>
 
 #include <cmath>
+#include <limits>
 
 namespace pf::ui {
 
@@ -46,6 +47,37 @@ QString formatArea(double m2) {
     return QStringLiteral("%1 m²").arg(m2, 0, 'f', 0);
 }
 
+// A point well inside `rings` (ring 0 outer, others holes) and outside `avoid`, as far as possible from
+// every edge: where a label reads best. A coarse grid search is plenty for a label.
+std::optional<QPointF> labelPoint(const QVector<QPolygonF>& rings, const QVector<QPolygonF>& avoid) {
+    if (rings.isEmpty() || rings[0].size() < 3) return std::nullopt;
+    const QRectF box = rings[0].boundingRect();
+    std::optional<QPointF> best;
+    double bestD = -1;
+    constexpr int n = 16;
+    for (int i = 1; i < n; ++i) {
+        for (int j = 1; j < n; ++j) {
+            const QPointF p(box.left() + box.width() * i / n, box.top() + box.height() * j / n);
+            if (!rings[0].containsPoint(p, Qt::OddEvenFill)) continue;
+            bool blocked = false;
+            for (int r = 1; r < rings.size() && !blocked; ++r) blocked = rings[r].containsPoint(p, Qt::OddEvenFill);
+            for (const auto& a : avoid) blocked = blocked || a.containsPoint(p, Qt::OddEvenFill);
+            if (blocked) continue;
+            double d = std::numeric_limits<double>::max();
+            auto edges = [&](const QPolygonF& ring) {
+                for (int k = 0; k < ring.size(); ++k) d = std::min(d, distanceToSegment(p, ring[k], ring[(k + 1) % ring.size()], nullptr));
+            };
+            for (const auto& r : rings) edges(r);
+            for (const auto& a : avoid) edges(a);
+            if (d > bestD) {
+                bestD = d;
+                best = p;
+            }
+        }
+    }
+    return best;
+}
+
 double groundArea(const geo::GeoPolygon& poly) {
     auto frame = geo::LocalFrame::forArea(poly);
     if (!frame) return 0.0;
@@ -72,6 +104,11 @@ void ShapeItem::setProblem(const QString& problem) {
 
 void ShapeItem::setLabel(const QString& label) {
     m_label = label;
+    update();
+}
+
+void ShapeItem::setLabelAnchor(std::optional<QPointF> anchor) {
+    m_labelAnchor = anchor;
     update();
 }
 
@@ -157,7 +194,7 @@ void ShapeItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidge
         }
     }
     if (!m_label.isEmpty()) {
-        const QPointF c = devicePath.boundingRect().center();
+        const QPointF c = m_labelAnchor ? toDevice.map(*m_labelAnchor) : devicePath.boundingRect().center();
         QFont f = painter->font();
         f.setPointSizeF(8.5);
         f.setBold(true);
@@ -244,6 +281,9 @@ void MissionLayer::rebuild() {
         m_area->setProblem(problem);
         if (!problem.isEmpty()) problems << problem;
         m_area->setLabel(problem.isEmpty() ? tr("Area · %1").arg(formatArea(groundArea(m.area))) : tr("Area (invalid)"));
+        QVector<QPolygonF> zones;
+        for (std::size_t i = 0; i < m.noFlyZones.size(); ++i) zones << toScene(m.noFlyZones[i].polygon.outer);
+        m_area->setLabelAnchor(labelPoint(sceneRings(ShapeRef::area()), zones));
     } else {
         m_area->setProblem({});
         m_area->setLabel({});

@@ -28,6 +28,8 @@ public:
     void setProblem(const QString& problem); // non-empty: drawn in the warning style
     QString problem() const { return m_problem; }
     void setLabel(const QString& label);
+    // Where the label goes (scene); the middle of the bounding box when unset.
+    void setLabelAnchor(std::optional<QPointF> anchor);
     void setHighlighted(bool on, std::optional<VertexRef> vertex = std::nullopt);
     void setClosed(bool closed); // previews of a polygon being drawn are open polylines
     void setHandleMargin(double sceneMetres);
@@ -42,6 +44,7 @@ private:
     QVector<QPolygonF> m_rings;
     QString m_problem;
     QString m_label;
+    std::optional<QPointF> m_labelAnchor;
     bool m_highlighted = false;
     bool m_closed = true;
     std::optional<VertexRef> m_vertex;
