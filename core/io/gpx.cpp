@@ -6,6 +6,8 @@
 #include <ogr_spatialref.h>
 #include <ogrsf_frmts.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -108,6 +110,21 @@ Status writeGpx(const ExportContext& ctx, const std::vector<std::size_t>& routeI
 
 namespace {
 
+// The line of the n-th (1-based) element `tag` in the file's text, or 0: OGR does not say where a
+// feature came from, but people fix files by line.
+std::size_t lineOfElement(const std::string& text, const std::string& tag, std::size_t n) {
+    std::size_t pos = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        pos = text.find("<" + tag, k == 0 ? 0 : pos + 1);
+        while (pos != std::string::npos && pos + tag.size() + 1 < text.size() &&
+               std::isalnum(static_cast<unsigned char>(text[pos + tag.size() + 1])))
+            pos = text.find("<" + tag, pos + 1); // <rtept> is not <rte>
+        if (pos == std::string::npos)
+            return 0;
+    }
+    return 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<long>(pos), '\n'));
+}
+
 // Headings for points that had none: towards the next point (the last keeps the one before).
 void fillHeadings(route::Route& r, const std::vector<bool>& hasHeading) {
     for (std::size_t i = 0; i < r.waypoints.size(); ++i) {
@@ -120,7 +137,7 @@ void fillHeadings(route::Route& r, const std::vector<bool>& hasHeading) {
     }
 }
 
-Result<route::Waypoint> readPoint(OGRFeature& f, const std::string& path, const std::string& what, bool& hasHeading) {
+Result<route::Waypoint> readPoint(OGRFeature& f, const std::string& path, std::string what, bool& hasHeading) {
     const OGRGeometry* g = f.GetGeometryRef();
     if (!g || wkbFlatten(g->getGeometryType()) != wkbPoint)
         return makeError(ErrorCode::ParseError, path + ": " + what + " has no position");
@@ -152,6 +169,13 @@ Result<ImportedWaypoints> readGpx(const std::string& path) {
     auto ds = detail::openVectorDataset(path, "GPX");
     if (!ds)
         return ds.error();
+    auto text = detail::readTextFile(path);
+    if (!text)
+        return text.error();
+    auto where = [&](const char* tag, const char* what, std::size_t k) {
+        const std::size_t line = lineOfElement(*text, tag, k);
+        return (line ? "line " + std::to_string(line) + ": " : std::string()) + what + " " + std::to_string(k);
+    };
     ImportedWaypoints out;
     CPLErrorReset();
     CPLPushErrorHandler(CPLQuietErrorHandler);
@@ -181,7 +205,7 @@ Result<ImportedWaypoints> readGpx(const std::string& path) {
                 headings.emplace_back();
             }
             bool has = false;
-            auto w = readPoint(*f, path, "route point " + std::to_string(k), has);
+            auto w = readPoint(*f, path, where("rtept", "route point", k), has);
             if (!w)
                 return w.error();
             out.routes[it->second].waypoints.push_back(*w);
@@ -195,7 +219,7 @@ Result<ImportedWaypoints> readGpx(const std::string& path) {
             std::size_t k = 0;
             for (auto& f : *wpts) {
                 bool h = false;
-                auto w = readPoint(*f, path, "waypoint " + std::to_string(++k), h);
+                auto w = readPoint(*f, path, where("wpt", "waypoint", ++k), h);
                 if (!w)
                     return w.error();
                 r.waypoints.push_back(*w);

@@ -58,7 +58,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"truncated.geojson", "line 5, column 31: invalid JSON (the file ends before the JSON is complete)"},
         BadFile{"missing_altitude.geojson", "feature 2 (features[1]): missing property \"altitude_m\""},
         BadFile{"empty.gpx", "the file is empty"},
-        BadFile{"missing_ele.gpx", "route point 2 has no <ele> (altitude above take-off)"}),
+        BadFile{"missing_ele.gpx", "line 5: route point 2 has no <ele> (altitude above take-off)"}),
     [](const ::testing::TestParamInfo<BadFile>& info) {
         std::string n = info.param.file;
         for (char& c : n)
