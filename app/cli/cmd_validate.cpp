@@ -75,6 +75,12 @@ int runValidate(const std::vector<std::string>& argv) {
     os << "Area:             " << grouped(r.areaM2) << " m² (" << fmt("%.2f", r.areaM2 / 10000.0) << " ha)\n";
     os << "Admissible area:  " << grouped(r.admissibleAreaM2) << " m² (area minus " << m.noFlyZones.size()
        << " no-fly zone" << (m.noFlyZones.size() == 1 ? "" : "s") << ")\n";
+    if (!m.noFlyZones.empty()) {
+        os << "No-fly zones:     ";
+        for (std::size_t i = 0; i < m.noFlyZones.size(); ++i)
+            os << (i ? ", " : "") << (m.noFlyZones[i].name.empty() ? "#" + std::to_string(i + 1) : m.noFlyZones[i].name);
+        os << '\n';
+    }
     os << "Safety margin:    " << fmt("%.1f", m.options.safetyMarginM) << " m\n";
     os << "Grid angle:       "
        << (m.options.gridAngleDeg ? fmt("%.1f deg", *m.options.gridAngleDeg) : std::string("auto (figures at 0 deg)"))

@@ -232,7 +232,10 @@ geo::Box rotatedBounds(const geo::MultiPolygon& region, double c, double s) {
 
 long long cellsAlong(double extent, double cellSize) {
     // The small slack keeps an extent that is an exact multiple of the cell size from gaining a column.
-    return std::max(1LL, static_cast<long long>(std::ceil(extent / cellSize - 1e-9)));
+    const double n = std::ceil(extent / cellSize - 1e-9);
+    // Absurd ratios (a cell size of a micrometre over a continent) saturate instead of overflowing;
+    // the budget check rejects them anyway.
+    return n >= 1e15 ? static_cast<long long>(1e15) : std::max(1LL, static_cast<long long>(n));
 }
 
 std::string fmtCount(double n) {

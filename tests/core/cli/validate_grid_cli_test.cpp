@@ -225,6 +225,7 @@ TEST(CliDemo, DemoMissionValidatesAndGrids) {
     EXPECT_EQ(r.code, 0) << r.err;
     EXPECT_TRUE(has(r.out, "Rheinhafen training ground")) << r.out;
     EXPECT_TRUE(has(r.out, "(area minus 2 no-fly zones)")) << r.out;
+    EXPECT_TRUE(has(r.out, "No-fly zones:     Warehouse, Radio mast")) << r.out;
     EXPECT_TRUE(has(r.out, "OK: 0 errors")) << r.out;
     // About 9 ha.
     const auto at = r.out.find("Area:             ");
