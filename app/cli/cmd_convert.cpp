@@ -1,4 +1,5 @@
-// photoflight-cli convert: a waypoint file from one format to another, chosen by the file extensions.
+// photoflight-cli convert: a waypoint file from one format to another, chosen by the file
+// extensions.
 #include "app/cli/args.h"
 #include "app/cli/commands.h"
 
@@ -21,24 +22,29 @@ const char* const kConvertUsage =
     "  .kml         KML for Google Earth (write only)\n"
     "\n"
     "Options:\n"
-    "  --aircraft NAME       convert only the route of this aircraft (needed when IN holds several\n"
+    "  --aircraft NAME       convert only the route of this aircraft (needed when IN holds "
+    "several\n"
     "                        routes and OUT is a .plan, .waypoints or .csv)\n"
     "  --firmware NAME       ardupilot (default) or px4: the firmwareType of a .plan\n"
     "  --end ACTION          rtl (default) or land: what the vehicle does after the last waypoint\n"
     "  --capture COMMAND     image (MAV_CMD_IMAGE_START_CAPTURE, default) or digicam\n"
-    "                        (MAV_CMD_DO_DIGICAM_CONTROL): the photo command after each photo waypoint\n"
+    "                        (MAV_CMD_DO_DIGICAM_CONTROL): the photo command after each photo "
+    "waypoint\n"
     "  --hover-speed M/S     the .plan hoverSpeed (default: the route's cruise speed)\n"
     "\n"
-    "Take-off, capture, return and landing items are regenerated from the waypoints; a .plan's geofence\n"
+    "Take-off, capture, return and landing items are regenerated from the waypoints; a .plan's "
+    "geofence\n"
     "and home are kept when the output can hold them.\n"
     "Exit codes: 0 written, 2 bad input (the message names the file and the line or JSON key).\n";
 
 int runConvert(const std::vector<std::string>& argv) {
-    auto args = Args::parse(argv, {{"aircraft"}, {"firmware"}, {"end"}, {"capture"}, {"hover-speed"}});
+    auto args =
+        Args::parse(argv, {{"aircraft"}, {"firmware"}, {"end"}, {"capture"}, {"hover-speed"}});
     if (!args)
         return reportError(args.error());
     if (args->positionals().size() != 2)
-        return reportError("convert needs an input and an output file (see photoflight-cli convert --help)");
+        return reportError(
+            "convert needs an input and an output file (see photoflight-cli convert --help)");
     const std::string& in = args->positionals()[0];
     const std::string& out = args->positionals()[1];
 
@@ -81,12 +87,14 @@ int runConvert(const std::vector<std::string>& argv) {
         std::vector<route::Route> keep;
         std::string known;
         for (const auto& r : imported->routes) {
-            known += (known.empty() ? "" : ", ") + (r.aircraft.empty() ? std::string("(unnamed)") : r.aircraft);
+            known += (known.empty() ? "" : ", ") +
+                     (r.aircraft.empty() ? std::string("(unnamed)") : r.aircraft);
             if (r.aircraft == *name)
                 keep.push_back(r);
         }
         if (keep.empty())
-            return reportError(in + ": no route of aircraft '" + *name + "' (the file has: " + known + ")");
+            return reportError(in + ": no route of aircraft '" + *name +
+                               "' (the file has: " + known + ")");
         imported->routes = keep;
     }
     const io::ExportContext ctx = io::contextFromImport(*imported);
@@ -100,16 +108,17 @@ int runConvert(const std::vector<std::string>& argv) {
         std::string names;
         for (std::size_t i = 0; i < ctx.routes.size(); ++i)
             names += (i ? ", " : "") + ctx.routeLabel(i);
-        return reportError(in + " holds " + std::to_string(ctx.routes.size()) + " routes (" + names + ") but a " +
-                           info.extension + " file holds one; choose one with --aircraft NAME");
+        return reportError(in + " holds " + std::to_string(ctx.routes.size()) + " routes (" +
+                           names + ") but a " + info.extension +
+                           " file holds one; choose one with --aircraft NAME");
     }
     if (!written)
         return reportError(written.error());
     std::size_t n = 0;
     for (const auto& r : ctx.routes)
         n += r.waypoints.size();
-    std::cout << "wrote " << out << ": " << ctx.routes.size() << (ctx.routes.size() == 1 ? " route, " : " routes, ")
-              << n << " waypoints\n";
+    std::cout << "wrote " << out << ": " << ctx.routes.size()
+              << (ctx.routes.size() == 1 ? " route, " : " routes, ") << n << " waypoints\n";
     return kExitOk;
 }
 

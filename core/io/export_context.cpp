@@ -78,7 +78,8 @@ Status addTrajectories(ExportContext& ctx, const route::TrajectoryOptions& optio
     std::vector<geo::GeoPolygon> zones;
     for (const auto& z : ctx.mission.noFlyZones)
         zones.push_back(z.polygon);
-    const geo::MultiPolygon keepOut = route::keepOutZones(zones, *frame, ctx.mission.options.safetyMarginM);
+    const geo::MultiPolygon keepOut =
+        route::keepOutZones(zones, *frame, ctx.mission.options.safetyMarginM);
     for (std::size_t i = 0; i < ctx.routes.size(); ++i) {
         route::Route r = ctx.routes[i];
         r.home = ctx.homeFor(i);

@@ -1,5 +1,5 @@
-// What the waypoint exporters need besides the routes (mission area, no-fly zones, home, footprints),
-// and what the importers give back for editing.
+// What the waypoint exporters need besides the routes (mission area, no-fly zones, home,
+// footprints), and what the importers give back for editing.
 #pragma once
 
 #include "core/geo/types.h"
@@ -22,7 +22,8 @@ enum class QgcFirmware { ArduPilot = 3, PX4 = 12 };
 enum class MissionEnd { ReturnToLaunch, Land };
 // The MAVLink command that takes a photo at a photo waypoint.
 enum class CaptureCommand {
-    ImageStartCapture, // MAV_CMD_IMAGE_START_CAPTURE (2000), one image: cameras speaking the camera protocol
+    ImageStartCapture, // MAV_CMD_IMAGE_START_CAPTURE (2000), one image: cameras speaking the camera
+                       // protocol
     DigicamControl,    // MAV_CMD_DO_DIGICAM_CONTROL (203): a camera triggered by the autopilot
 };
 
@@ -33,14 +34,14 @@ struct ExportOptions {
     std::optional<double> hoverSpeedMps; // .plan hoverSpeed; the route's cruise speed when unset
 };
 
-// Everything an export can draw on. `routes[i]` is flown by the aircraft of the mission whose name is
-// `routes[i].aircraft` (if any). The parallel vectors may be shorter than `routes` (missing entries
-// mean "none").
+// Everything an export can draw on. `routes[i]` is flown by the aircraft of the mission whose name
+// is `routes[i].aircraft` (if any). The parallel vectors may be shorter than `routes` (missing
+// entries mean "none").
 struct ExportContext {
-    mission::Mission mission;                          // area, no-fly zones, home, aircraft
-    std::vector<route::Route> routes;                  // one per aircraft (or per sortie)
+    mission::Mission mission;                                 // area, no-fly zones, home, aircraft
+    std::vector<route::Route> routes;                         // one per aircraft (or per sortie)
     std::vector<std::optional<sensor::Footprint>> footprints; // photo footprint per route, for KML
-    std::vector<std::vector<geo::LonLat>> trajectories;       // smoothed flight path per route, for KML
+    std::vector<std::vector<geo::LonLat>> trajectories; // smoothed flight path per route, for KML
 
     // The route's home: its own, else its aircraft's, else the mission's.
     std::optional<geo::LonLat> homeFor(std::size_t routeIndex) const;

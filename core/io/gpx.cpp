@@ -39,16 +39,20 @@ Status addField(OGRLayer* layer, const char* name, OGRFieldType type, const std:
         return {};
     OGRFieldDefn def(name, type);
     if (layer->CreateField(&def) != OGRERR_NONE)
-        return makeError(ErrorCode::IoError, "cannot write " + path + ": " + detail::lastGdalError("field " + std::string(name)));
+        return makeError(ErrorCode::IoError,
+                         "cannot write " + path + ": " +
+                             detail::lastGdalError("field " + std::string(name)));
     return {};
 }
 
 } // namespace
 
-Status writeGpx(const ExportContext& ctx, const std::vector<std::size_t>& routeIndices, const std::string& path) {
+Status writeGpx(const ExportContext& ctx, const std::vector<std::size_t>& routeIndices,
+                const std::string& path) {
     for (auto i : routeIndices)
         if (i >= ctx.routes.size())
-            return makeError(ErrorCode::InvalidInput, "there is no route " + std::to_string(i + 1) + " to export");
+            return makeError(ErrorCode::InvalidInput,
+                             "there is no route " + std::to_string(i + 1) + " to export");
     auto ds = detail::createVectorDataset("GPX", path, {"GPX_USE_EXTENSIONS=YES"});
     if (!ds)
         return ds.error();
@@ -59,9 +63,11 @@ Status writeGpx(const ExportContext& ctx, const std::vector<std::size_t>& routeI
     // GPX wants every <wpt> before the first <rte>: waypoints of all routes first.
     OGRLayer* wpts = (*ds)->CreateLayer("waypoints", &wgs84, wkbPoint, nullptr);
     if (!wpts)
-        return makeError(ErrorCode::IoError, "cannot write " + path + ": " + detail::lastGdalError("no waypoint layer"));
+        return makeError(ErrorCode::IoError, "cannot write " + path + ": " +
+                                                 detail::lastGdalError("no waypoint layer"));
     for (const char* f : {"heading", "aircraft"})
-        if (auto st = addField(wpts, f, std::string(f) == "heading" ? OFTReal : OFTString, path); !st)
+        if (auto st = addField(wpts, f, std::string(f) == "heading" ? OFTReal : OFTString, path);
+            !st)
             return st;
     for (auto ri : routeIndices) {
         const auto& r = ctx.routes[ri];
@@ -77,12 +83,14 @@ Status writeGpx(const ExportContext& ctx, const std::vector<std::size_t>& routeI
             f->SetField("heading", detail::normaliseHeading(w.headingDeg));
             f->SetField("aircraft", label.c_str());
             if (wpts->CreateFeature(f.get()) != OGRERR_NONE)
-                return makeError(ErrorCode::IoError, "cannot write " + path + ": " + detail::lastGdalError("waypoint"));
+                return makeError(ErrorCode::IoError,
+                                 "cannot write " + path + ": " + detail::lastGdalError("waypoint"));
         }
     }
     OGRLayer* rpts = (*ds)->CreateLayer("route_points", &wgs84, wkbPoint, nullptr);
     if (!rpts)
-        return makeError(ErrorCode::IoError, "cannot write " + path + ": " + detail::lastGdalError("no route layer"));
+        return makeError(ErrorCode::IoError,
+                         "cannot write " + path + ": " + detail::lastGdalError("no route layer"));
     if (auto st = addField(rpts, "heading", OFTReal, path); !st)
         return st;
     int routeFid = 0;
@@ -101,7 +109,8 @@ Status writeGpx(const ExportContext& ctx, const std::vector<std::size_t>& routeI
             setIfField(*f, "type", detail::kindName(w.kind));
             f->SetField("heading", detail::normaliseHeading(w.headingDeg));
             if (rpts->CreateFeature(f.get()) != OGRERR_NONE)
-                return makeError(ErrorCode::IoError, "cannot write " + path + ": " + detail::lastGdalError("route point"));
+                return makeError(ErrorCode::IoError, "cannot write " + path + ": " +
+                                                         detail::lastGdalError("route point"));
         }
         ++routeFid;
     }
@@ -122,7 +131,8 @@ std::size_t lineOfElement(const std::string& text, const std::string& tag, std::
         if (pos == std::string::npos)
             return 0;
     }
-    return 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<long>(pos), '\n'));
+    return 1 + static_cast<std::size_t>(
+                   std::count(text.begin(), text.begin() + static_cast<long>(pos), '\n'));
 }
 
 // Headings for points that had none: towards the next point (the last keeps the one before).
@@ -131,13 +141,15 @@ void fillHeadings(route::Route& r, const std::vector<bool>& hasHeading) {
         if (hasHeading[i])
             continue;
         if (i + 1 < r.waypoints.size())
-            r.waypoints[i].headingDeg = geo::initialBearingDeg(r.waypoints[i].position, r.waypoints[i + 1].position);
+            r.waypoints[i].headingDeg =
+                geo::initialBearingDeg(r.waypoints[i].position, r.waypoints[i + 1].position);
         else if (i > 0)
             r.waypoints[i].headingDeg = r.waypoints[i - 1].headingDeg;
     }
 }
 
-Result<route::Waypoint> readPoint(OGRFeature& f, const std::string& path, std::string what, bool& hasHeading) {
+Result<route::Waypoint> readPoint(OGRFeature& f, const std::string& path, std::string what,
+                                  bool& hasHeading) {
     const OGRGeometry* g = f.GetGeometryRef();
     if (!g || wkbFlatten(g->getGeometryType()) != wkbPoint)
         return makeError(ErrorCode::ParseError, path + ": " + what + " has no position");
@@ -146,7 +158,8 @@ Result<route::Waypoint> readPoint(OGRFeature& f, const std::string& path, std::s
     w.position = {p->getX(), p->getY()};
     const int ele = f.GetFieldIndex("ele");
     if (ele < 0 || !f.IsFieldSetAndNotNull(ele))
-        return makeError(ErrorCode::ParseError, path + ": " + what + " has no <ele> (altitude above take-off)");
+        return makeError(ErrorCode::ParseError,
+                         path + ": " + what + " has no <ele> (altitude above take-off)");
     w.altitudeM = f.GetFieldAsDouble(ele);
     const int hdg = f.GetFieldIndex("ogr_heading");
     hasHeading = hdg >= 0 && f.IsFieldSetAndNotNull(hdg);
@@ -154,12 +167,14 @@ Result<route::Waypoint> readPoint(OGRFeature& f, const std::string& path, std::s
         auto v = detail::parseNumber(f.GetFieldAsString(hdg));
         if (!v)
             return makeError(ErrorCode::ParseError, path + ": " + what + ": the heading \"" +
-                                                        std::string(f.GetFieldAsString(hdg)) + "\" is not a number");
+                                                        std::string(f.GetFieldAsString(hdg)) +
+                                                        "\" is not a number");
         w.headingDeg = detail::normaliseHeading(*v);
     }
     const int type = f.GetFieldIndex("type");
     if (type >= 0 && f.IsFieldSetAndNotNull(type))
-        w.kind = detail::kindFromName(f.GetFieldAsString(type)).value_or(route::WaypointKind::Photo);
+        w.kind =
+            detail::kindFromName(f.GetFieldAsString(type)).value_or(route::WaypointKind::Photo);
     return w;
 }
 
@@ -174,7 +189,8 @@ Result<ImportedWaypoints> readGpx(const std::string& path) {
         return text.error();
     auto where = [&](const char* tag, const char* what, std::size_t k) {
         const std::size_t line = lineOfElement(*text, tag, k);
-        return (line ? "line " + std::to_string(line) + ": " : std::string()) + what + " " + std::to_string(k);
+        return (line ? "line " + std::to_string(line) + ": " : std::string()) + what + " " +
+               std::to_string(k);
     };
     ImportedWaypoints out;
     CPLErrorReset();
@@ -187,7 +203,8 @@ Result<ImportedWaypoints> readGpx(const std::string& path) {
     if (OGRLayer* routes = (*ds)->GetLayerByName("routes")) {
         for (auto& f : *routes) {
             const int n = f->GetFieldIndex("name");
-            routeNames.push_back(n >= 0 && f->IsFieldSetAndNotNull(n) ? f->GetFieldAsString(n) : "");
+            routeNames.push_back(n >= 0 && f->IsFieldSetAndNotNull(n) ? f->GetFieldAsString(n)
+                                                                      : "");
         }
     }
     std::map<int, std::size_t> routeOf; // route_fid -> index in out.routes
@@ -200,7 +217,9 @@ Result<ImportedWaypoints> readGpx(const std::string& path) {
             auto [it, inserted] = routeOf.emplace(fid, out.routes.size());
             if (inserted) {
                 route::Route r;
-                r.aircraft = fid >= 0 && static_cast<std::size_t>(fid) < routeNames.size() ? routeNames[fid] : "";
+                r.aircraft = fid >= 0 && static_cast<std::size_t>(fid) < routeNames.size()
+                                 ? routeNames[fid]
+                                 : "";
                 out.routes.push_back(r);
                 headings.emplace_back();
             }
@@ -232,7 +251,8 @@ Result<ImportedWaypoints> readGpx(const std::string& path) {
         }
     }
     if (CPLGetLastErrorType() >= CE_Failure)
-        return makeError(ErrorCode::ParseError, path + ": " + detail::lastGdalError("the GPX could not be read"));
+        return makeError(ErrorCode::ParseError,
+                         path + ": " + detail::lastGdalError("the GPX could not be read"));
     if (out.routes.empty())
         return makeError(ErrorCode::ParseError, path + ": the file has no route and no waypoint");
     for (std::size_t i = 0; i < out.routes.size(); ++i)

@@ -12,12 +12,13 @@
 namespace pf::io {
 
 // Writes the given routes of ctx (one route: a per-aircraft file; all: the combined file).
-Status writeGpx(const ExportContext& ctx, const std::vector<std::size_t>& routeIndices, const std::string& path);
+Status writeGpx(const ExportContext& ctx, const std::vector<std::size_t>& routeIndices,
+                const std::string& path);
 
 // One route per <rte> (its <name> becomes the aircraft name); a file without routes gives one route
-// made of its <wpt> in file order. <ele> is required (the altitude above take-off); a point without a
-// heading extension heads for the next point; <type> photo/turn/transit gives the kind (photo when
-// absent). Errors name the file and the point.
+// made of its <wpt> in file order. <ele> is required (the altitude above take-off); a point without
+// a heading extension heads for the next point; <type> photo/turn/transit gives the kind (photo
+// when absent). Errors name the file and the point.
 Result<ImportedWaypoints> readGpx(const std::string& path);
 
 } // namespace pf::io

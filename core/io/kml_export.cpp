@@ -22,7 +22,8 @@ struct FeatureDeleter {
 using FeaturePtr = std::unique_ptr<OGRFeature, FeatureDeleter>;
 
 // Colours for routes whose aircraft has no valid colour of its own.
-const char* const kPalette[] = {"#e6194b", "#3cb44b", "#4363d8", "#f58231", "#911eb4", "#42d4f4", "#f032e6"};
+const char* const kPalette[] = {"#e6194b", "#3cb44b", "#4363d8", "#f58231",
+                                "#911eb4", "#42d4f4", "#f032e6"};
 
 bool isColour(const std::string& c) {
     if (c.size() != 7 || c[0] != '#')
@@ -70,7 +71,8 @@ public:
         return {};
     }
 
-    Status add(const OGRGeometry& g, const std::string& name, const std::string& description, const std::string& style) {
+    Status add(const OGRGeometry& g, const std::string& name, const std::string& description,
+               const std::string& style) {
         FeaturePtr f(OGRFeature::CreateFeature(m_layer->GetLayerDefn()));
         f->SetGeometry(&g);
         if (!name.empty())
@@ -85,7 +87,8 @@ public:
 
 private:
     Error fail(const std::string& what) const {
-        return makeError(ErrorCode::IoError, "cannot write " + m_path + ": " + detail::lastGdalError(what));
+        return makeError(ErrorCode::IoError,
+                         "cannot write " + m_path + ": " + detail::lastGdalError(what));
     }
     GDALDataset* m_ds;
     std::string m_path;
@@ -94,8 +97,9 @@ private:
 };
 
 std::string describe(const route::Waypoint& w) {
-    return std::string(detail::kindName(w.kind)) + ", altitude " + detail::formatNumber(w.altitudeM, 2) +
-           " m above take-off, heading " + detail::formatNumber(detail::normaliseHeading(w.headingDeg), 2) + " deg";
+    return std::string(detail::kindName(w.kind)) + ", altitude " +
+           detail::formatNumber(w.altitudeM, 2) + " m above take-off, heading " +
+           detail::formatNumber(detail::normaliseHeading(w.headingDeg), 2) + " deg";
 }
 
 } // namespace
@@ -105,19 +109,23 @@ geo::GeoRing footprintCorners(geo::LonLat centre, double headingDeg, const senso
     const double dist = std::hypot(along, across);
     const double a = std::atan2(across, along) * 180.0 / kPi;
     geo::GeoRing ring;
-    for (double az : {headingDeg + a, headingDeg + 180.0 - a, headingDeg + 180.0 + a, headingDeg - a})
+    for (double az :
+         {headingDeg + a, headingDeg + 180.0 - a, headingDeg + 180.0 + a, headingDeg - a})
         ring.push_back(geo::geodesicDirect(centre, az, dist));
     return ring;
 }
 
-Status writeKml(const ExportContext& ctx, const std::vector<std::size_t>& routeIndices, const std::string& path) {
+Status writeKml(const ExportContext& ctx, const std::vector<std::size_t>& routeIndices,
+                const std::string& path) {
     for (auto i : routeIndices)
         if (i >= ctx.routes.size())
-            return makeError(ErrorCode::InvalidInput, "there is no route " + std::to_string(i + 1) + " to export");
+            return makeError(ErrorCode::InvalidInput,
+                             "there is no route " + std::to_string(i + 1) + " to export");
     GDALAllRegister();
     const bool libkml = GetGDALDriverManager()->GetDriverByName("LIBKML") != nullptr;
     auto ds = libkml ? detail::createVectorDataset("LIBKML", path)
-                     : detail::createVectorDataset("KML", path, {"NameField=name", "DescriptionField=description"});
+                     : detail::createVectorDataset(
+                           "KML", path, {"NameField=name", "DescriptionField=description"});
     if (!ds)
         return ds.error();
     KmlWriter w(ds->get(), path);
@@ -131,7 +139,9 @@ Status writeKml(const ExportContext& ctx, const std::vector<std::size_t>& routeI
         if (auto st = w.add(*polygon(ctx.mission.area), "Area", "area of interest", areaStyle); !st)
             return st;
     for (const auto& z : ctx.mission.noFlyZones)
-        if (auto st = w.add(*polygon(z.polygon), z.name.empty() ? "No-fly zone" : z.name, "no-fly zone", zoneStyle); !st)
+        if (auto st = w.add(*polygon(z.polygon), z.name.empty() ? "No-fly zone" : z.name,
+                            "no-fly zone", zoneStyle);
+            !st)
             return st;
     if (ctx.mission.home) {
         OGRPoint p(ctx.mission.home->lon, ctx.mission.home->lat);
@@ -144,15 +154,17 @@ Status writeKml(const ExportContext& ctx, const std::vector<std::size_t>& routeI
         const auto& r = ctx.routes[ri];
         const std::string label = ctx.routeLabel(ri);
         const auto* aircraft = ctx.aircraftFor(ri);
-        const std::string colour =
-            aircraft && isColour(aircraft->colour) ? aircraft->colour : kPalette[n % (sizeof kPalette / sizeof *kPalette)];
+        const std::string colour = aircraft && isColour(aircraft->colour)
+                                       ? aircraft->colour
+                                       : kPalette[n % (sizeof kPalette / sizeof *kPalette)];
         ++n;
         if (auto st = w.folder(label); !st)
             return st;
         OGRLineString line;
         for (const auto& wp : r.waypoints)
             line.addPoint(wp.position.lon, wp.position.lat);
-        if (auto st = w.add(line, label + " path", "waypoint path", "PEN(c:" + colour + ",w:2px)"); !st)
+        if (auto st = w.add(line, label + " path", "waypoint path", "PEN(c:" + colour + ",w:2px)");
+            !st)
             return st;
         if (ri < ctx.trajectories.size() && ctx.trajectories[ri].size() >= 2) {
             OGRLineString traj;
@@ -177,7 +189,8 @@ Status writeKml(const ExportContext& ctx, const std::vector<std::size_t>& routeI
                 return st;
             if (fp) {
                 geo::GeoPolygon poly{footprintCorners(wp.position, wp.headingDeg, *fp), {}};
-                if (auto st = w.add(*polygon(poly), std::string(name) + " footprint", "ground footprint of the photo",
+                if (auto st = w.add(*polygon(poly), std::string(name) + " footprint",
+                                    "ground footprint of the photo",
                                     "PEN(c:" + colour + ",w:1px);BRUSH(fc:" + colour + "20)");
                     !st)
                     return st;

@@ -1,6 +1,6 @@
-// KML export through OGR (LIBKML driver, or the KML driver when GDAL lacks libkml): the mission area,
-// no-fly zones and home in one folder, and per aircraft a folder with its path, photo points and photo
-// footprints, styled in the aircraft's colour. Export only.
+// KML export through OGR (LIBKML driver, or the KML driver when GDAL lacks libkml): the mission
+// area, no-fly zones and home in one folder, and per aircraft a folder with its path, photo points
+// and photo footprints, styled in the aircraft's colour. Export only.
 #pragma once
 
 #include "core/io/export_context.h"
@@ -14,9 +14,11 @@ namespace pf::io {
 
 // The four ground corners of a photo taken at `centre` with the sensor's long side across the
 // direction of flight `headingDeg` (as the planner lays out the tracks), in ring order.
-geo::GeoRing footprintCorners(geo::LonLat centre, double headingDeg, const sensor::Footprint& footprint);
+geo::GeoRing footprintCorners(geo::LonLat centre, double headingDeg,
+                              const sensor::Footprint& footprint);
 
 // Writes the given routes of ctx (one route: a per-aircraft file; all: the combined file).
-Status writeKml(const ExportContext& ctx, const std::vector<std::size_t>& routeIndices, const std::string& path);
+Status writeKml(const ExportContext& ctx, const std::vector<std::size_t>& routeIndices,
+                const std::string& path);
 
 } // namespace pf::io

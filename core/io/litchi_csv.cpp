@@ -14,14 +14,15 @@ constexpr int kActions = 15;
 constexpr int kTakePhoto = 1; // Litchi action type "take photo"
 
 std::vector<std::string> columns() {
-    std::vector<std::string> c{"latitude",   "longitude",  "altitude(m)", "heading(deg)",
+    std::vector<std::string> c{"latitude",     "longitude",   "altitude(m)", "heading(deg)",
                                "curvesize(m)", "rotationdir", "gimbalmode",  "gimbalpitchangle"};
     for (int i = 1; i <= kActions; ++i) {
         c.push_back("actiontype" + std::to_string(i));
         c.push_back("actionparam" + std::to_string(i));
     }
-    for (const char* s : {"altitudemode", "speed(m/s)", "poi_latitude", "poi_longitude", "poi_altitude(m)",
-                          "poi_altitudemode", "photo_timeinterval", "photo_distinterval"})
+    for (const char* s :
+         {"altitudemode", "speed(m/s)", "poi_latitude", "poi_longitude", "poi_altitude(m)",
+          "poi_altitudemode", "photo_timeinterval", "photo_distinterval"})
         c.push_back(s);
     return c;
 }
@@ -38,15 +39,19 @@ std::string litchiCsvHeader() {
 Result<std::string> litchiCsvText(const ExportContext& ctx, std::size_t routeIndex) {
     using detail::formatNumber;
     if (routeIndex >= ctx.routes.size())
-        return makeError(ErrorCode::InvalidInput, "there is no route " + std::to_string(routeIndex + 1) + " to export");
+        return makeError(ErrorCode::InvalidInput,
+                         "there is no route " + std::to_string(routeIndex + 1) + " to export");
     const route::Route& r = ctx.routes[routeIndex];
     if (r.waypoints.empty())
-        return makeError(ErrorCode::InvalidInput, ctx.routeLabel(routeIndex) + ": the route has no waypoints to export");
+        return makeError(ErrorCode::InvalidInput,
+                         ctx.routeLabel(routeIndex) + ": the route has no waypoints to export");
     std::string out = litchiCsvHeader() + "\n";
     for (const auto& w : r.waypoints) {
         out += formatNumber(w.position.lat, 9) + ',' + formatNumber(w.position.lon, 9) + ',' +
-               formatNumber(w.altitudeM, 4) + ',' + formatNumber(detail::normaliseHeading(w.headingDeg), 4);
-        out += ",0,0,2,-90"; // curve size, rotation direction, gimbal mode interpolate, pitch straight down
+               formatNumber(w.altitudeM, 4) + ',' +
+               formatNumber(detail::normaliseHeading(w.headingDeg), 4);
+        out += ",0,0,2,-90"; // curve size, rotation direction, gimbal mode interpolate, pitch
+                             // straight down
         for (int a = 0; a < kActions; ++a)
             out += (a == 0 && w.kind == route::WaypointKind::Photo) ? ",1,0" : ",-1,0";
         out += ",0," + formatNumber(r.cruiseSpeedMps, 3) + ",0,0,0,0,-1,-1\n";
@@ -73,13 +78,15 @@ Result<ImportedWaypoints> parseLitchiCsv(const std::string& text, const std::str
     std::map<std::string, std::size_t> col;
     for (std::size_t i = 0; i < header.size(); ++i) {
         std::string name(detail::trim(header[i]));
-        std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
+        std::transform(name.begin(), name.end(), name.begin(),
+                       [](unsigned char c) { return std::tolower(c); });
         col.emplace(name, i);
     }
     for (const char* required : {"latitude", "longitude", "altitude(m)", "heading(deg)"})
         if (!col.count(required))
             return lineError(source, first + 1,
-                             std::string("not a Litchi waypoint CSV: the header has no \"") + required + "\" column");
+                             std::string("not a Litchi waypoint CSV: the header has no \"") +
+                                 required + "\" column");
 
     ImportedWaypoints out;
     route::Route r;
@@ -92,14 +99,16 @@ Result<ImportedWaypoints> parseLitchiCsv(const std::string& text, const std::str
         const auto fields = detail::splitChar(lines[li], ',');
         if (fields.size() != header.size())
             return lineError(source, lineNo,
-                             "expected " + std::to_string(header.size()) + " comma-separated fields but found " +
+                             "expected " + std::to_string(header.size()) +
+                                 " comma-separated fields but found " +
                                  std::to_string(fields.size()));
         auto number = [&](const std::string& name) -> Result<double> {
             const std::string_view f = fields[col.at(name)];
             auto v = detail::parseNumber(f);
             if (!v)
                 return lineError(source, lineNo,
-                                 "column " + name + ": \"" + std::string(detail::trim(f)) + "\" is not a number");
+                                 "column " + name + ": \"" + std::string(detail::trim(f)) +
+                                     "\" is not a number");
             return *v;
         };
         auto lat = number("latitude");

@@ -24,7 +24,8 @@ public:
 
     // A command at a position: the three altitude keys are written together (QGroundControl
     // rejects an item with only some of them).
-    void navigation(int command, double p1, double p2, double p3, double yaw, geo::LonLat at, double altitudeM) {
+    void navigation(int command, double p1, double p2, double p3, double yaw, geo::LonLat at,
+                    double altitudeM) {
         CPLJSONObject item = base(command, mav::kFrameGlobalRelativeAlt);
         item.Add("params", numbers({p1, p2, p3, yaw, at.lat, at.lon, altitudeM}));
         item.Add("Altitude", altitudeM);
@@ -57,9 +58,11 @@ private:
 
 } // namespace
 
-Result<std::string> qgcPlanJson(const ExportContext& ctx, std::size_t routeIndex, const ExportOptions& options) {
+Result<std::string> qgcPlanJson(const ExportContext& ctx, std::size_t routeIndex,
+                                const ExportOptions& options) {
     if (routeIndex >= ctx.routes.size())
-        return makeError(ErrorCode::InvalidInput, "there is no route " + std::to_string(routeIndex + 1) + " to export");
+        return makeError(ErrorCode::InvalidInput,
+                         "there is no route " + std::to_string(routeIndex + 1) + " to export");
     const route::Route& r = ctx.routes[routeIndex];
     const std::string label = ctx.routeLabel(routeIndex);
     if (r.waypoints.empty())
@@ -85,7 +88,8 @@ Result<std::string> qgcPlanJson(const ExportContext& ctx, std::size_t routeIndex
     const route::Waypoint& first = r.waypoints.front();
     w.navigation(mav::kNavTakeoff, 0, 0, 0, first.headingDeg, home, first.altitudeM);
     for (const auto& wp : r.waypoints) {
-        w.navigation(mav::kNavWaypoint, 0, 0, 0, detail::normaliseHeading(wp.headingDeg), wp.position, wp.altitudeM);
+        w.navigation(mav::kNavWaypoint, 0, 0, 0, detail::normaliseHeading(wp.headingDeg),
+                     wp.position, wp.altitudeM);
         if (wp.kind != route::WaypointKind::Photo)
             continue;
         if (options.capture == CaptureCommand::ImageStartCapture)
@@ -148,8 +152,9 @@ public:
     }
 
     // A required member of the given type.
-    Result<CPLJSONObject> member(const CPLJSONObject& obj, const std::string& parent, const std::string& name,
-                                 CPLJSONObject::Type type, const char* typeName) const {
+    Result<CPLJSONObject> member(const CPLJSONObject& obj, const std::string& parent,
+                                 const std::string& name, CPLJSONObject::Type type,
+                                 const char* typeName) const {
         const std::string key = parent.empty() ? name : parent + "." + name;
         CPLJSONObject v = obj.GetObj(name);
         if (!v.IsValid())
@@ -163,8 +168,8 @@ public:
     }
 
     // Numbers of an array; null (QGroundControl's NaN) reads as NaN.
-    Result<std::vector<double>> numberArray(const CPLJSONObject& v, const std::string& key, std::size_t minSize,
-                                            std::size_t maxSize) const {
+    Result<std::vector<double>> numberArray(const CPLJSONObject& v, const std::string& key,
+                                            std::size_t minSize, std::size_t maxSize) const {
         if (v.GetType() != CPLJSONObject::Type::Array)
             return keyError(key, "expected an array of numbers");
         const CPLJSONArray a = v.ToArray();
@@ -172,7 +177,8 @@ public:
         if (n < minSize || n > maxSize)
             return keyError(key, "expected " +
                                      (minSize == maxSize ? std::to_string(minSize)
-                                                         : std::to_string(minSize) + " to " + std::to_string(maxSize)) +
+                                                         : std::to_string(minSize) + " to " +
+                                                               std::to_string(maxSize)) +
                                      " numbers but found " + std::to_string(n));
         std::vector<double> out;
         for (int i = 0; i < a.Size(); ++i) {
@@ -195,7 +201,8 @@ public:
         if (!fileType)
             return fileType.error();
         if (fileType->ToString() != "Plan")
-            return keyError("fileType", "expected \"Plan\" but found \"" + fileType->ToString() + "\"");
+            return keyError("fileType",
+                            "expected \"Plan\" but found \"" + fileType->ToString() + "\"");
         for (const char* key : {"version", "groundStation", "geoFence", "rallyPoints"})
             if (!root.GetObj(key).IsValid())
                 return keyError(key, "missing");
@@ -206,8 +213,8 @@ public:
         if (!version)
             return version.error();
         if (version->ToInteger() != 2)
-            return keyError("mission.version",
-                            "only mission version 2 is supported (found " + std::to_string(version->ToInteger()) + ")");
+            return keyError("mission.version", "only mission version 2 is supported (found " +
+                                                   std::to_string(version->ToInteger()) + ")");
         auto homeV = member(*mission, "mission", "plannedHomePosition", T::Array, "an array");
         if (!homeV)
             return homeV.error();
@@ -236,9 +243,10 @@ public:
             if (!type)
                 return type.error();
             if (type->ToString() != "SimpleItem")
-                return keyError(key + ".type", "a \"" + type->ToString() +
-                                                   "\" item (survey or pattern) cannot be edited as waypoints; "
-                                                   "convert it to waypoints in QGroundControl first");
+                return keyError(key + ".type",
+                                "a \"" + type->ToString() +
+                                    "\" item (survey or pattern) cannot be edited as waypoints; "
+                                    "convert it to waypoints in QGroundControl first");
             auto cmd = member(item, key, "command", T::Integer, "an integer");
             if (!cmd)
                 return cmd.error();
@@ -264,20 +272,24 @@ public:
                 continue; // take-off, return, land and settings are regenerated on export
             const auto& p = *params;
             if (!std::isfinite(p[4]) || !std::isfinite(p[5]) || !std::isfinite(p[6]))
-                return keyError(key + ".params", "the waypoint has no position (latitude, longitude, altitude)");
+                return keyError(key + ".params",
+                                "the waypoint has no position (latitude, longitude, altitude)");
             if (std::abs(p[4]) > 90 || std::abs(p[5]) > 180)
                 return keyError(key + ".params", "latitude or longitude out of range");
             double alt = p[6];
             if (frame->ToInteger() == mav::kFrameGlobal)
                 alt -= homeAlt;
-            else if (frame->ToInteger() != mav::kFrameGlobalRelativeAlt && frame->ToInteger() != 6 /* relative int */)
-                return keyError(key + ".frame", "frame " + std::to_string(frame->ToInteger()) +
-                                                    " is not supported (use 3, altitude relative to home)");
+            else if (frame->ToInteger() != mav::kFrameGlobalRelativeAlt &&
+                     frame->ToInteger() != 6 /* relative int */)
+                return keyError(key + ".frame",
+                                "frame " + std::to_string(frame->ToInteger()) +
+                                    " is not supported (use 3, altitude relative to home)");
             route::Waypoint wp;
             wp.position = {p[5], p[4]};
             wp.altitudeM = alt;
-            wp.headingDeg = std::isfinite(p[3]) ? detail::normaliseHeading(p[3])
-                                                : (r.waypoints.empty() ? 0.0 : r.waypoints.back().headingDeg);
+            wp.headingDeg = std::isfinite(p[3])
+                                ? detail::normaliseHeading(p[3])
+                                : (r.waypoints.empty() ? 0.0 : r.waypoints.back().headingDeg);
             r.waypoints.push_back(wp);
             photo.push_back(false);
         }

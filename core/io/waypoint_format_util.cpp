@@ -135,7 +135,8 @@ Status writeTextFile(const std::string& path, const std::string& text) {
     {
         std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
         if (!out)
-            return makeError(ErrorCode::IoError, "cannot write " + path + ": " + std::strerror(errno));
+            return makeError(ErrorCode::IoError,
+                             "cannot write " + path + ": " + std::strerror(errno));
         out << text;
         out.flush();
         if (!out) {
@@ -152,7 +153,8 @@ Status writeTextFile(const std::string& path, const std::string& text) {
 }
 
 Error lineError(const std::string& source, std::size_t line, const std::string& what) {
-    return makeError(ErrorCode::ParseError, source + ": line " + std::to_string(line) + ": " + what);
+    return makeError(ErrorCode::ParseError,
+                     source + ": line " + std::to_string(line) + ": " + what);
 }
 
 Result<CPLJSONObject> parseJson(const std::string& text, const std::string& source) {
@@ -170,7 +172,8 @@ Result<CPLJSONObject> parseJson(const std::string& text, const std::string& sour
         // json-c reports a byte offset; people edit files by line.
         std::size_t offset = text.size();
         if (auto p = msg.find("at offset "); p != std::string::npos)
-            offset = std::min<std::size_t>(std::strtoul(msg.c_str() + p + 10, nullptr, 10), text.size());
+            offset =
+                std::min<std::size_t>(std::strtoul(msg.c_str() + p + 10, nullptr, 10), text.size());
         std::size_t line = 1, col = 1;
         for (std::size_t i = 0; i < offset; ++i) {
             if (text[i] == '\n') {
@@ -189,12 +192,14 @@ Result<CPLJSONObject> parseJson(const std::string& text, const std::string& sour
             why = "not valid JSON";
         else if (why == "continue") // json-c's word for input that stops mid-document
             why = "the file ends before the JSON is complete";
-        return makeError(ErrorCode::ParseError, source + ": line " + std::to_string(line) + ", column " +
-                                                    std::to_string(col) + ": invalid JSON (" + why + ")");
+        return makeError(ErrorCode::ParseError, source + ": line " + std::to_string(line) +
+                                                    ", column " + std::to_string(col) +
+                                                    ": invalid JSON (" + why + ")");
     }
     CPLJSONObject root = doc.GetRoot();
     if (root.GetType() != CPLJSONObject::Type::Object)
-        return makeError(ErrorCode::ParseError, source + ": expected a JSON object at the top level");
+        return makeError(ErrorCode::ParseError,
+                         source + ": expected a JSON object at the top level");
     return root;
 }
 
@@ -226,7 +231,8 @@ void inferNonPhotoKinds(std::vector<route::Waypoint>& waypoints, const std::vect
     const auto first = std::find(isPhoto.begin(), isPhoto.end(), true);
     const auto last = std::find(isPhoto.rbegin(), isPhoto.rend(), true);
     const std::size_t firstPhoto = static_cast<std::size_t>(first - isPhoto.begin());
-    const std::size_t lastPhoto = isPhoto.size() - 1 - static_cast<std::size_t>(last - isPhoto.rbegin());
+    const std::size_t lastPhoto =
+        isPhoto.size() - 1 - static_cast<std::size_t>(last - isPhoto.rbegin());
     for (std::size_t i = 0; i < waypoints.size(); ++i) {
         if (isPhoto[i])
             waypoints[i].kind = route::WaypointKind::Photo;
@@ -250,7 +256,8 @@ std::string extensionOf(const std::string& path) {
     if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
         return "";
     std::string ext = path.substr(dot);
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
     return ext;
 }
 
@@ -268,7 +275,8 @@ Status closeDataset(DatasetPtr& ds, const std::string& path) {
     QuietGdal quiet;
     GDALClose(ds.release());
     if (CPLGetLastErrorType() >= CE_Failure)
-        return makeError(ErrorCode::IoError, "cannot finish " + path + ": " + lastGdalError("the write failed"));
+        return makeError(ErrorCode::IoError,
+                         "cannot finish " + path + ": " + lastGdalError("the write failed"));
     return {};
 }
 
@@ -277,19 +285,22 @@ Result<DatasetPtr> createVectorDataset(const char* driverName, const std::string
     GDALAllRegister();
     GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driverName);
     if (!driver)
-        return makeError(ErrorCode::Unsupported,
-                         std::string("cannot write ") + path + ": this GDAL has no " + driverName + " driver");
+        return makeError(ErrorCode::Unsupported, std::string("cannot write ") + path +
+                                                     ": this GDAL has no " + driverName +
+                                                     " driver");
     QuietGdal quiet;
     VSIStatBufL st;
     if (VSIStatL(path.c_str(), &st) == 0 && VSIUnlink(path.c_str()) != 0)
-        return makeError(ErrorCode::IoError, "cannot replace " + path + ": " + std::strerror(errno));
+        return makeError(ErrorCode::IoError,
+                         "cannot replace " + path + ": " + std::strerror(errno));
     std::vector<char*> opts;
     for (const auto& o : options)
         opts.push_back(const_cast<char*>(o.c_str()));
     opts.push_back(nullptr);
     GDALDataset* ds = driver->Create(path.c_str(), 0, 0, 0, GDT_Unknown, opts.data());
     if (!ds)
-        return makeError(ErrorCode::IoError, "cannot write " + path + ": " + lastGdalError("GDAL could not create it"));
+        return makeError(ErrorCode::IoError,
+                         "cannot write " + path + ": " + lastGdalError("GDAL could not create it"));
     return DatasetPtr(ds);
 }
 

@@ -1,5 +1,6 @@
-// Shared helpers of the waypoint readers and writers: locale-proof numbers, text files, line-numbered
-// errors, JSON with line numbers, OGR datasets. Internal: include from core/io .cpp files only.
+// Shared helpers of the waypoint readers and writers: locale-proof numbers, text files,
+// line-numbered errors, JSON with line numbers, OGR datasets. Internal: include from core/io .cpp
+// files only.
 #pragma once
 
 #include "core/io/export_context.h"

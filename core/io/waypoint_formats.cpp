@@ -16,8 +16,10 @@ namespace pf::io {
 
 const std::vector<WaypointFormatInfo>& waypointFormats() {
     static const std::vector<WaypointFormatInfo> kFormats{
-        {WaypointFormat::QgcPlan, "plan", ".plan", "QGroundControl mission (.plan JSON)", true, false},
-        {WaypointFormat::QgcWpl, "waypoints", ".waypoints", "QGC WPL 110 waypoint list (Mission Planner)", true, false},
+        {WaypointFormat::QgcPlan, "plan", ".plan", "QGroundControl mission (.plan JSON)", true,
+         false},
+        {WaypointFormat::QgcWpl, "waypoints", ".waypoints",
+         "QGC WPL 110 waypoint list (Mission Planner)", true, false},
         {WaypointFormat::Kml, "kml", ".kml", "KML for Google Earth (export only)", false, true},
         {WaypointFormat::Gpx, "gpx", ".gpx", "GPX 1.1 waypoints and routes", true, true},
         {WaypointFormat::GeoJson, "geojson", ".geojson", "GeoJSON features", true, true},
@@ -58,7 +60,8 @@ Result<WaypointFormat> formatFromName(const std::string& name) {
     for (const auto& f : waypointFormats())
         if (n == f.name)
             return f.format;
-    return makeError(ErrorCode::Unsupported, "unknown waypoint format \"" + name + "\" (known: " + knownNames() + ")");
+    return makeError(ErrorCode::Unsupported,
+                     "unknown waypoint format \"" + name + "\" (known: " + knownNames() + ")");
 }
 
 Result<WaypointFormat> formatFromPath(const std::string& path) {
@@ -85,12 +88,13 @@ Result<std::vector<WaypointFormat>> formatListFromString(const std::string& comm
             out.push_back(*f);
     }
     if (out.empty())
-        return makeError(ErrorCode::InvalidInput, "no waypoint format given (known: " + knownNames() + ")");
+        return makeError(ErrorCode::InvalidInput,
+                         "no waypoint format given (known: " + knownNames() + ")");
     return out;
 }
 
-Status exportRoute(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat format, const std::string& path,
-                   const ExportOptions& options) {
+Status exportRoute(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat format,
+                   const std::string& path, const ExportOptions& options) {
     switch (format) {
     case WaypointFormat::QgcPlan:
         return writeQgcPlan(ctx, routeIndex, path, options);
@@ -120,8 +124,9 @@ Status exportCombined(const ExportContext& ctx, WaypointFormat format, const std
     case WaypointFormat::GeoJson:
         return writeWaypointGeoJson(ctx, all, path);
     default:
-        return makeError(ErrorCode::Unsupported, std::string("a ") + formatInfo(format).description +
-                                                     " file holds one aircraft's mission; write one file per aircraft");
+        return makeError(ErrorCode::Unsupported,
+                         std::string("a ") + formatInfo(format).description +
+                             " file holds one aircraft's mission; write one file per aircraft");
     }
 }
 
@@ -133,8 +138,9 @@ std::string routeFileName(const ExportContext& ctx, std::size_t routeIndex, Wayp
     return name + formatInfo(format).extension;
 }
 
-Result<std::vector<std::string>> exportAll(const ExportContext& ctx, WaypointFormat format, const std::string& dir,
-                                           const std::string& stem, const ExportOptions& options) {
+Result<std::vector<std::string>> exportAll(const ExportContext& ctx, WaypointFormat format,
+                                           const std::string& dir, const std::string& stem,
+                                           const ExportOptions& options) {
     std::vector<std::string> written;
     const std::string base = dir.empty() ? std::string() : dir + "/";
     for (std::size_t i = 0; i < ctx.routes.size(); ++i) {
@@ -168,9 +174,11 @@ Result<ImportedWaypoints> importWaypoints(const std::string& path) {
     case WaypointFormat::GeoJson:
         return readWaypointGeoJson(path);
     case WaypointFormat::Kml:
-        return makeError(ErrorCode::Unsupported,
-                         path + ": KML is written for viewing only; edit the .plan, .waypoints, .gpx, .geojson or "
-                                ".csv export instead");
+        return makeError(
+            ErrorCode::Unsupported,
+            path +
+                ": KML is written for viewing only; edit the .plan, .waypoints, .gpx, .geojson or "
+                ".csv export instead");
     }
     return makeError(ErrorCode::Internal, "unknown waypoint format");
 }

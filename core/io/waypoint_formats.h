@@ -5,7 +5,8 @@
 //   io::ExportContext ctx = io::makeExportContext(mission, routes); // footprints from each camera
 //   ctx.trajectories = ...;                 // optional: smoothed paths to draw in KML
 //   for (std::size_t i = 0; i < ctx.routes.size(); ++i)
-//       io::exportRoute(ctx, i, io::WaypointFormat::QgcPlan, dir + "/" + io::routeFileName(ctx, i, fmt), opts);
+//       io::exportRoute(ctx, i, io::WaypointFormat::QgcPlan, dir + "/" + io::routeFileName(ctx, i,
+//       fmt), opts);
 //   if (io::formatInfo(fmt).combined)
 //       io::exportCombined(ctx, fmt, dir + "/mission.kml", opts);
 //
@@ -36,7 +37,8 @@ struct WaypointFormatInfo {
 const std::vector<WaypointFormatInfo>& waypointFormats();
 const WaypointFormatInfo& formatInfo(WaypointFormat format);
 
-// "plan", "waypoints", "kml", "gpx", "geojson" (also "json"), "csv" (also "litchi"), case-insensitive.
+// "plan", "waypoints", "kml", "gpx", "geojson" (also "json"), "csv" (also "litchi"),
+// case-insensitive.
 Result<WaypointFormat> formatFromName(const std::string& name);
 // By extension: .plan .waypoints .kml .gpx .geojson .json .csv
 Result<WaypointFormat> formatFromPath(const std::string& path);
@@ -44,18 +46,19 @@ Result<WaypointFormat> formatFromPath(const std::string& path);
 Result<std::vector<WaypointFormat>> formatListFromString(const std::string& commaSeparated);
 
 // One aircraft's route in one file.
-Status exportRoute(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat format, const std::string& path,
-                   const ExportOptions& options = {});
+Status exportRoute(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat format,
+                   const std::string& path, const ExportOptions& options = {});
 // Every route in one file; Unsupported for the formats that hold one vehicle's mission.
 Status exportCombined(const ExportContext& ctx, WaypointFormat format, const std::string& path,
                       const ExportOptions& options = {});
 
 // "<aircraft>.<ext>" with characters unsafe in file names replaced by '_' ("Route N" if unnamed).
 std::string routeFileName(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat format);
-// Writes "<dir>/<stem>-<aircraft>.<ext>" per route, plus "<dir>/<stem>.<ext>" with every route when the
-// format allows; returns the paths written.
-Result<std::vector<std::string>> exportAll(const ExportContext& ctx, WaypointFormat format, const std::string& dir,
-                                           const std::string& stem, const ExportOptions& options = {});
+// Writes "<dir>/<stem>-<aircraft>.<ext>" per route, plus "<dir>/<stem>.<ext>" with every route when
+// the format allows; returns the paths written.
+Result<std::vector<std::string>> exportAll(const ExportContext& ctx, WaypointFormat format,
+                                           const std::string& dir, const std::string& stem,
+                                           const ExportOptions& options = {});
 
 // Reads .plan, .waypoints, .gpx, .geojson/.json or .csv (chosen by extension).
 Result<ImportedWaypoints> importWaypoints(const std::string& path);

@@ -49,7 +49,8 @@ Status writeWaypointGeoJson(const ExportContext& ctx, const std::vector<std::siz
                             const std::string& path) {
     for (auto i : routeIndices)
         if (i >= ctx.routes.size())
-            return makeError(ErrorCode::InvalidInput, "there is no route " + std::to_string(i + 1) + " to export");
+            return makeError(ErrorCode::InvalidInput,
+                             "there is no route " + std::to_string(i + 1) + " to export");
     auto ds = detail::createVectorDataset("GeoJSON", path);
     if (!ds)
         return ds.error();
@@ -57,18 +58,22 @@ Status writeWaypointGeoJson(const ExportContext& ctx, const std::vector<std::siz
     wgs84.SetWellKnownGeogCS("WGS84");
     wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
     const char* const layerOpts[] = {"WRITE_NAME=NO", nullptr};
-    OGRLayer* layer = (*ds)->CreateLayer("waypoints", &wgs84, wkbUnknown, const_cast<char**>(layerOpts));
+    OGRLayer* layer =
+        (*ds)->CreateLayer("waypoints", &wgs84, wkbUnknown, const_cast<char**>(layerOpts));
     if (!layer)
-        return makeError(ErrorCode::IoError, "cannot write " + path + ": " + detail::lastGdalError("no layer"));
-    const std::pair<const char*, OGRFieldType> fields[] = {{"kind", OFTString},       {"name", OFTString},
-                                                           {"aircraft", OFTString},   {"index", OFTInteger},
-                                                           {"altitude_m", OFTReal},   {"heading_deg", OFTReal}};
+        return makeError(ErrorCode::IoError,
+                         "cannot write " + path + ": " + detail::lastGdalError("no layer"));
+    const std::pair<const char*, OGRFieldType> fields[] = {
+        {"kind", OFTString},   {"name", OFTString},     {"aircraft", OFTString},
+        {"index", OFTInteger}, {"altitude_m", OFTReal}, {"heading_deg", OFTReal}};
     for (const auto& [name, type] : fields) {
         OGRFieldDefn def(name, type);
         if (layer->CreateField(&def) != OGRERR_NONE)
-            return makeError(ErrorCode::IoError, "cannot write " + path + ": " + detail::lastGdalError(name));
+            return makeError(ErrorCode::IoError,
+                             "cannot write " + path + ": " + detail::lastGdalError(name));
     }
-    auto add = [&](OGRGeometry* g, const char* kind, const std::string& name) -> Result<FeaturePtr> {
+    auto add = [&](OGRGeometry* g, const char* kind,
+                   const std::string& name) -> Result<FeaturePtr> {
         FeaturePtr f(OGRFeature::CreateFeature(layer->GetLayerDefn()));
         f->SetGeometry(g);
         f->SetField("kind", kind);
@@ -78,7 +83,8 @@ Status writeWaypointGeoJson(const ExportContext& ctx, const std::vector<std::siz
     };
     auto commit = [&](FeaturePtr& f) -> Status {
         if (layer->CreateFeature(f.get()) != OGRERR_NONE)
-            return makeError(ErrorCode::IoError, "cannot write " + path + ": " + detail::lastGdalError("feature"));
+            return makeError(ErrorCode::IoError,
+                             "cannot write " + path + ": " + detail::lastGdalError("feature"));
         return {};
     };
     if (!ctx.mission.area.outer.empty()) {
@@ -154,8 +160,10 @@ Result<ImportedWaypoints> readWaypointGeoJson(const std::string& path) {
             path + ": feature " + std::to_string(k) + " (features[" + std::to_string(k - 1) + "])";
         const OGRGeometry* g = f->GetGeometryRef();
         const int kindIdx = f->GetFieldIndex("kind");
-        const std::string kind = kindIdx >= 0 && f->IsFieldSetAndNotNull(kindIdx) ? f->GetFieldAsString(kindIdx) : "";
-        const auto wpKind = kind.empty() ? std::optional(route::WaypointKind::Photo) : detail::kindFromName(kind);
+        const std::string kind =
+            kindIdx >= 0 && f->IsFieldSetAndNotNull(kindIdx) ? f->GetFieldAsString(kindIdx) : "";
+        const auto wpKind =
+            kind.empty() ? std::optional(route::WaypointKind::Photo) : detail::kindFromName(kind);
         if (!g)
             continue;
         const auto type = wkbFlatten(g->getGeometryType());
@@ -163,7 +171,8 @@ Result<ImportedWaypoints> readWaypointGeoJson(const std::string& path) {
             const auto* p = g->toPolygon();
             mission::NoFlyZone z;
             const int n = f->GetFieldIndex("name");
-            z.name = n >= 0 && f->IsFieldSetAndNotNull(n) ? f->GetFieldAsString(n) : "No-fly zone " + std::to_string(k);
+            z.name = n >= 0 && f->IsFieldSetAndNotNull(n) ? f->GetFieldAsString(n)
+                                                          : "No-fly zone " + std::to_string(k);
             z.polygon.outer = fromOgrRing(p->getExteriorRing());
             for (int h = 0; h < p->getNumInteriorRings(); ++h)
                 z.polygon.holes.push_back(fromOgrRing(p->getInteriorRing(h)));
@@ -184,7 +193,8 @@ Result<ImportedWaypoints> readWaypointGeoJson(const std::string& path) {
         if (alt >= 0 && f->IsFieldSetAndNotNull(alt)) {
             auto v = detail::parseNumber(f->GetFieldAsString(alt));
             if (!v)
-                return makeError(ErrorCode::ParseError, where + ": property \"altitude_m\" is not a number");
+                return makeError(ErrorCode::ParseError,
+                                 where + ": property \"altitude_m\" is not a number");
             pw.w.altitudeM = *v;
         } else if (p->Is3D()) {
             pw.w.altitudeM = p->getZ();
@@ -195,7 +205,8 @@ Result<ImportedWaypoints> readWaypointGeoJson(const std::string& path) {
         if (hdg >= 0 && f->IsFieldSetAndNotNull(hdg)) {
             auto v = detail::parseNumber(f->GetFieldAsString(hdg));
             if (!v)
-                return makeError(ErrorCode::ParseError, where + ": property \"heading_deg\" is not a number");
+                return makeError(ErrorCode::ParseError,
+                                 where + ": property \"heading_deg\" is not a number");
             pw.w.headingDeg = detail::normaliseHeading(*v);
             pw.hasHeading = true;
         }
@@ -203,7 +214,8 @@ Result<ImportedWaypoints> readWaypointGeoJson(const std::string& path) {
         if (idx >= 0 && f->IsFieldSetAndNotNull(idx))
             pw.index = f->GetFieldAsInteger(idx);
         const int ac = f->GetFieldIndex("aircraft");
-        const std::string aircraft = ac >= 0 && f->IsFieldSetAndNotNull(ac) ? f->GetFieldAsString(ac) : "";
+        const std::string aircraft =
+            ac >= 0 && f->IsFieldSetAndNotNull(ac) ? f->GetFieldAsString(ac) : "";
         auto it = std::find(order.begin(), order.end(), aircraft);
         if (it == order.end()) {
             order.push_back(aircraft);
@@ -215,7 +227,8 @@ Result<ImportedWaypoints> readWaypointGeoJson(const std::string& path) {
     for (std::size_t gi = 0; gi < groups.size(); ++gi) {
         auto& grp = groups[gi];
         if (std::all_of(grp.begin(), grp.end(), [](const Pending& p) { return p.index >= 0; }))
-            std::stable_sort(grp.begin(), grp.end(), [](const Pending& a, const Pending& b) { return a.index < b.index; });
+            std::stable_sort(grp.begin(), grp.end(),
+                             [](const Pending& a, const Pending& b) { return a.index < b.index; });
         route::Route r;
         r.aircraft = order[gi];
         r.home = out.home;
@@ -232,7 +245,8 @@ Result<ImportedWaypoints> readWaypointGeoJson(const std::string& path) {
         out.routes.push_back(std::move(r));
     }
     if (out.routes.empty())
-        return makeError(ErrorCode::ParseError, path + ": the file has no waypoint (point) features");
+        return makeError(ErrorCode::ParseError,
+                         path + ": the file has no waypoint (point) features");
     return out;
 }
 

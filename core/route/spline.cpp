@@ -6,8 +6,8 @@
 
 namespace pf::route {
 
-Eigen::VectorXd solveTridiagonal(const Eigen::VectorXd& sub, const Eigen::VectorXd& diag, const Eigen::VectorXd& sup,
-                                 const Eigen::VectorXd& rhs) {
+Eigen::VectorXd solveTridiagonal(const Eigen::VectorXd& sub, const Eigen::VectorXd& diag,
+                                 const Eigen::VectorXd& sup, const Eigen::VectorXd& rhs) {
     const Eigen::Index n = diag.size();
     assert(sub.size() == n && sup.size() == n && rhs.size() == n);
     if (n == 0)
@@ -36,16 +36,17 @@ std::vector<double> centripetalKnots(const std::vector<geo::Vec2>& points) {
     return t;
 }
 
-Result<CubicSpline> CubicSpline::clamped(std::vector<double> knots, std::vector<double> values, double startSlope,
-                                         double endSlope) {
+Result<CubicSpline> CubicSpline::clamped(std::vector<double> knots, std::vector<double> values,
+                                         double startSlope, double endSlope) {
     if (knots.size() < 2 || knots.size() != values.size())
-        return makeError(ErrorCode::InvalidInput, "a spline needs at least two knots and one value per knot (got " +
-                                                      std::to_string(knots.size()) + " knots and " +
-                                                      std::to_string(values.size()) + " values)");
+        return makeError(ErrorCode::InvalidInput,
+                         "a spline needs at least two knots and one value per knot (got " +
+                             std::to_string(knots.size()) + " knots and " +
+                             std::to_string(values.size()) + " values)");
     for (std::size_t i = 1; i < knots.size(); ++i)
         if (!(knots[i] > knots[i - 1]))
-            return makeError(ErrorCode::InvalidInput,
-                             "spline knots must increase strictly (knot " + std::to_string(i) + " does not)");
+            return makeError(ErrorCode::InvalidInput, "spline knots must increase strictly (knot " +
+                                                          std::to_string(i) + " does not)");
     const std::size_t n = knots.size() - 1; // number of segments
     const auto N = static_cast<Eigen::Index>(n + 1);
     Eigen::VectorXd sub = Eigen::VectorXd::Zero(N), diag(N), sup = Eigen::VectorXd::Zero(N), rhs(N);
@@ -55,7 +56,8 @@ Result<CubicSpline> CubicSpline::clamped(std::vector<double> knots, std::vector<
         b[i] = (values[i + 1] - values[i]) / h[i];
     }
     // Unknowns are the second derivatives M_i. The two end rows impose S'(t0) and S'(tn) instead of
-    // the natural M0 = Mn = 0: zero end slopes mean the vehicle is at rest when it starts and stops.
+    // the natural M0 = Mn = 0: zero end slopes mean the vehicle is at rest when it starts and
+    // stops.
     diag[0] = 2.0 * h[0];
     sup[0] = h[0];
     rhs[0] = 6.0 * (b[0] - startSlope);
@@ -99,7 +101,8 @@ double CubicSpline::derivative(double t) const {
     const double h = m_t[i + 1] - m_t[i];
     const double a = m_t[i + 1] - t, b = t - m_t[i];
     const double mi = m_m[static_cast<Eigen::Index>(i)], mj = m_m[static_cast<Eigen::Index>(i + 1)];
-    return -mi * a * a / (2 * h) + mj * b * b / (2 * h) + (m_y[i + 1] - m_y[i]) / h - (mj - mi) * h / 6;
+    return -mi * a * a / (2 * h) + mj * b * b / (2 * h) + (m_y[i + 1] - m_y[i]) / h -
+           (mj - mi) * h / 6;
 }
 
 double CubicSpline::secondDerivative(double t) const {

@@ -1,4 +1,5 @@
-// Clamped cubic splines over Lee's centripetal parameterisation (paper 004), solved as a tridiagonal system.
+// Clamped cubic splines over Lee's centripetal parameterisation (paper 004), solved as a
+// tridiagonal system.
 #pragma once
 
 #include "core/geo/types.h"
@@ -10,11 +11,11 @@
 
 namespace pf::route {
 
-// Solves a tridiagonal system with the Thomas algorithm. `sub[i]` multiplies x[i-1] in row i (sub[0]
-// unused), `diag[i]` x[i], `sup[i]` x[i+1] (last unused). The systems built here are strictly
-// diagonally dominant, for which the elimination without pivoting is stable.
-Eigen::VectorXd solveTridiagonal(const Eigen::VectorXd& sub, const Eigen::VectorXd& diag, const Eigen::VectorXd& sup,
-                                 const Eigen::VectorXd& rhs);
+// Solves a tridiagonal system with the Thomas algorithm. `sub[i]` multiplies x[i-1] in row i
+// (sub[0] unused), `diag[i]` x[i], `sup[i]` x[i+1] (last unused). The systems built here are
+// strictly diagonally dominant, for which the elimination without pivoting is stable.
+Eigen::VectorXd solveTridiagonal(const Eigen::VectorXd& sub, const Eigen::VectorXd& diag,
+                                 const Eigen::VectorXd& sup, const Eigen::VectorXd& rhs);
 
 // Lee's centripetal knots: t0 = 0, t(i+1) = t(i) + |P(i+1) - P(i)|^0.5. Coincident points give
 // repeated knots; callers merge them first.
@@ -25,8 +26,8 @@ std::vector<double> centripetalKnots(const std::vector<geo::Vec2>& points);
 class CubicSpline {
 public:
     // Needs at least two knots, strictly increasing, and as many values as knots.
-    static Result<CubicSpline> clamped(std::vector<double> knots, std::vector<double> values, double startSlope = 0.0,
-                                       double endSlope = 0.0);
+    static Result<CubicSpline> clamped(std::vector<double> knots, std::vector<double> values,
+                                       double startSlope = 0.0, double endSlope = 0.0);
 
     double value(double t) const;
     double derivative(double t) const;

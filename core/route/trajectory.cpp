@@ -45,7 +45,8 @@ struct Point3 {
 class Builder {
 public:
     Builder(std::vector<Knot> knots, const geo::MultiPolygon& keepOut, const TrajectoryOptions& opt)
-        : m_k(std::move(knots)), m_keepOut(keepOut), m_opt(opt), m_level(legs(), 0), m_straight(legs(), false) {}
+        : m_k(std::move(knots)), m_keepOut(keepOut), m_opt(opt), m_level(legs(), 0),
+          m_straight(legs(), false) {}
 
     std::size_t legs() const { return m_k.size() - 1; }
 
@@ -142,8 +143,10 @@ private:
             for (int i = 1; i <= parts; ++i) {
                 const double f = static_cast<double>(i) / parts;
                 const bool end = i == parts; // the waypoint itself, not a rounded copy
-                pos.push_back(end ? m_k[l + 1].pos : geo::Vec2(m_k[l].pos + f * (m_k[l + 1].pos - m_k[l].pos)));
-                yaw.push_back(end ? m_k[l + 1].yaw : m_k[l].yaw + f * (m_k[l + 1].yaw - m_k[l].yaw));
+                pos.push_back(end ? m_k[l + 1].pos
+                                  : geo::Vec2(m_k[l].pos + f * (m_k[l + 1].pos - m_k[l].pos)));
+                yaw.push_back(end ? m_k[l + 1].yaw
+                                  : m_k[l].yaw + f * (m_k[l + 1].yaw - m_k[l].yaw));
                 legOf.push_back(l);
             }
         }
@@ -161,13 +164,17 @@ private:
         auto sy = CubicSpline::clamped(t, ys, d0.y(), d1.y());
         auto sw = CubicSpline::clamped(t, yaw, d0.z(), d1.z());
         if (!sx || !sy || !sw)
-            return makeError(ErrorCode::Internal, "could not fit the trajectory spline: " +
-                                                      (!sx ? sx.error() : !sy ? sy.error() : sw.error()).message);
+            return makeError(ErrorCode::Internal,
+                             "could not fit the trajectory spline: " + (!sx   ? sx.error()
+                                                                        : !sy ? sy.error()
+                                                                              : sw.error())
+                                                                           .message);
         auto at = [&](double u) { return geo::Vec2(sx->value(u), sy->value(u)); };
         for (std::size_t k = 0; k + 1 < t.size(); ++k) {
             // Resample by arc length so the spacing holds even where the curve slows towards rest.
             const double chord = (pos[k + 1] - pos[k]).norm();
-            const int fine = std::clamp(static_cast<int>(std::ceil(8.0 * chord / m_opt.spacingM)), 16, 20000);
+            const int fine =
+                std::clamp(static_cast<int>(std::ceil(8.0 * chord / m_opt.spacingM)), 16, 20000);
             std::vector<double> u(fine + 1), s(fine + 1, 0.0);
             geo::Vec2 prev = pos[k];
             for (int i = 0; i <= fine; ++i) {
@@ -213,19 +220,23 @@ double totalHeadingChangeDeg(const std::vector<double>& headingsDeg) {
     return sum;
 }
 
-Result<Trajectory> buildTrajectory(const std::vector<LocalWaypoint>& waypoints, const geo::MultiPolygon& keepOut,
+Result<Trajectory> buildTrajectory(const std::vector<LocalWaypoint>& waypoints,
+                                   const geo::MultiPolygon& keepOut,
                                    const TrajectoryOptions& options) {
     if (!(options.spacingM > 0) || !std::isfinite(options.spacingM))
-        return makeError(ErrorCode::InvalidInput, "the trajectory sample spacing must be a positive number of metres");
+        return makeError(ErrorCode::InvalidInput,
+                         "the trajectory sample spacing must be a positive number of metres");
     if (options.maxRefinements < 0 || options.maxRefinements > 10)
-        return makeError(ErrorCode::InvalidInput, "the trajectory refinement count must be between 0 and 10");
+        return makeError(ErrorCode::InvalidInput,
+                         "the trajectory refinement count must be between 0 and 10");
     Trajectory out;
     if (waypoints.empty())
         return out;
     for (std::size_t i = 0; i < waypoints.size(); ++i)
         if (!waypoints[i].pos.allFinite() || !std::isfinite(waypoints[i].headingDeg))
             return makeError(ErrorCode::InvalidInput,
-                             "waypoint " + std::to_string(i + 1) + " has a position or heading that is not a number");
+                             "waypoint " + std::to_string(i + 1) +
+                                 " has a position or heading that is not a number");
 
     std::vector<double> headings;
     headings.reserve(waypoints.size());
@@ -277,7 +288,8 @@ Result<Trajectory> buildTrajectory(const std::vector<LocalWaypoint>& waypoints, 
     return out;
 }
 
-Result<Trajectory> buildTrajectory(const Route& route, const geo::LocalFrame& frame, const geo::MultiPolygon& keepOut,
+Result<Trajectory> buildTrajectory(const Route& route, const geo::LocalFrame& frame,
+                                   const geo::MultiPolygon& keepOut,
                                    const TrajectoryOptions& options) {
     std::vector<LocalWaypoint> local;
     local.reserve(route.waypoints.size() + 2);
@@ -292,8 +304,8 @@ Result<Trajectory> buildTrajectory(const Route& route, const geo::LocalFrame& fr
     return buildTrajectory(local, keepOut, options);
 }
 
-geo::MultiPolygon keepOutZones(const std::vector<geo::GeoPolygon>& noFlyZones, const geo::LocalFrame& frame,
-                               double marginM) {
+geo::MultiPolygon keepOutZones(const std::vector<geo::GeoPolygon>& noFlyZones,
+                               const geo::LocalFrame& frame, double marginM) {
     geo::MultiPolygon local;
     for (const auto& z : noFlyZones)
         local.push_back(frame.toLocal(z));
@@ -310,11 +322,14 @@ std::vector<geo::LonLat> toGeo(const Trajectory& trajectory, const geo::LocalFra
     return out;
 }
 
-Result<FlightEstimate> estimateFlight(const Trajectory& trajectory, double speedMps, double turnRateDegS) {
+Result<FlightEstimate> estimateFlight(const Trajectory& trajectory, double speedMps,
+                                      double turnRateDegS) {
     if (!(speedMps > 0) || !std::isfinite(speedMps))
-        return makeError(ErrorCode::InvalidInput, "the cruise speed must be positive to estimate a flight time");
+        return makeError(ErrorCode::InvalidInput,
+                         "the cruise speed must be positive to estimate a flight time");
     if (!(turnRateDegS > 0) || !std::isfinite(turnRateDegS))
-        return makeError(ErrorCode::InvalidInput, "the turn rate must be positive to estimate a flight time");
+        return makeError(ErrorCode::InvalidInput,
+                         "the turn rate must be positive to estimate a flight time");
     FlightEstimate e;
     e.lengthM = trajectory.lengthM;
     e.headingChangeDeg = trajectory.headingChangeDeg;

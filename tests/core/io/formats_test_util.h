@@ -1,5 +1,5 @@
-// Test helpers for the waypoint formats: seeded random routes on the demo site, tolerant comparisons,
-// the rules QGroundControl's .plan loader enforces, and running ogrinfo.
+// Test helpers for the waypoint formats: seeded random routes on the demo site, tolerant
+// comparisons, the rules QGroundControl's .plan loader enforces, and running ogrinfo.
 #pragma once
 
 #include "core/io/export_context.h"
@@ -14,8 +14,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <random>
-#include <sys/wait.h>
 #include <string>
+#include <sys/wait.h>
 #include <vector>
 
 namespace pf::test {
@@ -27,13 +27,16 @@ inline mission::Mission demoMission() {
     m.area.outer = {{8.3272608, 49.0109209}, {8.3324653, 49.0108309}, {8.3327392, 49.0123597},
                     {8.3308218, 49.0125396}, {8.3305478, 49.0133489}, {8.3273978, 49.013259}};
     m.noFlyZones.push_back({"Warehouse",
-                            {{{8.3291782, 49.0118201}, {8.3297261, 49.0118201}, {8.3297261, 49.0121799},
+                            {{{8.3291782, 49.0118201},
+                              {8.3297261, 49.0118201},
+                              {8.3297261, 49.0121799},
                               {8.3291782, 49.0121799}},
                              {}}});
     mission::NoFlyZone mast{"Radio mast", {}};
     for (int i = 0; i < 16; ++i) {
         const double a = 2 * 3.14159265358979323846 * i / 16;
-        mast.polygon.outer.push_back({8.3316435 + 0.000274 * std::cos(a), 49.0115504 + 0.00018 * std::sin(a)});
+        mast.polygon.outer.push_back(
+            {8.3316435 + 0.000274 * std::cos(a), 49.0115504 + 0.00018 * std::sin(a)});
     }
     m.noFlyZones.push_back(mast);
     m.home = geo::LonLat{8.3270554, 49.010741};
@@ -42,8 +45,8 @@ inline mission::Mission demoMission() {
 
 // A route of 2..40 waypoints with random positions over the site, altitudes, headings and kinds.
 inline route::Route randomRoute(std::mt19937& rng, const std::string& aircraft) {
-    std::uniform_real_distribution<double> lon(8.3272, 8.3327), lat(49.0108, 49.0133), alt(15.0, 120.0),
-        hdg(0.0, 360.0);
+    std::uniform_real_distribution<double> lon(8.3272, 8.3327), lat(49.0108, 49.0133),
+        alt(15.0, 120.0), hdg(0.0, 360.0);
     std::uniform_int_distribution<int> count(2, 40), kind(0, 5);
     route::Route r;
     r.aircraft = aircraft;
@@ -55,7 +58,9 @@ inline route::Route randomRoute(std::mt19937& rng, const std::string& aircraft) 
         w.altitudeM = alt(rng);
         w.headingDeg = hdg(rng);
         const int k = kind(rng);
-        w.kind = k < 4 ? route::WaypointKind::Photo : k == 4 ? route::WaypointKind::Turn : route::WaypointKind::Transit;
+        w.kind = k < 4    ? route::WaypointKind::Photo
+                 : k == 4 ? route::WaypointKind::Turn
+                          : route::WaypointKind::Transit;
         r.waypoints.push_back(w);
     }
     return r;
@@ -89,15 +94,17 @@ inline double angleDiffDeg(double a, double b) {
 }
 
 // The round-trip tolerances of the formats: 1e-7 degree, 1 cm, 0.01 degree of heading, same order.
-inline void expectSameWaypoints(const std::vector<route::Waypoint>& expected, const std::vector<route::Waypoint>& got,
-                                bool kindsExact, const std::string& what) {
+inline void expectSameWaypoints(const std::vector<route::Waypoint>& expected,
+                                const std::vector<route::Waypoint>& got, bool kindsExact,
+                                const std::string& what) {
     ASSERT_EQ(got.size(), expected.size()) << what;
     const auto photoKinds = photoOnlyKinds(expected);
     for (std::size_t i = 0; i < expected.size(); ++i) {
         EXPECT_NEAR(got[i].position.lon, expected[i].position.lon, 1e-7) << what << " #" << i;
         EXPECT_NEAR(got[i].position.lat, expected[i].position.lat, 1e-7) << what << " #" << i;
         EXPECT_NEAR(got[i].altitudeM, expected[i].altitudeM, 0.01) << what << " #" << i;
-        EXPECT_LE(angleDiffDeg(got[i].headingDeg, expected[i].headingDeg), 0.01) << what << " #" << i;
+        EXPECT_LE(angleDiffDeg(got[i].headingDeg, expected[i].headingDeg), 0.01)
+            << what << " #" << i;
         EXPECT_GE(got[i].headingDeg, 0.0);
         EXPECT_LT(got[i].headingDeg, 360.0);
         EXPECT_EQ(got[i].kind, kindsExact ? expected[i].kind : photoKinds[i]) << what << " #" << i;
@@ -119,8 +126,11 @@ inline std::vector<std::string> qgcPlanViolations(const std::string& json) {
         const auto t = o.GetType();
         return t == T::Integer || t == T::Long || t == T::Double;
     };
-    auto isInt = [](const CPLJSONObject& o) { return o.GetType() == T::Integer || o.GetType() == T::Long; };
-    for (const char* k : {"fileType", "version", "groundStation", "mission", "geoFence", "rallyPoints"})
+    auto isInt = [](const CPLJSONObject& o) {
+        return o.GetType() == T::Integer || o.GetType() == T::Long;
+    };
+    for (const char* k :
+         {"fileType", "version", "groundStation", "mission", "geoFence", "rallyPoints"})
         if (!root.GetObj(k).IsValid())
             v.push_back(std::string("missing top-level key ") + k);
     if (root.GetString("fileType") != "Plan")
@@ -158,7 +168,8 @@ inline std::vector<std::string> qgcPlanViolations(const std::string& json) {
         else
             for (int p = 0; p < 7; ++p)
                 if (!isNum(params[p]) && params[p].GetType() != T::Null)
-                    v.push_back(at + "param " + std::to_string(p + 1) + " is neither a number nor null");
+                    v.push_back(at + "param " + std::to_string(p + 1) +
+                                " is neither a number nor null");
         for (const char* k : {"frame", "command", "doJumpId"})
             if (!isInt(it.GetObj(k)))
                 v.push_back(at + k + " is not an integer");
@@ -172,7 +183,9 @@ inline std::vector<std::string> qgcPlanViolations(const std::string& json) {
         for (const char* k : {"Altitude", "AltitudeMode", "AMSLAltAboveTerrain"})
             altKeys += it.GetObj(k).IsValid() ? 1 : 0;
         if (altKeys != 0 && altKeys != 3)
-            v.push_back(at + "Altitude, AltitudeMode and AMSLAltAboveTerrain are not all present or all absent");
+            v.push_back(
+                at +
+                "Altitude, AltitudeMode and AMSLAltAboveTerrain are not all present or all absent");
     }
     const CPLJSONObject fence = root.GetObj("geoFence");
     if (fence.GetInteger("version") != 2)
@@ -228,6 +241,8 @@ inline RunResult run(const std::string& command) {
     return r;
 }
 
-inline bool haveOgrinfo() { return run("command -v ogrinfo").status == 0; }
+inline bool haveOgrinfo() {
+    return run("command -v ogrinfo").status == 0;
+}
 
 } // namespace pf::test

@@ -39,7 +39,8 @@ protected:
             GTEST_SKIP() << "ogrinfo is not installed (package gdal-bin)";
         dir = test::scratchDir("ogrinfo");
         std::mt19937 rng(41);
-        std::vector<route::Route> routes{test::randomRoute(rng, "Falcon 8 #1"), test::randomRoute(rng, "Alpha")};
+        std::vector<route::Route> routes{test::randomRoute(rng, "Falcon 8 #1"),
+                                         test::randomRoute(rng, "Alpha")};
         ctx = makeExportContext(test::demoMission(), routes);
         ctx.footprints = {sensor::Footprint{60, 40}, sensor::Footprint{30, 20}};
         ctx.trajectories = {{{8.328, 49.011}, {8.329, 49.012}}, {}};

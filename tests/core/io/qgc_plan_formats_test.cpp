@@ -30,7 +30,8 @@ TEST(QgcPlanRules, EveryExportSatisfiesQGroundControlsLoader) {
         ExportOptions opt;
         opt.firmware = trial % 2 ? QgcFirmware::PX4 : QgcFirmware::ArduPilot;
         opt.end = trial % 3 ? MissionEnd::ReturnToLaunch : MissionEnd::Land;
-        opt.capture = trial % 4 ? CaptureCommand::ImageStartCapture : CaptureCommand::DigicamControl;
+        opt.capture =
+            trial % 4 ? CaptureCommand::ImageStartCapture : CaptureCommand::DigicamControl;
         auto json = qgcPlanJson(ctx, 0, opt);
         ASSERT_TRUE(json.ok());
         const auto v = test::qgcPlanViolations(*json);
@@ -116,7 +117,8 @@ TEST(QgcPlan, ItemsAreTakeoffWaypointsWithCaptureAndReturn) {
     ASSERT_EQ(fence.Size(), 2);
     EXPECT_FALSE(fence[0].GetBool("inclusion", true));
     EXPECT_EQ(fence[1].GetArray("polygon").Size(), 16);
-    EXPECT_DOUBLE_EQ(fence[0].GetArray("polygon")[0].ToArray()[0].ToDouble(), 49.0118201); // [lat, lon]
+    EXPECT_DOUBLE_EQ(fence[0].GetArray("polygon")[0].ToArray()[0].ToDouble(),
+                     49.0118201); // [lat, lon]
     EXPECT_EQ(root.GetObj("geoFence").GetArray("circles").Size(), 0);
     EXPECT_EQ(root.GetObj("rallyPoints").GetArray("points").Size(), 1);
 }

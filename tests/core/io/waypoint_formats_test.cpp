@@ -1,13 +1,13 @@
 #include "core/io/waypoint_formats.h"
 
+#include "core/geo/geodesic.h"
+#include "core/geo/polygon_ops.h"
 #include "core/io/gpx.h"
 #include "core/io/kml_export.h"
 #include "core/io/litchi_csv.h"
 #include "core/io/qgc_plan.h"
 #include "core/io/qgc_wpl.h"
 #include "core/io/waypoint_geojson.h"
-#include "core/geo/geodesic.h"
-#include "core/geo/polygon_ops.h"
 #include "tests/core/io/formats_test_util.h"
 
 #include <gtest/gtest.h>
@@ -47,8 +47,10 @@ TEST(WaypointFormats, RoundTripEveryImportableFormat) {
             auto back = importWaypoints(path);
             ASSERT_TRUE(back.ok()) << info.name << ": " << back.error().message;
             ASSERT_EQ(back->routes.size(), 1u) << info.name;
-            const bool kindsExact = info.format == WaypointFormat::Gpx || info.format == WaypointFormat::GeoJson;
-            test::expectSameWaypoints(ctx.routes[0].waypoints, back->routes[0].waypoints, kindsExact,
+            const bool kindsExact =
+                info.format == WaypointFormat::Gpx || info.format == WaypointFormat::GeoJson;
+            test::expectSameWaypoints(ctx.routes[0].waypoints, back->routes[0].waypoints,
+                                      kindsExact,
                                       std::string(info.name) + " trial " + std::to_string(trial));
         }
     }
@@ -66,13 +68,15 @@ TEST(WaypointFormats, CombinedFilesKeepEveryAircraftApart) {
         ASSERT_EQ(back->routes.size(), 3u);
         for (std::size_t i = 0; i < 3; ++i) {
             EXPECT_EQ(back->routes[i].aircraft, ctx.routes[i].aircraft);
-            test::expectSameWaypoints(ctx.routes[i].waypoints, back->routes[i].waypoints, true, formatInfo(fmt).name);
+            test::expectSameWaypoints(ctx.routes[i].waypoints, back->routes[i].waypoints, true,
+                                      formatInfo(fmt).name);
         }
     }
     auto single = exportCombined(ctx, WaypointFormat::QgcPlan, dir + "/all.plan");
     ASSERT_FALSE(single.ok());
-    EXPECT_EQ(single.error().message, "a QGroundControl mission (.plan JSON) file holds one aircraft's mission; write "
-                                      "one file per aircraft");
+    EXPECT_EQ(single.error().message,
+              "a QGroundControl mission (.plan JSON) file holds one aircraft's mission; write "
+              "one file per aircraft");
 }
 
 TEST(WaypointFormats, ExportAllWritesOneFilePerAircraftPlusCombined) {
@@ -99,24 +103,28 @@ TEST(WaypointFormats, FormatNamesAndExtensions) {
     EXPECT_EQ(*formatFromPath("x.json"), WaypointFormat::GeoJson);
     auto bad = formatFromName("shp");
     ASSERT_FALSE(bad.ok());
-    EXPECT_EQ(bad.error().message, "unknown waypoint format \"shp\" (known: plan, waypoints, kml, gpx, geojson, csv)");
+    EXPECT_EQ(bad.error().message,
+              "unknown waypoint format \"shp\" (known: plan, waypoints, kml, gpx, geojson, csv)");
     auto noExt = formatFromPath("dir.v2/route");
     ASSERT_FALSE(noExt.ok());
-    EXPECT_EQ(noExt.error().message, "dir.v2/route: cannot tell the waypoint format from the extension \"\" (use "
-                                     ".plan, .waypoints, .kml, .gpx, .geojson, .json or .csv)");
+    EXPECT_EQ(noExt.error().message,
+              "dir.v2/route: cannot tell the waypoint format from the extension \"\" (use "
+              ".plan, .waypoints, .kml, .gpx, .geojson, .json or .csv)");
     auto list = formatListFromString("plan, kml,gpx,plan");
     ASSERT_TRUE(list.ok());
     EXPECT_EQ(list->size(), 3u);
     auto badList = formatListFromString("plan,dxf");
     ASSERT_FALSE(badList.ok());
-    EXPECT_EQ(badList.error().message, "unknown waypoint format \"dxf\" (known: plan, waypoints, kml, gpx, geojson, csv)");
+    EXPECT_EQ(badList.error().message,
+              "unknown waypoint format \"dxf\" (known: plan, waypoints, kml, gpx, geojson, csv)");
     auto kml = importWaypoints("x.kml");
     ASSERT_FALSE(kml.ok());
     EXPECT_EQ(kml.error().code, ErrorCode::Unsupported);
 }
 
 TEST(WaypointFormats, ExportRejectsMissingOrEmptyRoutes) {
-    ExportContext ctx = makeExportContext(test::demoMission(), {route::Route{"Empty", {}, 5.0, {}}});
+    ExportContext ctx =
+        makeExportContext(test::demoMission(), {route::Route{"Empty", {}, 5.0, {}}});
     auto e = qgcPlanJson(ctx, 0);
     ASSERT_FALSE(e.ok());
     EXPECT_EQ(e.error().message, "Empty: the route has no waypoints to export");
@@ -151,8 +159,8 @@ TEST(QgcWpl, WritesTheMissionPlannerLayout) {
 }
 
 TEST(QgcWpl, ReadsWhatMissionPlannerWrites) {
-    // CRLF line endings, home with current = 1 and its AMSL altitude, no final newline, a digicam trigger,
-    // one waypoint in frame 0 (AMSL: 157.5 - 112.5 = 45 m above home).
+    // CRLF line endings, home with current = 1 and its AMSL altitude, no final newline, a digicam
+    // trigger, one waypoint in frame 0 (AMSL: 157.5 - 112.5 = 45 m above home).
     auto r = readQgcWpl(std::string(PF_TEST_DATA_DIR) + "/formats/mission_planner.waypoints");
     ASSERT_TRUE(r.ok()) << r.error().message;
     ASSERT_TRUE(r->home.has_value());
@@ -185,13 +193,15 @@ TEST(QgcPlan, ReadsAPlanWrittenByQGroundControl) {
 
 TEST(LitchiCsv, HeaderHasTheHubsColumnsAndRowsMatchIt) {
     const std::string h = litchiCsvHeader();
-    EXPECT_EQ(h.rfind("latitude,longitude,altitude(m),heading(deg),curvesize(m),rotationdir,gimbalmode,"
-                      "gimbalpitchangle,actiontype1,actionparam1,actiontype2,",
-                      0),
-              0u);
-    EXPECT_NE(h.find(",actiontype15,actionparam15,altitudemode,speed(m/s),poi_latitude,poi_longitude,"
-                     "poi_altitude(m),poi_altitudemode,photo_timeinterval,photo_distinterval"),
-              std::string::npos);
+    EXPECT_EQ(
+        h.rfind("latitude,longitude,altitude(m),heading(deg),curvesize(m),rotationdir,gimbalmode,"
+                "gimbalpitchangle,actiontype1,actionparam1,actiontype2,",
+                0),
+        0u);
+    EXPECT_NE(
+        h.find(",actiontype15,actionparam15,altitudemode,speed(m/s),poi_latitude,poi_longitude,"
+               "poi_altitude(m),poi_altitudemode,photo_timeinterval,photo_distinterval"),
+        std::string::npos);
     std::mt19937 rng(9);
     ExportContext ctx = randomContext(rng, 1);
     auto text = litchiCsvText(ctx, 0);
@@ -204,7 +214,8 @@ TEST(LitchiCsv, HeaderHasTheHubsColumnsAndRowsMatchIt) {
         const auto fields = std::count(line.begin(), line.end(), ',') + 1;
         EXPECT_EQ(fields, 46);
         const bool photo = ctx.routes[0].waypoints[i++].kind == route::WaypointKind::Photo;
-        EXPECT_NE(line.find(photo ? ",2,-90,1,0,-1,0," : ",2,-90,-1,0,-1,0,"), std::string::npos) << line;
+        EXPECT_NE(line.find(photo ? ",2,-90,1,0,-1,0," : ",2,-90,-1,0,-1,0,"), std::string::npos)
+            << line;
     }
     EXPECT_EQ(i, ctx.routes[0].waypoints.size());
     auto hub = readLitchiCsv(std::string(PF_TEST_DATA_DIR) + "/formats/litchi_hub.csv");
@@ -288,31 +299,35 @@ TEST(Kml, DrawsTheSmoothedTrajectoryOutsideTheBufferedZones) {
     // A tight, irregular zig-zag under the warehouse whose upper turns lie 0.3 m outside its 5 m
     // safety margin: the unconstrained curve swings into the margin.
     const double lons[] = {8.32920, 8.32930, 8.32934, 8.32950, 8.32952, 8.32966, 8.32970, 8.32990};
-    const double lats[] = {49.011772, 49.0112, 49.011772, 49.0114, 49.011772, 49.0110, 49.011772, 49.0112};
+    const double lats[] = {49.011772, 49.0112, 49.011772, 49.0114,
+                           49.011772, 49.0110, 49.011772, 49.0112};
     for (int i = 0; i < 8; ++i)
         r.waypoints.push_back({{lons[i], lats[i]}, 40, 90, route::WaypointKind::Photo});
     ExportContext ctx = makeExportContext(m, {r});
     ASSERT_TRUE(addTrajectories(ctx).ok());
     ASSERT_EQ(ctx.trajectories.size(), 1u);
     ASSERT_GT(ctx.trajectories[0].size(), r.waypoints.size());
-    for (const auto& end : {ctx.trajectories[0].front(), ctx.trajectories[0].back()}) { // from home and back
+    for (const auto& end :
+         {ctx.trajectories[0].front(), ctx.trajectories[0].back()}) { // from home and back
         EXPECT_NEAR(end.lon, m.home->lon, 1e-9);
         EXPECT_NEAR(end.lat, m.home->lat, 1e-9);
     }
     auto frame = geo::LocalFrame::forArea(m.area);
     ASSERT_TRUE(frame.ok());
-    const auto keepOut = route::keepOutZones({m.noFlyZones[0].polygon, m.noFlyZones[1].polygon}, *frame,
-                                             m.options.safetyMarginM);
+    const auto keepOut = route::keepOutZones({m.noFlyZones[0].polygon, m.noFlyZones[1].polygon},
+                                             *frame, m.options.safetyMarginM);
     route::Route fromHome = r;
     fromHome.home = m.home;
     auto free = route::buildTrajectory(fromHome, *frame, {}, {});
     ASSERT_TRUE(free.ok());
     int freeIntrusions = 0;
     for (std::size_t i = 1; i < free->samples.size(); ++i)
-        freeIntrusions += geo::segmentCrossesInterior(keepOut, free->samples[i - 1].pos, free->samples[i].pos);
+        freeIntrusions +=
+            geo::segmentCrossesInterior(keepOut, free->samples[i - 1].pos, free->samples[i].pos);
     ASSERT_GT(freeIntrusions, 0) << "the test needs a curve that would cut in";
     for (std::size_t i = 1; i < ctx.trajectories[0].size(); ++i)
-        EXPECT_FALSE(geo::segmentCrossesInterior(keepOut, frame->toLocal(ctx.trajectories[0][i - 1]),
+        EXPECT_FALSE(geo::segmentCrossesInterior(keepOut,
+                                                 frame->toLocal(ctx.trajectories[0][i - 1]),
                                                  frame->toLocal(ctx.trajectories[0][i])))
             << "sample " << i;
     ASSERT_TRUE(exportRoute(ctx, 0, WaypointFormat::Kml, dir + "/t.kml").ok());

@@ -13,7 +13,8 @@ TEST(Tridiagonal, MatchesDenseSolveOnRandomDominantSystems) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     for (int trial = 0; trial < 50; ++trial) {
         const int n = 1 + trial % 17;
-        Eigen::VectorXd sub = Eigen::VectorXd::Zero(n), sup = Eigen::VectorXd::Zero(n), diag(n), rhs(n);
+        Eigen::VectorXd sub = Eigen::VectorXd::Zero(n), sup = Eigen::VectorXd::Zero(n), diag(n),
+                        rhs(n);
         Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
         for (int i = 0; i < n; ++i) {
             if (i > 0)
@@ -60,7 +61,9 @@ TEST(CubicSpline, InterpolatesIsAtRestAtBothEndsAndIsC2) {
         EXPECT_NEAR(s->derivative(t.front()), 0.0, 1e-9);
         EXPECT_NEAR(s->derivative(t.back()), 0.0, 1e-9);
         const double eps = 1e-9;
-        auto close = [](double a, double b) { return std::abs(a - b) <= 1e-5 * (1.0 + std::abs(a)); };
+        auto close = [](double a, double b) {
+            return std::abs(a - b) <= 1e-5 * (1.0 + std::abs(a));
+        };
         for (int i = 1; i + 1 < n; ++i) {
             // Left and right limits agree in value, slope and curvature at every interior knot.
             EXPECT_TRUE(close(s->value(t[i] - eps), s->value(t[i] + eps)));
@@ -97,7 +100,9 @@ TEST(CubicSpline, TwoKnotsAtRestIsTheSmoothStep) {
 TEST(CubicSpline, RejectsBadKnots) {
     auto a = CubicSpline::clamped({0.0}, {1.0});
     ASSERT_FALSE(a.ok());
-    EXPECT_EQ(a.error().message, "a spline needs at least two knots and one value per knot (got 1 knots and 1 values)");
+    EXPECT_EQ(
+        a.error().message,
+        "a spline needs at least two knots and one value per knot (got 1 knots and 1 values)");
     auto b = CubicSpline::clamped({0.0, 1.0, 1.0}, {1.0, 2.0, 3.0});
     ASSERT_FALSE(b.ok());
     EXPECT_EQ(b.error().message, "spline knots must increase strictly (knot 2 does not)");

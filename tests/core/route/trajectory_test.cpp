@@ -90,7 +90,8 @@ TEST(Trajectory, YawTurnsThroughNorthWithoutWrappingRound) {
 }
 
 TEST(Trajectory, CollinearWaypointsGiveTheHandComputedFlightTime) {
-    // 30 m along a line (the curve stays on it), headings 0 -> 90 -> 180 -> 270 -> 0: four 90 degree turns.
+    // 30 m along a line (the curve stays on it), headings 0 -> 90 -> 180 -> 270 -> 0: four 90
+    // degree turns.
     auto wps = path({{0, 0}, {10, 0}, {20, 0}, {25, 0}, {30, 0}});
     const double headings[] = {0, 90, 180, 270, 0};
     for (int i = 0; i < 5; ++i)
@@ -105,8 +106,8 @@ TEST(Trajectory, CollinearWaypointsGiveTheHandComputedFlightTime) {
 }
 
 TEST(Trajectory, StraightLegKeptStraightGivesThePapersPolylineTime) {
-    // Two waypoints 100 m apart: the at-rest spline is the straight leg. Heading 90 -> 180, v = 5, w = 30:
-    // T = 100 / 5 + 90 / 30 = 23 s.
+    // Two waypoints 100 m apart: the at-rest spline is the straight leg. Heading 90 -> 180, v = 5,
+    // w = 30: T = 100 / 5 + 90 / 30 = 23 s.
     auto wps = path({{0, 0}, {60, 80}});
     wps[0].headingDeg = 90;
     wps[1].headingDeg = 180;
@@ -124,8 +125,8 @@ TEST(Trajectory, ZigZagNextToANoFlyZoneNeverCutsIn) {
     std::uniform_real_distribution<double> spacing(4, 30), amplitude(5, 60);
     int held = 0;
     for (int trial = 0; trial < 20; ++trial) {
-        // An irregular zig-zag whose lower vertices lie on the edge of the buffered zone below y = 0:
-        // a curve through them swings below the line unless it is held back.
+        // An irregular zig-zag whose lower vertices lie on the edge of the buffered zone below y =
+        // 0: a curve through them swings below the line unless it is held back.
         std::vector<geo::Vec2> pts;
         double x = 0.0;
         for (int i = 0; i < 9; ++i) {
@@ -151,8 +152,8 @@ TEST(Trajectory, ZigZagNextToANoFlyZoneNeverCutsIn) {
 
 TEST(Trajectory, LawnmowerTurnsBesideAZoneAreHeldBackOnlyWhereNeeded) {
     // Turns at y = 100 touch a zone above; turns at y = 0 are far from anything and stay curved.
-    const std::vector<geo::Vec2> pts{{0, 0},    {0, 100},  {10, 100}, {10, 0},  {20, 0},
-                                     {20, 100}, {30, 100}, {30, 0},   {40, 0},  {40, 100}};
+    const std::vector<geo::Vec2> pts{{0, 0},    {0, 100},  {10, 100}, {10, 0}, {20, 0},
+                                     {20, 100}, {30, 100}, {30, 0},   {40, 0}, {40, 100}};
     const geo::MultiPolygon keepOut{rect(-20, 100, 60, 130)};
     auto t = buildTrajectory(path(pts), keepOut, {});
     ASSERT_TRUE(t.ok());
@@ -203,8 +204,11 @@ TEST(Trajectory, RouteOverloadStartsAndEndsAtHome) {
 TEST(Trajectory, KeepOutZonesAreBufferedInTheLocalFrame) {
     auto frame = geo::LocalFrame::create({8.3299, 49.0120});
     ASSERT_TRUE(frame.ok());
-    const geo::GeoPolygon warehouse{{{8.3291782, 49.0118201}, {8.3297261, 49.0118201}, {8.3297261, 49.0121799},
-                                     {8.3291782, 49.0121799}}, {}};
+    const geo::GeoPolygon warehouse{{{8.3291782, 49.0118201},
+                                     {8.3297261, 49.0118201},
+                                     {8.3297261, 49.0121799},
+                                     {8.3291782, 49.0121799}},
+                                    {}};
     const auto zones = keepOutZones({warehouse}, *frame, 5.0);
     const double raw = geo::area(frame->toLocal(warehouse));
     ASSERT_EQ(zones.size(), 1u);
@@ -216,7 +220,8 @@ TEST(Trajectory, RejectsBadOptionsAndEstimates) {
     opt.spacingM = 0;
     auto t = buildTrajectory(path({{0, 0}, {1, 0}}), {}, opt);
     ASSERT_FALSE(t.ok());
-    EXPECT_EQ(t.error().message, "the trajectory sample spacing must be a positive number of metres");
+    EXPECT_EQ(t.error().message,
+              "the trajectory sample spacing must be a positive number of metres");
     auto ok = buildTrajectory(path({{0, 0}, {1, 0}}), {}, {});
     ASSERT_TRUE(ok.ok());
     auto e = estimateFlight(*ok, 0.0, 10.0);
