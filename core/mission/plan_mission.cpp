@@ -4,6 +4,8 @@
 #include "core/plan/planner.h"
 #include "core/route/photo_waypoints.h"
 
+#include <cpl_json.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -199,6 +201,119 @@ Result<MissionPlan> planMission(const Mission& m) {
                                 " jump(s) between parts of the area that no safe move joins: check the route's "
                                 "transits there");
     return plan;
+}
+
+namespace {
+
+CPLJSONArray position(const geo::LonLat& p) {
+    CPLJSONArray a;
+    a.Add(p.lon);
+    a.Add(p.lat);
+    return a;
+}
+
+void addMetrics(CPLJSONObject& o, const plan::PathMetrics& m) {
+    o.Add("visitable_cells", m.visitable);
+    o.Add("cells", m.cells);
+    o.Add("complete", m.complete());
+    o.Add("photos", m.photos);
+    o.Add("path_length_m", m.pathLengthM);
+    o.Add("distance_m", m.distanceM);
+    o.Add("turns", m.turns);
+    o.Add("turn_angle_deg", m.turnAngleDeg);
+    o.Add("jumps", m.jumps);
+    o.Add("revisits", m.revisits);
+    o.Add("estimated_time_s", m.estimatedTimeS);
+    o.Add("planning_ms", m.planningMs);
+    o.Add("turn_lower_bound", m.turnLowerBound);
+    o.Add("turn_ratio", m.turnRatio);
+}
+
+} // namespace
+
+std::string planToGeoJson(const MissionPlan& plan) {
+    CPLJSONDocument doc;
+    CPLJSONObject root = doc.GetRoot();
+    root.Add("type", "FeatureCollection");
+    CPLJSONArray features;
+    for (const auto& a : plan.aircraft) {
+        CPLJSONObject line;
+        line.Add("type", "Feature");
+        CPLJSONObject props;
+        props.Add("aircraft", a.aircraft);
+        props.Add("kind", "path");
+        line.Add("properties", props);
+        CPLJSONObject geom;
+        geom.Add("type", "LineString");
+        CPLJSONArray coords;
+        if (a.route.home)
+            coords.Add(position(*a.route.home));
+        for (const auto& w : a.route.waypoints)
+            coords.Add(position(w.position));
+        if (a.route.home)
+            coords.Add(position(*a.route.home));
+        geom.Add("coordinates", coords);
+        line.Add("geometry", geom);
+        features.Add(line);
+        int seq = 0;
+        for (const auto& w : a.route.waypoints) {
+            if (w.kind != route::WaypointKind::Photo)
+                continue;
+            CPLJSONObject f;
+            f.Add("type", "Feature");
+            CPLJSONObject p;
+            p.Add("aircraft", a.aircraft);
+            p.Add("seq", ++seq);
+            p.Add("alt_m", w.altitudeM);
+            p.Add("heading_deg", w.headingDeg);
+            f.Add("properties", p);
+            CPLJSONObject g;
+            g.Add("type", "Point");
+            g.Add("coordinates", position(w.position));
+            f.Add("geometry", g);
+            features.Add(f);
+        }
+    }
+    root.Add("features", features);
+    return doc.SaveAsString();
+}
+
+std::string planMetricsJson(const MissionPlan& plan, const std::string& plannerName) {
+    CPLJSONDocument doc;
+    CPLJSONObject root = doc.GetRoot();
+    root.Add("planner", plannerName);
+    CPLJSONArray list;
+    for (const auto& a : plan.aircraft) {
+        CPLJSONObject o;
+        o.Add("name", a.aircraft);
+        o.Add("altitude_m", a.altitudeM);
+        o.Add("cell_size_m", a.cellSizeM);
+        o.Add("grid_angle_deg", a.gridAngleDeg);
+        o.Add("angles_tried", a.anglesTried);
+        addMetrics(o, a.metrics);
+        list.Add(o);
+    }
+    root.Add("aircraft", list);
+    const PlanTotals& t = plan.totals;
+    CPLJSONObject total;
+    total.Add("aircraft", t.aircraft);
+    total.Add("visitable_cells", t.visitable);
+    total.Add("cells", t.cells);
+    total.Add("photos", t.photos);
+    total.Add("path_length_m", t.pathLengthM);
+    total.Add("distance_m", t.distanceM);
+    total.Add("turns", t.turns);
+    total.Add("turn_angle_deg", t.turnAngleDeg);
+    total.Add("jumps", t.jumps);
+    total.Add("revisits", t.revisits);
+    total.Add("estimated_time_s", t.estimatedTimeS);
+    total.Add("planning_ms", t.planningMs);
+    root.Add("total", total);
+    CPLJSONArray warnings;
+    for (const auto& w : plan.warnings)
+        warnings.Add(w);
+    root.Add("warnings", warnings);
+    return doc.SaveAsString();
 }
 
 } // namespace pf::mission

@@ -68,6 +68,13 @@ Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vect
 // The angles the automatic search tries for a region.
 std::vector<double> candidateAngles(const geo::MultiPolygon& region);
 
+// The plan as a GeoJSON FeatureCollection in WGS84: per aircraft a LineString of the flown path (home,
+// every waypoint, landing) with the properties aircraft, kind "path", and one Point per photo with
+// aircraft, seq (1-based, per aircraft), alt_m and heading_deg (clockwise from north).
+std::string planToGeoJson(const MissionPlan& plan);
+// The metrics as JSON: {"aircraft": [{"name", ...metrics}], "total": {...}, "warnings": [...]}.
+std::string planMetricsJson(const MissionPlan& plan, const std::string& plannerName);
+
 // Plans the mission. With several aircraft the area must be partitioned between them first; until that
 // stage is available only the first aircraft is planned (over the whole area) and a warning says so.
 Result<MissionPlan> planMission(const Mission& m);

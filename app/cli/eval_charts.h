@@ -1,0 +1,17 @@
+// PNG charts of an evaluation (paper figures 4 to 6), drawn with Qt's raster painter off screen.
+#pragma once
+
+#include "core/plan/evaluation.h"
+
+#include <string>
+#include <vector>
+
+namespace pf::cli {
+
+// Writes DIR/turns_<area>.png per area (turns per start cell, one line per planner) and DIR/averages.png
+// (average distance and average jumps per area and planner). Returns the number of charts written, 0
+// when this build has no Qt, or -1 with `error` set when a file cannot be written.
+int writeEvalCharts(const std::vector<plan::EvalRun>& runs, const std::vector<plan::EvalSummary>& summary,
+                    const std::string& dir, std::string* error);
+
+} // namespace pf::cli
