@@ -8,8 +8,55 @@
 #include <QGraphicsScene>
 #include <QNmeaPositionInfoSource>
 #include <QPainter>
+#include <QTimer>
+
+#include <cstring>
 
 namespace pf::ui {
+
+namespace {
+
+// A character device (e.g. /dev/ttyACM0 of a USB GNSS receiver) read by polling. QFile never emits
+// readyRead(), which QNmeaPositionInfoSource needs in real-time mode; this wrapper reads what has
+// arrived every 100 ms and announces it. (QtSerialPort would do the same but is not a dependency.)
+class PolledDevice : public QIODevice {
+public:
+    PolledDevice(const QString& path, QObject* parent) : QIODevice(parent), m_file(path) {
+        connect(&m_timer, &QTimer::timeout, this, [this] {
+            const QByteArray chunk = m_file.read(4096);
+            if (chunk.isEmpty()) return;
+            m_buffer.append(chunk);
+            emit readyRead();
+        });
+    }
+    bool openDevice(QString* error) {
+        if (!m_file.open(QIODevice::ReadOnly | QIODevice::Unbuffered)) {
+            if (error) *error = m_file.errorString();
+            return false;
+        }
+        m_timer.start(100);
+        return QIODevice::open(QIODevice::ReadOnly);
+    }
+    bool isSequential() const override { return true; }
+    qint64 bytesAvailable() const override { return m_buffer.size() + QIODevice::bytesAvailable(); }
+    bool canReadLine() const override { return m_buffer.contains('\n') || QIODevice::canReadLine(); }
+
+protected:
+    qint64 readData(char* data, qint64 max) override {
+        const qint64 n = std::min<qint64>(max, m_buffer.size());
+        std::memcpy(data, m_buffer.constData(), std::size_t(n));
+        m_buffer.remove(0, int(n));
+        return n;
+    }
+    qint64 writeData(const char*, qint64) override { return -1; }
+
+private:
+    QFile m_file;
+    QTimer m_timer;
+    QByteArray m_buffer;
+};
+
+} // namespace
 
 OperatorItem::OperatorItem() {
     setFlag(ItemIgnoresTransformations);
@@ -48,17 +95,26 @@ bool GroundStation::openNmeaDevice(const QString& path, QString* error) { return
 
 bool GroundStation::start(const QString& path, bool simulation, QString* error) {
     stop();
-    auto* file = new QFile(path, this);
-    if (!file->open(QIODevice::ReadOnly)) {
-        if (error) *error = tr("Cannot read the NMEA source %1: %2").arg(path, file->errorString());
-        delete file;
+    QString why;
+    if (simulation) {
+        auto* file = new QFile(path, this);
+        if (!file->open(QIODevice::ReadOnly)) why = file->errorString();
+        m_device = file;
+    } else {
+        auto* dev = new PolledDevice(path, this);
+        if (!dev->openDevice(&why) && why.isEmpty()) why = tr("cannot open it");
+        m_device = dev;
+    }
+    if (!why.isEmpty()) {
+        if (error) *error = tr("Cannot read the NMEA source %1: %2").arg(path, why);
+        delete m_device;
+        m_device = nullptr;
         return false;
     }
-    m_file = file;
     m_source = new QNmeaPositionInfoSource(simulation ? QNmeaPositionInfoSource::SimulationMode
                                                       : QNmeaPositionInfoSource::RealTimeMode,
                                            this);
-    m_source->setDevice(m_file);
+    m_source->setDevice(m_device);
     connect(m_source, &QGeoPositionInfoSource::positionUpdated, this, &GroundStation::onUpdate);
     connect(m_source, QOverload<QGeoPositionInfoSource::Error>::of(&QGeoPositionInfoSource::error), this,
             [this](QGeoPositionInfoSource::Error) { emit statusChanged(tr("Ground station: position source failed")); });
@@ -73,8 +129,8 @@ void GroundStation::stop() {
         delete m_source;
         m_source = nullptr;
     }
-    delete m_file;
-    m_file = nullptr;
+    delete m_device;
+    m_device = nullptr;
 }
 
 void GroundStation::setMetresPerPixel(double mpp) {

@@ -10,7 +10,7 @@
 #include <optional>
 
 class QGraphicsScene;
-class QFile;
+class QIODevice;
 class QNmeaPositionInfoSource;
 
 namespace pf::ui {
@@ -35,7 +35,7 @@ public:
 
     // Replays an NMEA log (QNmeaPositionInfoSource in simulation mode, at the log's own pace).
     bool openNmeaFile(const QString& path, QString* error);
-    // Reads live NMEA from a device such as a serial GNSS receiver exposed as a file (/dev/ttyACM0).
+    // Reads live NMEA from a character device such as a USB GNSS receiver (/dev/ttyACM0), polled.
     bool openNmeaDevice(const QString& path, QString* error);
     void stop();
     bool isActive() const { return m_source != nullptr; }
@@ -55,7 +55,7 @@ private:
 
     QGraphicsScene* m_scene;
     QNmeaPositionInfoSource* m_source = nullptr;
-    QFile* m_file = nullptr;
+    QIODevice* m_device = nullptr;
     OperatorItem* m_item = nullptr;
     std::optional<geo::LonLat> m_position;
     std::optional<double> m_accuracy;

@@ -8,9 +8,35 @@
 #include <QTimer>
 
 #include <cstdio>
+#include <memory>
+
+namespace {
+// --version and --help print and exit: they need no display, so no GUI application for them.
+bool onlyPrints(int argc, char** argv) {
+    for (int i = 1; i < argc; ++i) {
+        const QByteArray a(argv[i]);
+        if (a == "--version" || a == "-v" || a == "--help" || a == "-h" || a == "--help-all") return true;
+    }
+    return false;
+}
+
+bool wantsScreenshot(int argc, char** argv) {
+    for (int i = 1; i < argc; ++i)
+        if (QByteArray(argv[i]).startsWith("--screenshot")) return true;
+    return false;
+}
+} // namespace
 
 int main(int argc, char** argv) {
-    QApplication app(argc, argv);
+    // A screenshot needs no screen: render offscreen unless a platform was chosen.
+    if (wantsScreenshot(argc, argv) && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    std::unique_ptr<QCoreApplication> application;
+    if (onlyPrints(argc, argv))
+        application = std::make_unique<QCoreApplication>(argc, argv);
+    else
+        application = std::make_unique<QApplication>(argc, argv);
+    QCoreApplication& app = *application;
     QApplication::setApplicationName(QStringLiteral("Photoflight"));
     QApplication::setOrganizationName(QStringLiteral("Photoflight"));
     QApplication::setApplicationVersion(QStringLiteral(PF_VERSION));

@@ -157,7 +157,7 @@ TEST(Autosave, WritesAfterEditsAndRecoversLeftovers) {
     Autosave autosave(&doc, dir.path(), 60000, 10);
     doc.undoStack()->push(new SetHomeCommand(&doc, geo::LonLat{8.3272, 49.0105}));
     // The debounce timer writes shortly after the edit.
-    QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(autosave.filePath()), 3000);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return QFile::exists(autosave.filePath()); }, 3000));
     auto copy = io::readMissionFile(autosave.filePath().toStdString());
     ASSERT_TRUE(copy.ok()) << copy.error().message;
     EXPECT_EQ(*copy, doc.mission());

@@ -171,6 +171,24 @@ TEST(BaseMaps, OnlineServiceDescriptionUsesTheCacheAndAShortTimeout) {
     EXPECT_TRUE(xml.contains(QStringLiteral("<Projection>EPSG:3857</Projection>")));
 }
 
+TEST(BaseMaps, UnreachableTileServiceFailsQuietly) {
+    // Nothing listens on port 9 of this machine: the same as being offline, without the network.
+    QTemporaryDir cache;
+    auto src = GdalTileSource::openXyz(QStringLiteral("local"), QStringLiteral("http://127.0.0.1:9/{z}/{x}/{y}.png"),
+                                       cache.path(), QStringLiteral("test"), 19, 2);
+    ASSERT_TRUE(src);
+    EXPECT_TRUE(src->isOnline());
+    const QImage tile = src->renderTile(tileAt({8.33, 49.012}, 16));
+    // A missing tile is empty (null or fully transparent), never an error dialog or a crash.
+    bool empty = tile.isNull();
+    if (!empty) {
+        empty = true;
+        for (int y = 0; y < tile.height() && empty; ++y)
+            for (int x = 0; x < tile.width() && empty; ++x) empty = qAlpha(tile.pixel(x, y)) == 0;
+    }
+    EXPECT_TRUE(empty);
+}
+
 TEST(MapView, WheelZoomKeepsThePointUnderTheCursor) {
     auto w = test::makeWindow();
     auto* view = w->mapView();

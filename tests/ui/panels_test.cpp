@@ -119,7 +119,7 @@ TEST(GroundStation, ReplaysAnNmeaLogAndCentresOnTheOperator) {
     QSignalSpy spy(gs, &GroundStation::statusChanged);
     QString error;
     ASSERT_TRUE(gs->openNmeaFile(QStringLiteral(PF_UI_TEST_DATA_DIR "/operator.nmea"), &error)) << error.toStdString();
-    QTRY_VERIFY_WITH_TIMEOUT(gs->position().has_value(), 5000);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return gs->position().has_value(); }, 5000));
     EXPECT_GE(spy.count(), 1); // "reading operator.nmea"
     // 4900.6300 N 00819.5900 E = 49.0105 N, 8.326500 E; the log walks east by 1e-5 degrees a second.
     EXPECT_NEAR(gs->position()->lat, 49.0105, 2e-6);
@@ -130,7 +130,19 @@ TEST(GroundStation, ReplaysAnNmeaLogAndCentresOnTheOperator) {
     w->mapView()->centreOn(me);
     EXPECT_LT(test::metresBetween(w->mapView()->centreLonLat(), me), 0.01);
     // The replay goes on at the log's pace: the operator walks east.
-    QTRY_VERIFY_WITH_TIMEOUT(gs->position()->lon > 8.32651 + 5e-6, 5000);
+    EXPECT_TRUE(QTest::qWaitFor([&] { return gs->position()->lon > 8.32651 + 5e-6; }, 5000));
+}
+
+TEST(GroundStation, LiveDeviceIsPolled) {
+    // A receiver's device is read as data arrives; a file stands in for /dev/ttyACM0 here.
+    auto w = test::makeWindow();
+    QString error;
+    ASSERT_TRUE(w->groundStation()->openNmeaDevice(QStringLiteral(PF_UI_TEST_DATA_DIR "/operator.nmea"), &error))
+        << error.toStdString();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return w->groundStation()->position().has_value(); }, 5000));
+    EXPECT_NEAR(w->groundStation()->position()->lat, 49.0105, 2e-6);
+    w->groundStation()->stop();
+    EXPECT_FALSE(w->groundStation()->isActive());
 }
 
 TEST(GroundStation, MissingSourceIsAnError) {
