@@ -1,8 +1,11 @@
 // Importing areas and no-fly zones from files into the mission (one undo step).
+#include "ui/map/base_maps.h"
 #include "ui/mission_document.h"
 #include "ui_test_util.h"
 
 #include <QFile>
+#include <QMimeData>
+#include <QUrl>
 #include <QTemporaryDir>
 #include <QUndoStack>
 
@@ -55,4 +58,28 @@ TEST(Import, UnreadableFileGivesTheImportersMessage) {
     EXPECT_TRUE(error.contains(QStringLiteral("not_a_map.geojson"))) << error.toStdString();
     EXPECT_TRUE(w->document()->mission().area.outer.empty());
     EXPECT_EQ(w->document()->undoStack()->count(), 0);
+}
+
+TEST(Import, DroppingFilesOnTheMapImportsPolygonsAndOpensRasters) {
+    auto w = test::makeWindow();
+    auto* viewport = w->mapView()->viewport();
+    auto drop = [&](const QString& path) {
+        QMimeData mime;
+        mime.setUrls({QUrl::fromLocalFile(path)});
+        const QPoint at = viewport->rect().center();
+        QDragEnterEvent enter(at, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(viewport, &enter);
+        EXPECT_TRUE(enter.isAccepted());
+        QDropEvent dropEvent(QPointF(at), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(viewport, &dropEvent);
+    };
+    drop(kTwoPolygons);
+    EXPECT_EQ(w->document()->mission().area.outer.size(), 4u);
+    EXPECT_EQ(w->document()->mission().noFlyZones.size(), 1u);
+    // A dropped raster becomes the base map.
+    const QString map = pf::ui::demoMapPath();
+    ASSERT_FALSE(map.isEmpty());
+    w->setBaseMap(QStringLiteral("none"));
+    drop(map);
+    EXPECT_EQ(w->baseMapId(), map);
 }

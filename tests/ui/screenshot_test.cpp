@@ -82,3 +82,25 @@ TEST(Screenshot, DemoMissionWindowAtReadmeSize) {
     for (const auto& z : w->document()->mission().noFlyZones)
         for (const auto& p : z.polygon.outer) EXPECT_TRUE(visible.contains(toScene(p)));
 }
+
+TEST(Screenshot, SelectedShapeShowsItsVertexHandles) {
+    auto w = test::makeWindow();
+    QString error;
+    ASSERT_TRUE(w->openDemoMission(&error)) << error.toStdString();
+    ASSERT_TRUE(w->waitForMap(20000));
+    const QImage before = w->mapView()->viewport()->grab().toImage();
+    w->setTool(ToolId::Select);
+    const auto& ring = w->document()->mission().area.outer;
+    test::click(w->mapView(), ring[0]);
+    ASSERT_TRUE(w->missionLayer()->selectedVertex().has_value());
+    const QImage after = w->mapView()->viewport()->grab().toImage();
+    keep(after, QStringLiteral("editing.png"));
+    // The selected vertex is drawn as a filled handle in the area's colour over the map: look just
+    // south-west of the south-west corner, off the outline, where the map showed before.
+    const QPoint v = test::viewPos(w->mapView(), ring[0]) + QPoint(-3, 3);
+    const QColor c = after.pixelColor(v);
+    EXPECT_NEAR(c.red(), 0, 30);
+    EXPECT_NEAR(c.green(), 110, 30);
+    EXPECT_NEAR(c.blue(), 230, 30);
+    EXPECT_NE(before.pixelColor(v), c);
+}
