@@ -92,7 +92,10 @@ MainWindow::MainWindow(QWidget* parent, bool interactive) : QMainWindow(parent),
     m_scene->addItem(m_tiles);
     m_layer = new MissionLayer(m_doc, m_scene, this);
     m_ground = new GroundStation(m_scene, this);
-    m_autosave = std::make_unique<Autosave>(m_doc);
+    // Autosave period in seconds (setting "autosave/intervalSeconds", default one minute); edits are
+    // also saved a few seconds after they happen.
+    const int autosaveSeconds = std::max(5, QSettings().value(QStringLiteral("autosave/intervalSeconds"), 60).toInt());
+    m_autosave = std::make_unique<Autosave>(m_doc, QString(), autosaveSeconds * 1000);
     setCentralWidget(m_view);
 
     auto catalog = io::loadDefaultCatalog();

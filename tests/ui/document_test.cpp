@@ -189,3 +189,30 @@ TEST(Autosave, WritesAfterEditsAndRecoversLeftovers) {
     doc.save(dir.filePath(QStringLiteral("saved.json")), &error);
     EXPECT_FALSE(QFile::exists(autosave.filePath()));
 }
+
+TEST(Startup, FirstStartOpensTheDemoThenTheMostRecentFile) {
+    QSettings settings;
+    settings.remove(QStringLiteral("startedBefore"));
+    settings.remove(QStringLiteral("recentFiles"));
+    {
+        auto w = test::makeWindow();
+        w->startup(QString());
+        EXPECT_EQ(w->document()->mission().name, "Rheinhafen training ground");
+        EXPECT_GE(w->document()->mission().noFlyZones.size(), 2u);
+    }
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("last.json"));
+    {
+        auto w = test::makeWindow();
+        w->document()->reset(sampleMission(), QString());
+        ASSERT_TRUE(w->saveMission(path));
+    }
+    auto w = test::makeWindow();
+    w->startup(QString());
+    EXPECT_EQ(w->document()->mission(), sampleMission());
+    EXPECT_EQ(w->document()->filePath(), QFileInfo(path).absoluteFilePath());
+    // A path on the command line wins.
+    auto w2 = test::makeWindow();
+    w2->startup(QStringLiteral(PF_RESOURCES_DIR "/demo/demo_mission.json"));
+    EXPECT_EQ(w2->document()->mission().name, "Rheinhafen training ground");
+}
