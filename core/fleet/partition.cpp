@@ -165,10 +165,30 @@ public:
     // adjacent to `to` by a move, removable from `from` without splitting it, maximising neighbours
     // in `to` minus neighbours in `from` (keeps both compact). Only the shared boundary is scanned
     // per pick, so large grids stay fast. Returns the cells moved, in order.
-    std::vector<int> transfer(int from, int to, int count) {
+    // Sweep mode orders the cells by how far they lie towards `to` (along the line between the two
+    // subareas' centroids) instead: the boundary then moves as a straight front, which suits
+    // planners that fly long straight strides.
+    std::vector<int> transfer(int from, int to, int count, bool sweep = false) {
         std::vector<int> moved;
         if (count <= 0)
             return moved;
+        geo::Vec2 dir(0, 0);
+        if (sweep) {
+            geo::Vec2 cf(0, 0), ct(0, 0);
+            int nf = 0, nt = 0;
+            for (int c = 0; c < m_g.cellCount(); ++c) {
+                const geo::Vec2 xy(c % m_g.cols, c / m_g.cols);
+                if (owner(c) == from) {
+                    cf += xy;
+                    ++nf;
+                } else if (owner(c) == to) {
+                    ct += xy;
+                    ++nt;
+                }
+            }
+            if (nf > 0 && nt > 0)
+                dir = ct / nt - cf / nf;
+        }
         std::vector<int> cand;
         std::vector<std::uint8_t> inCand(static_cast<std::size_t>(m_g.cellCount()), 0);
         auto consider = [&](int c) {
@@ -181,7 +201,7 @@ public:
             consider(c);
         while (static_cast<int>(moved.size()) < count) {
             // Drop stale candidates, score the rest, try them best first.
-            std::vector<std::pair<int, int>> scored;
+            std::vector<std::pair<double, int>> scored;
             std::vector<int> keep;
             for (int c : cand) {
                 if (owner(c) != from || neighboursIn(c, to) == 0) {
@@ -189,7 +209,9 @@ public:
                     continue;
                 }
                 keep.push_back(c);
-                scored.emplace_back(-(2 * neighboursIn(c, to) - neighboursIn(c, from)), c);
+                const double compact = 2 * neighboursIn(c, to) - neighboursIn(c, from);
+                const double along = dir.x() * (c % m_g.cols) + dir.y() * (c / m_g.cols);
+                scored.emplace_back(sweep ? -(along + 1e-3 * compact) : -compact, c);
             }
             cand.swap(keep);
             std::sort(scored.begin(), scored.end());
@@ -605,7 +627,7 @@ Result<BalanceReport> balanceByTime(const BaseGrid& g, Partition& p, const TimeE
         return makeError(ErrorCode::InvalidInput, "No flight time estimator to balance the subareas with.");
     BalanceReport rep;
     Assignment as(g, p);
-    std::vector<double> times(static_cast<std::size_t>(n));
+    std::vector<double> times(static_cast<std::size_t>(n), 0.0);
     auto cellsOf = [&](int k) {
         std::vector<int> cells;
         for (int c = 0; c < g.cellCount(); ++c)
@@ -624,71 +646,159 @@ Result<BalanceReport> balanceByTime(const BaseGrid& g, Partition& p, const TimeE
         return *t;
     };
     for (int k = 0; k < n; ++k) {
-        if (p.cells[static_cast<std::size_t>(k)].empty()) {
-            times[static_cast<std::size_t>(k)] = 0.0;
+        if (p.cells[static_cast<std::size_t>(k)].empty())
             continue;
-        }
         auto t = est(k);
         if (!t)
             return t.error();
         times[static_cast<std::size_t>(k)] = *t;
     }
+    auto at = [&](int k) -> double& { return times[static_cast<std::size_t>(k)]; };
     auto makespan = [](const std::vector<double>& t) { return *std::max_element(t.begin(), t.end()); };
     const std::vector<int> targets = p.targets;
     std::vector<int> bestOwner = p.owner;
     std::vector<double> bestTimes = times;
     int moved = 0, bestMoved = 0;
-    std::set<std::pair<int, int>> blocked;
+    const int maxEstimates = rep.estimatorCalls + opt.maxEstimates;
 
-    for (rep.rounds = 0; rep.rounds < opt.maxRounds; ++rep.rounds) {
+    // One trial: move cells along `chain` (each link hands `counts[i]` cells to the next), re-estimate
+    // the subareas involved and undo. Returns the slowest re-estimated time (infinity if a link had
+    // nothing to give) and the fresh times. Transfers are deterministic, so a trial can be replayed.
+    struct Trial {
+        std::vector<int> chain;
+        std::vector<int> counts;
+        bool sweep = false;
+        double worst = std::numeric_limits<double>::infinity();
+        std::vector<double> fresh;
+    };
+    auto apply = [&](const Trial& t, std::vector<std::pair<int, std::vector<int>>>& done) {
+        for (std::size_t i = t.counts.size(); i-- > 0;) {
+            auto cells = as.transfer(t.chain[i], t.chain[i + 1], t.counts[i], t.sweep);
+            const bool empty = cells.empty();
+            done.emplace_back(t.chain[i], std::move(cells));
+            if (empty)
+                return false;
+        }
+        return true;
+    };
+    auto undo = [&](std::vector<std::pair<int, std::vector<int>>>& done) {
+        for (auto it = done.rbegin(); it != done.rend(); ++it)
+            for (auto c = it->second.rbegin(); c != it->second.rend(); ++c)
+                as.assign(*c, it->first);
+    };
+    auto evaluate = [&](Trial& t) -> Status {
+        std::vector<std::pair<int, std::vector<int>>> done;
+        if (apply(t, done)) {
+            for (int k : t.chain) {
+                auto e = est(k);
+                if (!e) {
+                    undo(done);
+                    return e.error();
+                }
+                t.fresh.push_back(*e);
+            }
+            t.worst = *std::max_element(t.fresh.begin(), t.fresh.end());
+        }
+        undo(done);
+        return {};
+    };
+    auto commit = [&](const Trial& t) {
+        std::vector<std::pair<int, std::vector<int>>> done;
+        apply(t, done);
+        for (std::size_t i = 0; i < t.chain.size(); ++i)
+            at(t.chain[i]) = t.fresh[i];
+        for (const auto& d : done)
+            moved += static_cast<int>(d.second.size());
+    };
+
+    int kicks = 0;
+    std::pair<int, int> tabu{-1, -1};
+    for (rep.rounds = 0; rep.rounds < opt.maxRounds && rep.estimatorCalls < maxEstimates; ++rep.rounds) {
         const double ideal = std::accumulate(times.begin(), times.end(), 0.0) / n;
         const int s = static_cast<int>(std::max_element(times.begin(), times.end()) - times.begin());
-        if (times[static_cast<std::size_t>(s)] <= (1.0 + opt.tolerance) * ideal)
+        const double ts = at(s);
+        if (ts <= (1.0 + opt.tolerance) * ideal)
             break;
         const auto adj = as.adjacency();
-        int r = -1;
+        std::vector<int> neighbours;
         for (int k = 0; k < n; ++k)
-            if (adj[static_cast<std::size_t>(s)][static_cast<std::size_t>(k)] > 0 && !blocked.count({s, k}) &&
-                times[static_cast<std::size_t>(k)] < times[static_cast<std::size_t>(s)] &&
-                (r < 0 || times[static_cast<std::size_t>(k)] < times[static_cast<std::size_t>(r)]))
-                r = k;
-        if (r < 0)
-            break; // the slowest subarea has no faster neighbour left to give cells to
-        const double ts = times[static_cast<std::size_t>(s)], tr = times[static_cast<std::size_t>(r)];
-        const double perCellS = ts / std::max(1, as.size(s));
-        const double perCellR = tr > 0 ? tr / std::max(1, as.size(r)) : perCellS;
-        int m = static_cast<int>(std::floor(opt.damping * (ts - tr) / (perCellS + perCellR)));
-        m = std::clamp(m, 1, std::max(1, as.size(s) - 1));
-        bool accepted = false;
-        while (m >= 1 && !accepted) {
-            const std::vector<int> done = as.transfer(s, r, m);
-            if (done.empty())
+            if (adj[static_cast<std::size_t>(s)][static_cast<std::size_t>(k)] > 0)
+                neighbours.push_back(k);
+        std::stable_sort(neighbours.begin(), neighbours.end(), [&](int a, int b) { return at(a) < at(b); });
+        // How many cells close the gap between s and r, from their times per cell (damped).
+        auto cellsFor = [&](int from, int to) {
+            const double perFrom = at(from) / std::max(1, as.size(from));
+            const double perTo = at(to) > 0 ? at(to) / std::max(1, as.size(to)) : perFrom;
+            const int m = static_cast<int>(std::floor(opt.damping * (at(from) - at(to)) / (perFrom + perTo)));
+            return std::clamp(m, 1, std::max(1, as.size(from) - 1));
+        };
+        // Step sizes to try: the linear estimate first, then larger ones (an aircraft whose own cells
+        // are several base cells wide only changes its plan once a whole strip of them is handed
+        // over), then smaller ones; at most half the giver.
+        auto stepSizes = [](int m0, int giverSize) {
+            std::vector<int> out;
+            for (int m : {m0, 2 * m0, 4 * m0, 8 * m0, m0 / 2, m0 / 4, 1})
+                if (m >= 1 && m <= giverSize / 2 && std::find(out.begin(), out.end(), m) == out.end())
+                    out.push_back(m);
+            return out;
+        };
+        // Direct moves to a faster neighbour: every step size, both cell orders; the best trial wins.
+        // Planned times are not smooth in the cells given (a grid of larger cells may not change at
+        // all, a protruding cell may cost a whole extra stride), hence the search.
+        Trial best;
+        for (int r : neighbours) {
+            if (at(r) >= ts)
                 break;
-            auto nts = est(s);
-            if (!nts)
-                return nts.error();
-            auto ntr = est(r);
-            if (!ntr)
-                return ntr.error();
-            if (std::max(*nts, *ntr) < ts - 1e-9) {
-                times[static_cast<std::size_t>(s)] = *nts;
-                times[static_cast<std::size_t>(r)] = *ntr;
-                moved += static_cast<int>(done.size());
-                accepted = true;
-            } else {
-                for (auto it = done.rbegin(); it != done.rend(); ++it)
-                    as.assign(*it, s);
-                m = static_cast<int>(done.size()) / 2;
-            }
+            if (tabu == std::make_pair(s, r))
+                continue;
+            for (int m : stepSizes(cellsFor(s, r), as.size(s)))
+                for (bool sweep : {false, true}) {
+                    if (rep.estimatorCalls >= maxEstimates)
+                        break;
+                    Trial t{{s, r}, {m}, sweep, std::numeric_limits<double>::infinity(), {}};
+                    if (auto st = evaluate(t); !st)
+                        return st.error();
+                    if (t.worst < best.worst)
+                        best = t;
+                }
         }
-        if (!accepted) {
-            blocked.insert({s, r});
+        // Otherwise through a neighbour: s gives to r, which passes as many on to its fastest other
+        // neighbour.
+        if (!(best.worst < ts - 1e-9))
+            for (int r : neighbours) {
+                int f = -1;
+                for (int k = 0; k < n; ++k)
+                    if (k != s && k != r && adj[static_cast<std::size_t>(r)][static_cast<std::size_t>(k)] > 0 &&
+                        at(k) < ts && (f < 0 || at(k) < at(f)))
+                        f = k;
+                if (f < 0)
+                    continue;
+                for (int m : stepSizes(cellsFor(s, f), as.size(s))) {
+                    if (rep.estimatorCalls >= maxEstimates)
+                        break;
+                    Trial t{{s, r, f}, {m, m}, true, std::numeric_limits<double>::infinity(), {}};
+                    if (auto st = evaluate(t); !st)
+                        return st.error();
+                    if (t.worst < best.worst)
+                        best = t;
+                }
+            }
+        const bool accepted = best.worst < ts - 1e-9;
+        if (accepted) {
+            commit(best);
+        } else if (kicks < opt.maxKicks && std::isfinite(best.worst)) {
+            // Stuck in a local minimum of a rough landscape: take the least bad move anyway (the best
+            // partition seen is kept), and forbid handing the cells straight back next round.
+            ++kicks;
+            commit(best);
+            tabu = {best.chain[1], best.chain[0]};
             continue;
         }
-        blocked.clear();
+        tabu = {-1, -1};
+        if (!accepted)
+            break; // no move found that makes the slowest subarea faster
         if (makespan(times) < makespan(bestTimes)) {
             bestTimes = times;
-            bestOwner.assign(static_cast<std::size_t>(g.cellCount()), -1);
             for (int c = 0; c < g.cellCount(); ++c)
                 bestOwner[static_cast<std::size_t>(c)] = as.owner(c);
             bestMoved = moved;

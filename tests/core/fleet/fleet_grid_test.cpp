@@ -4,11 +4,15 @@
 #include "core/fleet/partition.h"
 #include "core/geo/polygon_ops.h"
 #include "core/grid/grid.h"
+#include "core/mission/plan_mission.h"
 #include "core/plan/coverage_check.h"
 
 #include "tests/core/fleet/demo_site.h"
 
 #include <gtest/gtest.h>
+
+#include <numeric>
+#include <random>
 
 using namespace pf;
 using namespace pf::fleet;
@@ -22,6 +26,50 @@ std::vector<Capability> demoFleet() {
     f[1] = {"Phantom", {36.0, 21.0, {90.0, 60.0}}, 10.0, 120.0};
     f[2] = {"Hexa", {30.0, 15.0, {75.0, 50.0}}, 6.0, 60.0};
     return f;
+}
+
+// Aircraft configs with the same 1" camera at different altitudes, speeds and turn rates.
+std::vector<mission::AircraftConfig> mixedConfigs(int n, std::mt19937& rng) {
+    sensor::Camera cam;
+    cam.name = "1-inch 20 MP";
+    cam.sensorWidthMm = 13.2;
+    cam.sensorHeightMm = 8.8;
+    cam.focalLengthMm = 8.8;
+    cam.imageWidthPx = 5472;
+    cam.imageHeightPx = 3648;
+    std::uniform_real_distribution<double> alt(30, 80), speed(5, 14), turn(45, 120);
+    std::vector<mission::AircraftConfig> out;
+    for (int k = 0; k < n; ++k) {
+        mission::AircraftConfig a;
+        a.name = "A" + std::to_string(k + 1);
+        a.camera = cam;
+        a.altitudeM = alt(rng);
+        a.cruiseSpeedMps = speed(rng);
+        a.turnRateDegS = turn(rng);
+        out.push_back(a);
+    }
+    return out;
+}
+
+// A concave outline (an L or a U) of a few hectares with one or two square no-fly zones inside.
+std::pair<geo::Polygon, std::vector<geo::Polygon>> generatedSite(std::mt19937& rng) {
+    std::uniform_real_distribution<double> side(250, 450), frac(0.3, 0.6);
+    const double w = side(rng), h = side(rng), cw = frac(rng) * w, ch = frac(rng) * h;
+    geo::Polygon area;
+    if (rng() % 2)
+        area.outer = {geo::Vec2(0, 0), geo::Vec2(w, 0), geo::Vec2(w, h - ch), geo::Vec2(w - cw, h - ch),
+                      geo::Vec2(w - cw, h), geo::Vec2(0, h)}; // L
+    else
+        area.outer = {geo::Vec2(0, 0), geo::Vec2(w, 0), geo::Vec2(w, h), geo::Vec2(0.5 * (w + cw), h),
+                      geo::Vec2(0.5 * (w + cw), h - ch), geo::Vec2(0.5 * (w - cw), h - ch), geo::Vec2(0.5 * (w - cw), h),
+                      geo::Vec2(0, h)}; // U
+    std::vector<geo::Polygon> noFly;
+    const int zones = 1 + static_cast<int>(rng() % 2);
+    for (int i = 0; i < zones; ++i) {
+        const double s = 20 + 20 * (i + 1), x = 30 + (w - 2 * s) * 0.2 * (i + 1), y = 40 + 0.15 * h * (i + 1);
+        noFly.push_back(geo::Polygon{{geo::Vec2(x, y), geo::Vec2(x + s, y), geo::Vec2(x + s, y + s), geo::Vec2(x, y + s)}, {}});
+    }
+    return {area, noFly};
 }
 
 } // namespace
@@ -112,4 +160,59 @@ TEST(FleetOnGrid, AircraftGridErrorsNameTheAircraft) {
     auto empty = buildAircraftGrids({{}}, site.noFly, {grid::GridOptions{}}, {"Phantom"});
     ASSERT_FALSE(empty.ok());
     EXPECT_EQ(empty.error().message, "Aircraft \"Phantom\" received no part of the area.");
+}
+
+// Beyond the paper: balancing on the times the real stride planner gives (the facade's planRegion as
+// the estimator, grid angle fixed) on concave sites with no-fly zones and 2 to 4 mixed aircraft.
+// Planned times jump when a single cell moves, so the target makespan <= 1.10 x ideal is reached on
+// most sites, not all (measured: 8 of 9, worst 1.103, mean 1.04).
+TEST(FleetOnGrid, BalanceWithTheStridePlannerWithinTenPercent) {
+    auto frame = geo::LocalFrame::create({8.33, 49.01});
+    ASSERT_TRUE(frame.ok());
+    int within = 0;
+    double sum = 0;
+    for (unsigned seed = 1; seed <= 9; ++seed) {
+        std::mt19937 rng(seed);
+        const auto [area, noFly] = generatedSite(rng);
+        const int n = 2 + static_cast<int>(seed % 3);
+        const auto cfg = mixedConfigs(n, rng);
+        std::vector<Capability> caps;
+        std::vector<double> sizes;
+        for (const auto& a : cfg) {
+            auto fp = sensor::effectiveFootprint(a.camera, *a.altitudeM, a.overlap);
+            ASSERT_TRUE(fp.ok());
+            caps.push_back({a.name, *fp, a.cruiseSpeedMps, a.turnRateDegS});
+            sizes.push_back(aircraftCellSize(*fp));
+        }
+        const double areaM2 = geo::area(area);
+        grid::GridOptions go;
+        go.cellSize = *baseCellSize(sizes, areaM2);
+        go.safetyMarginM = 5;
+        auto g = grid::Grid::build(area, noFly, go);
+        ASSERT_TRUE(g.ok()) << g.error().message;
+        const auto b = BaseGrid::fromGrid(*g);
+        auto p = partitionCells(b, *capabilityShares(caps, areaM2));
+        ASSERT_TRUE(p.ok()) << p.error().message;
+        mission::PlannerOptions po;
+        po.gridAngleDeg = 0.0;
+        po.safetyMarginM = 5;
+        const geo::Vec2 home(-20, -20);
+        auto estimate = [&](int k, const std::vector<int>& cells) -> Result<double> {
+            auto ap = mission::planRegion(cellsPolygon(b, cells, g->admissible()), noFly,
+                                          cfg[static_cast<std::size_t>(k)], po, *frame, home);
+            if (!ap)
+                return ap.error();
+            return ap->metrics.estimatedTimeS;
+        };
+        auto rep = balanceByTime(b, *p, estimate);
+        ASSERT_TRUE(rep.ok()) << rep.error().message;
+        for (int k = 0; k < n; ++k)
+            EXPECT_TRUE(isConnected(b, p->cells[static_cast<std::size_t>(k)])) << "seed " << seed;
+        const double ratio = rep->makespan / rep->ideal;
+        EXPECT_LE(ratio, 1.15) << "seed " << seed << ", " << n << " aircraft, " << rep->rounds << " rounds";
+        within += ratio <= 1.10;
+        sum += ratio;
+    }
+    EXPECT_GE(within, 8);
+    EXPECT_LE(sum / 9, 1.06);
 }
