@@ -247,10 +247,8 @@ MissionLayer::MissionLayer(MissionDocument* doc, QGraphicsScene* scene, QObject*
     rebuild();
 }
 
-MissionLayer::~MissionLayer() {
-    // The scene may already be gone at shutdown (it deletes its items itself).
-    if (!m_scene) return;
-}
+// The items belong to the scene, which deletes them; the layer never outlives the window's scene.
+MissionLayer::~MissionLayer() = default;
 
 QVector<QPolygonF> MissionLayer::sceneRings(const ShapeRef& ref) const {
     QVector<QPolygonF> rings;
