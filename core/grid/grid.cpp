@@ -333,7 +333,15 @@ Result<Grid> GridBuilder::build(const geo::MultiPolygon& area, const std::vector
     const geo::MultiPolygon zones(noFly.begin(), noFly.end());
     // Several area polygons are united first: the even-odd rasterisation below would cancel overlaps.
     const geo::MultiPolygon whole = area.size() > 1 ? geo::unite(area) : area;
-    geo::MultiPolygon admissible = zones.empty() ? whole : geo::difference(whole, zones);
+    // The zones are united once, for both the admissible area and the buffer.
+    const geo::MultiPolygon zoneUnion = zones.empty() ? geo::MultiPolygon{} : geo::unite(zones);
+    geo::MultiPolygon admissible = whole;
+    if (!zoneUnion.empty()) {
+        const auto wa = geo::detail::toOgr(whole);
+        const auto zu = geo::detail::toOgr(zoneUnion);
+        geo::detail::OgrGeomPtr d(wa->Difference(zu.get()));
+        admissible = geo::detail::fromOgr(d.get());
+    }
     admissible.erase(std::remove_if(admissible.begin(), admissible.end(),
                                     [](const geo::Polygon& p) { return p.outer.size() < 3; }),
                      admissible.end());
@@ -388,10 +396,9 @@ Result<Grid> GridBuilder::build(const geo::MultiPolygon& area, const std::vector
     // GEOS approximates the buffer's round corners by chords inscribed in the true offset curve (8 per
     // quarter circle), which would cut up to 0.5 % off the margin there; buffering a little more makes
     // the polygonal zone contain the true offset, so the margin is always honoured in full.
-    if (!zones.empty())
-        g.m_bufferedNoFly = opt.safetyMarginM > 0
-                                ? geo::buffer(geo::unite(zones), opt.safetyMarginM / std::cos(M_PI / 16), 8)
-                                : geo::unite(zones);
+    if (!zoneUnion.empty())
+        g.m_bufferedNoFly = opt.safetyMarginM > 0 ? geo::buffer(zoneUnion, opt.safetyMarginM / std::cos(M_PI / 16), 8)
+                                                  : zoneUnion;
     for (const auto& z : g.m_bufferedNoFly)
         g.m_noFlyBoxes.push_back(geo::bounds(z));
 
@@ -602,13 +609,18 @@ int Grid::nearestVisitable(const geo::Vec2& p) const {
 }
 
 bool Grid::segmentIsSafe(const geo::Vec2& a, const geo::Vec2& b) const {
+    // Only the zones whose box the segment's box meets are tested exactly (one at a time, so that the
+    // exact test does not rescan every zone's bounds on each call: the grid builder calls this often).
     const geo::Box sb{a.cwiseMin(b), a.cwiseMax(b)};
-    bool any = false;
-    for (const auto& box : m_noFlyBoxes)
-        any = any || box.intersects(sb);
-    if (!any)
-        return true;
-    return !geo::segmentCrossesInterior(m_bufferedNoFly, a, b);
+    geo::MultiPolygon one(1);
+    for (std::size_t k = 0; k < m_bufferedNoFly.size(); ++k) {
+        if (!m_noFlyBoxes[k].intersects(sb))
+            continue;
+        one[0] = m_bufferedNoFly[k];
+        if (geo::segmentCrossesInterior(one, a, b))
+            return false;
+    }
+    return true;
 }
 
 bool Grid::pointIsSafe(const geo::Vec2& p) const {
