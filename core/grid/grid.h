@@ -37,6 +37,9 @@ constexpr Dir rightOf(Dir d) { return static_cast<Dir>((static_cast<int>(d) + 3)
 // - Its flight position is its centre if that is outside every no-fly zone buffered by the safety
 //   margin (Free), else the nearest such point of the cell, moved 1 mm further in when it can be
 //   (Shifted), else the cell is Unflyable. Points on a buffered zone's boundary count as safe.
+// - Zones are buffered by margin / cos(11.25 deg) (about 2 % more) with 8 segments per quarter circle, so
+//   that the polygonal buffer contains the true offset curve: the full margin holds at rounded corners.
+// - Memory: 2 bytes per cell (state and moves) plus 24 bytes per Shifted cell and the polygons.
 struct GridOptions {
     double cellSize = 0.0;        // metres, > 0
     double angleDeg = 0.0;        // grid rotation, counter-clockwise from east
