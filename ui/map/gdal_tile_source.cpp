@@ -175,6 +175,7 @@ std::unique_ptr<GdalTileSource> GdalTileSource::openXyz(const QString& displayNa
     src->m_online = true;
     src->m_maxZoom = maxZoom;
     src->m_resampling = "near"; // tiles align with the service's own: no neighbour tile fetched for a kernel
+    src->m_timeout = QByteArray::number(timeoutSeconds);
     return src;
 }
 
@@ -213,6 +214,7 @@ QImage GdalTileSource::renderTile(const TileKey& key) {
     QuietErrors quiet;
     if (m_online) {
         // Fail fast when offline: a tile that does not come quickly is simply left out.
+        CPLSetThreadLocalConfigOption("GDAL_HTTP_TIMEOUT", m_timeout.constData());
         CPLSetThreadLocalConfigOption("GDAL_HTTP_CONNECTTIMEOUT", "3");
         CPLSetThreadLocalConfigOption("GDAL_HTTP_MAX_RETRY", "0");
     }

@@ -52,6 +52,7 @@ private:
     int m_colourBands = 3; // 1 (grey) or 3 (RGB); an alpha band is added when warping
     bool m_online = false;
     QByteArray m_resampling = "bilinear";
+    QByteArray m_timeout = "5"; // GDAL_HTTP_TIMEOUT for online sources, seconds
     QString m_vsimemPath; // a normalising VRT kept in GDAL's in-memory file system, removed on destruction
     QMutex m_mutex;
     std::vector<void*> m_free;
