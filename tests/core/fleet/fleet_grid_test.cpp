@@ -5,7 +5,11 @@
 #include "core/geo/polygon_ops.h"
 #include "core/grid/grid.h"
 #include "core/mission/plan_mission.h"
+#include "core/fleet/photo_dedup.h"
 #include "core/plan/coverage_check.h"
+#include "core/route/safety.h"
+#include "core/route/sorties.h"
+#include "core/route/transit.h"
 
 #include "tests/core/fleet/demo_site.h"
 
@@ -215,4 +219,81 @@ TEST(FleetOnGrid, BalanceWithTheStridePlannerWithinTenPercent) {
     }
     EXPECT_GE(within, 8);
     EXPECT_LE(sum / 9, 1.06);
+}
+
+// The whole fleet chain on the demo site with the real planner and photo waypoints: partition,
+// one plan per subarea, photos saved across aircraft, no-fly detours, transit from home, sorties.
+// The independent checker then finds the admissible area covered and no margin breached.
+TEST(FleetOnGrid, DemoSiteEndToEndCoveredAndSafe) {
+    const auto site = test::demoSite();
+    auto frame = geo::LocalFrame::create({8.33, 49.01});
+    ASSERT_TRUE(frame.ok());
+    std::mt19937 rng(11);
+    const auto cfg = mixedConfigs(3, rng);
+    std::vector<Capability> caps;
+    std::vector<double> sizes;
+    for (const auto& a : cfg) {
+        auto fp = sensor::effectiveFootprint(a.camera, *a.altitudeM, a.overlap);
+        ASSERT_TRUE(fp.ok());
+        caps.push_back({a.name, *fp, a.cruiseSpeedMps, a.turnRateDegS});
+        sizes.push_back(aircraftCellSize(*fp));
+    }
+    const double areaM2 = geo::area(site.area);
+    const double margin = 5.0;
+    grid::GridOptions go;
+    go.cellSize = *baseCellSize(sizes, areaM2);
+    go.safetyMarginM = margin;
+    auto g = grid::Grid::build(site.area, site.noFly, go);
+    ASSERT_TRUE(g.ok());
+    const auto b = BaseGrid::fromGrid(*g);
+    auto p = partitionCells(b, *capabilityShares(caps, areaM2));
+    ASSERT_TRUE(p.ok());
+    const auto subareas = subareaPolygons(b, *p, g->admissible());
+    mission::PlannerOptions po;
+    po.gridAngleDeg = 0.0;
+    po.safetyMarginM = margin;
+    std::vector<AircraftPhotos> photos;
+    for (std::size_t k = 0; k < cfg.size(); ++k) {
+        auto ap = mission::planRegion(subareas[k], site.noFly, cfg[k], po, *frame, site.home);
+        ASSERT_TRUE(ap.ok()) << ap.error().message;
+        AircraftPhotos a;
+        a.waypoints = ap->localWaypoints;
+        a.effectiveAcrossM = ap->footprint.acrossM;
+        a.effectiveAlongM = ap->footprint.alongM;
+        a.realAcrossM = ap->footprint.real.longSideM;
+        a.realAlongM = ap->footprint.real.shortSideM;
+        photos.push_back(std::move(a));
+    }
+    auto saved = dropDuplicatePhotos(photos);
+    ASSERT_TRUE(saved.ok()) << saved.error().message;
+    EXPECT_GT(saved->totalSaved, 0);
+
+    const route::SafePathFinder finder(route::NoFlyField(site.noFly, margin));
+    std::vector<plan::PhotoFootprint> footprints;
+    std::vector<std::vector<geo::Vec2>> paths;
+    for (std::size_t k = 0; k < photos.size(); ++k) {
+        auto safe = route::enforceNoFly(photos[k].waypoints, finder);
+        ASSERT_TRUE(safe.ok()) << safe.error().message;
+        auto flown = route::withTransit(*safe, site.home, finder);
+        ASSERT_TRUE(flown.ok()) << flown.error().message;
+        std::vector<geo::Vec2> path{site.home};
+        for (const auto& w : *flown) {
+            path.push_back(w.pos);
+            if (w.kind == route::WaypointKind::Photo)
+                footprints.push_back({w.pos, w.headingDeg, photos[k].realAcrossM, photos[k].realAlongM});
+        }
+        path.push_back(site.home);
+        paths.push_back(path);
+        auto sorties = route::splitIntoSorties(*safe, site.home, finder,
+                                               route::FlightModel{cfg[k].cruiseSpeedMps, cfg[k].turnRateDegS, 0.0},
+                                               route::SortieOptions{3.0, 0.2}, cfg[k].name);
+        ASSERT_TRUE(sorties.ok()) << sorties.error().message;
+        EXPECT_GE(sorties->batteries(), 1);
+        for (const auto& s : sorties->sorties)
+            EXPECT_LE(s.timeS, sorties->budgetS + 1e-9);
+    }
+    auto cov = plan::checkCoverage(g->admissible(), footprints);
+    ASSERT_TRUE(cov.ok());
+    EXPECT_GE(cov->coveredFraction, 0.995);
+    EXPECT_EQ(plan::countNoFlyViolations(paths, site.noFly, margin).total(), 0);
 }
