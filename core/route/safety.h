@@ -91,7 +91,11 @@ struct PhotoSides {
 // waypoint outside is projected towards the nearest point of the shrunk area, but only as far as its
 // REAL footprint still contains the admissible part of the ground it was responsible for (its
 // effective footprint at the original position, within `admissible`), so no gap opens; it may stop
-// part way (counted in leftOutside, with a warning). Turn waypoints move fully; Transit waypoints
+// part way (counted in leftOutside, with a warning). The check is per photo rather than per cell
+// because a cell usually gets several photos along the track, none of which sees the whole cell
+// alone; their responsibilities together tile it, so keeping each one keeps the cell covered.
+// Run plan::checkCoverage afterwards to report what, if anything, is left uncovered.
+// Turn waypoints move fully; Transit waypoints
 // are left alone. A moved point must also stay safe from the no-fly zones of `finder`.
 // Errors: the area shrunk by the margin is empty, sides not positive.
 Result<std::vector<LocalWaypoint>> keepInsideArea(const std::vector<LocalWaypoint>& waypoints,
