@@ -235,7 +235,7 @@ public:
         return o;
     }
 
-    // An array member; `present` tells whether it was there at all.
+    // The value as an array, or an empty array (and the error) when it is something else.
     CPLJSONArray array(const CPLJSONObject& o, const std::string& path) {
         if (!expectType(o, path, o.GetType() == CPLJSONObject::Type::Array, "an array"))
             return CPLJSONArray();

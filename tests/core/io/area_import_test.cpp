@@ -5,7 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
 #include <thread>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 using namespace pf;
 using namespace pf::io;
@@ -129,6 +135,29 @@ TEST(AreaImport, ImportsFromSeveralThreadsAtOnce) {
         t.join();
     for (int v : ok)
         EXPECT_EQ(v, 1);
+}
+
+TEST(AreaImport, GdalPrintsNothingOnStderr) {
+    // GDAL's own "ERROR 1: ..." lines would duplicate (and precede) the product's message.
+    const std::string capture = ::testing::TempDir() + "pf_import_stderr.txt";
+    std::fflush(stderr);
+    const int saved = ::dup(2);
+    const int fd = ::open(capture.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ASSERT_GE(fd, 0);
+    ::dup2(fd, 2);
+    auto a = importPolygons(fixture("corrupt.geojson"));
+    auto b = importPolygons(fixture("corrupt.kml"));
+    auto c = importPolygons(fixture("corrupt.shp"));
+    std::fflush(stderr);
+    ::dup2(saved, 2);
+    ::close(saved);
+    ::close(fd);
+    EXPECT_FALSE(a || b || c);
+    std::ifstream in(capture);
+    std::stringstream text;
+    text << in.rdbuf();
+    EXPECT_EQ(text.str(), "");
+    std::remove(capture.c_str());
 }
 
 // ---- bad input: each with the message the user sees ----
