@@ -35,10 +35,10 @@ CPLJSONArray position(const geo::LonLat& p) {
     return a;
 }
 
-CPLJSONDocument buildDocument(const grid::Grid& g, const geo::LocalFrame& frame, const GridExportOptions& opt) {
-    CPLJSONDocument doc;
-    CPLJSONObject root = doc.GetRoot();
-    root.Add("type", "FeatureCollection");
+// Writes the collection piece by piece through `sink`: each feature is built and formatted with
+// CPLJSON on its own, so memory stays flat however many cells the grid has (a single document tree of a
+// million cells would take gigabytes).
+template <class Sink> void writeCollection(const grid::Grid& g, const geo::LocalFrame& frame, const GridExportOptions& opt, Sink sink) {
     CPLJSONObject meta;
     meta.Add("cell_size_m", g.cellSize());
     meta.Add("angle_deg", g.angleDeg());
@@ -46,8 +46,9 @@ CPLJSONDocument buildDocument(const grid::Grid& g, const geo::LocalFrame& frame,
     meta.Add("rows", g.rows());
     meta.Add("visit_count", g.visitCount());
     meta.Add("local_frame", frame.projString());
-    root.Add("photoflight_grid", meta);
-    CPLJSONArray features;
+    sink("{\"type\":\"FeatureCollection\",\"photoflight_grid\":" + meta.Format(CPLJSONObject::PrettyFormat::Plain) +
+         ",\"features\":[\n");
+    bool first = true;
     for (int i = 0; i < g.cellCount(); ++i) {
         const grid::CellState st = g.state(i);
         if (st == grid::CellState::Outside && !opt.includeOutside)
@@ -80,28 +81,31 @@ CPLJSONDocument buildDocument(const grid::Grid& g, const geo::LocalFrame& frame,
             props.AddNull("flight_lat");
         }
         f.Add("properties", props);
-        features.Add(f);
+        sink((first ? "" : ",\n") + f.Format(CPLJSONObject::PrettyFormat::Plain));
+        first = false;
     }
-    root.Add("features", features);
-    return doc;
+    sink("\n]}\n");
 }
 
 } // namespace
 
 std::string gridToGeoJson(const grid::Grid& g, const geo::LocalFrame& frame, const GridExportOptions& opt) {
-    // Plain (one-line) text: a pretty-printed grid of a million cells would be mostly indentation.
-    return buildDocument(g, frame, opt).GetRoot().Format(CPLJSONObject::PrettyFormat::Plain);
+    std::string out;
+    writeCollection(g, frame, opt, [&](const std::string& piece) { out += piece; });
+    return out;
 }
 
 Status writeGridGeoJson(const grid::Grid& g, const geo::LocalFrame& frame, const std::string& path,
                         const GridExportOptions& opt) {
-    const std::string text = gridToGeoJson(g, frame, opt);
     // Written beside the target and renamed over it, so an existing file is never left half written.
     const std::string tmp = path + ".part";
     VSILFILE* f = VSIFOpenL(tmp.c_str(), "wb");
     if (!f)
         return makeError(ErrorCode::IoError, path + ": cannot write the grid: " + std::strerror(errno));
-    const bool written = VSIFWriteL(text.data(), 1, text.size(), f) == text.size();
+    bool written = true;
+    writeCollection(g, frame, opt, [&](const std::string& piece) {
+        written = written && VSIFWriteL(piece.data(), 1, piece.size(), f) == piece.size();
+    });
     const bool closed = VSIFCloseL(f) == 0;
     if (!written || !closed) {
         VSIUnlink(tmp.c_str());
