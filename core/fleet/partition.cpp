@@ -532,7 +532,8 @@ Result<Partition> partitionCells(const BaseGrid& g, const std::vector<double>& s
             activeCells.push_back(c);
     if (static_cast<int>(activeCells.size()) < n)
         return makeError(ErrorCode::InvalidInput,
-                         "The area has only " + std::to_string(activeCells.size()) + " cells to photograph, fewer than the " +
+                         "The area has only " + std::to_string(activeCells.size()) +
+                             (activeCells.size() == 1 ? " cell" : " cells") + " to photograph, fewer than the " +
                              std::to_string(n) + " aircraft: use fewer aircraft or a smaller footprint.");
 
     // Pieces of the area (separated by no-fly zones or gaps), largest first.

@@ -1,5 +1,6 @@
 // The fleet stages on real grids of the demo site: base grid, partition, per-aircraft grids.
 #include "core/fleet/aircraft_grids.h"
+#include "core/fleet/area_split.h"
 #include "core/fleet/capability.h"
 #include "core/fleet/partition.h"
 #include "core/geo/polygon_ops.h"
@@ -296,4 +297,50 @@ TEST(FleetOnGrid, DemoSiteEndToEndCoveredAndSafe) {
     ASSERT_TRUE(cov.ok());
     EXPECT_GE(cov->coveredFraction, 0.995);
     EXPECT_EQ(plan::countNoFlyViolations(paths, site.noFly, margin).total(), 0);
+}
+
+// The one-call split the facade uses: shares, base grid, partition and balance on the demo site.
+TEST(SplitArea, DemoSiteWithThePlannerAsEstimator) {
+    const auto site = test::demoSite();
+    auto frame = geo::LocalFrame::create({8.33, 49.01});
+    ASSERT_TRUE(frame.ok());
+    std::mt19937 rng(5);
+    const auto cfg = mixedConfigs(3, rng);
+    std::vector<Capability> caps;
+    for (const auto& a : cfg)
+        caps.push_back({a.name, *sensor::effectiveFootprint(a.camera, *a.altitudeM, a.overlap), a.cruiseSpeedMps,
+                        a.turnRateDegS});
+    mission::PlannerOptions po;
+    po.gridAngleDeg = 0.0;
+    po.safetyMarginM = 5;
+    AreaSplitOptions opt;
+    opt.safetyMarginM = 5;
+    auto split = splitArea(site.area, site.noFly, caps, opt, [&](int k, const geo::MultiPolygon& region) -> Result<double> {
+        auto ap = mission::planRegion(region, site.noFly, cfg[static_cast<std::size_t>(k)], po, *frame, site.home);
+        if (!ap)
+            return ap.error();
+        return ap->metrics.estimatedTimeS;
+    });
+    ASSERT_TRUE(split.ok()) << split.error().message;
+    ASSERT_EQ(split->subareas.size(), 3u);
+    ASSERT_TRUE(split->balance.has_value());
+    EXPECT_LE(split->balance->makespan, 1.10 * split->balance->ideal);
+    double sum = 0;
+    for (const auto& s : split->subareas)
+        sum += geo::area(s);
+    const double admissible = geo::area(geo::difference(site.area, geo::MultiPolygon(site.noFly.begin(), site.noFly.end())));
+    EXPECT_NEAR(sum, admissible, 1e-3 * admissible);
+    for (std::size_t k = 0; k < 3; ++k)
+        EXPECT_TRUE(isConnected(split->base, split->partition.cells[k]));
+    // Without an estimator: the paper's cell-count split only.
+    auto plain = splitArea(site.area, site.noFly, caps, opt);
+    ASSERT_TRUE(plain.ok());
+    EXPECT_FALSE(plain->balance.has_value());
+    // Too many aircraft for a tiny area.
+    const geo::Polygon tiny{{geo::Vec2(0, 0), geo::Vec2(10, 0), geo::Vec2(10, 10), geo::Vec2(0, 10)}, {}};
+    auto none = splitArea(tiny, {}, caps, opt);
+    ASSERT_FALSE(none.ok());
+    EXPECT_EQ(none.error().message,
+              "The area has only 1 cell to photograph, fewer than the 3 aircraft: use fewer aircraft or a smaller "
+              "footprint.");
 }

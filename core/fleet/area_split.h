@@ -1,0 +1,44 @@
+// One call from an area and a fleet to each aircraft's subarea: base grid, partition, time balance.
+#pragma once
+
+#include "core/fleet/capability.h"
+#include "core/fleet/partition.h"
+#include "core/geo/types.h"
+#include "core/result.h"
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace pf::fleet {
+
+struct AreaSplitOptions {
+    double gridAngleDeg = 0.0;         // base grid rotation (the per-aircraft grids choose their own)
+    double safetyMarginM = 0.0;        // around the no-fly zones, as for the per-aircraft grids
+    double maxBaseCells = 250'000;     // the base cell grows to stay within this many cells
+    BalanceOptions balance;            // used when an estimator is given
+};
+
+// Flight time of aircraft k over a candidate subarea (local metres); the facade passes its
+// single-aircraft planner.
+using RegionTimeEstimator = std::function<Result<double>(int aircraft, const geo::MultiPolygon& subarea)>;
+
+struct AreaSplit {
+    double baseCellSizeM = 0.0;
+    std::vector<double> shares;             // capability shares (paper 001, section V.A)
+    BaseGrid base;
+    Partition partition;
+    std::vector<geo::MultiPolygon> subareas; // per aircraft, clipped to the admissible area
+    std::optional<BalanceReport> balance;    // when an estimator was given
+};
+
+// Splits `area` minus `noFly` between the aircraft of `fleet` (paper 001, section V): capability
+// shares, a base grid of the smallest aircraft cell size, flood-fill partition with redistribution,
+// then, if `estimate` is given, balancing on the estimated flight times. The subareas are ready for
+// per-aircraft grids (buildAircraftGrids) or the single-aircraft planner. Errors name the problem
+// (bad aircraft figures, an area too small for the number of aircraft, the grid's own errors).
+Result<AreaSplit> splitArea(const geo::Polygon& area, const std::vector<geo::Polygon>& noFly,
+                            const std::vector<Capability>& fleet, const AreaSplitOptions& opt = {},
+                            const RegionTimeEstimator& estimate = nullptr);
+
+} // namespace pf::fleet
