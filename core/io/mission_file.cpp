@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <initializer_list>
 #include <optional>
 #include <sstream>
 
@@ -138,6 +139,27 @@ public:
         if (o.IsValid() && o.GetType() == CPLJSONObject::Type::Null)
             return CPLJSONObject(); // invalid
         return o;
+    }
+
+    // A misspelt optional field would otherwise be ignored and its default used without a word, which
+    // for a safety margin or an overlap is worse than refusing the file. "note" is allowed anywhere
+    // for the user's own remarks.
+    void checkKeys(const CPLJSONObject& o, const std::string& path, std::initializer_list<const char*> known) {
+        if (failed() || o.GetType() != CPLJSONObject::Type::Object)
+            return;
+        for (const auto& child : o.GetChildren()) {
+            const std::string key = child.GetName();
+            bool ok = key == "note";
+            for (const char* k : known)
+                ok = ok || key == k;
+            if (!ok) {
+                std::string list;
+                for (const char* k : known)
+                    list += (list.empty() ? "" : ", ") + std::string(k);
+                fail(join(path, key), "unknown field (known here: " + list + ")");
+                return;
+            }
+        }
     }
 
     bool expectType(const CPLJSONObject& o, const std::string& path, bool ok, const char* expected) {
@@ -297,6 +319,7 @@ public:
             for (int i = 0; i < h.Size() && !failed(); ++i)
                 poly.holes.push_back(ring(h[i], join(p, "holes") + "[" + std::to_string(i) + "]"));
         }
+        checkKeys(o, p, {"outer", "holes"});
         return poly;
     }
 
@@ -314,6 +337,8 @@ public:
         c.vfovDeg = number(o, p, "vfov_deg", 0.0);
         c.imageWidthPx = static_cast<int>(integer(o, p, "image_width_px", 0, true, 1, 1'000'000));
         c.imageHeightPx = static_cast<int>(integer(o, p, "image_height_px", 0, true, 1, 1'000'000));
+        checkKeys(o, p, {"name", "sensor_width_mm", "sensor_height_mm", "focal_length_mm", "hfov_deg", "vfov_deg",
+                         "image_width_px", "image_height_px"});
         if (failed())
             return c;
         if (auto s = sensor::validate(c); !s)
@@ -350,6 +375,9 @@ public:
         a.maxAltitudeM = number(o, path, "max_altitude_m", a.maxAltitudeM);
         a.colour = colour(o, path, a.colour);
         a.home = optionalPosition(o, path, "home");
+        checkKeys(o, path, {"name", "model", "camera", "altitude_m", "gsd_cm", "front_overlap", "side_overlap",
+                            "cruise_speed_mps", "turn_rate_deg_s", "endurance_min", "max_altitude_m", "colour",
+                            "home"});
         return a;
     }
 
@@ -389,6 +417,8 @@ public:
         opt.batteryReserve = number(o, p, "battery_reserve", opt.batteryReserve);
         opt.maxCells = static_cast<std::size_t>(integer(o, p, "max_cells", static_cast<long long>(opt.maxCells),
                                                         false, 1, 1'000'000'000'000LL));
+        checkKeys(o, p, {"planner", "grid_angle_deg", "safety_margin_m", "keep_inside_area", "inside_margin_m",
+                         "altitude_separation_m", "battery_reserve", "max_cells"});
         return opt;
     }
 
@@ -435,6 +465,7 @@ public:
                 mission::NoFlyZone z;
                 z.name = string(a[i], p, "name", "");
                 z.polygon = polygon(a[i], p, "polygon");
+                checkKeys(a[i], p, {"name", "polygon"});
                 m.noFlyZones.push_back(std::move(z));
             }
         }
@@ -451,6 +482,8 @@ public:
         }
         if (!failed())
             m.options = planner(root);
+        checkKeys(root, "", {"format", "version", "name", "area", "no_fly_zones", "home", "landing", "aircraft",
+                             "planner"});
         return m;
     }
 
