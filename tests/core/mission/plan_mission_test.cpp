@@ -2,8 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cpl_json.h>
+#include <sys/wait.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 
 namespace pf::mission {
 namespace {
@@ -137,6 +143,61 @@ TEST(PlanMission, AngleCandidatesIncludeLongestEdge) {
     const auto angles = candidateAngles(region);
     EXPECT_EQ(angles.size(), 37u); // 36 steps + atan(10/100); the other long edge (180 deg) is 0
     EXPECT_NEAR(angles.back(), std::atan2(10.0, 100.0) * 180.0 / M_PI, 1e-3);
+}
+
+} // namespace
+} // namespace pf::mission
+
+namespace pf::mission {
+namespace {
+
+int runCli(const std::string& args, std::string* err) {
+    const auto errFile = std::filesystem::temp_directory_path() / "pf_plan_cli_err.txt";
+    const int rc = std::system((std::string(PF_CLI_PATH) + " " + args + " > /dev/null 2> " + errFile.string()).c_str());
+    std::ifstream f(errFile);
+    err->assign(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+    std::filesystem::remove(errFile);
+    return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+TEST(PlanCli, WritesPlanAndMetrics) {
+    const auto dir = std::filesystem::temp_directory_path() / "pf_plan_cli_out";
+    std::filesystem::remove_all(dir);
+    std::string err;
+    const int rc = runCli("plan " + std::string(PF_RESOURCES_DIR) + "/demo/demo_mission.json --grid-angle 0 --out " +
+                              dir.string(),
+                          &err);
+    ASSERT_EQ(rc, 0) << err;
+    CPLJSONDocument metrics;
+    ASSERT_TRUE(metrics.Load((dir / "metrics.json").string()));
+    const CPLJSONArray aircraft = metrics.GetRoot().GetArray("aircraft");
+    ASSERT_GE(aircraft.Size(), 1);
+    EXPECT_FALSE(aircraft[0].GetString("name").empty());
+    EXPECT_TRUE(aircraft[0].GetBool("complete"));
+    EXPECT_EQ(aircraft[0].GetInteger("jumps"), 0);
+    EXPECT_TRUE(metrics.GetRoot().GetObj("total").IsValid());
+    CPLJSONDocument plan;
+    ASSERT_TRUE(plan.Load((dir / "plan.geojson").string()));
+    const CPLJSONArray features = plan.GetRoot().GetArray("features");
+    ASSERT_GE(features.Size(), 2);
+    EXPECT_EQ(features[0].GetObj("geometry").GetString("type"), "LineString");
+    const CPLJSONObject photo = features[1].GetObj("properties");
+    EXPECT_EQ(photo.GetInteger("seq"), 1);
+    EXPECT_GT(photo.GetDouble("alt_m"), 0);
+    EXPECT_TRUE(photo.GetObj("heading_deg").IsValid());
+    EXPECT_EQ(photo.GetString("aircraft"), aircraft[0].GetString("name"));
+    std::filesystem::remove_all(dir);
+}
+
+TEST(PlanCli, BadInputs) {
+    std::string err;
+    EXPECT_EQ(runCli("eval", &err), 2);
+    EXPECT_NE(err.find("no area file given"), std::string::npos) << err;
+    EXPECT_EQ(runCli("eval " + std::string(PF_RESOURCES_DIR) + "/areas/c_l_shape.geojson --planners stride,zigzag", &err), 2);
+    EXPECT_NE(err.find("--planners: unknown planner 'zigzag' (use stride, raster or wavefront)"), std::string::npos)
+        << err;
+    EXPECT_EQ(runCli("eval /nonexistent.geojson", &err), 2);
+    EXPECT_NE(err.find("cannot read the area file /nonexistent.geojson"), std::string::npos) << err;
 }
 
 } // namespace
