@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <initializer_list>
 #include <optional>
 #include <sstream>
 
@@ -102,6 +103,22 @@ public:
         return failed() ? 0 : static_cast<int>(v);
     }
 
+    // A misspelt optional field (default_camer) would otherwise be dropped without a word.
+    void checkKeys(const CPLJSONObject& entry, const std::string& where, std::initializer_list<const char*> known) {
+        if (failed())
+            return;
+        for (const auto& child : entry.GetChildren()) {
+            const std::string key = child.GetName();
+            bool ok = key == "note";
+            for (const char* k : known)
+                ok = ok || key == k;
+            if (!ok) {
+                fail(where, key + ": unknown field");
+                return;
+            }
+        }
+    }
+
     // "cameras[3] ("Sony RX1R II")" once the name is known.
     static std::string entryLabel(const char* list, int i, const std::string& name) {
         std::string s = std::string(list) + "[" + std::to_string(i) + "]";
@@ -124,6 +141,8 @@ public:
         c.vfovDeg = number(o, where, "vfov_deg", false);
         c.imageWidthPx = pixels(o, where, "image_width_px");
         c.imageHeightPx = pixels(o, where, "image_height_px");
+        checkKeys(o, where, {"name", "sensor_width_mm", "sensor_height_mm", "focal_length_mm", "hfov_deg", "vfov_deg",
+                             "image_width_px", "image_height_px"});
         if (!failed()) {
             if (c.name.empty())
                 fail(where, "name: must not be empty");
@@ -148,6 +167,8 @@ public:
         a.maxAltitudeM = number(o, where, "max_altitude_m", true);
         a.defaultCamera = string(o, where, "default_camera", false);
         a.notes = string(o, where, "note", false);
+        checkKeys(o, where, {"name", "cruise_speed_mps", "turn_rate_deg_s", "endurance_min", "max_altitude_m",
+                             "default_camera"});
         if (failed())
             return a;
         if (a.name.empty())
