@@ -747,6 +747,8 @@ Result<BalanceReport> balanceByTime(const BaseGrid& g, Partition& p, const TimeE
         // Planned times are not smooth in the cells given (a grid of larger cells may not change at
         // all, a protruding cell may cost a whole extra stride), hence the search.
         Trial best;
+        // A trial that brings both subareas within the tolerance is taken at once (saves estimates).
+        const double goodEnough = (1.0 + opt.tolerance) * ideal;
         for (int r : neighbours) {
             if (at(r) >= ts)
                 break;
@@ -755,6 +757,8 @@ Result<BalanceReport> balanceByTime(const BaseGrid& g, Partition& p, const TimeE
             for (int m : stepSizes(cellsFor(s, r), as.size(s)))
                 for (bool sweep : {false, true}) {
                     if (rep.estimatorCalls >= maxEstimates)
+                        break;
+                    if (best.worst <= goodEnough)
                         break;
                     Trial t{{s, r}, {m}, sweep, std::numeric_limits<double>::infinity(), {}};
                     if (auto st = evaluate(t); !st)
