@@ -9,6 +9,10 @@ packages=(
   libgdal-dev gdal-bin libproj-dev libgeos-dev libeigen3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth
+  # Release checks: fuzzers (clang's libFuzzer and sanitizer runtimes), desktop-file and AppStream
+  # validators, dpkg-shlibdeps for the package's dependencies, and the X tools the kill-recovery
+  # test uses to see and answer the application's recovery question on a virtual screen.
+  clang libclang-rt-14-dev desktop-file-utils appstream dpkg-dev xdotool x11-utils
 )
 
 missing=()
