@@ -3,10 +3,133 @@
 #include "core/plan/metrics.h"
 #include "core/plan/stride_planner.h"
 
+#include "core/plan/grid_search.h"
+
+#include <climits>
 #include <cstdlib>
 #include <vector>
 
 namespace pf::plan {
+
+namespace {
+
+// The nearest visitable cell not yet `done` to cell c, by straight-line distance between cell centres,
+// then lowest index; -1 if none. Scans square rings of growing radius around c and stops once a ring
+// lies farther away than the best cell found, so a jump costs about the square of its length.
+int nearestFree(const grid::Grid& g, const std::vector<std::uint8_t>& done, int c) {
+    const int c0 = g.col(c), r0 = g.row(c);
+    const int maxK = std::max(g.cols(), g.rows());
+    long best2 = LONG_MAX;
+    int best = -1;
+    auto test = [&](int x, int y) {
+        const int i = g.index(x, y);
+        if (!g.needsVisit(i) || done[i])
+            return;
+        const long d2 = static_cast<long>(x - c0) * (x - c0) + static_cast<long>(y - r0) * (y - r0);
+        if (d2 < best2 || (d2 == best2 && i < best)) {
+            best2 = d2;
+            best = i;
+        }
+    };
+    for (int k = 1; k <= maxK && static_cast<long>(k) * k <= best2; ++k) {
+        const int x0 = std::max(0, c0 - k), x1 = std::min(g.cols() - 1, c0 + k);
+        if (r0 - k >= 0)
+            for (int x = x0; x <= x1; ++x)
+                test(x, r0 - k);
+        if (r0 + k < g.rows())
+            for (int x = x0; x <= x1; ++x)
+                test(x, r0 + k);
+        const int y0 = std::max(0, r0 - k + 1), y1 = std::min(g.rows() - 1, r0 + k - 1);
+        if (c0 - k >= 0)
+            for (int y = y0; y <= y1; ++y)
+                test(c0 - k, y);
+        if (c0 + k < g.cols())
+            for (int y = y0; y <= y1; ++y)
+                test(c0 + k, y);
+    }
+    return best;
+}
+
+} // namespace
+
+CellPath rasterWalk(const grid::Grid& g, int start, bool byColumns) {
+    using grid::Dir;
+    const int n = g.cellCount();
+    std::vector<std::uint8_t> done(static_cast<std::size_t>(n), 0);
+    // Lines with visitable cells before and after the start's line decide the progress direction,
+    // as in rasterSweep.
+    const int nLines = byColumns ? g.cols() : g.rows();
+    std::vector<std::uint8_t> lineUsed(static_cast<std::size_t>(nLines), 0);
+    for (int i = 0; i < n; ++i)
+        if (g.needsVisit(i))
+            lineUsed[byColumns ? g.col(i) : g.row(i)] = 1;
+    const int sLine = byColumns ? g.col(start) : g.row(start);
+    int before = 0, after = 0;
+    for (int l = 0; l < nLines; ++l) {
+        if (lineUsed[l] && l < sLine)
+            ++before;
+        else if (lineUsed[l] && l > sLine)
+            ++after;
+    }
+    const int alongPos = byColumns ? static_cast<int>(Dir::North) : static_cast<int>(Dir::East);
+    const int fwd = byColumns ? static_cast<int>(after >= before ? Dir::East : Dir::West)
+                              : static_cast<int>(after >= before ? Dir::North : Dir::South);
+    const int back = (fwd + 2) % 4;
+
+    auto isFree = [&](int c, int d) { return g.canMove(c, static_cast<Dir>(d)) && !done[c + dirOffset(g, d)]; };
+    // Along the line, the side with more free cells in a row first (the positive side on a tie).
+    auto longerSide = [&](int c) {
+        int run[2] = {0, 0};
+        for (int k = 0; k < 2; ++k) {
+            const int d = (alongPos + 2 * k) % 4;
+            for (int x = c; isFree(x, d); x += dirOffset(g, d))
+                ++run[k];
+        }
+        return run[1] > run[0] ? (alongPos + 2) % 4 : alongPos;
+    };
+
+    CellPath path;
+    int remaining = g.visitCount();
+    auto visit = [&](int c) {
+        if (!path.cells.empty() && !isAllowedStep(g, path.cells.back(), c, false))
+            ++path.jumps;
+        path.cells.push_back(c);
+        path.revisit.push_back(false);
+        done[c] = 1;
+        --remaining;
+    };
+    visit(start);
+    int cur = start;
+    int heading = longerSide(cur);
+    while (remaining > 0) {
+        const int reverse = (heading + 2) % 4;
+        int d = -1;
+        if (isFree(cur, heading)) {
+            d = heading;
+        } else if (isFree(cur, reverse)) {
+            d = heading = reverse;
+        } else if (isFree(cur, fwd)) {
+            d = fwd; // end of the line: the next line, flown the other way
+            heading = reverse;
+        } else if (isFree(cur, back)) {
+            d = back;
+            heading = reverse;
+        }
+        if (d >= 0) {
+            cur += dirOffset(g, d);
+            visit(cur);
+            continue;
+        }
+        // Dead end: every neighbour is visited. The original algorithm had no safe path to the next
+        // free cell and jumped to it.
+        cur = nearestFree(g, done, cur);
+        if (cur < 0)
+            break; // cannot happen: remaining > 0 means a free cell exists
+        visit(cur);
+        heading = longerSide(cur);
+    }
+    return path;
+}
 
 CellPath rasterSweep(const grid::Grid& g, int start, bool byColumns) {
     // Lines in "sweep coordinates": line = row (or column), pos = column (or row).
@@ -85,8 +208,8 @@ Result<CellPath> planRaster(const grid::Grid& g, const CoverageRequest& req) {
         return start.error();
     MetricsOptions mo;
     mo.turnLowerBound = false;
-    CellPath rows = rasterSweep(g, *start, false);
-    CellPath cols = rasterSweep(g, *start, true);
+    CellPath rows = rasterWalk(g, *start, false);
+    CellPath cols = rasterWalk(g, *start, true);
     const PathMetrics mr = computeMetrics(g, rows, mo), mc = computeMetrics(g, cols, mo);
     const bool useCols = mc.turns < mr.turns || (mc.turns == mr.turns && mc.distanceM < mr.distanceM);
     CellPath body = useCols ? std::move(cols) : std::move(rows);

@@ -15,7 +15,18 @@ namespace pf::plan {
 // between non-adjacent cells (the original algorithm did not plan safe transits).
 CellPath rasterSweep(const grid::Grid& g, int start, bool byColumns);
 
-// The better of the row sweep and the column sweep (fewer turns, then shorter distance), with
+// The original algorithm as the paper describes it (Santamaria et al., section V: it "didn't provide a
+// safe path to fly from the current position to the next free cell" only "when all neighbor cells next
+// to the current position have been visited"): a walk over neighbouring cells that scans the area line
+// by line (rows, or columns when `byColumns`). At each cell it continues along the line; at the end of
+// the line it steps to the next line (towards the side of the start with more lines) and reverses; if
+// that is not free either, to the previous line, then back along the line. Only when no neighbour is
+// free does it jump to the nearest unvisited cell (straight-line distance, then lowest index), which is
+// the transition the paper counts as a jump. Unlike rasterSweep it never flies across a gap while a
+// neighbour is still free, so contour teeth and holes cut its lines (the paper's figure 7b).
+CellPath rasterWalk(const grid::Grid& g, int start, bool byColumns);
+
+// The better of the row walk and the column walk (rasterWalk) (fewer turns, then shorter distance), with
 // transit paths from the take-off cell and to the landing cell.
 Result<CellPath> planRaster(const grid::Grid& g, const CoverageRequest& req);
 
