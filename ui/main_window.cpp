@@ -22,9 +22,24 @@
 #include "ui/tools/home_tool.h"
 #include "ui/tools/pan_tool.h"
 #include "ui/tools/select_tool.h"
+#include "ui/tools/waypoint_tool.h"
+#include "ui/commands/replace_route_command.h"
+#include "ui/commands/set_planner_options_command.h"
+#include "ui/dialogs/export_dialog.h"
+#include "ui/map/plan_layer.h"
+#include "ui/panels/statistics_panel.h"
+#include "ui/panels/waypoint_panel.h"
+#include "ui/planning/plan_controller.h"
+#include "core/io/waypoint_formats.h"
 
 #include <QAction>
 #include <QActionGroup>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
+#include <QListWidget>
+#include <QProgressBar>
+#include <QStandardPaths>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -40,6 +55,7 @@
 #include <QMessageBox>
 #include <QSettings>
 #include <QStatusBar>
+#include <QStyle>
 #include <QTimer>
 #include <QToolBar>
 #include <QUndoView>
@@ -91,6 +107,8 @@ MainWindow::MainWindow(QWidget* parent, bool interactive) : QMainWindow(parent),
     m_tiles = new TileLayer();
     m_scene->addItem(m_tiles);
     m_layer = new MissionLayer(m_doc, m_scene, this);
+    m_planner = new PlanController(m_doc, this);
+    m_planLayer = new PlanLayer(m_doc, m_planner, m_scene, this);
     m_ground = new GroundStation(m_scene, this);
     // Autosave period in seconds (setting "autosave/intervalSeconds", default one minute); edits are
     // also saved a few seconds after they happen.
@@ -107,6 +125,7 @@ MainWindow::MainWindow(QWidget* parent, bool interactive) : QMainWindow(parent),
     m_tools[ToolId::DrawNoFly] = new DrawPolygonTool(DrawPolygonTool::Target::NoFlyZone, m_doc, m_layer, this);
     m_tools[ToolId::DrawCircle] = new DrawCircleTool(m_doc, m_layer, this);
     m_tools[ToolId::Home] = new HomeTool(m_doc, m_layer, this);
+    m_tools[ToolId::Waypoints] = new WaypointTool(m_doc, m_layer, m_planLayer, this);
     for (auto& [id, tool] : m_tools)
         connect(tool, &AbstractTool::statusMessage, this, [this](const QString& text) { statusBar()->showMessage(text); });
 
@@ -126,6 +145,7 @@ MainWindow::MainWindow(QWidget* parent, bool interactive) : QMainWindow(parent),
 
     buildActions();
     buildDocks();
+    buildPlanning();
 
     connect(m_view, &MapView::cursorMoved, this, [this](const geo::LonLat& p) { m_coords->setText(formatLonLat(p)); });
     connect(m_view, &MapView::cursorLeft, this, [this] { m_coords->clear(); });
@@ -219,7 +239,10 @@ void MainWindow::buildActions() {
     edit->addAction(redo);
     edit->addSeparator();
     auto* del = edit->addAction(icon("remove"), tr("&Delete selected vertex or shape"), this, [this] {
-        static_cast<SelectTool*>(m_tools.at(ToolId::Select))->deleteSelection();
+        if (m_view->tool() == m_tools.at(ToolId::Waypoints))
+            static_cast<WaypointTool*>(m_tools.at(ToolId::Waypoints))->deleteSelection();
+        else
+            static_cast<SelectTool*>(m_tools.at(ToolId::Select))->deleteSelection();
     });
     del->setShortcut(QKeySequence::Delete);
     del->setShortcutContext(Qt::WidgetWithChildrenShortcut); // the map only: spin boxes keep Delete
@@ -231,7 +254,8 @@ void MainWindow::buildActions() {
     // Tools
     QMenu* toolsMenu = menuBar()->addMenu(tr("&Tools"));
     auto* toolGroup = new QActionGroup(this);
-    const ToolId order[] = {ToolId::Pan, ToolId::Select, ToolId::DrawArea, ToolId::DrawNoFly, ToolId::DrawCircle, ToolId::Home};
+    const ToolId order[] = {ToolId::Pan,        ToolId::Select, ToolId::DrawArea, ToolId::DrawNoFly,
+                            ToolId::DrawCircle, ToolId::Home,   ToolId::Waypoints};
     for (ToolId id : order) {
         AbstractTool* t = m_tools.at(id);
         auto* a = toolsMenu->addAction(t->icon(), t->name());
@@ -360,10 +384,11 @@ void MainWindow::buildDocks() {
     undoView->setEmptyLabel(tr("<opened>"));
     historyDock->setWidget(undoView);
     addDockWidget(Qt::RightDockWidgetArea, historyDock);
+    // One column of tabs on the right keeps the map tall; the plan's docks go below it.
+    tabifyDockWidget(aircraftDock, missionDock);
     tabifyDockWidget(missionDock, historyDock);
-    missionDock->raise();
-    resizeDocks({aircraftDock, missionDock}, {560, 300}, Qt::Vertical);
-    resizeDocks({aircraftDock}, {330}, Qt::Horizontal);
+    aircraftDock->raise();
+    resizeDocks({aircraftDock}, {360}, Qt::Horizontal);
 
     m_viewMenu->addAction(aircraftDock->toggleViewAction());
     m_viewMenu->addAction(missionDock->toggleViewAction());
@@ -379,6 +404,7 @@ void MainWindow::onViewChanged() {
     const double mpp = m_view->metresPerPixel();
     m_layer->setMetresPerPixel(mpp);
     m_ground->setMetresPerPixel(mpp);
+    m_planLayer->setMetresPerPixel(mpp);
     const double ground = m_view->groundMetresPerPixel();
     m_scale->setText(ground < 1 ? tr("%1 cm/px").arg(ground * 100, 0, 'f', 1) : tr("%1 m/px").arg(ground, 0, 'f', 2));
 }
@@ -657,6 +683,347 @@ bool MainWindow::waitForMap(int timeoutMs) {
         loop.exec();
     }
     return false;
+}
+
+// ---------------------------------------------------------------- planning, viewing, editing
+
+namespace {
+enum ProblemRole { KindRole = Qt::UserRole, IndexRole, WaypointRole };
+enum ProblemKind { NoTarget, AreaTarget, NoFlyTarget, WaypointTarget };
+} // namespace
+
+void MainWindow::buildPlanning() {
+    auto icon = [](const char* name) { return QIcon(QStringLiteral(":/icons/%1.svg").arg(QLatin1String(name))); };
+
+    // Actions: Plan menu and tool bar.
+    QMenu* planMenu = menuBar()->addMenu(tr("&Plan"));
+    // The menu goes before Help.
+    menuBar()->insertMenu(menuBar()->actions().at(menuBar()->actions().size() - 2), planMenu);
+    m_planAct = planMenu->addAction(icon("plan"), tr("&Plan now"), this, &MainWindow::planNow);
+    m_planAct->setShortcut(QKeySequence(Qt::Key_F5));
+    m_planAct->setToolTip(tr("Plan the mission (F5)"));
+    m_cancelAct = planMenu->addAction(icon("cancel"), tr("&Cancel planning"), m_planner, &PlanController::cancel);
+    m_cancelAct->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F5));
+    m_cancelAct->setEnabled(false);
+    m_autoAct = planMenu->addAction(tr("Plan &automatically after edits"));
+    m_autoAct->setCheckable(true);
+    m_autoAct->setChecked(QSettings().value(QStringLiteral("plan/auto"), true).toBool());
+    m_planner->setAutoPlan(m_autoAct->isChecked());
+    connect(m_autoAct, &QAction::toggled, this, [this](bool on) {
+        m_planner->setAutoPlan(on);
+        QSettings().setValue(QStringLiteral("plan/auto"), on);
+    });
+    planMenu->addSeparator();
+    auto* compareAct = planMenu->addAction(icon("compare"), tr("Co&mpare planners"), m_planner, &PlanController::compare);
+    planMenu->addSeparator();
+    auto* exportAct = planMenu->addAction(icon("export"), tr("&Export waypoints…"), this, &MainWindow::showExportDialog);
+    exportAct->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
+    planMenu->addAction(tr("&Open waypoint file…"), this, [this] {
+        const QString path = QFileDialog::getOpenFileName(
+            this, tr("Open waypoint file"), QString(),
+            tr("Waypoint files (*.plan *.waypoints *.gpx *.geojson *.json *.csv);;All files (*)"));
+        if (!path.isEmpty()) openWaypointFile(path);
+    });
+    Q_UNUSED(compareAct);
+
+    m_plannerBox = new QComboBox;
+    m_plannerBox->setObjectName(QStringLiteral("PlannerBox"));
+    m_plannerBox->setToolTip(tr("Coverage planner"));
+    for (auto k : {mission::PlannerKind::Stride, mission::PlannerKind::Raster, mission::PlannerKind::Wavefront})
+        m_plannerBox->addItem(plannerName(k), int(k));
+    m_angleBox = new QDoubleSpinBox;
+    m_angleBox->setObjectName(QStringLiteral("GridAngleBox"));
+    m_angleBox->setToolTip(tr("Grid angle in degrees from east; Auto tries many angles and keeps the fastest plan"));
+    m_angleBox->setRange(-1, 179);
+    m_angleBox->setDecimals(0);
+    m_angleBox->setSingleStep(5);
+    m_angleBox->setSuffix(QStringLiteral("°"));
+    m_angleBox->setSpecialValueText(tr("Auto angle"));
+    m_angleBox->setKeyboardTracking(false);
+    connect(m_plannerBox, QOverload<int>::of(&QComboBox::activated), this, [this](int i) {
+        auto o = m_doc->mission().options;
+        const auto kind = mission::PlannerKind(m_plannerBox->itemData(i).toInt());
+        if (o.planner == kind) return;
+        o.planner = kind;
+        m_doc->undoStack()->push(new SetPlannerOptionsCommand(m_doc, o, tr("Planner %1").arg(plannerName(kind))));
+    });
+    connect(m_angleBox, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        auto o = m_doc->mission().options;
+        std::optional<double> angle;
+        if (v >= 0) angle = v;
+        if (o.gridAngleDeg == angle) return;
+        o.gridAngleDeg = angle;
+        m_doc->undoStack()->push(new SetPlannerOptionsCommand(
+            m_doc, o, angle ? tr("Grid angle %1°").arg(*angle, 0, 'f', 0) : tr("Automatic grid angle")));
+    });
+    connect(m_doc, &MissionDocument::optionsChanged, this, &MainWindow::syncPlannerControls);
+    connect(m_doc, &MissionDocument::missionReset, this, &MainWindow::syncPlannerControls);
+
+    QToolBar* bar = addToolBar(tr("Planning"));
+    bar->setObjectName(QStringLiteral("PlanningToolBar"));
+    bar->setIconSize(QSize(22, 22));
+    bar->addAction(m_planAct);
+    bar->addAction(m_cancelAct);
+    bar->addWidget(m_plannerBox);
+    bar->addWidget(m_angleBox);
+    bar->addAction(exportAct);
+
+    // Busy indicator and the notice of a plan waiting for the user.
+    m_busy = new QProgressBar;
+    m_busy->setRange(0, 0);
+    m_busy->setMaximumWidth(110);
+    m_busy->setMaximumHeight(14);
+    m_busy->setFormat(tr("planning"));
+    m_busy->hide();
+    statusBar()->insertPermanentWidget(0, m_busy);
+    m_notice = new QWidget;
+    auto* nl = new QHBoxLayout(m_notice);
+    nl->setContentsMargins(6, 0, 6, 0);
+    m_noticeText = new QLabel(tr("New plan ready — your edited paths are kept."));
+    m_noticeText->setStyleSheet(QStringLiteral("QLabel { color: #0b3d91; font-weight: bold; }"));
+    auto* replace = new QPushButton(tr("Replace edited paths"));
+    auto* keep = new QPushButton(tr("Keep edits"));
+    nl->addWidget(m_noticeText);
+    nl->addWidget(replace);
+    nl->addWidget(keep);
+    m_notice->setStyleSheet(QStringLiteral("QWidget { background: #dbe8ff; }"));
+    m_notice->hide();
+    statusBar()->insertPermanentWidget(0, m_notice);
+    connect(replace, &QPushButton::clicked, this, &MainWindow::replaceEditedPaths);
+    connect(keep, &QPushButton::clicked, m_planner, &PlanController::discardPendingPlan);
+    connect(m_planner, &PlanController::pendingPlanChanged, m_notice, &QWidget::setVisible);
+    connect(m_planner, &PlanController::busyChanged, this, [this](bool busy) {
+        m_busy->setVisible(busy);
+        m_cancelAct->setEnabled(busy);
+    });
+    connect(m_planner, &PlanController::message, this, [this](const QString& text) { statusBar()->showMessage(text, 8000); });
+
+    // Docks: statistics and comparison on the right, waypoints and problems below the map.
+    auto* statsDock = new QDockWidget(tr("Statistics"), this);
+    statsDock->setObjectName(QStringLiteral("StatisticsDock"));
+    m_statistics = new StatisticsPanel(m_doc, m_planner, statsDock);
+    statsDock->setWidget(m_statistics);
+    addDockWidget(Qt::BottomDockWidgetArea, statsDock);
+
+    auto* wpDock = new QDockWidget(tr("Waypoints"), this);
+    wpDock->setObjectName(QStringLiteral("WaypointsDock"));
+    m_waypoints = new WaypointPanel(m_doc, m_planLayer, wpDock);
+    wpDock->setWidget(m_waypoints);
+    addDockWidget(Qt::BottomDockWidgetArea, wpDock);
+
+    auto* problemsDock = new QDockWidget(tr("Problems"), this);
+    problemsDock->setObjectName(QStringLiteral("ProblemsDock"));
+    m_problemList = new QListWidget(problemsDock);
+    m_problemList->setObjectName(QStringLiteral("ProblemsList"));
+    m_problemList->setWordWrap(true);
+    problemsDock->setWidget(m_problemList);
+    addDockWidget(Qt::BottomDockWidgetArea, problemsDock);
+    // Below the map, left to right: waypoints, statistics, problems.
+    splitDockWidget(wpDock, statsDock, Qt::Horizontal);
+    splitDockWidget(statsDock, problemsDock, Qt::Horizontal);
+    resizeDocks({wpDock, statsDock, problemsDock}, {500, 640, 400}, Qt::Horizontal);
+    resizeDocks({wpDock}, {250}, Qt::Vertical);
+    connect(m_problemList, &QListWidget::itemClicked, this, [this](QListWidgetItem* item) {
+        switch (item->data(KindRole).toInt()) {
+        case AreaTarget: m_layer->select(ShapeRef::area()); break;
+        case NoFlyTarget: m_layer->select(ShapeRef::noFly(item->data(IndexRole).toInt())); break;
+        case WaypointTarget: {
+            const int r = item->data(IndexRole).toInt(), w = item->data(WaypointRole).toInt();
+            m_planLayer->selectWaypoints(r, {w});
+            if (r >= 0 && r < int(m_doc->routes().size()) && w < int(m_doc->routes()[std::size_t(r)].route.waypoints.size()))
+                m_view->centreOn(m_doc->routes()[std::size_t(r)].route.waypoints[std::size_t(w)].position);
+            break;
+        }
+        default: break;
+        }
+    });
+    connect(m_layer, &MissionLayer::problemsChanged, this, &MainWindow::refreshProblems);
+    connect(m_planner, &PlanController::planChanged, this, &MainWindow::refreshProblems);
+    connect(m_planLayer, &PlanLayer::routeProblemsChanged, this, &MainWindow::refreshProblems);
+
+    // Layers in the View menu.
+    m_viewMenu->addSeparator();
+    const std::pair<PlanLayer::Part, QString> parts[] = {
+        {PlanLayer::Part::Paths, tr("Flight &paths")},       {PlanLayer::Part::Photos, tr("P&hoto points")},
+        {PlanLayer::Part::Footprints, tr("Photo &footprints")}, {PlanLayer::Part::Partition, tr("&Partition of the area")},
+        {PlanLayer::Part::Grid, tr("&Grid cells")},          {PlanLayer::Part::Sorties, tr("&Sorties (batteries)")},
+        {PlanLayer::Part::Uncovered, tr("&Uncovered patches")}};
+    for (const auto& [part, text] : parts) {
+        auto* a = m_viewMenu->addAction(text);
+        a->setCheckable(true);
+        a->setChecked(m_planLayer->isVisible(part));
+        const auto p = part;
+        connect(a, &QAction::toggled, this, [this, p](bool on) { m_planLayer->setVisible(p, on); });
+    }
+    m_viewMenu->addSeparator();
+    m_viewMenu->addAction(statsDock->toggleViewAction());
+    m_viewMenu->addAction(wpDock->toggleViewAction());
+    m_viewMenu->addAction(problemsDock->toggleViewAction());
+    syncPlannerControls();
+}
+
+void MainWindow::syncPlannerControls() {
+    const auto& o = m_doc->mission().options;
+    const QSignalBlocker b1(m_plannerBox), b2(m_angleBox);
+    m_plannerBox->setCurrentIndex(m_plannerBox->findData(int(o.planner)));
+    m_angleBox->setValue(o.gridAngleDeg ? *o.gridAngleDeg : -1.0);
+}
+
+bool MainWindow::planNoticeVisible() const { return m_planner->hasPendingPlan(); }
+
+void MainWindow::planNow() {
+    if (m_doc->anyRouteEdited() && m_interactive) {
+        const auto answer = QMessageBox::question(
+            this, tr("Replace edited paths?"),
+            tr("Some paths were edited by hand. A new plan replaces them. Plan now and replace the edited paths?"),
+            QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel);
+        if (answer != QMessageBox::Yes) return;
+        m_planner->planNow(/*replaceEdited=*/true); // consent given
+        return;
+    }
+    m_planner->planNow();
+}
+
+void MainWindow::replaceEditedPaths() { m_planner->acceptPendingPlan(); }
+
+void MainWindow::refreshProblems() {
+    m_problemList->clear();
+    const auto& m = m_doc->mission();
+    // Which shape a message names: a no-fly zone by its name, else the area.
+    auto add = [this, &m](const QString& text, const QString& source) {
+        auto* item = new QListWidgetItem(text, m_problemList);
+        item->setData(KindRole, NoTarget);
+        for (std::size_t i = 0; i < m.noFlyZones.size(); ++i) {
+            const QString name = QString::fromStdString(m.noFlyZones[i].name);
+            if (!name.isEmpty() && text.contains(name)) {
+                item->setData(KindRole, NoFlyTarget);
+                item->setData(IndexRole, int(i));
+            }
+        }
+        if (item->data(KindRole).toInt() == NoTarget && text.contains(tr("area"), Qt::CaseInsensitive))
+            item->setData(KindRole, AreaTarget);
+        item->setToolTip(source);
+        return item;
+    };
+    for (const QString& p : m_layer->problems()) add(p, tr("mission shapes"))->setIcon(style()->standardIcon(QStyle::SP_MessageBoxWarning));
+    if (!m_planner->lastError().isEmpty())
+        add(m_planner->lastError(), tr("planner"))->setIcon(style()->standardIcon(QStyle::SP_MessageBoxCritical));
+    if (const auto& plan = m_planner->plan()) {
+        for (const auto& w : plan->warnings)
+            add(QString::fromStdString(w), tr("planner"))->setIcon(style()->standardIcon(QStyle::SP_MessageBoxInformation));
+        if (plan->noFlyViolations > 0)
+            add(tr("%n waypoint(s) or leg(s) of the plan closer to a no-fly zone than the safety margin", nullptr,
+                   plan->noFlyViolations),
+                tr("coverage check"))
+                ->setIcon(style()->standardIcon(QStyle::SP_MessageBoxCritical));
+        if (!plan->uncovered.empty())
+            add(tr("%1 m² of the area in %n patch(es) is seen by no photo (hatched red on the map)", nullptr,
+                   int(plan->uncovered.size()))
+                    .arg(plan->uncoveredAreaM2, 0, 'f', 0),
+                tr("coverage check"))
+                ->setIcon(style()->standardIcon(QStyle::SP_MessageBoxWarning));
+    }
+    const auto& issues = m_planLayer->issues();
+    for (std::size_t r = 0; r < issues.size() && r < m_doc->routes().size(); ++r) {
+        const QString name = QString::fromStdString(m_doc->routes()[r].route.aircraft);
+        auto flag = [&](std::size_t w, const QString& why) {
+            auto* item = new QListWidgetItem(style()->standardIcon(QStyle::SP_MessageBoxCritical),
+                                             tr("%1, waypoint %2: %3").arg(name).arg(w + 1).arg(why), m_problemList);
+            item->setData(KindRole, WaypointTarget);
+            item->setData(IndexRole, int(r));
+            item->setData(WaypointRole, int(w));
+        };
+        for (std::size_t w = 0; w < issues[r].waypoint.size(); ++w)
+            if (!issues[r].waypoint[w].isEmpty()) flag(w, issues[r].waypoint[w]);
+        for (std::size_t w = 0; w < issues[r].leg.size(); ++w)
+            if (!issues[r].leg[w].isEmpty()) flag(w, issues[r].leg[w]);
+    }
+    if (auto* dock = findChild<QDockWidget*>(QStringLiteral("ProblemsDock")))
+        dock->setWindowTitle(m_problemList->count() ? tr("Problems (%1)").arg(m_problemList->count()) : tr("Problems"));
+}
+
+int MainWindow::openWaypointFile(const QString& path, int assignTo, QString* error) {
+    auto imported = io::importWaypoints(path.toStdString());
+    if (!imported) {
+        const QString why = QString::fromStdString(imported.error().message);
+        if (error) *error = why;
+        showError(tr("Open waypoint file"), why);
+        return 0;
+    }
+    const io::ImportedWaypoints file = std::move(imported).value();
+    std::vector<route::Route> routes = file.routes;
+    for (auto& r : routes)
+        if (!r.home) r.home = file.home;
+    if (routes.empty()) {
+        const QString why = tr("%1 holds no waypoints.").arg(QFileInfo(path).fileName());
+        if (error) *error = why;
+        showError(tr("Open waypoint file"), why);
+        return 0;
+    }
+    const auto& existing = m_doc->routes();
+    const QString base = QFileInfo(path).completeBaseName();
+    auto target = [&](std::size_t k, const route::Route& r) -> int {
+        if (assignTo >= 0) return std::min(assignTo + int(k), int(existing.size()));
+        for (std::size_t i = 0; i < existing.size(); ++i) {
+            const auto& name = existing[i].route.aircraft;
+            if (!r.aircraft.empty() && r.aircraft == name) return int(i);
+        }
+        // Formats without a vehicle name (.plan, .waypoints, .csv): the exported file is named after it
+        // (with the characters unsafe in file names replaced, as the export does).
+        for (std::size_t i = 0; i < existing.size(); ++i) {
+            QString name = QString::fromStdString(existing[i].route.aircraft);
+            for (QChar& c : name)
+                if (!(c.isLetterOrNumber() || c == QLatin1Char('-') || c == QLatin1Char('_') || c == QLatin1Char('.')))
+                    c = QLatin1Char('_');
+            if (!name.isEmpty() && routes.size() == 1 && base.endsWith(name, Qt::CaseInsensitive)) return int(i);
+        }
+        if (m_interactive && !existing.empty()) {
+            QStringList items;
+            for (const auto& e : existing) items << QString::fromStdString(e.route.aircraft);
+            items << tr("A new route");
+            bool ok = false;
+            const QString pick = QInputDialog::getItem(this, tr("Open waypoint file"),
+                                                       tr("Which aircraft flies this route?"), items, 0, false, &ok);
+            if (!ok) return -1;
+            const int i = items.indexOf(pick);
+            return i < int(existing.size()) ? i : int(existing.size());
+        }
+        return int(existing.size());
+    };
+    auto* stack = m_doc->undoStack();
+    stack->beginMacro(tr("Open %1").arg(QFileInfo(path).fileName()));
+    int count = 0;
+    for (std::size_t k = 0; k < routes.size(); ++k) {
+        route::Route r = routes[k];
+        const int i = target(k, r);
+        if (i < 0) continue;
+        if (i < int(m_doc->routes().size())) {
+            // The route keeps the aircraft it is assigned to (its colour and export name).
+            r.aircraft = m_doc->routes()[std::size_t(i)].route.aircraft;
+            if (!r.home) r.home = m_doc->routes()[std::size_t(i)].route.home;
+        } else if (r.aircraft.empty()) {
+            r.aircraft = base.toStdString();
+        }
+        stack->push(new ReplaceRouteCommand(m_doc, i, r));
+        ++count;
+    }
+    stack->endMacro();
+    statusBar()->showMessage(tr("Loaded %n route(s) from %1", nullptr, count).arg(QFileInfo(path).fileName()), 5000);
+    return count;
+}
+
+void MainWindow::showExportDialog() {
+    if (m_doc->routes().empty()) {
+        showError(tr("Export waypoints"), tr("Nothing to export yet: plan the mission first (F5)."));
+        return;
+    }
+    QSettings settings;
+    const QString folder = settings.value(QStringLiteral("export/folder"),
+                                          QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation))
+                               .toString();
+    ExportDialog dialog(m_doc, folder, this);
+    dialog.exec();
+    settings.setValue(QStringLiteral("export/folder"), dialog.request().folder);
 }
 
 } // namespace pf::ui

@@ -8,10 +8,16 @@
 #include <map>
 #include <memory>
 
+class QAction;
 class QActionGroup;
+class QComboBox;
+class QDoubleSpinBox;
 class QGraphicsScene;
 class QLabel;
+class QListWidget;
 class QMenu;
+class QProgressBar;
+class QPushButton;
 
 namespace pf::ui {
 
@@ -23,10 +29,14 @@ class MapView;
 class MissionDocument;
 class MissionLayer;
 class MissionPanel;
+class PlanController;
+class PlanLayer;
+class StatisticsPanel;
+class WaypointPanel;
 class TileLayer;
 class TileSource;
 
-enum class ToolId { Pan, Select, DrawArea, DrawNoFly, DrawCircle, Home };
+enum class ToolId { Pan, Select, DrawArea, DrawNoFly, DrawCircle, Home, Waypoints };
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -42,6 +52,13 @@ public:
     AircraftPanel* aircraftPanel() const { return m_aircraft; }
     GroundStation* groundStation() const { return m_ground; }
     Autosave* autosave() const { return m_autosave.get(); }
+    PlanController* planController() const { return m_planner; }
+    PlanLayer* planLayer() const { return m_planLayer; }
+    WaypointPanel* waypointPanel() const { return m_waypoints; }
+    StatisticsPanel* statisticsPanel() const { return m_statistics; }
+    QListWidget* problemsList() const { return m_problemList; }
+    // The bar saying a new plan waits because routes were edited by hand.
+    bool planNoticeVisible() const;
     AbstractTool* tool(ToolId id) const;
     void setTool(ToolId id);
 
@@ -61,6 +78,17 @@ public:
     bool setBaseMap(const QString& id, QString* error = nullptr);
     QString baseMapId() const { return m_baseMapId; }
 
+    // Plan button / F5: plans now; when routes were edited by hand, asks first (interactive windows)
+    // and otherwise keeps the edits until the user replaces them from the notice.
+    void planNow();
+    // The new plan that waited for the user replaces the edited routes.
+    void replaceEditedPaths();
+    // Reads an exported (and maybe edited) waypoint file and puts its routes beside the mission:
+    // route k of the file goes to the document's route `assignTo + k` (-1: matched by aircraft name or
+    // file name, else asked, else appended). One undo step. Returns the number of routes loaded.
+    int openWaypointFile(const QString& path, int assignTo = -1, QString* error = nullptr);
+    void showExportDialog();
+
     void zoomToMission();
     // Repaints until every visible tile is drawn from its own zoom level (or the timeout passes).
     bool waitForMap(int timeoutMs);
@@ -79,6 +107,9 @@ private:
     void showError(const QString& title, const QString& message);
     void openDropped(const QStringList& paths);
     void onViewChanged();
+    void buildPlanning();
+    void refreshProblems();
+    void syncPlannerControls();
 
     bool m_interactive;
     MissionDocument* m_doc;
@@ -102,6 +133,19 @@ private:
     QLabel* m_scale;
     QLabel* m_mapLabel;
     QLabel* m_problems;
+    PlanController* m_planner = nullptr;
+    PlanLayer* m_planLayer = nullptr;
+    WaypointPanel* m_waypoints = nullptr;
+    StatisticsPanel* m_statistics = nullptr;
+    QListWidget* m_problemList = nullptr;
+    QComboBox* m_plannerBox = nullptr;
+    QDoubleSpinBox* m_angleBox = nullptr;
+    QProgressBar* m_busy = nullptr;
+    QAction* m_planAct = nullptr;
+    QAction* m_cancelAct = nullptr;
+    QAction* m_autoAct = nullptr;
+    QWidget* m_notice = nullptr;
+    QLabel* m_noticeText = nullptr;
 };
 
 } // namespace pf::ui

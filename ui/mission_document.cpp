@@ -31,6 +31,9 @@ void MissionDocument::reset(mission::Mission m, const QString& filePath, bool ma
         m_filePath = filePath;
         emit filePathChanged(m_filePath);
     }
+    m_routes.clear();
+    ++m_routeGeneration;
+    emit routesChanged();
     emit missionReset();
     emit areaChanged();
     emit noFlyZonesChanged();
@@ -147,6 +150,37 @@ void MissionDocument::setAircraft(int index, const mission::AircraftConfig& airc
     m_mission.aircraft.at(std::size_t(index)) = aircraft;
     emit aircraftChanged();
     emit changed();
+}
+
+void MissionDocument::setOptions(const mission::PlannerOptions& options) {
+    m_mission.options = options;
+    emit optionsChanged();
+    emit changed();
+}
+
+bool MissionDocument::anyRouteEdited() const {
+    for (const auto& r : m_routes)
+        if (r.edited) return true;
+    return false;
+}
+
+void MissionDocument::setPlannedRoutes(std::vector<route::Route> routes) {
+    m_routes.clear();
+    for (auto& r : routes) m_routes.push_back({std::move(r), false});
+    ++m_routeGeneration;
+    emit routesChanged();
+}
+
+void MissionDocument::setRoute(int index, const std::optional<PlannedRoute>& route) {
+    if (index < 0 || index > int(m_routes.size())) return;
+    if (!route) {
+        if (index == int(m_routes.size()) - 1) m_routes.pop_back();
+    } else if (index == int(m_routes.size())) {
+        m_routes.push_back(*route);
+    } else {
+        m_routes[std::size_t(index)] = *route;
+    }
+    emit routesChanged();
 }
 
 } // namespace pf::ui

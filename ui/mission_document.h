@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/mission/mission.h"
+#include "core/route/waypoint.h"
 
 #include <QObject>
 #include <QString>
@@ -57,12 +58,34 @@ public:
     void insertAircraft(int index, const mission::AircraftConfig& aircraft);
     void removeAircraft(int index);
     void setAircraft(int index, const mission::AircraftConfig& aircraft);
+    void setOptions(const mission::PlannerOptions& options);
+
+    // --- the planned (and possibly hand-edited) routes, one per planned aircraft ---
+    // They live beside the mission, not in the mission file (its format belongs to the core's io);
+    // they leave the program through the waypoint exports. A route marked `edited` was changed by
+    // hand and is never replaced without the user's consent.
+    struct PlannedRoute {
+        route::Route route;
+        bool edited = false;
+    };
+    const std::vector<PlannedRoute>& routes() const { return m_routes; }
+    bool anyRouteEdited() const;
+    // Counts replacements of the whole set (a new plan, a reset): route edit commands recorded
+    // against an older set become obsolete instead of restoring routes of a replaced plan.
+    int routeGeneration() const { return m_routeGeneration; }
+    // A new plan: replaces every route, clears the edited marks.
+    void setPlannedRoutes(std::vector<route::Route> routes);
+    // One route (an edit or an import). index == routes().size() appends; nullopt removes the last.
+    void setRoute(int index, const std::optional<PlannedRoute>& route);
 
 signals:
     void areaChanged();
     void noFlyZonesChanged();
     void homeChanged();
     void aircraftChanged();
+    void optionsChanged();
+    // Routes changed (not part of `changed`: editing a route must not trigger a new plan).
+    void routesChanged();
     // Any change of content (including reset); views that draw everything listen to this one.
     void changed();
     // The whole mission was replaced.
@@ -74,6 +97,8 @@ private:
     mission::Mission m_mission;
     QUndoStack m_undo;
     QString m_filePath;
+    std::vector<PlannedRoute> m_routes;
+    int m_routeGeneration = 0;
 };
 
 } // namespace pf::ui

@@ -1,0 +1,223 @@
+#include "ui/planning/plan_controller.h"
+
+#include "ui/mission_document.h"
+
+#include <QCoreApplication>
+#include <QEventLoop>
+#include <QFutureWatcher>
+#include <QThread>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <algorithm>
+
+namespace pf::ui {
+
+QString plannerName(mission::PlannerKind kind) {
+    switch (kind) {
+    case mission::PlannerKind::Stride: return QCoreApplication::translate("Planner", "Stride");
+    case mission::PlannerKind::Raster: return QCoreApplication::translate("Planner", "Raster");
+    case mission::PlannerKind::Wavefront: return QCoreApplication::translate("Planner", "Wavefront");
+    }
+    return {};
+}
+
+struct PlanController::Outcome {
+    int generation = 0;
+    std::optional<mission::MissionPlan> plan;
+    QString error;
+    double wallMs = 0.0;
+};
+
+PlanController::PlanController(MissionDocument* doc, QObject* parent) : QObject(parent), m_doc(doc) {
+    m_debounce.setSingleShot(true);
+    m_debounce.setInterval(kDebounceMs);
+    connect(&m_debounce, &QTimer::timeout, this, [this] { start(false); });
+    connect(m_doc, &MissionDocument::changed, this, [this] {
+        if (m_auto) m_debounce.start();
+    });
+    connect(m_doc, &MissionDocument::missionReset, this, [this] {
+        // A different mission: nothing of the old one's plans may appear.
+        ++m_generation;
+        ++m_compareGeneration;
+        m_comparing = 0;
+        m_plan.reset();
+        m_pending.reset();
+        m_comparison.clear();
+        m_error.clear();
+        setBusy(false);
+        emit pendingPlanChanged(false);
+        emit comparisonChanged();
+        emit planChanged();
+    });
+}
+
+PlanController::~PlanController() = default;
+
+void PlanController::setAutoPlan(bool on) {
+    m_auto = on;
+    if (!on) m_debounce.stop();
+}
+
+void PlanController::planNow(bool replaceEdited) {
+    m_debounce.stop();
+    start(true, replaceEdited);
+}
+
+void PlanController::cancel() {
+    m_debounce.stop();
+    if (!m_busy) return;
+    ++m_generation;
+    setBusy(false);
+    emit message(tr("Planning cancelled."));
+}
+
+void PlanController::setBusy(bool on) {
+    if (m_busy == on) return;
+    m_busy = on;
+    emit busyChanged(on);
+}
+
+void PlanController::start(bool userAsked, bool replaceEdited) {
+    const int generation = ++m_generation;
+    if (replaceEdited) m_replaceGeneration = generation;
+    mission::Mission m = m_doc->mission();
+    if (m.area.outer.size() < 3 || m.aircraft.empty()) {
+        // Nothing to plan yet: say what is missing instead of a planner error.
+        setBusy(false);
+        m_error = m.area.outer.size() < 3 ? tr("No plan: draw or import the area of interest.")
+                                          : tr("No plan: add an aircraft.");
+        emit planChanged();
+        return;
+    }
+    setBusy(true);
+    if (userAsked) emit message(tr("Planning…"));
+    auto* watcher = new QFutureWatcher<std::shared_ptr<const Outcome>>(this);
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] {
+        finished(watcher->result());
+        watcher->deleteLater();
+    });
+    watcher->setFuture(QtConcurrent::run([generation, m = std::move(m)] {
+        auto out = std::make_shared<Outcome>();
+        out->generation = generation;
+        QElapsedTimer t;
+        t.start();
+        auto r = mission::planMission(m);
+        out->wallMs = double(t.nsecsElapsed()) / 1e6;
+        if (r)
+            out->plan = std::move(r).value();
+        else
+            out->error = QString::fromStdString(r.error().message);
+        return std::shared_ptr<const Outcome>(std::move(out));
+    }));
+}
+
+void PlanController::finished(const std::shared_ptr<const Outcome>& outcome) {
+    if (!outcome || outcome->generation != m_generation) return; // superseded or cancelled
+    setBusy(false);
+    m_wallMs = outcome->wallMs;
+    if (!outcome->plan) {
+        m_error = outcome->error;
+        emit message(tr("Planning failed: %1").arg(m_error));
+        emit planChanged();
+        return;
+    }
+    m_error.clear();
+    if (m_doc->anyRouteEdited() && outcome->generation != m_replaceGeneration) {
+        // Hand edits are never discarded silently: the plan waits for the user's word.
+        m_pending = *outcome->plan;
+        m_pendingMs = outcome->wallMs;
+        emit pendingPlanChanged(true);
+        emit message(tr("A new plan is ready; your edited paths are kept until you replace them."));
+        return;
+    }
+    apply(*outcome->plan, outcome->wallMs);
+}
+
+void PlanController::apply(mission::MissionPlan plan, double wallMs) {
+    if (m_pending) {
+        m_pending.reset();
+        emit pendingPlanChanged(false);
+    }
+    std::vector<route::Route> routes;
+    for (const auto& a : plan.aircraft) routes.push_back(a.route);
+    m_plan = std::move(plan);
+    m_wallMs = wallMs;
+    m_doc->setPlannedRoutes(std::move(routes));
+    emit planChanged();
+    emit message(tr("Planned in %1 s.").arg(wallMs / 1000.0, 0, 'f', 2));
+}
+
+void PlanController::acceptPendingPlan() {
+    if (!m_pending) return;
+    auto p = std::move(*m_pending);
+    m_pending.reset();
+    emit pendingPlanChanged(false);
+    apply(std::move(p), m_pendingMs);
+}
+
+void PlanController::discardPendingPlan() {
+    if (!m_pending) return;
+    m_pending.reset();
+    emit pendingPlanChanged(false);
+}
+
+void PlanController::compare() {
+    const int generation = ++m_compareGeneration;
+    const mission::Mission base = m_doc->mission();
+    const mission::PlannerKind kinds[] = {mission::PlannerKind::Stride, mission::PlannerKind::Raster,
+                                          mission::PlannerKind::Wavefront};
+    m_comparison.clear();
+    m_comparing = 0;
+    emit comparisonChanged();
+    for (auto kind : kinds) {
+        mission::Mission m = base;
+        m.options.planner = kind;
+        ++m_comparing;
+        auto* watcher = new QFutureWatcher<PlannerComparisonRow>(this);
+        connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, generation] {
+            watcher->deleteLater();
+            if (generation != m_compareGeneration) return;
+            --m_comparing;
+            m_comparison.push_back(watcher->result());
+            std::sort(m_comparison.begin(), m_comparison.end(),
+                      [](const auto& a, const auto& b) { return int(a.planner) < int(b.planner); });
+            emit comparisonChanged();
+        });
+        watcher->setFuture(QtConcurrent::run([kind, m = std::move(m)] {
+            PlannerComparisonRow row;
+            row.planner = kind;
+            QElapsedTimer t;
+            t.start();
+            auto r = mission::planMission(m);
+            row.wallMs = double(t.nsecsElapsed()) / 1e6;
+            if (!r) {
+                row.error = QString::fromStdString(r.error().message);
+                return row;
+            }
+            row.ok = true;
+            row.totals = r->totals;
+            row.coveragePercent = r->coverageRatio > 0 ? 100.0 * r->coverageRatio
+                                  : r->totals.visitable > 0 ? 100.0 * r->totals.cells / r->totals.visitable
+                                                            : 0.0;
+            // Time: the makespan of the whole flight (transit and sorties included) when known.
+            if (r->makespanS > 0) row.totals.estimatedTimeS = r->makespanS;
+            double flown = 0;
+            for (const auto& ap : r->aircraft) flown += ap.flightDistanceM;
+            if (flown > 0) row.totals.pathLengthM = flown; // home to home, as the statistics show it
+            return row;
+        }));
+    }
+}
+
+bool PlanController::waitForIdle(int timeoutMs) {
+    QElapsedTimer t;
+    t.start();
+    while (m_busy || m_comparing > 0 || m_debounce.isActive()) {
+        if (t.elapsed() > timeoutMs) return false;
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+        QThread::msleep(5);
+    }
+    return true;
+}
+
+} // namespace pf::ui

@@ -1,0 +1,30 @@
+// Writing the document's routes through the core's waypoint exporters (what the export dialog runs).
+#pragma once
+
+#include "core/io/waypoint_formats.h"
+#include "core/mission/mission.h"
+#include "core/route/waypoint.h"
+
+#include <QString>
+#include <QStringList>
+
+#include <vector>
+
+namespace pf::ui {
+
+struct ExportRequest {
+    QString folder;
+    QString stem = QStringLiteral("mission");
+    std::vector<io::WaypointFormat> formats;
+    std::vector<int> routes; // indices into the routes given; empty: all
+    bool perAircraft = true; // one file per aircraft and format: "<stem>-<aircraft>.<ext>"
+    bool combined = true;    // plus "<stem>.<ext>" with every route, where the format allows it
+    io::ExportOptions options;
+};
+
+// Writes the files; returns the paths written. On the first failure stops, and `error` names the
+// file and the problem.
+QStringList exportRoutes(const mission::Mission& mission, const std::vector<route::Route>& routes,
+                         const ExportRequest& request, QString* error);
+
+} // namespace pf::ui
