@@ -191,7 +191,10 @@ Result<std::vector<Vec2>> SafePathFinder::detour(const Vec2& a, const Vec2& b) c
     dist[static_cast<std::size_t>(n)] = 0;
     q.emplace(0.0, n);
     while (!q.empty()) {
-        const auto [d, u] = q.top();
+        // Plain variables, not a structured binding: the lambda below captures them, which C++17
+        // allows only for variables (clang rejects captured bindings; GCC accepts them as an extension).
+        const double d = q.top().first;
+        const int u = q.top().second;
         q.pop();
         if (d > dist[static_cast<std::size_t>(u)])
             continue;
