@@ -3,6 +3,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/mission_args.h"
 
+#include "core/io/waypoint_formats.h"
 #include "core/mission/plan_mission.h"
 #include "core/mission/validation.h"
 
@@ -14,31 +15,57 @@
 namespace pf::cli {
 
 const char* const kPlanUsage =
-    "Usage: photoflight-cli plan MISSION.json|AREA [OPTIONS] [--out DIR]\n"
+    "Usage: photoflight-cli plan MISSION.json|AREA [OPTIONS] [--format LIST] [--out DIR]\n"
     "\n"
-    "Computes the complete-coverage flight of each aircraft: the grid of cells, the path over them\n"
-    "(stride planner by default), the photo waypoints, and the figures to compare plans. Prints a summary\n"
-    "table; with --out, writes into DIR:\n"
+    "Plans the mission end to end for every aircraft: with several aircraft the area is shared between\n"
+    "them (balanced on the estimated flight times), each plans its part (grid of cells, coverage path,\n"
+    "photo waypoints; stride planner by default), photos another aircraft already takes are dropped,\n"
+    "waypoints keep out of every no-fly zone and its safety margin (detours), each flight gets its safe\n"
+    "transit from and back to its home and is cut into sorties (batteries) that fit its endurance less a\n"
+    "20 % reserve. Altitudes closer than 10 m between aircraft flying together give a warning. Finally an\n"
+    "independent check lays the real photo footprints over the area (coverage ratio, uncovered patches)\n"
+    "and counts margin breaches. Prints a table per aircraft (photos, photos saved, flight distance, time,\n"
+    "sorties, turns) and the totals with the coverage and the makespan (the longest aircraft's time).\n"
+    "\n"
+    "With --out, writes into DIR:\n"
     "  plan.geojson   WGS84 FeatureCollection: per aircraft a LineString of the flown path (home, every\n"
-    "                 waypoint, back home; property aircraft) and one Point per photo with the properties\n"
-    "                 aircraft, seq, alt_m, heading_deg (clockwise from north)\n"
-    "  metrics.json   {\"aircraft\": [{\"name\", cells, photos, path_length_m, distance_m, turns,\n"
-    "                 turn_angle_deg, jumps, revisits, estimated_time_s, planning_ms, turn_lower_bound,\n"
-    "                 turn_ratio, ...}], \"total\": {...}, \"warnings\": [...]}\n"
+    "                 waypoint, back home; properties aircraft, kind \"path\"), one Point per photo\n"
+    "                 (aircraft, kind \"photo\", seq, alt_m, heading_deg clockwise from north,\n"
+    "                 footprint_across_m, footprint_along_m: the real ground footprint), its subarea\n"
+    "                 (kind \"subarea\") and the uncovered patches (kind \"uncovered\", area_m2)\n"
+    "  metrics.json   {\"aircraft\": [{\"name\", cells, photos, path_length_m, distance_m, turns, jumps,\n"
+    "                 revisits, estimated_time_s, time_s (home to home, every sortie), sorties,\n"
+    "                 photos_saved, detours, ...}], \"total\": {..., coverage_ratio, nofly_violations,\n"
+    "                 makespan_s, ideal_s, photos_saved}, \"coverage_ratio\", \"nofly_violations\",\n"
+    "                 \"warnings\": [...]}\n"
+    "  and per format of --format, one file per aircraft, mission-AIRCRAFT.EXT, plus mission.EXT with\n"
+    "  every aircraft for kml, gpx and geojson; an aircraft needing several batteries also gets one file\n"
+    "  per sortie, mission-AIRCRAFT-sortieN.EXT (the per-aircraft file flies them one after the other)\n"
     "\n"
     "Options:\n"
-    "  --out DIR                    directory for plan.geojson and metrics.json (created if missing)\n"
+    "  --out DIR                    output directory (created if missing)\n"
+    "  --format LIST                comma-separated waypoint formats to write (needs --out):\n"
+    "                                 plan       QGroundControl .plan\n"
+    "                                 waypoints  QGC WPL 110 .waypoints (Mission Planner)\n"
+    "                                 kml        KML: area, no-fly zones, path, photos, footprints\n"
+    "                                 gpx        GPX waypoints and route\n"
+    "                                 geojson    GeoJSON waypoints\n"
+    "                                 csv        Litchi mission hub CSV\n"
     PF_CLI_MISSION_OPTIONS_HELP
+    "\n"
+    "Several aircraft: repeat --aircraft NAME[:ALT_M] (catalog names, see: photoflight-cli catalog), e.g.\n"
+    "  --aircraft \"Falcon 8:40\" --aircraft \"DJI Phantom 4 Pro:45\". Each aircraft flies from its own\n"
+    "home if the mission file gives one, else from the mission's home (--home).\n"
     "\n"
     "Planners: stride (long straight strides, few turns, no jumps), raster (row or column\n"
     "boustrophedon, the paper's baseline, may jump over holes), wavefront (gradient ascent on a\n"
     "navigation function, 8-connected, the candidate with the smallest completion time).\n"
-    "--grid-angle auto tries 0, 5, ..., 175 degrees and the directions of the area's longest edges and\n"
-    "keeps the plan with the smallest estimated time T = length / speed + turn angles / turn rate.\n"
-    "With several aircraft only the first is planned for now (a warning says so).\n"
+    "--grid-angle auto tries 0, 5, ..., 175 degrees and the directions of the longest edges of each\n"
+    "aircraft's part and keeps the plan with the smallest estimated time T = length / speed + turn\n"
+    "angles / turn rate.\n"
     "\n"
     "Exit codes: 0 planned, 2 bad input (message on stderr), 1 internal error.\n"
-    "Example: photoflight-cli plan resources/demo/demo_mission.json --grid-angle auto --out plan/\n";
+    "Example: photoflight-cli plan resources/demo/demo_mission.json --format plan,kml --out plan/\n";
 
 namespace {
 
@@ -70,9 +97,19 @@ int writeFile(const std::filesystem::path& path, const std::string& text) {
 int runPlan(const std::vector<std::string>& argv) {
     auto specs = missionOptionSpecs();
     specs.push_back({"out"});
+    specs.push_back({"format"});
     auto args = Args::parse(argv, specs);
     if (!args)
         return reportError(args.error());
+    std::vector<io::WaypointFormat> formats;
+    if (const auto f = args->value("format")) {
+        auto list = io::formatListFromString(*f);
+        if (!list)
+            return reportError(makeError(list.error().code, "--format: " + list.error().message));
+        if (!args->has("out"))
+            return reportError(makeError(ErrorCode::InvalidInput, "--format: needs --out DIR to write the files into"));
+        formats = *list;
+    }
     auto input = missionFromArgs(*args);
     if (!input)
         return reportError(input.error());
@@ -97,6 +134,7 @@ int runPlan(const std::vector<std::string>& argv) {
         std::cerr << "photoflight-cli: warning: " << w << '\n';
 
     const char* planner = plannerLabel(m.options.planner);
+    std::vector<std::string> written;
     if (const auto out = args->value("out")) {
         std::error_code ec;
         std::filesystem::create_directories(*out, ec);
@@ -108,26 +146,71 @@ int runPlan(const std::vector<std::string>& argv) {
             return rc;
         if (int rc = writeFile(dir / "metrics.json", mission::planMetricsJson(*plan, planner)); rc != kExitOk)
             return rc;
+        written.push_back((dir / "plan.geojson").string());
+        written.push_back((dir / "metrics.json").string());
+        if (!formats.empty()) {
+            std::vector<route::Route> routes;
+            for (const auto& a : plan->aircraft)
+                routes.push_back(a.route);
+            const io::ExportContext ctx = io::makeExportContext(m, routes);
+            for (const auto fmt : formats) {
+                auto files = io::exportAll(ctx, fmt, dir.string(), "mission");
+                if (!files)
+                    return reportError(files.error());
+                written.insert(written.end(), files->begin(), files->end());
+                // Each battery as a flight of its own, for ground stations that fly one at a time.
+                for (std::size_t i = 0; i < plan->aircraft.size(); ++i) {
+                    const auto& sr = plan->aircraft[i].sortieRoutes;
+                    if (sr.size() < 2)
+                        continue;
+                    const io::ExportContext sctx = io::makeExportContext(m, sr);
+                    for (std::size_t s = 0; s < sr.size(); ++s) {
+                        std::string name = io::routeFileName(sctx, s, fmt);
+                        const std::string ext = io::formatInfo(fmt).extension;
+                        name = name.substr(0, name.size() - ext.size()) + "-sortie" + std::to_string(s + 1) + ext;
+                        const std::string path = (dir / ("mission-" + name)).string();
+                        if (auto st = io::exportRoute(sctx, s, fmt, path); !st)
+                            return reportError(st.error());
+                        written.push_back(path);
+                    }
+                }
+            }
+        }
     }
 
     char line[512];
-    std::snprintf(line, sizeof line, "%-20s %-9s %7s %6s %6s %6s %9s %6s %5s %6s %6s %8s\n", "aircraft", "planner",
-                  "angle", "cell_m", "cells", "photos", "length_m", "turns", "bound", "jumps", "revis", "time_min");
+    std::snprintf(line, sizeof line, "%-20s %-9s %6s %6s %6s %6s %6s %9s %8s %7s %6s %5s\n", "aircraft", "planner",
+                  "alt_m", "angle", "cell_m", "photos", "saved", "dist_m", "time_min", "sorties", "turns", "jumps");
     std::cout << line;
     for (const auto& a : plan->aircraft) {
         const auto& mt = a.metrics;
-        std::snprintf(line, sizeof line, "%-20.20s %-9s %7.1f %6.1f %6d %6d %9.0f %6d %5d %6d %6d %8.1f\n",
-                      a.aircraft.c_str(), planner, a.gridAngleDeg, a.cellSizeM, mt.cells, mt.photos, mt.pathLengthM,
-                      mt.turns, mt.turnLowerBound, mt.jumps, mt.revisits, mt.estimatedTimeS / 60.0);
+        std::snprintf(line, sizeof line, "%-20.20s %-9s %6.1f %6.1f %6.1f %6d %6d %9.0f %8.1f %7d %6d %5d\n",
+                      a.aircraft.c_str(), planner, a.altitudeM, a.gridAngleDeg, a.cellSizeM, mt.photos, a.photosSaved,
+                      a.flightDistanceM, a.timeS / 60.0, static_cast<int>(a.sorties.size()), mt.turns, mt.jumps);
         std::cout << line;
     }
     const auto& t = plan->totals;
-    std::snprintf(line, sizeof line, "%-20s %-9s %7s %6s %6d %6d %9.0f %6d %5s %6d %6d %8.1f\n", "total", "", "", "",
-                  t.cells, t.photos, t.pathLengthM, t.turns, "", t.jumps, t.revisits, t.estimatedTimeS / 60.0);
+    double dist = 0.0;
+    int sorties = 0;
+    for (const auto& a : plan->aircraft) {
+        dist += a.flightDistanceM;
+        sorties += static_cast<int>(a.sorties.size());
+    }
+    std::snprintf(line, sizeof line, "%-20s %-9s %6s %6s %6s %6d %6d %9.0f %8.1f %7d %6d %5d\n", "total", "", "", "",
+                  "", t.photos, plan->photosSaved, dist, plan->makespanS / 60.0, sorties, t.turns, t.jumps);
     std::cout << line;
-    if (const auto out = args->value("out"))
-        std::cout << "Wrote " << (std::filesystem::path(*out) / "plan.geojson").string() << " and "
-                  << (std::filesystem::path(*out) / "metrics.json").string() << '\n';
+    std::snprintf(line, sizeof line,
+                  "coverage %.2f %% (uncovered %.0f m2), makespan %.1f min (ideal %.1f min, x%.3f), no-fly "
+                  "violations %d\n",
+                  100.0 * plan->coverageRatio, plan->uncoveredAreaM2, plan->makespanS / 60.0, plan->idealS / 60.0,
+                  plan->idealS > 0 ? plan->makespanS / plan->idealS : 1.0, plan->noFlyViolations);
+    std::cout << line;
+    if (!written.empty()) {
+        std::cout << "Wrote";
+        for (const auto& w : written)
+            std::cout << ' ' << w;
+        std::cout << '\n';
+    }
     return kExitOk;
 }
 

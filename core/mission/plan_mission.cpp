@@ -1,14 +1,23 @@
 #include "core/mission/plan_mission.h"
 
+#include "core/fleet/altitude.h"
+#include "core/fleet/area_split.h"
+#include "core/fleet/photo_dedup.h"
+#include "core/geo/polygon_ops.h"
 #include "core/mission/validation.h"
+#include "core/plan/coverage_check.h"
 #include "core/plan/planner.h"
 #include "core/route/photo_waypoints.h"
+#include "core/route/safety.h"
+#include "core/route/sorties.h"
+#include "core/route/transit.h"
 
 #include <cpl_json.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 namespace pf::mission {
 
@@ -154,34 +163,339 @@ Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vect
     return std::move(p);
 }
 
+namespace {
+
+std::string aircraftLabel(const AircraftConfig& a) {
+    return a.name.empty() ? std::string("the aircraft") : "aircraft \"" + a.name + "\"";
+}
+
+// The survey part of a planned route: from the first photo to the last. The planner's own way from the
+// take-off cell and back to the landing cell is replaced by the shortest safe transit later.
+std::vector<route::LocalWaypoint> surveyPart(const std::vector<route::LocalWaypoint>& w) {
+    const auto isPhoto = [](const route::LocalWaypoint& x) { return x.kind == route::WaypointKind::Photo; };
+    const auto first = std::find_if(w.begin(), w.end(), isPhoto);
+    if (first == w.end())
+        return {};
+    const auto last = std::find_if(w.rbegin(), w.rend(), isPhoto).base();
+    return {first, last};
+}
+
+double polylineLength(const std::vector<geo::Vec2>& p) {
+    double s = 0.0;
+    for (std::size_t i = 1; i < p.size(); ++i)
+        s += (p[i] - p[i - 1]).norm();
+    return s;
+}
+
+std::string metres(double v, int decimals = 0) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    return buf;
+}
+
+Result<MissionPlan> buildPlan(const Mission& m, const LocalGeometry& geom,
+                              const std::vector<geo::MultiPolygon>& regions,
+                              const std::vector<std::optional<geo::Vec2>>& homes,
+                              const std::optional<geo::Vec2>& landing);
+
+} // namespace
+
 Result<MissionPlan> planMission(const Mission& m) {
     if (m.aircraft.empty())
         return makeError(ErrorCode::InvalidInput, "the mission has no aircraft: add one to plan a flight");
     auto geom = localGeometry(m);
     if (!geom)
         return geom.error();
-    MissionPlan plan;
-    plan.frame = geom->frame;
-    const AircraftConfig& first = m.aircraft.front();
-    std::optional<geo::LonLat> homeGeo = first.home ? first.home : m.home;
-    std::optional<geo::Vec2> home, landing;
-    if (homeGeo)
-        home = geom->frame.toLocal(*homeGeo);
-    if (m.landing)
-        landing = geom->frame.toLocal(*m.landing);
-    if (m.aircraft.size() > 1) {
-        std::string others;
-        for (std::size_t i = 1; i < m.aircraft.size(); ++i)
-            others += (i > 1 ? ", \"" : "\"") + m.aircraft[i].name + "\"";
-        plan.warnings.push_back("multi-aircraft partitioning not available: only the first aircraft (\"" + first.name +
-                                "\") was planned, over the whole area; " + others + " got no route");
+    const geo::LocalFrame& frame = geom->frame;
+    const std::size_t n = m.aircraft.size();
+    const PlannerOptions& opt = m.options;
+
+    // Per aircraft: footprint (for the split) and home.
+    std::vector<fleet::Capability> caps;
+    std::vector<sensor::EffectiveFootprint> footprints;
+    std::vector<std::optional<geo::Vec2>> homes;
+    for (const auto& a : m.aircraft) {
+        auto alt = resolvedAltitude(a);
+        if (!alt)
+            return makeError(alt.error().code, aircraftLabel(a) + ": " + alt.error().message);
+        auto eff = sensor::effectiveFootprint(a.camera, *alt, a.overlap);
+        if (!eff)
+            return makeError(eff.error().code, aircraftLabel(a) + ": " + eff.error().message);
+        footprints.push_back(*eff);
+        caps.push_back({a.name, *eff, a.cruiseSpeedMps, a.turnRateDegS});
+        const std::optional<geo::LonLat> h = a.home ? a.home : m.home;
+        homes.push_back(h ? std::optional<geo::Vec2>(frame.toLocal(*h)) : std::nullopt);
     }
-    const geo::MultiPolygon region{geom->area};
-    auto ap = planRegion(region, geom->noFly, first, m.options, geom->frame, home, landing);
-    if (!ap)
-        return ap.error();
-    plan.aircraft.push_back(std::move(*ap));
+    std::optional<geo::Vec2> landing;
+    if (m.landing)
+        landing = frame.toLocal(*m.landing);
+
+    // 1. Each aircraft's region: the whole area alone, else a time-balanced split.
+    if (n == 1) {
+        auto one = buildPlan(m, *geom, {geo::MultiPolygon{geom->area}}, homes, landing);
+        return one;
+    }
+    // The split estimates times at one fixed angle (a full angle search per estimate would cost 37
+    // times as much): the mission's, or the best for the aircraft with the coarsest grid (the cheapest
+    // search) over the whole area.
+    double estimateAngle = 0.0;
+    if (opt.gridAngleDeg) {
+        estimateAngle = *opt.gridAngleDeg;
+    } else {
+        std::size_t coarsest = 0;
+        for (std::size_t k = 1; k < n; ++k)
+            if (sensor::cellSizeFor(footprints[k]) > sensor::cellSizeFor(footprints[coarsest]))
+                coarsest = k;
+        auto whole = planRegion(geo::MultiPolygon{geom->area}, geom->noFly, m.aircraft[coarsest], opt, frame,
+                                homes[coarsest], landing);
+        if (!whole)
+            return whole.error();
+        estimateAngle = whole->gridAngleDeg;
+    }
+    PlannerOptions fixed = opt;
+    fixed.gridAngleDeg = estimateAngle;
+    // Planned time plus the straight way from home and back, so that an aircraft whose subarea lies
+    // far from its home gets less of the area.
+    const auto rawEstimate = [&](std::size_t k, const geo::MultiPolygon& sub) -> Result<double> {
+        const auto& a = m.aircraft[k];
+        auto ap = planRegion(sub, geom->noFly, a, fixed, frame, homes[k], landing);
+        if (!ap)
+            return ap.error();
+        double t = ap->metrics.estimatedTimeS;
+        const auto survey = surveyPart(ap->localWaypoints);
+        if (const auto& h = homes[k]; h && !survey.empty())
+            t += ((survey.front().pos - *h).norm() + (survey.back().pos - (landing ? *landing : *h)).norm()) /
+                 a.cruiseSpeedMps;
+        return t;
+    };
+    fleet::AreaSplitOptions so;
+    so.gridAngleDeg = estimateAngle;
+    so.safetyMarginM = opt.safetyMarginM;
+    std::vector<double> factor(n, 1.0);
+    std::optional<MissionPlan> best;
+    const auto ratio = [](const MissionPlan& p) { return p.idealS > 0 ? p.makespanS / p.idealS : 1.0; };
+    // The estimate misses what comes after the per-aircraft plan: photos dropped because a neighbour
+    // with a larger footprint already sees them, detours, the safe transit. So: split, plan to the
+    // end, measure each aircraft's final time against its estimate, and split again with the
+    // estimates scaled by that factor; at most twice, keeping the plan with the smallest makespan.
+    for (int round = 0; round < 3; ++round) {
+        const fleet::RegionTimeEstimator estimate = [&](int k, const geo::MultiPolygon& sub) -> Result<double> {
+            auto t = rawEstimate(static_cast<std::size_t>(k), sub);
+            if (!t)
+                return t;
+            return *t * factor[static_cast<std::size_t>(k)];
+        };
+        auto split = fleet::splitArea(geom->area, geom->noFly, caps, so, estimate);
+        if (!split)
+            return makeError(split.error().code, "sharing the area between the aircraft: " + split.error().message);
+        auto p = buildPlan(m, *geom, split->subareas, homes, landing);
+        if (!p)
+            return p.error();
+        if (!best || p->makespanS < best->makespanS)
+            best = std::move(*p);
+        else
+            break;
+        if (ratio(*best) <= 1.0 + so.balance.tolerance || round == 2)
+            break;
+        for (std::size_t k = 0; k < n; ++k) {
+            auto e = rawEstimate(k, best->aircraft[k].subarea);
+            if (e && *e > 0 && best->aircraft[k].timeS > 0)
+                factor[k] = best->aircraft[k].timeS / *e;
+        }
+    }
+    return std::move(*best);
+}
+
+namespace {
+
+// Steps 2 to 6 of planMission for given regions (one per aircraft).
+Result<MissionPlan> buildPlan(const Mission& m, const LocalGeometry& geomRef,
+                              const std::vector<geo::MultiPolygon>& regions,
+                              const std::vector<std::optional<geo::Vec2>>& homes,
+                              const std::optional<geo::Vec2>& landing) {
+    const LocalGeometry* geom = &geomRef;
+    const geo::LocalFrame& frame = geom->frame;
+    const std::size_t n = m.aircraft.size();
+    const PlannerOptions& opt = m.options;
+    MissionPlan plan;
+    plan.frame = frame;
+
+    // 2. Each aircraft over its region.
+    for (std::size_t k = 0; k < n; ++k) {
+        if (regions[k].empty())
+            return makeError(ErrorCode::InvalidInput,
+                             aircraftLabel(m.aircraft[k]) + ": got no part of the area (too many aircraft for it)");
+        auto ap = planRegion(regions[k], geom->noFly, m.aircraft[k], opt, frame, homes[k], landing);
+        if (!ap)
+            return ap.error();
+        ap->subarea = regions[k];
+        ap->surveyWaypoints = surveyPart(ap->localWaypoints);
+        plan.aircraft.push_back(std::move(*ap));
+    }
+
+    // 3. No second photo of ground another aircraft already takes.
+    if (n > 1) {
+        std::vector<fleet::AircraftPhotos> photos;
+        for (const auto& a : plan.aircraft)
+            photos.push_back({a.surveyWaypoints, a.footprint.acrossM, a.footprint.alongM, a.footprint.real.longSideM,
+                              a.footprint.real.shortSideM});
+        auto saved = fleet::dropDuplicatePhotos(photos);
+        if (!saved)
+            return saved.error();
+        for (std::size_t k = 0; k < n; ++k) {
+            plan.aircraft[k].surveyWaypoints = std::move(photos[k].waypoints);
+            plan.aircraft[k].photosSaved = saved->photosSaved[k];
+        }
+        plan.photosSaved = saved->totalSaved;
+    }
+
+    // 4. Safety, transit and sorties.
+    const geo::MultiPolygon areaMp{geom->area};
+    const geo::MultiPolygon admissible = geom->noFly.empty() ? areaMp : geo::difference(geom->area, geom->noFly);
+    const route::SafePathFinder finder(route::NoFlyField(geom->noFly, opt.safetyMarginM));
+    std::vector<std::vector<geo::Vec2>> flownPaths;
+    std::vector<plan::PhotoFootprint> photoFootprints;
+    for (std::size_t k = 0; k < n; ++k) {
+        AircraftPlan& ap = plan.aircraft[k];
+        const AircraftConfig& cfg = m.aircraft[k];
+        const std::string who = aircraftLabel(cfg);
+        std::vector<route::LocalWaypoint> survey = ap.surveyWaypoints;
+        route::SafetyReport rep;
+        if (opt.keepInsideArea) {
+            const route::PhotoSides sides{ap.footprint.acrossM, ap.footprint.alongM, ap.footprint.real.longSideM,
+                                          ap.footprint.real.shortSideM};
+            auto inside = route::keepInsideArea(survey, areaMp, admissible, sides, opt.insideMarginM, finder, &rep);
+            if (!inside)
+                return makeError(inside.error().code, who + ": " + inside.error().message);
+            survey = std::move(*inside);
+        }
+        auto safe = route::enforceNoFly(survey, finder, &rep);
+        if (!safe)
+            return makeError(safe.error().code, who + ": " + safe.error().message);
+        survey = std::move(*safe);
+        for (const auto& w : rep.warnings)
+            plan.warnings.push_back(who + ": " + w);
+        ap.detours = rep.detours;
+        ap.waypointsMoved = rep.waypointsMoved;
+        ap.keptInside = rep.keptInside;
+        ap.surveyWaypoints = survey;
+
+        const route::FlightModel model{cfg.cruiseSpeedMps, cfg.turnRateDegS, 0.0};
+        std::vector<route::LocalWaypoint> flown;
+        std::vector<geo::Vec2> path; // home, every waypoint, landing
+        const auto& home = homes[k];
+        if (home) {
+            auto sp = route::splitIntoSorties(survey, *home, finder, model,
+                                              route::SortieOptions{cfg.enduranceMin, opt.batteryReserve}, cfg.name);
+            if (!sp)
+                return makeError(sp.error().code, who + ": " + sp.error().message);
+            if (sp->sorties.size() == 1 && landing && (*landing - *home).norm() > 1e-6) {
+                // One flight landing elsewhere: out from home, back to the landing point.
+                auto t = route::withTransit(survey, *home, finder, landing);
+                if (!t)
+                    return makeError(t.error().code, who + ": " + t.error().message);
+                std::vector<geo::Vec2> poly{*home};
+                for (const auto& w : *t)
+                    poly.push_back(w.pos);
+                poly.push_back(*landing);
+                SortieSummary s;
+                s.firstWaypoint = 0;
+                s.lastWaypoint = static_cast<int>(t->size()) - 1;
+                s.lengthM = polylineLength(poly);
+                s.timeS = route::flightTimeS(poly, model);
+                flown = std::move(*t);
+                ap.sorties.push_back(s);
+            } else {
+                for (const auto& s : sp->sorties) {
+                    SortieSummary sum;
+                    sum.firstWaypoint = static_cast<int>(flown.size());
+                    flown.insert(flown.end(), s.waypoints.begin(), s.waypoints.end());
+                    sum.lastWaypoint = static_cast<int>(flown.size()) - 1;
+                    sum.lengthM = s.lengthM;
+                    sum.timeS = s.timeS;
+                    ap.sorties.push_back(sum);
+                }
+                if (sp->sorties.size() > 1)
+                    plan.warnings.push_back(who + ": the flight needs " + std::to_string(sp->sorties.size()) +
+                                            " batteries (sorties returning home), " + metres(sp->totalTimeS / 60.0, 1) +
+                                            " min in all for " + metres(sp->budgetS / 60.0, 1) + " min per battery");
+            }
+            path.push_back(*home);
+            for (const auto& w : flown)
+                path.push_back(w.pos);
+            path.push_back(ap.sorties.size() == 1 && landing ? *landing : *home);
+        } else {
+            // No home: the survey alone, one flight; no transit to check.
+            flown = survey;
+            for (const auto& w : flown)
+                path.push_back(w.pos);
+            SortieSummary s;
+            s.lastWaypoint = static_cast<int>(flown.size()) - 1;
+            s.lengthM = polylineLength(path);
+            s.timeS = route::flightTimeS(path, model);
+            ap.sorties.push_back(s);
+            plan.warnings.push_back(who + ": no home point, so no transit and no endurance check");
+        }
+        ap.localWaypoints = flown;
+        ap.timeS = 0.0;
+        ap.flightDistanceM = 0.0;
+        for (auto& s : ap.sorties) {
+            ap.timeS += s.timeS;
+            ap.flightDistanceM += s.lengthM;
+            for (int i = s.firstWaypoint; i <= s.lastWaypoint; ++i)
+                s.photos += flown[static_cast<std::size_t>(i)].kind == route::WaypointKind::Photo;
+        }
+        ap.route.waypoints.clear();
+        for (const auto& w : flown) {
+            ap.route.waypoints.push_back({frame.toGeo(w.pos), ap.altitudeM, w.headingDeg, w.kind});
+            if (w.kind == route::WaypointKind::Photo)
+                photoFootprints.push_back(
+                    {w.pos, w.headingDeg, ap.footprint.real.longSideM, ap.footprint.real.shortSideM});
+        }
+        ap.sortieRoutes.clear();
+        for (const auto& s : ap.sorties) {
+            route::Route r = ap.route;
+            r.waypoints.assign(ap.route.waypoints.begin() + s.firstWaypoint,
+                               ap.route.waypoints.begin() + s.lastWaypoint + 1);
+            ap.sortieRoutes.push_back(std::move(r));
+        }
+        ap.metrics.photos = static_cast<int>(std::count_if(flown.begin(), flown.end(), [](const auto& w) {
+            return w.kind == route::WaypointKind::Photo;
+        }));
+        flownPaths.push_back(std::move(path));
+    }
+
+    // 5. Altitude separation between aircraft in the air together.
+    if (n > 1) {
+        std::vector<fleet::AltitudeSlot> slots;
+        for (std::size_t k = 0; k < n; ++k)
+            slots.push_back({m.aircraft[k].name, plan.aircraft[k].altitudeM, m.aircraft[k].maxAltitudeM, 0.0,
+                             plan.aircraft[k].timeS});
+        const fleet::AltitudeCheck alt = fleet::checkAltitudeSeparation(slots, opt.altitudeSeparationM);
+        plan.altitudeConflicts = static_cast<int>(alt.conflicts.size());
+        for (const auto& w : alt.warnings)
+            plan.warnings.push_back(w);
+    }
+
+    // 6. The independent check: real footprints of every photo of every aircraft, margin breaches.
+    auto cov = plan::checkCoverage(admissible, photoFootprints);
+    if (!cov)
+        return makeError(cov.error().code, "checking the coverage: " + cov.error().message);
+    plan.coverageRatio = cov->coveredFraction;
+    plan.uncoveredAreaM2 = cov->uncoveredAreaM2;
+    for (const auto& p : cov->patches)
+        plan.uncovered.push_back({p.shape, p.areaM2});
+    if (cov->coveredFraction < 0.995)
+        plan.warnings.push_back("the photos leave " + metres(cov->uncoveredAreaM2) + " m2 of the area (" +
+                                metres(100.0 * (1.0 - cov->coveredFraction), 1) + " %) unseen, in " +
+                                std::to_string(cov->patchCount) + " patch(es)");
+    plan.noFlyViolations = plan::countNoFlyViolations(flownPaths, geom->noFly, opt.safetyMarginM).total();
+    if (plan.noFlyViolations > 0)
+        plan.warnings.push_back(std::to_string(plan.noFlyViolations) +
+                                " waypoint(s) or leg(s) come closer to a no-fly zone than the safety margin");
+
     PlanTotals& t = plan.totals;
+    double sumTime = 0.0;
     for (const auto& a : plan.aircraft) {
         ++t.aircraft;
         t.cells += a.metrics.cells;
@@ -195,13 +509,18 @@ Result<MissionPlan> planMission(const Mission& m) {
         t.revisits += a.metrics.revisits;
         t.estimatedTimeS = std::max(t.estimatedTimeS, a.metrics.estimatedTimeS);
         t.planningMs += a.metrics.planningMs;
+        plan.makespanS = std::max(plan.makespanS, a.timeS);
+        sumTime += a.timeS;
     }
+    plan.idealS = sumTime / static_cast<double>(n);
     if (t.jumps > 0)
         plan.warnings.push_back(std::to_string(t.jumps) +
                                 " jump(s) between parts of the area that no safe move joins: check the route's "
                                 "transits there");
     return plan;
 }
+
+} // namespace
 
 namespace {
 
@@ -227,6 +546,31 @@ void addMetrics(CPLJSONObject& o, const plan::PathMetrics& m) {
     o.Add("planning_ms", m.planningMs);
     o.Add("turn_lower_bound", m.turnLowerBound);
     o.Add("turn_ratio", m.turnRatio);
+}
+
+CPLJSONArray ringCoords(const geo::Ring& r, const geo::LocalFrame& frame) {
+    CPLJSONArray a;
+    for (const auto& v : r)
+        a.Add(position(frame.toGeo(v)));
+    if (!r.empty())
+        a.Add(position(frame.toGeo(r.front()))); // GeoJSON rings are closed
+    return a;
+}
+
+// A local MultiPolygon as a WGS84 GeoJSON MultiPolygon geometry.
+CPLJSONObject multiPolygonGeometry(const geo::MultiPolygon& mp, const geo::LocalFrame& frame) {
+    CPLJSONObject g;
+    g.Add("type", "MultiPolygon");
+    CPLJSONArray polys;
+    for (const auto& poly : mp) {
+        CPLJSONArray rings;
+        rings.Add(ringCoords(poly.outer, frame));
+        for (const auto& h : poly.holes)
+            rings.Add(ringCoords(h, frame));
+        polys.Add(rings);
+    }
+    g.Add("coordinates", polys);
+    return g;
 }
 
 } // namespace
@@ -265,12 +609,39 @@ std::string planToGeoJson(const MissionPlan& plan) {
             p.Add("aircraft", a.aircraft);
             p.Add("seq", ++seq);
             p.Add("alt_m", w.altitudeM);
+            p.Add("kind", "photo");
             p.Add("heading_deg", w.headingDeg);
+            p.Add("footprint_across_m", a.footprint.real.longSideM);
+            p.Add("footprint_along_m", a.footprint.real.shortSideM);
             f.Add("properties", p);
             CPLJSONObject g;
             g.Add("type", "Point");
             g.Add("coordinates", position(w.position));
             f.Add("geometry", g);
+            features.Add(f);
+        }
+    }
+    if (plan.frame) {
+        for (const auto& a : plan.aircraft) {
+            if (a.subarea.empty())
+                continue;
+            CPLJSONObject f;
+            f.Add("type", "Feature");
+            CPLJSONObject p;
+            p.Add("aircraft", a.aircraft);
+            p.Add("kind", "subarea");
+            f.Add("properties", p);
+            f.Add("geometry", multiPolygonGeometry(a.subarea, *plan.frame));
+            features.Add(f);
+        }
+        for (const auto& u : plan.uncovered) {
+            CPLJSONObject f;
+            f.Add("type", "Feature");
+            CPLJSONObject p;
+            p.Add("kind", "uncovered");
+            p.Add("area_m2", u.areaM2);
+            f.Add("properties", p);
+            f.Add("geometry", multiPolygonGeometry(u.shape, *plan.frame));
             features.Add(f);
         }
     }
@@ -291,6 +662,26 @@ std::string planMetricsJson(const MissionPlan& plan, const std::string& plannerN
         o.Add("grid_angle_deg", a.gridAngleDeg);
         o.Add("angles_tried", a.anglesTried);
         addMetrics(o, a.metrics);
+        o.Add("time_s", a.timeS);
+        o.Add("flight_distance_m", a.flightDistanceM);
+        o.Add("sorties", static_cast<int>(a.sorties.size()));
+        CPLJSONArray sorties;
+        for (const auto& s : a.sorties) {
+            CPLJSONObject so;
+            so.Add("first_waypoint", s.firstWaypoint);
+            so.Add("last_waypoint", s.lastWaypoint);
+            so.Add("photos", s.photos);
+            so.Add("length_m", s.lengthM);
+            so.Add("time_s", s.timeS);
+            sorties.Add(so);
+        }
+        o.Add("sortie_list", sorties);
+        o.Add("photos_saved", a.photosSaved);
+        o.Add("detours", a.detours);
+        o.Add("waypoints_moved", a.waypointsMoved);
+        o.Add("kept_inside", a.keptInside);
+        o.Add("footprint_across_m", a.footprint.real.longSideM);
+        o.Add("footprint_along_m", a.footprint.real.shortSideM);
         list.Add(o);
     }
     root.Add("aircraft", list);
@@ -308,7 +699,23 @@ std::string planMetricsJson(const MissionPlan& plan, const std::string& plannerN
     total.Add("revisits", t.revisits);
     total.Add("estimated_time_s", t.estimatedTimeS);
     total.Add("planning_ms", t.planningMs);
+    total.Add("makespan_s", plan.makespanS);
+    total.Add("ideal_s", plan.idealS);
+    total.Add("makespan_ratio", plan.idealS > 0 ? plan.makespanS / plan.idealS : 1.0);
+    total.Add("coverage_ratio", plan.coverageRatio);
+    total.Add("uncovered_m2", plan.uncoveredAreaM2);
+    total.Add("nofly_violations", plan.noFlyViolations);
+    total.Add("photos_saved", plan.photosSaved);
+    total.Add("altitude_conflicts", plan.altitudeConflicts);
+    int sortieCount = 0;
+    for (const auto& a : plan.aircraft)
+        sortieCount += static_cast<int>(a.sorties.size());
+    total.Add("sorties", sortieCount);
     root.Add("total", total);
+    // Also at the top level, where the plan-wide checks are looked for first.
+    root.Add("coverage_ratio", plan.coverageRatio);
+    root.Add("nofly_violations", plan.noFlyViolations);
+    root.Add("makespan_s", plan.makespanS);
     CPLJSONArray warnings;
     for (const auto& w : plan.warnings)
         warnings.Add(w);

@@ -17,6 +17,21 @@
 
 namespace pf::mission {
 
+// One battery's flight: a run of AircraftPlan::route.waypoints from home back to home.
+struct SortieSummary {
+    int firstWaypoint = 0; // index into route.waypoints (a Transit waypoint out, or the first survey one)
+    int lastWaypoint = 0;  // inclusive
+    int photos = 0;
+    double lengthM = 0.0;  // home to home
+    double timeS = 0.0;    // home to home
+};
+
+// A part of the admissible area that no photo sees.
+struct UncoveredArea {
+    geo::MultiPolygon shape; // local metres
+    double areaM2 = 0.0;
+};
+
 // What one aircraft flies over its region.
 struct AircraftPlan {
     std::string aircraft;
@@ -30,6 +45,18 @@ struct AircraftPlan {
     std::vector<route::LocalWaypoint> localWaypoints; // photo, turn and transit waypoints, local metres
     route::Route route;           // the same in WGS84, with the home point and the cruise speed
     plan::PathMetrics metrics;    // photos included; planning time covers the angle search
+
+    // Filled by planMission (planRegion leaves them empty or zero):
+    geo::MultiPolygon subarea;    // the part of the area assigned to this aircraft, local metres
+    std::vector<route::LocalWaypoint> surveyWaypoints; // first to last photo after dedup and safety
+    std::vector<SortieSummary> sorties; // one per battery; route.waypoints holds them in order
+    std::vector<route::Route> sortieRoutes; // each sortie as a flight of its own (home to home)
+    double timeS = 0.0;           // whole flight, home to home over every sortie, transit included
+    double flightDistanceM = 0.0; // the same as a distance
+    int photosSaved = 0;          // photos left out because another aircraft already takes them
+    int detours = 0;              // legs replaced by a detour around a no-fly margin
+    int waypointsMoved = 0;       // waypoints pushed out of a no-fly margin
+    int keptInside = 0;           // waypoints moved inside the area (options.keepInsideArea)
 };
 
 struct PlanTotals {
@@ -52,6 +79,16 @@ struct MissionPlan {
     std::vector<AircraftPlan> aircraft;
     PlanTotals totals;
     std::vector<std::string> warnings; // things the user must know (e.g. aircraft left unplanned)
+
+    // Filled by planMission over all aircraft:
+    double coverageRatio = 0.0;    // admissible area seen by the REAL footprints of all photos
+    double uncoveredAreaM2 = 0.0;
+    std::vector<UncoveredArea> uncovered; // the largest uncovered patches, largest first
+    int noFlyViolations = 0;       // waypoints and legs (home to home) closer to a zone than the margin
+    double makespanS = 0.0;        // the longest aircraft's timeS: they fly at the same time
+    double idealS = 0.0;           // sum of the aircraft's timeS / number of aircraft
+    int photosSaved = 0;           // photos left out across aircraft
+    int altitudeConflicts = 0;     // pairs in the air together closer than altitudeSeparationM
 };
 
 // Plans ONE aircraft over `region` (local metres in `frame`, e.g. the subarea assigned to it), avoiding
@@ -69,14 +106,27 @@ Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vect
 std::vector<double> candidateAngles(const geo::MultiPolygon& region);
 
 // The plan as a GeoJSON FeatureCollection in WGS84: per aircraft a LineString of the flown path (home,
-// every waypoint, landing) with the properties aircraft, kind "path", and one Point per photo with
-// aircraft, seq (1-based, per aircraft), alt_m and heading_deg (clockwise from north).
+// every waypoint, landing) with the properties aircraft, kind "path", one Point per photo with
+// aircraft, kind "photo", seq (1-based, per aircraft), alt_m, heading_deg (clockwise from north),
+// footprint_across_m and footprint_along_m (the REAL ground footprint across and along the track), its
+// subarea (Polygon or MultiPolygon, kind "subarea", aircraft) and every uncovered patch listed in the
+// plan (kind "uncovered", area_m2).
 std::string planToGeoJson(const MissionPlan& plan);
-// The metrics as JSON: {"aircraft": [{"name", ...metrics}], "total": {...}, "warnings": [...]}.
+// The metrics as JSON: {"planner", "aircraft": [{"name", ...metrics, time_s, sorties, photos_saved}],
+// "total": {..., coverage_ratio, nofly_violations, makespan_s}, "coverage_ratio", "nofly_violations",
+// "warnings": [...]}.
 std::string planMetricsJson(const MissionPlan& plan, const std::string& plannerName);
 
-// Plans the mission. With several aircraft the area must be partitioned between them first; until that
-// stage is available only the first aircraft is planned (over the whole area) and a warning says so.
+// Plans the mission end to end. One aircraft flies the whole admissible area; several share it through
+// fleet::splitArea, balanced on the flight times planRegion estimates at a fixed grid angle (the
+// mission's, or the one the search picks for the fastest aircraft over the whole area). Then per
+// aircraft: planRegion over its subarea (grid angle: the mission's, or searched per subarea), photos
+// another aircraft already takes are dropped, waypoints are kept inside the area if asked, out of every
+// no-fly margin (detours), the flight gets its safe transit from and to its home (the aircraft's, else
+// the mission's) and is cut into sorties that fit its endurance less options.batteryReserve. Finally
+// altitudes are checked for separation (a warning per pair) and an independent check rasterises the
+// real footprints of every photo (coverage ratio, uncovered patches) and counts margin breaches.
+// Errors name the aircraft and the problem.
 Result<MissionPlan> planMission(const Mission& m);
 
 } // namespace pf::mission
