@@ -1,6 +1,7 @@
 // Planning from the GUI: background plans, the plan layer, waypoint editing with undo, export and
 // re-import, replans that keep hand edits, the planner comparison and cancelling.
 #include "core/io/waypoint_formats.h"
+#include "ui/commands/edit_aircraft_command.h"
 #include "ui/commands/move_vertex_command.h"
 #include "ui/commands/move_waypoint_command.h"
 #include "ui/map/plan_layer.h"
@@ -83,6 +84,10 @@ TEST(Planning, DemoMissionPlannedFromTheGuiShowsEveryPathInTheScene) {
     EXPECT_EQ(w->waypointPanel()->model()->rowCount(), int(routeOf(w.get(), 0).waypoints.size()));
     // Planned routes keep clear of the no-fly zones: nothing is flagged.
     EXPECT_TRUE(w->planLayer()->routeProblems().isEmpty()) << w->planLayer()->routeProblems().join('\n').toStdString();
+    // Each layer hides with its View entry.
+    w->planLayer()->setVisible(PlanLayer::Part::Paths, false);
+    for (auto* item : items) EXPECT_FALSE(item->isVisible());
+    w->planLayer()->setVisible(PlanLayer::Part::Paths, true);
     // Footprints are off by default and drawn when asked for, one per photo.
     w->planLayer()->setVisible(PlanLayer::Part::Footprints, true);
     EXPECT_EQ(w->planLayer()->footprintCount(), plan->totals.photos);
@@ -399,4 +404,86 @@ TEST(Planning, ScreenshotOfThePlannedDemoShowsThePaths) {
             }
         EXPECT_GT(n, 300) << "route " << a;
     }
+}
+
+TEST(Planning, ShortEnduranceShowsSortiesAndTheStatisticsCountThem) {
+    auto w = test::makeWindow();
+    w->planController()->setAutoPlan(false);
+    QString error;
+    ASSERT_TRUE(w->openDemoMission(&error));
+    auto* doc = w->document();
+    for (int i = 0; i < int(doc->mission().aircraft.size()); ++i) {
+        auto a = doc->mission().aircraft[std::size_t(i)];
+        a.enduranceMin = 3.0;
+        doc->undoStack()->push(new EditAircraftCommand(doc, i, a, QStringLiteral("endurance")));
+    }
+    w->planNow();
+    ASSERT_TRUE(w->planController()->waitForIdle(120000));
+    ASSERT_TRUE(w->planController()->lastError().isEmpty()) << w->planController()->lastError().toStdString();
+    const auto& plan = *w->planController()->plan();
+    auto* stats = w->statisticsPanel()->statistics();
+    int totalSorties = 0;
+    for (std::size_t a = 0; a < plan.aircraft.size(); ++a) {
+        const auto& ap = plan.aircraft[a];
+        EXPECT_GT(ap.sorties.size(), 1u) << ap.aircraft;
+        totalSorties += int(ap.sorties.size());
+        // A badge per sortie on the map, at the sortie's first waypoint.
+        const auto& starts = w->planLayer()->routeItems()[a]->data().sortieStarts;
+        ASSERT_EQ(starts.size(), int(ap.sorties.size()));
+        for (std::size_t s = 0; s < ap.sorties.size(); ++s) EXPECT_EQ(starts[int(s)], ap.sorties[s].firstWaypoint);
+        EXPECT_EQ(stats->item(int(a), 5)->text(), QString::number(ap.sorties.size()));
+    }
+    EXPECT_EQ(stats->item(int(plan.aircraft.size()), 5)->text(), QString::number(totalSorties));
+    // Uncovered patches of the coverage check: one item each, hidden with their View entry.
+    EXPECT_EQ(w->planLayer()->uncoveredPatchCount(), int(plan.uncovered.size()));
+}
+
+TEST(Planning, DoubleClickOnALegInsertsAWaypointAndDeleteRemovesIt) {
+    auto w = plannedDemo();
+    w->setTool(ToolId::Waypoints);
+    const route::Route before = routeOf(w.get(), 0);
+    // The middle of a long leg between two waypoints.
+    std::size_t leg = 0;
+    double longest = 0;
+    for (std::size_t i = 0; i + 1 < before.waypoints.size(); ++i) {
+        const double d = test::metresBetween(before.waypoints[i].position, before.waypoints[i + 1].position);
+        if (d > longest) {
+            longest = d;
+            leg = i;
+        }
+    }
+    ASSERT_GT(longest, 10.0);
+    const auto& a = before.waypoints[leg].position;
+    const auto& b = before.waypoints[leg + 1].position;
+    const geo::LonLat mid{(a.lon + b.lon) / 2, (a.lat + b.lat) / 2};
+    w->mapView()->centreOn(mid);
+    QApplication::processEvents();
+    QTest::mouseDClick(w->mapView()->viewport(), Qt::LeftButton, Qt::NoModifier, test::viewPos(w->mapView(), mid));
+    const auto& after = routeOf(w.get(), 0).waypoints;
+    ASSERT_EQ(after.size(), before.waypoints.size() + 1);
+    EXPECT_LT(test::metresBetween(after[leg + 1].position, mid), 1.0);
+    EXPECT_EQ(after[leg + 1].kind, route::WaypointKind::Turn);
+    EXPECT_EQ(w->planLayer()->selectedWaypoints(), QList<int>{int(leg) + 1});
+    // Delete on the map removes the selected waypoint again.
+    QTest::keyClick(w->mapView(), Qt::Key_Delete);
+    EXPECT_EQ(routeOf(w.get(), 0).waypoints, before.waypoints);
+}
+
+TEST(Planning, ClickingAProblemSelectsTheWaypointItNames) {
+    auto w = plannedDemo();
+    auto* doc = w->document();
+    const int k = middlePhoto(routeOf(w.get(), 0));
+    doc->undoStack()->push(new MoveWaypointCommand(doc, 0, k, geo::LonLat{8.32945, 49.0120}));
+    QListWidgetItem* found = nullptr;
+    for (int i = 0; i < w->problemsList()->count(); ++i)
+        if (w->problemsList()->item(i)->text().contains(QStringLiteral("waypoint %1: inside").arg(k + 1)))
+            found = w->problemsList()->item(i);
+    ASSERT_NE(found, nullptr);
+    w->problemsList()->scrollToItem(found);
+    QTest::mouseClick(w->problemsList()->viewport(), Qt::LeftButton, Qt::NoModifier,
+                      w->problemsList()->visualItemRect(found).center());
+    EXPECT_EQ(w->planLayer()->selectedRoute(), 0);
+    EXPECT_EQ(w->planLayer()->selectedWaypoints(), QList<int>{k});
+    // The table follows the selection.
+    EXPECT_EQ(w->waypointPanel()->selectedWaypoints(), QList<int>{k});
 }
