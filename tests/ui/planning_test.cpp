@@ -171,6 +171,13 @@ TEST(Planning, TableEditsReverseInsertAndDeleteAreUndoable) {
     w->waypointPanel()->deleteSelected();
     EXPECT_EQ(routeOf(w.get(), 0).waypoints.size(), before.waypoints.size());
     EXPECT_EQ(model->rowCount(), int(before.waypoints.size()));
+    // The statistics measure the edited route: one photo fewer when the deleted waypoint took one.
+    const int planned = w->planController()->plan()->aircraft[0].metrics.photos;
+    int photos = 0;
+    for (const auto& wp : routeOf(w.get(), 0).waypoints) photos += wp.kind == route::WaypointKind::Photo ? 1 : 0;
+    EXPECT_LT(photos, planned);
+    EXPECT_EQ(w->statisticsPanel()->statistics()->item(0, 1)->text().toInt(), photos);
+    EXPECT_TRUE(w->statisticsPanel()->statistics()->item(0, 0)->text().endsWith(QStringLiteral("(edited)")));
 
     while (stack->index() > start) stack->undo();
     EXPECT_EQ(routeOf(w.get(), 0).waypoints, before.waypoints);

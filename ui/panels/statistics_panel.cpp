@@ -1,5 +1,6 @@
 #include "ui/panels/statistics_panel.h"
 
+#include "core/geo/local_frame.h"
 #include "ui/mission_document.h"
 #include "ui/planning/plan_controller.h"
 
@@ -11,6 +12,7 @@
 #include <QVBoxLayout>
 
 #include <cmath>
+#include <optional>
 
 namespace pf::ui {
 
@@ -86,6 +88,8 @@ void StatisticsPanel::refreshStatistics() {
     if (!plan) return;
     const auto& mission = m_doc->mission();
     int batteriesTotal = 0;
+    int photosDelta = 0;
+    double distanceDelta = 0.0;
     for (const auto& ap : plan->aircraft) {
         const int r = m_stats->rowCount();
         m_stats->insertRow(r);
@@ -103,17 +107,44 @@ void StatisticsPanel::refreshStatistics() {
         }
         batteriesTotal += batteries;
         bool edited = false;
+        const route::Route* flown = nullptr;
         for (const auto& pr : m_doc->routes())
-            if (pr.route.aircraft == ap.aircraft) edited = pr.edited;
+            if (pr.route.aircraft == ap.aircraft) {
+                edited = pr.edited;
+                flown = &pr.route;
+            }
+        int photos = ap.metrics.photos;
+        double shownDistanceM = distanceM, shownTimeS = timeS;
+        if (edited && flown && plan->frame) {
+            // An edited route: photos and distance are measured on it; the time changes with the
+            // distance at cruise speed (the planned turn time is kept).
+            photos = 0;
+            double length = 0;
+            std::optional<geo::Vec2> prev;
+            if (flown->home) prev = plan->frame->toLocal(*flown->home);
+            for (const auto& w : flown->waypoints) {
+                photos += w.kind == route::WaypointKind::Photo ? 1 : 0;
+                const geo::Vec2 p = plan->frame->toLocal(w.position);
+                if (prev) length += (p - *prev).norm();
+                prev = p;
+            }
+            if (flown->home && prev) length += (plan->frame->toLocal(*flown->home) - *prev).norm();
+            const double speed = flown->cruiseSpeedMps > 0 ? flown->cruiseSpeedMps : 10.0;
+            shownTimeS = std::max(0.0, timeS + (length - distanceM) / speed);
+            shownDistanceM = length;
+            photosDelta += photos - ap.metrics.photos;
+            distanceDelta += length - distanceM;
+        }
         auto* name = cell(QString::fromStdString(ap.aircraft) + (edited ? tr(" (edited)") : QString()),
                           Qt::AlignLeft | Qt::AlignVCenter);
         QPixmap swatch(12, 12);
         swatch.fill(colour);
         name->setIcon(QIcon(swatch));
         m_stats->setItem(r, 0, name);
-        m_stats->setItem(r, 1, cell(QString::number(ap.metrics.photos)));
-        m_stats->setItem(r, 2, cell(QString::number(distanceM / 1000.0, 'f', 2)));
-        m_stats->setItem(r, 3, cell(minutes(timeS)));
+        m_stats->setItem(r, 1, cell(QString::number(photos)));
+        m_stats->setItem(r, 2, cell(QString::number(shownDistanceM / 1000.0, 'f', 2)));
+        m_stats->setItem(r, 3, cell(minutes(shownTimeS)));
+        if (edited) m_stats->item(r, 0)->setToolTip(tr("Photos, distance and time measured on the edited route"));
         m_stats->setItem(r, 4, cell(QString::number(ap.metrics.turns)));
         m_stats->setItem(r, 5, cell(QString::number(batteries)));
         const double cov = ap.metrics.visitable > 0 ? 100.0 * ap.metrics.cells / ap.metrics.visitable : 0.0;
@@ -133,8 +164,8 @@ void StatisticsPanel::refreshStatistics() {
     for (const auto& ap : plan->aircraft) distance += ap.flightDistanceM > 0 ? ap.flightDistanceM : ap.metrics.pathLengthM;
     const double makespan = plan->makespanS > 0 ? plan->makespanS : t.estimatedTimeS;
     const QStringList values = {tr("Total"),
-                                QString::number(t.photos),
-                                QString::number(distance / 1000.0, 'f', 2),
+                                QString::number(t.photos + photosDelta),
+                                QString::number((distance + distanceDelta) / 1000.0, 'f', 2),
                                 minutes(makespan),
                                 QString::number(t.turns),
                                 QString::number(batteriesTotal),
