@@ -201,7 +201,10 @@ TEST(KillRecovery, NextStartOffersTheAutosavedMissionWithTheLastEdit) {
             // Recovered: the leftover is gone and the application autosaves the recovered mission
             // under its own process id.
             const QString own = box.autosaveDir + QStringLiteral("/mission-%1.json").arg(app.processId());
-            EXPECT_TRUE(waitFor([&] { return QFile::exists(own) && !QFile::exists(leftover); }, 30000))
+            // The copy is written first, then its .origin (the file it belongs to): wait for both.
+            EXPECT_TRUE(waitFor([&] {
+                return QFile::exists(own) && QFile::exists(own + QStringLiteral(".origin")) && !QFile::exists(leftover);
+            }, 30000))
                 << "photoflight did not recover the autosave; folder: "
                 << autosaves(box.autosaveDir).join(QStringLiteral(", ")).toStdString();
             auto recovered = io::readMissionFile(own.toStdString());

@@ -15,8 +15,8 @@
 
 #include <QComboBox>
 #include <QDir>
-#include <QFileInfo>
 #include <QDoubleSpinBox>
+#include <QFileInfo>
 #include <QGraphicsScene>
 #include <QListWidget>
 #include <QTableWidget>
@@ -40,21 +40,26 @@ std::unique_ptr<MainWindow> plannedDemo() {
     EXPECT_TRUE(w->openDemoMission(&error)) << error.toStdString();
     w->planNow();
     EXPECT_TRUE(w->planController()->waitForIdle(120000));
-    EXPECT_TRUE(w->planController()->lastError().isEmpty()) << w->planController()->lastError().toStdString();
+    EXPECT_TRUE(w->planController()->lastError().isEmpty())
+        << w->planController()->lastError().toStdString();
     return w;
 }
 
-const route::Route& routeOf(MainWindow* w, int i) { return w->document()->routes().at(std::size_t(i)).route; }
+const route::Route& routeOf(MainWindow* w, int i) {
+    return w->document()->routes().at(std::size_t(i)).route;
+}
 
 // A photo waypoint in the middle of route 0.
 int middlePhoto(const route::Route& r) {
     for (std::size_t i = r.waypoints.size() / 2; i < r.waypoints.size(); ++i)
-        if (r.waypoints[i].kind == route::WaypointKind::Photo) return int(i);
+        if (r.waypoints[i].kind == route::WaypointKind::Photo)
+            return int(i);
     return 0;
 }
 
 geo::LonLat offset(const geo::LonLat& p, double eastM, double northM) {
-    return {p.lon + eastM / (111319.49 * std::cos(p.lat * 3.14159265358979 / 180.0)), p.lat + northM / 111319.49};
+    return {p.lon + eastM / (111319.49 * std::cos(p.lat * 3.14159265358979 / 180.0)),
+            p.lat + northM / 111319.49};
 }
 
 } // namespace
@@ -83,10 +88,12 @@ TEST(Planning, DemoMissionPlannedFromTheGuiShowsEveryPathInTheScene) {
     // The waypoint table shows the first route.
     EXPECT_EQ(w->waypointPanel()->model()->rowCount(), int(routeOf(w.get(), 0).waypoints.size()));
     // Planned routes keep clear of the no-fly zones: nothing is flagged.
-    EXPECT_TRUE(w->planLayer()->routeProblems().isEmpty()) << w->planLayer()->routeProblems().join('\n').toStdString();
+    EXPECT_TRUE(w->planLayer()->routeProblems().isEmpty())
+        << w->planLayer()->routeProblems().join('\n').toStdString();
     // Each layer hides with its View entry.
     w->planLayer()->setVisible(PlanLayer::Part::Paths, false);
-    for (auto* item : items) EXPECT_FALSE(item->isVisible());
+    for (auto* item : items)
+        EXPECT_FALSE(item->isVisible());
     w->planLayer()->setVisible(PlanLayer::Part::Paths, true);
     // Footprints are off by default and drawn when asked for, one per photo.
     w->planLayer()->setVisible(PlanLayer::Part::Footprints, true);
@@ -112,7 +119,8 @@ TEST(Planning, DragAWaypointOnTheMapAndUndo) {
             EXPECT_EQ(after.route.waypoints[i], before.waypoints[i]) << "waypoint " << i;
         }
     }
-    EXPECT_EQ(w->planLayer()->routeItems()[0]->data().points[k], toScene(after.route.waypoints[std::size_t(k)].position));
+    EXPECT_EQ(w->planLayer()->routeItems()[0]->data().points[k],
+              toScene(after.route.waypoints[std::size_t(k)].position));
     w->document()->undoStack()->undo();
     EXPECT_EQ(routeOf(w.get(), 0).waypoints, before.waypoints);
     EXPECT_FALSE(w->document()->routes().at(0).edited);
@@ -124,7 +132,8 @@ TEST(Planning, SetAltitudeForAllWaypointsAndUndo) {
     auto w = plannedDemo();
     const route::Route before = routeOf(w.get(), 0);
     w->waypointPanel()->setAltitude(55.0, /*all=*/true);
-    for (const auto& wp : routeOf(w.get(), 0).waypoints) EXPECT_DOUBLE_EQ(wp.altitudeM, 55.0);
+    for (const auto& wp : routeOf(w.get(), 0).waypoints)
+        EXPECT_DOUBLE_EQ(wp.altitudeM, 55.0);
     EXPECT_TRUE(w->document()->routes().at(0).edited);
     w->document()->undoStack()->undo();
     EXPECT_EQ(routeOf(w.get(), 0).waypoints, before.waypoints);
@@ -136,7 +145,8 @@ TEST(Planning, SetAltitudeForAllWaypointsAndUndo) {
     EXPECT_EQ(w->planLayer()->selectedWaypoints(), QList<int>{2}); // the map follows the table
     w->waypointPanel()->setAltitude(61.5, /*all=*/false);
     for (std::size_t i = 0; i < before.waypoints.size(); ++i)
-        EXPECT_DOUBLE_EQ(routeOf(w.get(), 0).waypoints[i].altitudeM, i == 2 ? 61.5 : before.waypoints[i].altitudeM);
+        EXPECT_DOUBLE_EQ(routeOf(w.get(), 0).waypoints[i].altitudeM,
+                         i == 2 ? 61.5 : before.waypoints[i].altitudeM);
 }
 
 TEST(Planning, TableEditsReverseInsertAndDeleteAreUndoable) {
@@ -147,21 +157,24 @@ TEST(Planning, TableEditsReverseInsertAndDeleteAreUndoable) {
     const int start = stack->index();
     EXPECT_TRUE(model->setData(model->index(1, WaypointTableModel::Heading), 370.0));
     EXPECT_DOUBLE_EQ(routeOf(w.get(), 0).waypoints[1].headingDeg, 10.0);
-    EXPECT_TRUE(model->setData(model->index(1, WaypointTableModel::Action), QStringLiteral("transit")));
+    EXPECT_TRUE(
+        model->setData(model->index(1, WaypointTableModel::Action), QStringLiteral("transit")));
     EXPECT_EQ(routeOf(w.get(), 0).waypoints[1].kind, route::WaypointKind::Transit);
     EXPECT_TRUE(model->setData(model->index(1, WaypointTableModel::Latitude), 49.0111));
     EXPECT_DOUBLE_EQ(routeOf(w.get(), 0).waypoints[1].position.lat, 49.0111);
     // Bad values are refused without an undo step.
     EXPECT_FALSE(model->setData(model->index(1, WaypointTableModel::Altitude), -3.0));
     EXPECT_FALSE(model->setData(model->index(1, WaypointTableModel::Latitude), 95.0));
-    EXPECT_FALSE(model->setData(model->index(1, WaypointTableModel::Action), QStringLiteral("loiter")));
+    EXPECT_FALSE(
+        model->setData(model->index(1, WaypointTableModel::Action), QStringLiteral("loiter")));
     EXPECT_EQ(stack->index(), start + 3);
 
     w->waypointPanel()->reverseRoute();
     const auto& rev = routeOf(w.get(), 0).waypoints;
     ASSERT_EQ(rev.size(), before.waypoints.size());
     EXPECT_EQ(rev.front().position, before.waypoints.back().position);
-    EXPECT_NEAR(rev.front().headingDeg, std::fmod(before.waypoints.back().headingDeg + 180.0, 360.0), 1e-9);
+    EXPECT_NEAR(rev.front().headingDeg,
+                std::fmod(before.waypoints.back().headingDeg + 180.0, 360.0), 1e-9);
 
     w->waypointPanel()->table()->selectRow(4);
     w->waypointPanel()->insertAfterSelected();
@@ -174,12 +187,15 @@ TEST(Planning, TableEditsReverseInsertAndDeleteAreUndoable) {
     // The statistics measure the edited route: one photo fewer when the deleted waypoint took one.
     const int planned = w->planController()->plan()->aircraft[0].metrics.photos;
     int photos = 0;
-    for (const auto& wp : routeOf(w.get(), 0).waypoints) photos += wp.kind == route::WaypointKind::Photo ? 1 : 0;
+    for (const auto& wp : routeOf(w.get(), 0).waypoints)
+        photos += wp.kind == route::WaypointKind::Photo ? 1 : 0;
     EXPECT_LT(photos, planned);
     EXPECT_EQ(w->statisticsPanel()->statistics()->item(0, 1)->text().toInt(), photos);
-    EXPECT_TRUE(w->statisticsPanel()->statistics()->item(0, 0)->text().endsWith(QStringLiteral("(edited)")));
+    EXPECT_TRUE(w->statisticsPanel()->statistics()->item(0, 0)->text().endsWith(
+        QStringLiteral("(edited)")));
 
-    while (stack->index() > start) stack->undo();
+    while (stack->index() > start)
+        stack->undo();
     EXPECT_EQ(routeOf(w.get(), 0).waypoints, before.waypoints);
     EXPECT_FALSE(w->document()->routes().at(0).edited);
 }
@@ -198,12 +214,15 @@ TEST(Planning, AWaypointMovedIntoANoFlyZoneIsFlaggedOnTheMapTheTableAndTheProble
     EXPECT_TRUE(w->planLayer()->routeItems()[0]->data().badLeg[k - 1]);
     EXPECT_TRUE(w->planLayer()->routeItems()[0]->data().badLeg[k]);
     auto* model = w->waypointPanel()->model();
-    EXPECT_TRUE(model->data(model->index(k, WaypointTableModel::Problem)).toString().contains(QStringLiteral("Warehouse")));
+    EXPECT_TRUE(model->data(model->index(k, WaypointTableModel::Problem))
+                    .toString()
+                    .contains(QStringLiteral("Warehouse")));
     EXPECT_TRUE(model->data(model->index(k, 0), Qt::BackgroundRole).isValid());
     EXPECT_FALSE(model->data(model->index(0, 0), Qt::BackgroundRole).isValid());
     bool listed = false;
     for (int i = 0; i < w->problemsList()->count(); ++i)
-        listed |= w->problemsList()->item(i)->text().contains(QStringLiteral("waypoint %1: inside no-fly zone Warehouse").arg(k + 1));
+        listed |= w->problemsList()->item(i)->text().contains(
+            QStringLiteral("waypoint %1: inside no-fly zone Warehouse").arg(k + 1));
     EXPECT_TRUE(listed);
     doc->undoStack()->undo();
     EXPECT_TRUE(w->planLayer()->routeProblems().isEmpty());
@@ -216,7 +235,8 @@ TEST(Planning, ExportAndReimportPlanAndWaypointsFiles) {
     w->waypointPanel()->table()->selectRow(3);
     w->waypointPanel()->setAltitude(70.0, false);
     std::vector<route::Route> routes;
-    for (const auto& r : doc->routes()) routes.push_back(r.route);
+    for (const auto& r : doc->routes())
+        routes.push_back(r.route);
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
     ExportRequest req;
@@ -229,27 +249,36 @@ TEST(Planning, ExportAndReimportPlanAndWaypointsFiles) {
     for (const QString& ext : {QStringLiteral(".plan"), QStringLiteral(".waypoints")}) {
         for (std::size_t r = 0; r < routes.size(); ++r) {
             const io::ExportContext ctx = io::makeExportContext(doc->mission(), routes);
-            const QString expected = QStringLiteral("mission-") + QString::fromStdString(io::routeFileName(
-                                         ctx, r, ext == QLatin1String(".plan") ? io::WaypointFormat::QgcPlan
-                                                                               : io::WaypointFormat::QgcWpl));
+            const QString expected =
+                QStringLiteral("mission-") +
+                QString::fromStdString(io::routeFileName(ctx, r,
+                                                         ext == QLatin1String(".plan")
+                                                             ? io::WaypointFormat::QgcPlan
+                                                             : io::WaypointFormat::QgcWpl));
             QString file;
             for (const QString& f : written)
-                if (QFileInfo(f).fileName() == expected) file = f;
+                if (QFileInfo(f).fileName() == expected)
+                    file = f;
             ASSERT_FALSE(file.isEmpty());
             // Start from a fresh plan: the file brings the edit back, onto the aircraft it names.
             w->planNow();
             ASSERT_TRUE(w->planController()->waitForIdle(120000));
-            if (doc->anyRouteEdited()) w->replaceEditedPaths();
+            if (doc->anyRouteEdited())
+                w->replaceEditedPaths();
             ASSERT_FALSE(doc->anyRouteEdited());
             ASSERT_EQ(w->openWaypointFile(file, -1, &error), 1) << error.toStdString();
             const auto& back = doc->routes().at(r);
             EXPECT_TRUE(back.edited);
             EXPECT_EQ(back.route.aircraft, routes[r].aircraft);
-            ASSERT_EQ(back.route.waypoints.size(), routes[r].waypoints.size()) << file.toStdString();
+            ASSERT_EQ(back.route.waypoints.size(), routes[r].waypoints.size())
+                << file.toStdString();
             for (std::size_t i = 0; i < routes[r].waypoints.size(); ++i) {
-                EXPECT_LT(test::metresBetween(back.route.waypoints[i].position, routes[r].waypoints[i].position), 0.05)
+                EXPECT_LT(test::metresBetween(back.route.waypoints[i].position,
+                                              routes[r].waypoints[i].position),
+                          0.05)
                     << file.toStdString() << " waypoint " << i;
-                EXPECT_NEAR(back.route.waypoints[i].altitudeM, routes[r].waypoints[i].altitudeM, 0.01);
+                EXPECT_NEAR(back.route.waypoints[i].altitudeM, routes[r].waypoints[i].altitudeM,
+                            0.01);
             }
             doc->undoStack()->undo(); // the import is one undo step
             EXPECT_FALSE(doc->routes().at(r).edited);
@@ -277,7 +306,8 @@ TEST(Planning, AnAutomaticReplanNeverDiscardsEditedPaths) {
     planner->setAutoPlan(true);
     // An edit of the area triggers an automatic plan after the debounce.
     geo::LonLat v = doc->mission().area.outer[1];
-    doc->undoStack()->push(new MoveVertexCommand(doc, ShapeRef::area(), VertexRef{0, 1}, offset(v, 3, 0)));
+    doc->undoStack()->push(
+        new MoveVertexCommand(doc, ShapeRef::area(), VertexRef{0, 1}, offset(v, 3, 0)));
     ASSERT_TRUE(planner->waitForIdle(120000));
     EXPECT_TRUE(w->planNoticeVisible());
     EXPECT_TRUE(planner->hasPendingPlan());
@@ -317,7 +347,8 @@ TEST(Planning, ComparisonFillsThreeRows) {
     // Every metric column has its best value highlighted.
     for (int c = 1; c < table->columnCount(); ++c) {
         int bold = 0;
-        for (int r = 0; r < 3; ++r) bold += table->item(r, c)->font().bold() ? 1 : 0;
+        for (int r = 0; r < 3; ++r)
+            bold += table->item(r, c)->font().bold() ? 1 : 0;
         EXPECT_GE(bold, 1) << "column " << c;
     }
 }
@@ -399,7 +430,8 @@ TEST(Planning, ScreenshotOfThePlannedDemoShowsThePaths) {
     w->zoomToMission();
     const QImage img = w->mapView()->viewport()->grab().toImage();
     const QString dir = qEnvironmentVariable("PF_SCREENSHOT_DIR");
-    if (!dir.isEmpty()) img.save(QDir(dir).filePath(QStringLiteral("planned_map.png")));
+    if (!dir.isEmpty())
+        img.save(QDir(dir).filePath(QStringLiteral("planned_map.png")));
     for (std::size_t a = 0; a < w->planLayer()->routeItems().size(); ++a) {
         const QColor c = w->planLayer()->colourOf(int(a));
         int n = 0;
@@ -426,7 +458,8 @@ TEST(Planning, ShortEnduranceShowsSortiesAndTheStatisticsCountThem) {
     }
     w->planNow();
     ASSERT_TRUE(w->planController()->waitForIdle(120000));
-    ASSERT_TRUE(w->planController()->lastError().isEmpty()) << w->planController()->lastError().toStdString();
+    ASSERT_TRUE(w->planController()->lastError().isEmpty())
+        << w->planController()->lastError().toStdString();
     const auto& plan = *w->planController()->plan();
     auto* stats = w->statisticsPanel()->statistics();
     int totalSorties = 0;
@@ -437,7 +470,8 @@ TEST(Planning, ShortEnduranceShowsSortiesAndTheStatisticsCountThem) {
         // A badge per sortie on the map, at the sortie's first waypoint.
         const auto& starts = w->planLayer()->routeItems()[a]->data().sortieStarts;
         ASSERT_EQ(starts.size(), int(ap.sorties.size()));
-        for (std::size_t s = 0; s < ap.sorties.size(); ++s) EXPECT_EQ(starts[int(s)], ap.sorties[s].firstWaypoint);
+        for (std::size_t s = 0; s < ap.sorties.size(); ++s)
+            EXPECT_EQ(starts[int(s)], ap.sorties[s].firstWaypoint);
         EXPECT_EQ(stats->item(int(a), 5)->text(), QString::number(ap.sorties.size()));
     }
     EXPECT_EQ(stats->item(int(plan.aircraft.size()), 5)->text(), QString::number(totalSorties));
@@ -453,7 +487,8 @@ TEST(Planning, DoubleClickOnALegInsertsAWaypointAndDeleteRemovesIt) {
     std::size_t leg = 0;
     double longest = 0;
     for (std::size_t i = 0; i + 1 < before.waypoints.size(); ++i) {
-        const double d = test::metresBetween(before.waypoints[i].position, before.waypoints[i + 1].position);
+        const double d =
+            test::metresBetween(before.waypoints[i].position, before.waypoints[i + 1].position);
         if (d > longest) {
             longest = d;
             leg = i;
@@ -465,7 +500,8 @@ TEST(Planning, DoubleClickOnALegInsertsAWaypointAndDeleteRemovesIt) {
     const geo::LonLat mid{(a.lon + b.lon) / 2, (a.lat + b.lat) / 2};
     w->mapView()->centreOn(mid);
     QApplication::processEvents();
-    QTest::mouseDClick(w->mapView()->viewport(), Qt::LeftButton, Qt::NoModifier, test::viewPos(w->mapView(), mid));
+    QTest::mouseDClick(w->mapView()->viewport(), Qt::LeftButton, Qt::NoModifier,
+                       test::viewPos(w->mapView(), mid));
     const auto& after = routeOf(w.get(), 0).waypoints;
     ASSERT_EQ(after.size(), before.waypoints.size() + 1);
     EXPECT_LT(test::metresBetween(after[leg + 1].position, mid), 1.0);
@@ -483,7 +519,8 @@ TEST(Planning, ClickingAProblemSelectsTheWaypointItNames) {
     doc->undoStack()->push(new MoveWaypointCommand(doc, 0, k, geo::LonLat{8.32945, 49.0120}));
     QListWidgetItem* found = nullptr;
     for (int i = 0; i < w->problemsList()->count(); ++i)
-        if (w->problemsList()->item(i)->text().contains(QStringLiteral("waypoint %1: inside").arg(k + 1)))
+        if (w->problemsList()->item(i)->text().contains(
+                QStringLiteral("waypoint %1: inside").arg(k + 1)))
             found = w->problemsList()->item(i);
     ASSERT_NE(found, nullptr);
     w->problemsList()->scrollToItem(found);

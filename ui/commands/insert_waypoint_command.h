@@ -7,7 +7,8 @@ namespace pf::ui {
 
 class InsertWaypointCommand : public RouteEditCommand {
 public:
-    InsertWaypointCommand(MissionDocument* doc, int routeIndex, int at, route::Waypoint waypoint, QUndoCommand* parent = nullptr);
+    InsertWaypointCommand(MissionDocument* doc, int routeIndex, int at, route::Waypoint waypoint,
+                          QUndoCommand* parent = nullptr);
 };
 
 } // namespace pf::ui

@@ -7,7 +7,8 @@ namespace pf::ui {
 
 class MoveWaypointCommand : public RouteEditCommand {
 public:
-    MoveWaypointCommand(MissionDocument* doc, int routeIndex, int waypoint, geo::LonLat to, QUndoCommand* parent = nullptr);
+    MoveWaypointCommand(MissionDocument* doc, int routeIndex, int waypoint, geo::LonLat to,
+                        QUndoCommand* parent = nullptr);
 };
 
 } // namespace pf::ui

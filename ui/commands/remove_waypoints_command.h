@@ -9,7 +9,8 @@ namespace pf::ui {
 
 class RemoveWaypointsCommand : public RouteEditCommand {
 public:
-    RemoveWaypointsCommand(MissionDocument* doc, int routeIndex, QList<int> waypoints, QUndoCommand* parent = nullptr);
+    RemoveWaypointsCommand(MissionDocument* doc, int routeIndex, QList<int> waypoints,
+                           QUndoCommand* parent = nullptr);
 };
 
 } // namespace pf::ui

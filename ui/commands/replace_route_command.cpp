@@ -4,9 +4,11 @@
 
 namespace pf::ui {
 
-ReplaceRouteCommand::ReplaceRouteCommand(MissionDocument* doc, int routeIndex, route::Route route, QUndoCommand* parent)
+ReplaceRouteCommand::ReplaceRouteCommand(MissionDocument* doc, int routeIndex, route::Route route,
+                                         QUndoCommand* parent)
     : RouteEditCommand(doc, routeIndex,
-                       QCoreApplication::translate("Commands", "Load route of %1").arg(QString::fromStdString(route.aircraft)),
+                       QCoreApplication::translate("Commands", "Load route of %1")
+                           .arg(QString::fromStdString(route.aircraft)),
                        parent) {
     m_new = std::move(route);
 }

@@ -1,4 +1,5 @@
-// ReplaceRouteCommand: put a whole route in place (an imported waypoint file); routeIndex == count appends.
+// ReplaceRouteCommand: put a whole route in place (an imported waypoint file); routeIndex == count
+// appends.
 #pragma once
 
 #include "ui/commands/route_edit_command.h"
@@ -7,7 +8,8 @@ namespace pf::ui {
 
 class ReplaceRouteCommand : public RouteEditCommand {
 public:
-    ReplaceRouteCommand(MissionDocument* doc, int routeIndex, route::Route route, QUndoCommand* parent = nullptr);
+    ReplaceRouteCommand(MissionDocument* doc, int routeIndex, route::Route route,
+                        QUndoCommand* parent = nullptr);
 };
 
 } // namespace pf::ui

@@ -2,8 +2,10 @@
 
 namespace pf::ui {
 
-RouteEditCommand::RouteEditCommand(MissionDocument* doc, int routeIndex, const QString& text, QUndoCommand* parent)
-    : QUndoCommand(text, parent), m_doc(doc), m_index(routeIndex), m_generation(doc->routeGeneration()) {
+RouteEditCommand::RouteEditCommand(MissionDocument* doc, int routeIndex, const QString& text,
+                                   QUndoCommand* parent)
+    : QUndoCommand(text, parent), m_doc(doc), m_index(routeIndex),
+      m_generation(doc->routeGeneration()) {
     if (routeIndex >= 0 && routeIndex < int(doc->routes().size())) {
         m_old = doc->routes()[std::size_t(routeIndex)];
         m_new = m_old->route;

@@ -15,7 +15,8 @@ namespace pf::ui {
 // route of the old plan.
 class RouteEditCommand : public QUndoCommand {
 public:
-    RouteEditCommand(MissionDocument* doc, int routeIndex, const QString& text, QUndoCommand* parent = nullptr);
+    RouteEditCommand(MissionDocument* doc, int routeIndex, const QString& text,
+                     QUndoCommand* parent = nullptr);
     void redo() override;
     void undo() override;
 

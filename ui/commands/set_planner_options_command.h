@@ -9,8 +9,8 @@ namespace pf::ui {
 
 class SetPlannerOptionsCommand : public QUndoCommand {
 public:
-    SetPlannerOptionsCommand(MissionDocument* doc, mission::PlannerOptions options, const QString& text,
-                             QUndoCommand* parent = nullptr);
+    SetPlannerOptionsCommand(MissionDocument* doc, mission::PlannerOptions options,
+                             const QString& text, QUndoCommand* parent = nullptr);
     void redo() override;
     void undo() override;
 

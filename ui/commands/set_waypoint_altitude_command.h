@@ -9,7 +9,8 @@ namespace pf::ui {
 
 class SetWaypointAltitudeCommand : public RouteEditCommand {
 public:
-    SetWaypointAltitudeCommand(MissionDocument* doc, int routeIndex, QList<int> waypoints, double altitudeM, QUndoCommand* parent = nullptr);
+    SetWaypointAltitudeCommand(MissionDocument* doc, int routeIndex, QList<int> waypoints,
+                               double altitudeM, QUndoCommand* parent = nullptr);
 };
 
 } // namespace pf::ui

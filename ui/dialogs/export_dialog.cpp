@@ -23,23 +23,26 @@ ExportDialog::ExportDialog(MissionDocument* doc, const QString& folder, QWidget*
     auto* formats = new QGroupBox(tr("Formats"));
     auto* fl = new QVBoxLayout(formats);
     for (const auto& info : io::waypointFormats()) {
-        auto* box = new QCheckBox(QStringLiteral("%1 (%2)").arg(QString::fromLatin1(info.description),
-                                                                 QString::fromLatin1(info.extension)));
-        box->setChecked(info.format == io::WaypointFormat::QgcPlan || info.format == io::WaypointFormat::Kml);
+        auto* box = new QCheckBox(QStringLiteral("%1 (%2)").arg(
+            QString::fromLatin1(info.description), QString::fromLatin1(info.extension)));
+        box->setChecked(info.format == io::WaypointFormat::QgcPlan ||
+                        info.format == io::WaypointFormat::Kml);
         fl->addWidget(box);
         m_formats[info.format] = box;
     }
     auto* aircraft = new QGroupBox(tr("Aircraft"));
     auto* al = new QVBoxLayout(aircraft);
     for (const auto& r : doc->routes()) {
-        auto* box = new QCheckBox(QString::fromStdString(r.route.aircraft) + (r.edited ? tr(" (edited)") : QString()));
+        auto* box = new QCheckBox(QString::fromStdString(r.route.aircraft) +
+                                  (r.edited ? tr(" (edited)") : QString()));
         box->setChecked(true);
         al->addWidget(box);
         m_routes.push_back(box);
     }
     m_perAircraft = new QCheckBox(tr("One file per aircraft"));
     m_perAircraft->setChecked(true);
-    m_combined = new QCheckBox(tr("One combined file where the format allows it (KML, GPX, GeoJSON)"));
+    m_combined =
+        new QCheckBox(tr("One combined file where the format allows it (KML, GPX, GeoJSON)"));
     m_combined->setChecked(true);
     al->addWidget(m_perAircraft);
     al->addWidget(m_combined);
@@ -48,8 +51,10 @@ ExportDialog::ExportDialog(MissionDocument* doc, const QString& folder, QWidget*
     auto* browse = new QToolButton;
     browse->setText(tr("…"));
     connect(browse, &QToolButton::clicked, this, [this] {
-        const QString d = QFileDialog::getExistingDirectory(this, tr("Export folder"), m_folder->text());
-        if (!d.isEmpty()) m_folder->setText(d);
+        const QString d =
+            QFileDialog::getExistingDirectory(this, tr("Export folder"), m_folder->text());
+        if (!d.isEmpty())
+            m_folder->setText(d);
     });
     auto* folderRow = new QHBoxLayout;
     folderRow->addWidget(m_folder, 1);
@@ -90,12 +95,16 @@ ExportDialog::ExportDialog(MissionDocument* doc, const QString& folder, QWidget*
 ExportRequest ExportDialog::request() const {
     ExportRequest r;
     r.folder = m_folder->text();
-    r.stem = m_stem->text().trimmed().isEmpty() ? QStringLiteral("mission") : m_stem->text().trimmed();
+    r.stem =
+        m_stem->text().trimmed().isEmpty() ? QStringLiteral("mission") : m_stem->text().trimmed();
     for (const auto& [fmt, box] : m_formats)
-        if (box->isChecked()) r.formats.push_back(fmt);
+        if (box->isChecked())
+            r.formats.push_back(fmt);
     for (std::size_t i = 0; i < m_routes.size(); ++i)
-        if (m_routes[i]->isChecked()) r.routes.push_back(int(i));
-    if (r.routes.empty()) r.routes.push_back(-1); // none chosen: export nothing rather than all
+        if (m_routes[i]->isChecked())
+            r.routes.push_back(int(i));
+    if (r.routes.empty())
+        r.routes.push_back(-1); // none chosen: export nothing rather than all
     r.perAircraft = m_perAircraft->isChecked();
     r.combined = m_combined->isChecked();
     r.options.firmware = io::QgcFirmware(m_firmware->currentData().toInt());
@@ -105,12 +114,16 @@ ExportRequest ExportDialog::request() const {
 
 QStringList ExportDialog::runExport() {
     std::vector<route::Route> routes;
-    for (const auto& r : m_doc->routes()) routes.push_back(r.route);
+    for (const auto& r : m_doc->routes())
+        routes.push_back(r.route);
     QString error;
     const QStringList written = exportRoutes(m_doc->mission(), routes, request(), &error);
     QString text;
-    if (!written.isEmpty()) text = tr("Wrote %n file(s):", nullptr, written.size()) + QLatin1Char('\n') + written.join(QLatin1Char('\n'));
-    if (!error.isEmpty()) text += (text.isEmpty() ? QString() : QStringLiteral("\n")) + tr("Error: %1").arg(error);
+    if (!written.isEmpty())
+        text = tr("Wrote %n file(s):", nullptr, written.size()) + QLatin1Char('\n') +
+               written.join(QLatin1Char('\n'));
+    if (!error.isEmpty())
+        text += (text.isEmpty() ? QString() : QStringLiteral("\n")) + tr("Error: %1").arg(error);
     m_report->setPlainText(text);
     return written;
 }

@@ -1,4 +1,5 @@
-// ExportDialog: choose formats, aircraft, folder and autopilot options, then write the waypoint files.
+// ExportDialog: choose formats, aircraft, folder and autopilot options, then write the waypoint
+// files.
 #pragma once
 
 #include "ui/planning/route_export.h"

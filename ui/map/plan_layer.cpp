@@ -20,8 +20,10 @@ constexpr qreal kZPartition = 12, kZGrid = 13, kZFootprints = 14, kZUncovered = 
 
 QColor colourFromHex(const std::string& hex, int fallbackIndex) {
     QColor c(QString::fromStdString(hex));
-    if (c.isValid()) return c;
-    static const char* palette[] = {"#e6194b", "#3cb44b", "#4363d8", "#f58231", "#911eb4", "#42d4f4"};
+    if (c.isValid())
+        return c;
+    static const char* palette[] = {"#e6194b", "#3cb44b", "#4363d8",
+                                    "#f58231", "#911eb4", "#42d4f4"};
     return QColor(palette[fallbackIndex % 6]);
 }
 
@@ -30,24 +32,29 @@ QPainterPath ringsPath(const geo::MultiPolygon& polys, const geo::LocalFrame& fr
     path.setFillRule(Qt::OddEvenFill);
     auto addRing = [&](const geo::Ring& r) {
         QPolygonF q;
-        for (const auto& p : r) q << toScene(frame.toGeo(p));
-        if (!q.isEmpty()) q << q.first();
+        for (const auto& p : r)
+            q << toScene(frame.toGeo(p));
+        if (!q.isEmpty())
+            q << q.first();
         path.addPolygon(q);
     };
     for (const auto& poly : polys) {
         addRing(poly.outer);
-        for (const auto& h : poly.holes) addRing(h);
+        for (const auto& h : poly.holes)
+            addRing(h);
     }
     return path;
 }
 
 void drawArrow(QPainter* p, const QPointF& at, const QPointF& dir, double sizePx, double mpp) {
     const double len = std::hypot(dir.x(), dir.y());
-    if (len <= 0) return;
+    if (len <= 0)
+        return;
     const QPointF u = dir / len, n(-u.y(), u.x());
     const double s = sizePx * mpp;
     QPolygonF tri;
-    tri << at + u * s << at - u * s * 0.7 + n * s * 0.75 << at - u * s * 0.35 << at - u * s * 0.7 - n * s * 0.75;
+    tri << at + u * s << at - u * s * 0.7 + n * s * 0.75 << at - u * s * 0.35
+        << at - u * s * 0.7 - n * s * 0.75;
     p->drawPolygon(tri);
 }
 
@@ -55,13 +62,16 @@ void drawArrow(QPainter* p, const QPointF& at, const QPointF& dir, double sizePx
 
 // ---------------------------------------------------------------- RouteItem
 
-RouteItem::RouteItem(QGraphicsItem* parent) : QGraphicsItem(parent) { setZValue(kZRoutes); }
+RouteItem::RouteItem(QGraphicsItem* parent) : QGraphicsItem(parent) {
+    setZValue(kZRoutes);
+}
 
 void RouteItem::setData(Data d) {
     prepareGeometryChange();
     m_d = std::move(d);
     QPolygonF all(m_d.points);
-    if (m_d.home) all << *m_d.home;
+    if (m_d.home)
+        all << *m_d.home;
     m_bounds = all.boundingRect();
 }
 
@@ -134,14 +144,16 @@ void RouteItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
     // Photo points, only when they are far enough apart on screen to be told apart.
     if (m_photos && pts.size() > 1) {
         double total = 0;
-        for (int i = 0; i + 1 < pts.size(); ++i) total += std::hypot(pts[i + 1].x() - pts[i].x(), pts[i + 1].y() - pts[i].y());
+        for (int i = 0; i + 1 < pts.size(); ++i)
+            total += std::hypot(pts[i + 1].x() - pts[i].x(), pts[i + 1].y() - pts[i].y());
         const double meanPx = total / (pts.size() - 1) / m_mpp;
         if (meanPx > 5) {
             const double r = std::min(2.6, meanPx / 4) * m_mpp;
             p->setPen(QPen(c.darker(150), 0));
             p->setBrush(Qt::white);
             for (int i = 0; i < pts.size(); ++i)
-                if (m_d.photo.value(i)) p->drawEllipse(pts[i], r, r);
+                if (m_d.photo.value(i))
+                    p->drawEllipse(pts[i], r, r);
         }
     }
     // Problems of an edited route: red legs and red rings.
@@ -155,7 +167,8 @@ void RouteItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
     p->setBrush(QColor(220, 20, 20, 200));
     p->setPen(QPen(Qt::white, 0));
     for (int i = 0; i < pts.size(); ++i)
-        if (m_d.badPoint.value(i)) p->drawEllipse(pts[i], 6 * m_mpp, 6 * m_mpp);
+        if (m_d.badPoint.value(i))
+            p->drawEllipse(pts[i], 6 * m_mpp, 6 * m_mpp);
     // Sorties: a numbered badge where each battery's flight leaves the path home.
     if (m_sorties && m_d.sortieStarts.size() > 1) {
         QFont f = p->font();
@@ -164,8 +177,10 @@ void RouteItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
         p->setFont(f);
         for (int s = 0; s < m_d.sortieStarts.size(); ++s) {
             const int i = m_d.sortieStarts[s];
-            if (i < 0 || i >= pts.size()) continue;
-            const QRectF badge(pts[i].x() - 9 * m_mpp, pts[i].y() - 22 * m_mpp, 18 * m_mpp, 13 * m_mpp);
+            if (i < 0 || i >= pts.size())
+                continue;
+            const QRectF badge(pts[i].x() - 9 * m_mpp, pts[i].y() - 22 * m_mpp, 18 * m_mpp,
+                               13 * m_mpp);
             p->save();
             p->translate(badge.topLeft());
             p->scale(m_mpp, m_mpp);
@@ -183,19 +198,23 @@ void RouteItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
     p->setPen(sel);
     p->setBrush(QColor(255, 255, 255, 220));
     for (int i : m_selected)
-        if (i >= 0 && i < pts.size()) p->drawEllipse(pts[i], 6 * m_mpp, 6 * m_mpp);
+        if (i >= 0 && i < pts.size())
+            p->drawEllipse(pts[i], 6 * m_mpp, 6 * m_mpp);
 }
 
 // ---------------------------------------------------------------- PathItem
 
 PathItem::PathItem(QPainterPath path, QPen pen, QBrush brush, qreal z, QGraphicsItem* parent)
-    : QGraphicsItem(parent), m_path(std::move(path)), m_pen(std::move(pen)), m_brush(std::move(brush)) {
+    : QGraphicsItem(parent), m_path(std::move(path)), m_pen(std::move(pen)),
+      m_brush(std::move(brush)) {
     m_pen.setCosmetic(true);
     m_bounds = m_path.boundingRect();
     setZValue(z);
 }
 
-QRectF PathItem::boundingRect() const { return m_bounds; }
+QRectF PathItem::boundingRect() const {
+    return m_bounds;
+}
 
 void PathItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
     p->setRenderHint(QPainter::Antialiasing);
@@ -206,7 +225,8 @@ void PathItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
 
 // ---------------------------------------------------------------- PlanLayer
 
-PlanLayer::PlanLayer(MissionDocument* doc, PlanController* planner, QGraphicsScene* scene, QObject* parent)
+PlanLayer::PlanLayer(MissionDocument* doc, PlanController* planner, QGraphicsScene* scene,
+                     QObject* parent)
     : QObject(parent), m_doc(doc), m_planner(planner), m_scene(scene) {
     connect(m_planner, &PlanController::planChanged, this, [this] {
         rebuildPlanItems();
@@ -229,11 +249,13 @@ void PlanLayer::clearItems(std::vector<QGraphicsItem*>& items) {
 
 QColor PlanLayer::colourOf(int route) const {
     const auto& routes = m_doc->routes();
-    if (route < 0 || route >= int(routes.size())) return Qt::gray;
+    if (route < 0 || route >= int(routes.size()))
+        return Qt::gray;
     const std::string& name = routes[std::size_t(route)].route.aircraft;
     const auto& aircraft = m_doc->mission().aircraft;
     for (std::size_t i = 0; i < aircraft.size(); ++i)
-        if (aircraft[i].name == name) return colourFromHex(aircraft[i].colour, int(i));
+        if (aircraft[i].name == name)
+            return colourFromHex(aircraft[i].colour, int(i));
     return colourFromHex(std::string(), route);
 }
 
@@ -244,11 +266,13 @@ void PlanLayer::rebuildPlanItems() {
     clearItems(m_uncovered);
     m_footprintCount = 0;
     const auto& plan = m_planner->plan();
-    if (!plan || !plan->frame) return;
+    if (!plan || !plan->frame)
+        return;
     // Patches no photo sees (the core's independent coverage check): hatched red.
     for (const auto& u : plan->uncovered) {
         QBrush hatch(QColor(230, 20, 20, 170), Qt::BDiagPattern);
-        auto* item = new PathItem(ringsPath(u.shape, *plan->frame), QPen(QColor(200, 0, 0), 1.4), hatch, kZUncovered);
+        auto* item = new PathItem(ringsPath(u.shape, *plan->frame), QPen(QColor(200, 0, 0), 1.4),
+                                  hatch, kZUncovered);
         item->setToolTip(tr("Not covered by any photo: %1 m²").arg(u.areaM2, 0, 'f', 0));
         m_scene->addItem(item);
         m_uncovered.push_back(item);
@@ -259,31 +283,40 @@ void PlanLayer::rebuildPlanItems() {
         const auto& ap = plan->aircraft[a];
         QColor c = colourFromHex(std::string(), int(a));
         for (std::size_t k = 0; k < aircraft.size(); ++k)
-            if (aircraft[k].name == ap.aircraft) c = colourFromHex(aircraft[k].colour, int(k));
+            if (aircraft[k].name == ap.aircraft)
+                c = colourFromHex(aircraft[k].colour, int(k));
         // Partition: the region this aircraft covers.
         QColor fill = c;
         fill.setAlpha(38);
         QColor edge = c;
         edge.setAlpha(140);
-        auto* region = new PathItem(ringsPath(ap.subarea.empty() ? ap.grid.admissible() : ap.subarea, frame),
-                                    QPen(edge, 1.2, Qt::DashLine), fill, kZPartition);
+        auto* region =
+            new PathItem(ringsPath(ap.subarea.empty() ? ap.grid.admissible() : ap.subarea, frame),
+                         QPen(edge, 1.2, Qt::DashLine), fill, kZPartition);
         m_scene->addItem(region);
         m_partition.push_back(region);
         // Grid: cells by state (free, shifted, unflyable).
         QPainterPath free, shifted, unflyable;
         for (int i = 0; i < ap.grid.cellCount(); ++i) {
             const auto st = ap.grid.state(i);
-            if (st == grid::CellState::Outside) continue;
+            if (st == grid::CellState::Outside)
+                continue;
             QPolygonF q;
-            for (const auto& v : ap.grid.cellCorners(i)) q << toScene(frame.toGeo(v));
-            if (!q.isEmpty()) q << q.first();
-            (st == grid::CellState::Free ? free : st == grid::CellState::Shifted ? shifted : unflyable).addPolygon(q);
+            for (const auto& v : ap.grid.cellCorners(i))
+                q << toScene(frame.toGeo(v));
+            if (!q.isEmpty())
+                q << q.first();
+            (st == grid::CellState::Free      ? free
+             : st == grid::CellState::Shifted ? shifted
+                                              : unflyable)
+                .addPolygon(q);
         }
         const std::pair<QPainterPath*, QColor> parts[] = {{&free, QColor(255, 255, 255, 0)},
                                                           {&shifted, QColor(255, 200, 0, 70)},
                                                           {&unflyable, QColor(220, 30, 30, 90)}};
         for (const auto& [path, brush] : parts) {
-            if (path->isEmpty()) continue;
+            if (path->isEmpty())
+                continue;
             auto* g = new PathItem(*path, QPen(QColor(40, 40, 40, 110), 0.6), brush, kZGrid);
             m_scene->addItem(g);
             m_grid.push_back(g);
@@ -318,7 +351,8 @@ void PlanLayer::rebuildRoutes() {
         d.colour = colourOf(int(r));
         d.edited = pr.edited;
         std::optional<geo::LonLat> home = pr.route.home ? pr.route.home : m.home;
-        if (home) d.home = toScene(*home);
+        if (home)
+            d.home = toScene(*home);
         for (const auto& w : pr.route.waypoints) {
             d.points << toScene(w.position);
             d.photo << (w.kind == route::WaypointKind::Photo);
@@ -328,37 +362,48 @@ void PlanLayer::rebuildRoutes() {
         if (plan && !pr.edited)
             for (const auto& ap : plan->aircraft)
                 if (ap.aircraft == pr.route.aircraft && ap.sorties.size() > 1)
-                    for (const auto& s : ap.sorties) d.sortieStarts << s.firstWaypoint;
+                    for (const auto& s : ap.sorties)
+                        d.sortieStarts << s.firstWaypoint;
         RouteIssues issues = validateRoute(m, pr.route);
         for (std::size_t i = 0; i < issues.waypoint.size(); ++i) {
             d.badPoint << !issues.waypoint[i].isEmpty();
             if (!issues.waypoint[i].isEmpty())
-                m_problems << tr("%1, waypoint %2: %3").arg(QString::fromStdString(pr.route.aircraft)).arg(i + 1).arg(issues.waypoint[i]);
+                m_problems << tr("%1, waypoint %2: %3")
+                                  .arg(QString::fromStdString(pr.route.aircraft))
+                                  .arg(i + 1)
+                                  .arg(issues.waypoint[i]);
         }
         for (std::size_t i = 0; i < issues.leg.size(); ++i) {
             d.badLeg << !issues.leg[i].isEmpty();
             if (!issues.leg[i].isEmpty())
-                m_problems << tr("%1, waypoint %2: %3").arg(QString::fromStdString(pr.route.aircraft)).arg(i + 1).arg(issues.leg[i]);
+                m_problems << tr("%1, waypoint %2: %3")
+                                  .arg(QString::fromStdString(pr.route.aircraft))
+                                  .arg(i + 1)
+                                  .arg(issues.leg[i]);
         }
         m_issues.push_back(std::move(issues));
         m_routes[r]->setData(std::move(d));
         m_routes[r]->setSelection(int(r) == m_selRoute ? m_selWaypoints : QList<int>());
-        // Footprints: the real ground rectangle of every photo, turned to the waypoint's heading and
-        // scaled with its altitude (an edited altitude changes what the photo covers).
+        // Footprints: the real ground rectangle of every photo, turned to the waypoint's heading
+        // and scaled with its altitude (an edited altitude changes what the photo covers).
         if (plan && plan->frame) {
             for (const auto& ap : plan->aircraft) {
-                if (ap.aircraft != pr.route.aircraft || ap.altitudeM <= 0) continue;
+                if (ap.aircraft != pr.route.aircraft || ap.altitudeM <= 0)
+                    continue;
                 for (const auto& w : pr.route.waypoints) {
-                    if (w.kind != route::WaypointKind::Photo) continue;
+                    if (w.kind != route::WaypointKind::Photo)
+                        continue;
                     const double k = w.altitudeM / ap.altitudeM;
-                    const double across = ap.footprint.real.longSideM * k / 2, along = ap.footprint.real.shortSideM * k / 2;
+                    const double across = ap.footprint.real.longSideM * k / 2,
+                                 along = ap.footprint.real.shortSideM * k / 2;
                     const double h = qDegreesToRadians(w.headingDeg);
                     const geo::Vec2 u{std::sin(h), std::cos(h)}, n{std::cos(h), -std::sin(h)};
                     const geo::Vec2 c = plan->frame->toLocal(w.position);
                     QPolygonF q;
                     static const int signs[4][2] = {{1, 1}, {1, -1}, {-1, -1}, {-1, 1}};
                     for (const auto& sg : signs)
-                        q << toScene(plan->frame->toGeo(c + u * (sg[0] * along) + n * (sg[1] * across)));
+                        q << toScene(
+                            plan->frame->toGeo(c + u * (sg[0] * along) + n * (sg[1] * across)));
                     q << q.first();
                     footprints.addPolygon(q);
                     ++m_footprintCount;
@@ -367,7 +412,8 @@ void PlanLayer::rebuildRoutes() {
         }
     }
     if (!footprints.isEmpty()) {
-        auto* f = new PathItem(footprints, QPen(QColor(20, 60, 160, 120), 0.7), QColor(60, 120, 255, 18), kZFootprints);
+        auto* f = new PathItem(footprints, QPen(QColor(20, 60, 160, 120), 0.7),
+                               QColor(60, 120, 255, 18), kZFootprints);
         m_scene->addItem(f);
         m_footprints.push_back(f);
     }
@@ -381,10 +427,14 @@ void PlanLayer::rebuildRoutes() {
 }
 
 void PlanLayer::applyVisibility() {
-    for (auto* i : m_partition) i->setVisible(isVisible(Part::Partition));
-    for (auto* i : m_grid) i->setVisible(isVisible(Part::Grid));
-    for (auto* i : m_footprints) i->setVisible(isVisible(Part::Footprints));
-    for (auto* i : m_uncovered) i->setVisible(isVisible(Part::Uncovered));
+    for (auto* i : m_partition)
+        i->setVisible(isVisible(Part::Partition));
+    for (auto* i : m_grid)
+        i->setVisible(isVisible(Part::Grid));
+    for (auto* i : m_footprints)
+        i->setVisible(isVisible(Part::Footprints));
+    for (auto* i : m_uncovered)
+        i->setVisible(isVisible(Part::Uncovered));
     for (auto* r : m_routes) {
         r->setVisible(isVisible(Part::Paths));
         r->setPhotosVisible(isVisible(Part::Photos));
@@ -397,18 +447,23 @@ void PlanLayer::setVisible(Part part, bool on) {
     applyVisibility();
 }
 
-bool PlanLayer::isVisible(Part part) const { return m_show[int(part)]; }
+bool PlanLayer::isVisible(Part part) const {
+    return m_show[int(part)];
+}
 
 void PlanLayer::setMetresPerPixel(double mpp) {
     m_mpp = mpp;
-    for (auto* r : m_routes) r->setMetresPerPixel(mpp);
+    for (auto* r : m_routes)
+        r->setMetresPerPixel(mpp);
 }
 
-std::optional<PlanLayer::WaypointHit> PlanLayer::hitWaypoint(const QPointF& s, double tolerance) const {
+std::optional<PlanLayer::WaypointHit> PlanLayer::hitWaypoint(const QPointF& s,
+                                                             double tolerance) const {
     std::optional<WaypointHit> best;
     double bestD = tolerance;
     for (std::size_t r = 0; r < m_routes.size(); ++r) {
-        if (!m_routes[r]->isVisible()) continue;
+        if (!m_routes[r]->isVisible())
+            continue;
         const auto& pts = m_routes[r]->data().points;
         for (int i = 0; i < pts.size(); ++i) {
             const double d = std::hypot(pts[i].x() - s.x(), pts[i].y() - s.y());
@@ -425,12 +480,14 @@ std::optional<PlanLayer::LegHit> PlanLayer::hitLeg(const QPointF& s, double tole
     std::optional<LegHit> best;
     double bestD = tolerance;
     for (std::size_t r = 0; r < m_routes.size(); ++r) {
-        if (!m_routes[r]->isVisible()) continue;
+        if (!m_routes[r]->isVisible())
+            continue;
         const auto& pts = m_routes[r]->data().points;
         for (int i = 0; i + 1 < pts.size(); ++i) {
             const QPointF a = pts[i], b = pts[i + 1], ab = b - a;
             const double l2 = QPointF::dotProduct(ab, ab);
-            const double t = l2 > 0 ? std::clamp(QPointF::dotProduct(s - a, ab) / l2, 0.0, 1.0) : 0.0;
+            const double t =
+                l2 > 0 ? std::clamp(QPointF::dotProduct(s - a, ab) / l2, 0.0, 1.0) : 0.0;
             const QPointF q = a + ab * t;
             const double d = std::hypot(q.x() - s.x(), q.y() - s.y());
             if (d <= bestD) {
@@ -448,7 +505,8 @@ void PlanLayer::selectWaypoints(int route, QList<int> waypoints) {
         waypoints.clear();
     }
     std::sort(waypoints.begin(), waypoints.end());
-    if (route == m_selRoute && waypoints == m_selWaypoints) return;
+    if (route == m_selRoute && waypoints == m_selWaypoints)
+        return;
     m_selRoute = route;
     m_selWaypoints = waypoints;
     for (std::size_t r = 0; r < m_routes.size(); ++r)
@@ -457,13 +515,15 @@ void PlanLayer::selectWaypoints(int route, QList<int> waypoints) {
 }
 
 void PlanLayer::setPreview(int route, int waypoint, std::optional<QPointF> scenePos) {
-    if (route < 0 || route >= int(m_routes.size())) return;
+    if (route < 0 || route >= int(m_routes.size()))
+        return;
     if (!scenePos) {
         rebuildRoutes();
         return;
     }
     RouteItem::Data d = m_routes[std::size_t(route)]->data();
-    if (waypoint < 0 || waypoint >= d.points.size()) return;
+    if (waypoint < 0 || waypoint >= d.points.size())
+        return;
     d.points[waypoint] = *scenePos;
     m_routes[std::size_t(route)]->setData(std::move(d));
 }

@@ -1,14 +1,15 @@
-// PlanLayer: the scene items showing the planned and edited routes (paths with direction arrows, photo
-// points, footprints, the partition of the area, the grid, problems of edited routes), in z-order.
+// PlanLayer: the scene items showing the planned and edited routes (paths with direction arrows,
+// photo points, footprints, the partition of the area, the grid, problems of edited routes), in
+// z-order.
 #pragma once
 
 #include "ui/planning/route_validation.h"
 
+#include <QBrush>
 #include <QColor>
 #include <QGraphicsItem>
 #include <QList>
 #include <QObject>
-#include <QBrush>
 #include <QPainterPath>
 #include <QPen>
 
@@ -32,9 +33,10 @@ public:
         QVector<bool> photo;     // per point: a photo waypoint
         QVector<bool> transit;   // per point: a transit waypoint
         std::optional<QPointF> home;
-        QVector<bool> badPoint;  // per point
-        QVector<bool> badLeg;    // per leg i -> i + 1
-        QVector<int> sortieStarts; // first waypoint of every battery's flight (more than one sortie)
+        QVector<bool> badPoint; // per point
+        QVector<bool> badLeg;   // per leg i -> i + 1
+        QVector<int>
+            sortieStarts; // first waypoint of every battery's flight (more than one sortie)
         bool edited = false;
     };
     void setData(Data d);
@@ -74,7 +76,8 @@ private:
 class PlanLayer : public QObject {
     Q_OBJECT
 public:
-    PlanLayer(MissionDocument* doc, PlanController* planner, QGraphicsScene* scene, QObject* parent = nullptr);
+    PlanLayer(MissionDocument* doc, PlanController* planner, QGraphicsScene* scene,
+              QObject* parent = nullptr);
     ~PlanLayer() override;
 
     enum class Part { Paths, Photos, Footprints, Partition, Grid, Sorties, Uncovered };

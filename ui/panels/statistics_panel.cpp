@@ -23,7 +23,8 @@ QString minutes(double seconds) {
     return QStringLiteral("%1:%2").arg(s / 60).arg(s % 60, 2, 10, QLatin1Char('0'));
 }
 
-QTableWidgetItem* cell(const QString& text, Qt::Alignment align = Qt::AlignRight | Qt::AlignVCenter) {
+QTableWidgetItem* cell(const QString& text,
+                       Qt::Alignment align = Qt::AlignRight | Qt::AlignVCenter) {
     auto* item = new QTableWidgetItem(text);
     item->setTextAlignment(int(align));
     item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
@@ -51,16 +52,22 @@ QTableWidget* makeTable(const QStringList& headers) {
 StatisticsPanel::StatisticsPanel(MissionDocument* doc, PlanController* planner, QWidget* parent)
     : QWidget(parent), m_doc(doc), m_planner(planner) {
     setObjectName(QStringLiteral("StatisticsPanel"));
-    m_stats = makeTable({tr("Aircraft"), tr("Photos"), tr("km"), tr("Time"), tr("Turns"), tr("Sorties"),
-                         tr("Cover %"), tr("Plan ms")});
-    m_compare = makeTable({tr("Planner"), tr("Photos"), tr("km"), tr("Time"), tr("Turns"), tr("Cover %"),
-                           tr("Plan ms")});
-    const QStringList tips = {QString(), tr("Photos taken"), tr("Distance flown, home to home"),
-                              tr("Flight time (min:s), transit and every sortie included"), tr("Turns"),
+    m_stats = makeTable({tr("Aircraft"), tr("Photos"), tr("km"), tr("Time"), tr("Turns"),
+                         tr("Sorties"), tr("Cover %"), tr("Plan ms")});
+    m_compare = makeTable({tr("Planner"), tr("Photos"), tr("km"), tr("Time"), tr("Turns"),
+                           tr("Cover %"), tr("Plan ms")});
+    const QStringList tips = {QString(),
+                              tr("Photos taken"),
+                              tr("Distance flown, home to home"),
+                              tr("Flight time (min:s), transit and every sortie included"),
+                              tr("Turns"),
                               tr("Sorties: batteries needed")};
-    for (int c = 1; c < tips.size(); ++c) m_stats->horizontalHeaderItem(c)->setToolTip(tips[c]);
-    m_compareButton = new QPushButton(QIcon(QStringLiteral(":/icons/compare.svg")), tr("Compare planners"));
-    m_compareButton->setToolTip(tr("Plan the current mission with stride, raster and wavefront and compare them"));
+    for (int c = 1; c < tips.size(); ++c)
+        m_stats->horizontalHeaderItem(c)->setToolTip(tips[c]);
+    m_compareButton =
+        new QPushButton(QIcon(QStringLiteral(":/icons/compare.svg")), tr("Compare planners"));
+    m_compareButton->setToolTip(
+        tr("Plan the current mission with stride, raster and wavefront and compare them"));
     m_compareState = new QLabel;
     // Room for a header and three rows each (two aircraft and the total; the three planners).
     m_stats->setMinimumHeight(26 + 3 * 22 + 4);
@@ -77,7 +84,8 @@ StatisticsPanel::StatisticsPanel(MissionDocument* doc, PlanController* planner, 
     connect(m_compareButton, &QPushButton::clicked, m_planner, &PlanController::compare);
     connect(m_planner, &PlanController::planChanged, this, &StatisticsPanel::refreshStatistics);
     connect(m_doc, &MissionDocument::routesChanged, this, &StatisticsPanel::refreshStatistics);
-    connect(m_planner, &PlanController::comparisonChanged, this, &StatisticsPanel::refreshComparison);
+    connect(m_planner, &PlanController::comparisonChanged, this,
+            &StatisticsPanel::refreshComparison);
     refreshStatistics();
     refreshComparison();
 }
@@ -85,7 +93,8 @@ StatisticsPanel::StatisticsPanel(MissionDocument* doc, PlanController* planner, 
 void StatisticsPanel::refreshStatistics() {
     m_stats->setRowCount(0);
     const auto& plan = m_planner->plan();
-    if (!plan) return;
+    if (!plan)
+        return;
     const auto& mission = m_doc->mission();
     int batteriesTotal = 0;
     int photosDelta = 0;
@@ -96,13 +105,16 @@ void StatisticsPanel::refreshStatistics() {
         // Batteries: flights of the usable endurance (the reserve kept) this aircraft's time needs.
         // The plan's sorties when the core cut the flight into them; else an estimate.
         const double timeS = ap.timeS > 0 ? ap.timeS : ap.metrics.estimatedTimeS;
-        const double distanceM = ap.flightDistanceM > 0 ? ap.flightDistanceM : ap.metrics.pathLengthM;
+        const double distanceM =
+            ap.flightDistanceM > 0 ? ap.flightDistanceM : ap.metrics.pathLengthM;
         int batteries = std::max<int>(1, int(ap.sorties.size()));
         QColor colour(Qt::gray);
         for (const auto& a : mission.aircraft) {
-            if (a.name != ap.aircraft) continue;
+            if (a.name != ap.aircraft)
+                continue;
             const double usableS = a.enduranceMin * 60.0 * (1.0 - mission.options.batteryReserve);
-            if (ap.sorties.empty() && usableS > 0) batteries = std::max(1, int(std::ceil(timeS / usableS)));
+            if (ap.sorties.empty() && usableS > 0)
+                batteries = std::max(1, int(std::ceil(timeS / usableS)));
             colour = QColor(QString::fromStdString(a.colour));
         }
         batteriesTotal += batteries;
@@ -121,22 +133,26 @@ void StatisticsPanel::refreshStatistics() {
             photos = 0;
             double length = 0;
             std::optional<geo::Vec2> prev;
-            if (flown->home) prev = plan->frame->toLocal(*flown->home);
+            if (flown->home)
+                prev = plan->frame->toLocal(*flown->home);
             for (const auto& w : flown->waypoints) {
                 photos += w.kind == route::WaypointKind::Photo ? 1 : 0;
                 const geo::Vec2 p = plan->frame->toLocal(w.position);
-                if (prev) length += (p - *prev).norm();
+                if (prev)
+                    length += (p - *prev).norm();
                 prev = p;
             }
-            if (flown->home && prev) length += (plan->frame->toLocal(*flown->home) - *prev).norm();
+            if (flown->home && prev)
+                length += (plan->frame->toLocal(*flown->home) - *prev).norm();
             const double speed = flown->cruiseSpeedMps > 0 ? flown->cruiseSpeedMps : 10.0;
             shownTimeS = std::max(0.0, timeS + (length - distanceM) / speed);
             shownDistanceM = length;
             photosDelta += photos - ap.metrics.photos;
             distanceDelta += length - distanceM;
         }
-        auto* name = cell(QString::fromStdString(ap.aircraft) + (edited ? tr(" (edited)") : QString()),
-                          Qt::AlignLeft | Qt::AlignVCenter);
+        auto* name =
+            cell(QString::fromStdString(ap.aircraft) + (edited ? tr(" (edited)") : QString()),
+                 Qt::AlignLeft | Qt::AlignVCenter);
         QPixmap swatch(12, 12);
         swatch.fill(colour);
         name->setIcon(QIcon(swatch));
@@ -144,10 +160,13 @@ void StatisticsPanel::refreshStatistics() {
         m_stats->setItem(r, 1, cell(QString::number(photos)));
         m_stats->setItem(r, 2, cell(QString::number(shownDistanceM / 1000.0, 'f', 2)));
         m_stats->setItem(r, 3, cell(minutes(shownTimeS)));
-        if (edited) m_stats->item(r, 0)->setToolTip(tr("Photos, distance and time measured on the edited route"));
+        if (edited)
+            m_stats->item(r, 0)->setToolTip(
+                tr("Photos, distance and time measured on the edited route"));
         m_stats->setItem(r, 4, cell(QString::number(ap.metrics.turns)));
         m_stats->setItem(r, 5, cell(QString::number(batteries)));
-        const double cov = ap.metrics.visitable > 0 ? 100.0 * ap.metrics.cells / ap.metrics.visitable : 0.0;
+        const double cov =
+            ap.metrics.visitable > 0 ? 100.0 * ap.metrics.cells / ap.metrics.visitable : 0.0;
         m_stats->setItem(r, 6, cell(QString::number(cov, 'f', 1)));
         m_stats->setItem(r, 7, cell(QString::number(ap.metrics.planningMs, 'f', 0)));
     }
@@ -161,7 +180,8 @@ void StatisticsPanel::refreshStatistics() {
                        : t.visitable > 0       ? 100.0 * t.cells / t.visitable
                                                : 0.0;
     double distance = 0;
-    for (const auto& ap : plan->aircraft) distance += ap.flightDistanceM > 0 ? ap.flightDistanceM : ap.metrics.pathLengthM;
+    for (const auto& ap : plan->aircraft)
+        distance += ap.flightDistanceM > 0 ? ap.flightDistanceM : ap.metrics.pathLengthM;
     const double makespan = plan->makespanS > 0 ? plan->makespanS : t.estimatedTimeS;
     const QStringList values = {tr("Total"),
                                 QString::number(t.photos + photosDelta),
@@ -172,31 +192,40 @@ void StatisticsPanel::refreshStatistics() {
                                 QString::number(cov, 'f', 1),
                                 QString::number(m_planner->lastWallMs(), 'f', 0)};
     for (int c = 0; c < values.size(); ++c) {
-        auto* item = cell(values[c], c == 0 ? Qt::AlignLeft | Qt::AlignVCenter : Qt::AlignRight | Qt::AlignVCenter);
+        auto* item = cell(values[c], c == 0 ? Qt::AlignLeft | Qt::AlignVCenter
+                                            : Qt::AlignRight | Qt::AlignVCenter);
         item->setFont(bold);
         m_stats->setItem(r, c, item);
     }
     m_stats->item(r, 3)->setToolTip(tr("The longest aircraft's flight: they fly at the same time"));
-    m_stats->item(r, 6)->setToolTip(tr("Share of the area seen by the real footprints of all photos"));
+    m_stats->item(r, 6)->setToolTip(
+        tr("Share of the area seen by the real footprints of all photos"));
 }
 
 void StatisticsPanel::refreshComparison() {
     const auto& rows = m_planner->comparison();
     m_compareButton->setEnabled(!m_planner->isComparing());
-    m_compareState->setText(m_planner->isComparing() ? tr("running… (%1 of 3 done)").arg(rows.size())
-                            : rows.empty()           ? tr("not run yet")
-                                                     : tr("best value in bold green"));
+    m_compareState->setText(m_planner->isComparing()
+                                ? tr("running… (%1 of 3 done)").arg(rows.size())
+                            : rows.empty() ? tr("not run yet")
+                                           : tr("best value in bold green"));
     m_compare->setRowCount(int(rows.size()));
     // Per column: the best value (fewest photos, shortest distance and time, fewest turns, most
     // coverage, fastest planning).
     auto value = [](const PlannerComparisonRow& row, int col) -> double {
         switch (col) {
-        case 1: return row.totals.photos;
-        case 2: return row.totals.pathLengthM;
-        case 3: return row.totals.estimatedTimeS;
-        case 4: return row.totals.turns;
-        case 5: return -row.coveragePercent;
-        case 6: return row.wallMs;
+        case 1:
+            return row.totals.photos;
+        case 2:
+            return row.totals.pathLengthM;
+        case 3:
+            return row.totals.estimatedTimeS;
+        case 4:
+            return row.totals.turns;
+        case 5:
+            return -row.coveragePercent;
+        case 6:
+            return row.wallMs;
         }
         return 0;
     };
@@ -205,18 +234,23 @@ void StatisticsPanel::refreshComparison() {
         m_compare->setItem(r, 0, cell(plannerName(row.planner), Qt::AlignLeft | Qt::AlignVCenter));
         if (!row.ok) {
             m_compare->setItem(r, 1, cell(row.error, Qt::AlignLeft | Qt::AlignVCenter));
-            for (int c = 2; c < 7; ++c) m_compare->setItem(r, c, cell(QString()));
+            for (int c = 2; c < 7; ++c)
+                m_compare->setItem(r, c, cell(QString()));
             continue;
         }
         const auto& t = row.totals;
-        const QStringList values = {QString::number(t.photos), QString::number(t.pathLengthM / 1000.0, 'f', 2),
-                                    minutes(t.estimatedTimeS), QString::number(t.turns),
-                                    QString::number(row.coveragePercent, 'f', 1), QString::number(row.wallMs, 'f', 0)};
+        const QStringList values = {QString::number(t.photos),
+                                    QString::number(t.pathLengthM / 1000.0, 'f', 2),
+                                    minutes(t.estimatedTimeS),
+                                    QString::number(t.turns),
+                                    QString::number(row.coveragePercent, 'f', 1),
+                                    QString::number(row.wallMs, 'f', 0)};
         for (int c = 1; c <= 6; ++c) {
             auto* item = cell(values[c - 1]);
             bool best = true;
             for (const auto& other : rows)
-                if (other.ok && value(other, c) < value(row, c) - 1e-9) best = false;
+                if (other.ok && value(other, c) < value(row, c) - 1e-9)
+                    best = false;
             if (best && rows.size() > 1) {
                 QFont f = item->font();
                 f.setBold(true);

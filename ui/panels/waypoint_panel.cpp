@@ -30,15 +30,18 @@ namespace {
 class ActionDelegate : public QStyledItemDelegate {
 public:
     using QStyledItemDelegate::QStyledItemDelegate;
-    QWidget* createEditor(QWidget* parent, const QStyleOptionViewItem&, const QModelIndex&) const override {
+    QWidget* createEditor(QWidget* parent, const QStyleOptionViewItem&,
+                          const QModelIndex&) const override {
         auto* box = new QComboBox(parent);
-        for (int k = 0; k < 3; ++k) box->addItem(WaypointTableModel::actionName(k));
+        for (int k = 0; k < 3; ++k)
+            box->addItem(WaypointTableModel::actionName(k));
         return box;
     }
     void setEditorData(QWidget* editor, const QModelIndex& index) const override {
         static_cast<QComboBox*>(editor)->setCurrentText(index.data(Qt::EditRole).toString());
     }
-    void setModelData(QWidget* editor, QAbstractItemModel* model, const QModelIndex& index) const override {
+    void setModelData(QWidget* editor, QAbstractItemModel* model,
+                      const QModelIndex& index) const override {
         model->setData(index, static_cast<QComboBox*>(editor)->currentText());
     }
 };
@@ -74,11 +77,16 @@ WaypointPanel::WaypointPanel(MissionDocument* doc, PlanLayer* layer, QWidget* pa
     top->addWidget(m_routes, 1);
     top->addWidget(m_state);
     auto* buttons = new QHBoxLayout;
-    buttons->addWidget(button(tr("Insert"), tr("Insert a waypoint after the selected one"), [this] { insertAfterSelected(); }));
-    buttons->addWidget(button(tr("Delete"), tr("Delete the selected waypoints"), [this] { deleteSelected(); }));
-    buttons->addWidget(button(tr("Set altitude…"), tr("One altitude for the selected waypoints, or all when none is selected"),
-                              [this] { askAltitude(); }));
-    buttons->addWidget(button(tr("Reverse"), tr("Fly the route the other way round"), [this] { reverseRoute(); }));
+    buttons->addWidget(button(tr("Insert"), tr("Insert a waypoint after the selected one"),
+                              [this] { insertAfterSelected(); }));
+    buttons->addWidget(
+        button(tr("Delete"), tr("Delete the selected waypoints"), [this] { deleteSelected(); }));
+    buttons->addWidget(
+        button(tr("Set altitude…"),
+               tr("One altitude for the selected waypoints, or all when none is selected"),
+               [this] { askAltitude(); }));
+    buttons->addWidget(
+        button(tr("Reverse"), tr("Fly the route the other way round"), [this] { reverseRoute(); }));
     buttons->addStretch();
     auto* lay = new QVBoxLayout(this);
     lay->setContentsMargins(4, 4, 4, 4);
@@ -92,7 +100,8 @@ WaypointPanel::WaypointPanel(MissionDocument* doc, PlanLayer* layer, QWidget* pa
     });
     connect(m_doc, &MissionDocument::routesChanged, this, &WaypointPanel::rebuildRouteList);
     connect(m_layer, &PlanLayer::waypointSelectionChanged, this, &WaypointPanel::syncFromLayer);
-    connect(m_table->selectionModel(), &QItemSelectionModel::selectionChanged, this, &WaypointPanel::syncToLayer);
+    connect(m_table->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+            &WaypointPanel::syncToLayer);
     connect(m_model, &QAbstractItemModel::modelReset, this, [this] {
         // A new selection model is not created on reset, but its rows are gone: redo the link.
         syncFromLayer();
@@ -101,9 +110,13 @@ WaypointPanel::WaypointPanel(MissionDocument* doc, PlanLayer* layer, QWidget* pa
     rebuildRouteList();
 }
 
-int WaypointPanel::currentRoute() const { return m_routes->currentIndex(); }
+int WaypointPanel::currentRoute() const {
+    return m_routes->currentIndex();
+}
 
-void WaypointPanel::setCurrentRoute(int route) { m_routes->setCurrentIndex(route); }
+void WaypointPanel::setCurrentRoute(int route) {
+    m_routes->setCurrentIndex(route);
+}
 
 void WaypointPanel::rebuildRouteList() {
     const auto& routes = m_doc->routes();
@@ -112,42 +125,52 @@ void WaypointPanel::rebuildRouteList() {
         const QSignalBlocker block(m_routes);
         m_routes->clear();
         for (const auto& r : routes)
-            m_routes->addItem(QString::fromStdString(r.route.aircraft.empty() ? tr("Route").toStdString() : r.route.aircraft));
-        if (!routes.empty()) m_routes->setCurrentIndex(std::min(keep, int(routes.size()) - 1));
+            m_routes->addItem(QString::fromStdString(
+                r.route.aircraft.empty() ? tr("Route").toStdString() : r.route.aircraft));
+        if (!routes.empty())
+            m_routes->setCurrentIndex(std::min(keep, int(routes.size()) - 1));
     }
     const int cur = m_routes->currentIndex();
-    if (m_model->route() != cur) m_model->setRoute(cur);
+    if (m_model->route() != cur)
+        m_model->setRoute(cur);
     const bool edited = cur >= 0 && routes[std::size_t(cur)].edited;
-    m_state->setText(cur < 0 ? tr("no plan yet")
-                             : edited ? tr("<b>edited</b> · %n waypoint(s)", nullptr,
-                                           int(routes[std::size_t(cur)].route.waypoints.size()))
-                                      : tr("as planned · %n waypoint(s)", nullptr,
-                                           int(routes[std::size_t(cur)].route.waypoints.size())));
+    m_state->setText(cur < 0  ? tr("no plan yet")
+                     : edited ? tr("<b>edited</b> · %n waypoint(s)", nullptr,
+                                   int(routes[std::size_t(cur)].route.waypoints.size()))
+                              : tr("as planned · %n waypoint(s)", nullptr,
+                                   int(routes[std::size_t(cur)].route.waypoints.size())));
 }
 
 QList<int> WaypointPanel::selectedWaypoints() const {
     QList<int> rows;
-    for (const auto& idx : m_table->selectionModel()->selectedRows()) rows << idx.row();
+    for (const auto& idx : m_table->selectionModel()->selectedRows())
+        rows << idx.row();
     std::sort(rows.begin(), rows.end());
     return rows;
 }
 
 void WaypointPanel::syncFromLayer() {
-    if (m_syncing) return;
+    if (m_syncing)
+        return;
     m_syncing = true;
     const int r = m_layer->selectedRoute();
-    if (r >= 0 && r != m_routes->currentIndex()) m_routes->setCurrentIndex(r);
+    if (r >= 0 && r != m_routes->currentIndex())
+        m_routes->setCurrentIndex(r);
     QItemSelection sel;
     if (r == m_model->route())
         for (int i : m_layer->selectedWaypoints())
-            if (i < m_model->rowCount()) sel.select(m_model->index(i, 0), m_model->index(i, WaypointTableModel::ColumnCount - 1));
+            if (i < m_model->rowCount())
+                sel.select(m_model->index(i, 0),
+                           m_model->index(i, WaypointTableModel::ColumnCount - 1));
     m_table->selectionModel()->select(sel, QItemSelectionModel::ClearAndSelect);
-    if (!sel.isEmpty()) m_table->scrollTo(sel.indexes().first());
+    if (!sel.isEmpty())
+        m_table->scrollTo(sel.indexes().first());
     m_syncing = false;
 }
 
 void WaypointPanel::syncToLayer() {
-    if (m_syncing) return;
+    if (m_syncing)
+        return;
     m_syncing = true;
     m_layer->selectWaypoints(m_model->route(), selectedWaypoints());
     m_syncing = false;
@@ -155,43 +178,53 @@ void WaypointPanel::syncToLayer() {
 
 void WaypointPanel::setAltitude(double altitudeM, bool all) {
     const int r = m_model->route();
-    if (r < 0) return;
-    m_doc->undoStack()->push(new SetWaypointAltitudeCommand(m_doc, r, all ? QList<int>() : selectedWaypoints(), altitudeM));
+    if (r < 0)
+        return;
+    m_doc->undoStack()->push(new SetWaypointAltitudeCommand(
+        m_doc, r, all ? QList<int>() : selectedWaypoints(), altitudeM));
 }
 
 void WaypointPanel::askAltitude() {
     const int r = m_model->route();
-    if (r < 0) return;
+    if (r < 0)
+        return;
     const QList<int> sel = selectedWaypoints();
     const auto& wps = m_doc->routes()[std::size_t(r)].route.waypoints;
-    const double current = !wps.empty() ? wps[std::size_t(sel.isEmpty() ? 0 : sel.first())].altitudeM : 40.0;
+    const double current =
+        !wps.empty() ? wps[std::size_t(sel.isEmpty() ? 0 : sel.first())].altitudeM : 40.0;
     bool ok = false;
     const double alt = QInputDialog::getDouble(
         this, tr("Set altitude"),
         sel.isEmpty() ? tr("Altitude for all %1 waypoints (m above take-off):").arg(wps.size())
-                      : tr("Altitude for the %n selected waypoint(s) (m above take-off):", nullptr, sel.size()),
+                      : tr("Altitude for the %n selected waypoint(s) (m above take-off):", nullptr,
+                           sel.size()),
         current, 1.0, 500.0, 1, &ok);
-    if (ok) setAltitude(alt, sel.isEmpty());
+    if (ok)
+        setAltitude(alt, sel.isEmpty());
 }
 
 void WaypointPanel::reverseRoute() {
     const int r = m_model->route();
-    if (r >= 0) m_doc->undoStack()->push(new ReverseRouteCommand(m_doc, r));
+    if (r >= 0)
+        m_doc->undoStack()->push(new ReverseRouteCommand(m_doc, r));
 }
 
 void WaypointPanel::deleteSelected() {
     const int r = m_model->route();
     const QList<int> sel = selectedWaypoints();
-    if (r < 0 || sel.isEmpty()) return;
+    if (r < 0 || sel.isEmpty())
+        return;
     m_layer->selectWaypoints(-1, {});
     m_doc->undoStack()->push(new RemoveWaypointsCommand(m_doc, r, sel));
 }
 
 void WaypointPanel::insertAfterSelected() {
     const int r = m_model->route();
-    if (r < 0) return;
+    if (r < 0)
+        return;
     const auto& wps = m_doc->routes()[std::size_t(r)].route.waypoints;
-    if (wps.empty()) return;
+    if (wps.empty())
+        return;
     const QList<int> sel = selectedWaypoints();
     const int after = sel.isEmpty() ? int(wps.size()) - 1 : sel.last();
     // Halfway to the next waypoint (or a copy of the last one), as a turn point.

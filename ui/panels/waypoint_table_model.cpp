@@ -19,9 +19,12 @@ WaypointTableModel::WaypointTableModel(MissionDocument* doc, PlanLayer* layer, Q
 
 QString WaypointTableModel::actionName(int kind) {
     switch (route::WaypointKind(kind)) {
-    case route::WaypointKind::Photo: return tr("photo");
-    case route::WaypointKind::Turn: return tr("turn");
-    case route::WaypointKind::Transit: return tr("transit");
+    case route::WaypointKind::Photo:
+        return tr("photo");
+    case route::WaypointKind::Turn:
+        return tr("turn");
+    case route::WaypointKind::Transit:
+        return tr("transit");
     }
     return {};
 }
@@ -36,106 +39,146 @@ void WaypointTableModel::setRoute(int routeIndex) {
 }
 
 void WaypointTableModel::refresh() {
-    if (m_route >= int(m_doc->routes().size())) m_route = m_doc->routes().empty() ? -1 : 0;
-    const int rows = m_route >= 0 ? int(m_doc->routes()[std::size_t(m_route)].route.waypoints.size()) : 0;
+    if (m_route >= int(m_doc->routes().size()))
+        m_route = m_doc->routes().empty() ? -1 : 0;
+    const int rows =
+        m_route >= 0 ? int(m_doc->routes()[std::size_t(m_route)].route.waypoints.size()) : 0;
     if (rows != m_rows) {
         setRoute(m_route);
         return;
     }
-    if (rows > 0) emit dataChanged(index(0, 0), index(rows - 1, ColumnCount - 1));
+    if (rows > 0)
+        emit dataChanged(index(0, 0), index(rows - 1, ColumnCount - 1));
 }
 
-int WaypointTableModel::rowCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : m_rows; }
+int WaypointTableModel::rowCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : m_rows;
+}
 
-int WaypointTableModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : ColumnCount; }
+int WaypointTableModel::columnCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : ColumnCount;
+}
 
 QVariant WaypointTableModel::data(const QModelIndex& index, int role) const {
-    if (!index.isValid() || m_route < 0 || m_route >= int(m_doc->routes().size())) return {};
+    if (!index.isValid() || m_route < 0 || m_route >= int(m_doc->routes().size()))
+        return {};
     const auto& wps = m_doc->routes()[std::size_t(m_route)].route.waypoints;
-    if (index.row() >= int(wps.size())) return {};
+    if (index.row() >= int(wps.size()))
+        return {};
     const auto& w = wps[std::size_t(index.row())];
     QString problem;
     const auto& issues = m_layer->issues();
     if (m_route < int(issues.size())) {
         const auto& is = issues[std::size_t(m_route)];
-        if (index.row() < int(is.waypoint.size())) problem = is.waypoint[std::size_t(index.row())];
-        if (problem.isEmpty() && index.row() < int(is.leg.size())) problem = is.leg[std::size_t(index.row())];
+        if (index.row() < int(is.waypoint.size()))
+            problem = is.waypoint[std::size_t(index.row())];
+        if (problem.isEmpty() && index.row() < int(is.leg.size()))
+            problem = is.leg[std::size_t(index.row())];
     }
-    if (role == Qt::BackgroundRole && !problem.isEmpty()) return QBrush(QColor(255, 205, 205));
-    if (role == Qt::ToolTipRole && !problem.isEmpty()) return problem;
+    if (role == Qt::BackgroundRole && !problem.isEmpty())
+        return QBrush(QColor(255, 205, 205));
+    if (role == Qt::ToolTipRole && !problem.isEmpty())
+        return problem;
     if (role == Qt::TextAlignmentRole && index.column() != Action && index.column() != Problem)
         return int(Qt::AlignRight | Qt::AlignVCenter);
     if (role == Qt::DisplayRole) {
         switch (index.column()) {
-        case Number: return index.row() + 1;
-        case Latitude: return QString::number(w.position.lat, 'f', 7);
-        case Longitude: return QString::number(w.position.lon, 'f', 7);
-        case Altitude: return QString::number(w.altitudeM, 'f', 1);
-        case Heading: return QString::number(w.headingDeg, 'f', 1);
-        case Action: return actionName(int(w.kind));
-        case Problem: return problem;
+        case Number:
+            return index.row() + 1;
+        case Latitude:
+            return QString::number(w.position.lat, 'f', 7);
+        case Longitude:
+            return QString::number(w.position.lon, 'f', 7);
+        case Altitude:
+            return QString::number(w.altitudeM, 'f', 1);
+        case Heading:
+            return QString::number(w.headingDeg, 'f', 1);
+        case Action:
+            return actionName(int(w.kind));
+        case Problem:
+            return problem;
         }
     }
     if (role == Qt::EditRole) {
         switch (index.column()) {
-        case Latitude: return w.position.lat;
-        case Longitude: return w.position.lon;
-        case Altitude: return w.altitudeM;
-        case Heading: return w.headingDeg;
-        case Action: return actionName(int(w.kind));
+        case Latitude:
+            return w.position.lat;
+        case Longitude:
+            return w.position.lon;
+        case Altitude:
+            return w.altitudeM;
+        case Heading:
+            return w.headingDeg;
+        case Action:
+            return actionName(int(w.kind));
         }
     }
     return {};
 }
 
 QVariant WaypointTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
-    if (orientation != Qt::Horizontal || role != Qt::DisplayRole) return {};
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return {};
     switch (section) {
-    case Number: return tr("#");
-    case Latitude: return tr("Latitude");
-    case Longitude: return tr("Longitude");
-    case Altitude: return tr("Alt (m)");
-    case Heading: return tr("Heading (°)");
-    case Action: return tr("Action");
-    case Problem: return tr("Problem");
+    case Number:
+        return tr("#");
+    case Latitude:
+        return tr("Latitude");
+    case Longitude:
+        return tr("Longitude");
+    case Altitude:
+        return tr("Alt (m)");
+    case Heading:
+        return tr("Heading (°)");
+    case Action:
+        return tr("Action");
+    case Problem:
+        return tr("Problem");
     }
     return {};
 }
 
 Qt::ItemFlags WaypointTableModel::flags(const QModelIndex& index) const {
     Qt::ItemFlags f = QAbstractTableModel::flags(index);
-    if (index.column() >= Latitude && index.column() <= Action) f |= Qt::ItemIsEditable;
+    if (index.column() >= Latitude && index.column() <= Action)
+        f |= Qt::ItemIsEditable;
     return f;
 }
 
 bool WaypointTableModel::setData(const QModelIndex& index, const QVariant& value, int role) {
-    if (role != Qt::EditRole || m_route < 0 || m_route >= int(m_doc->routes().size())) return false;
+    if (role != Qt::EditRole || m_route < 0 || m_route >= int(m_doc->routes().size()))
+        return false;
     const auto& wps = m_doc->routes()[std::size_t(m_route)].route.waypoints;
-    if (index.row() < 0 || index.row() >= int(wps.size())) return false;
+    if (index.row() < 0 || index.row() >= int(wps.size()))
+        return false;
     route::Waypoint w = wps[std::size_t(index.row())];
     bool ok = true;
     switch (index.column()) {
     case Latitude: {
         const double v = value.toDouble(&ok);
-        if (!ok || v < -90 || v > 90) return false;
+        if (!ok || v < -90 || v > 90)
+            return false;
         w.position.lat = v;
         break;
     }
     case Longitude: {
         const double v = value.toDouble(&ok);
-        if (!ok || v < -180 || v > 180) return false;
+        if (!ok || v < -180 || v > 180)
+            return false;
         w.position.lon = v;
         break;
     }
     case Altitude: {
         const double v = value.toDouble(&ok);
-        if (!ok || v <= 0) return false;
+        if (!ok || v <= 0)
+            return false;
         w.altitudeM = v;
         break;
     }
     case Heading: {
         const double v = value.toDouble(&ok);
-        if (!ok) return false;
+        if (!ok)
+            return false;
         w.headingDeg = std::fmod(std::fmod(v, 360.0) + 360.0, 360.0);
         break;
     }
@@ -143,14 +186,18 @@ bool WaypointTableModel::setData(const QModelIndex& index, const QVariant& value
         const QString s = value.toString().trimmed().toLower();
         int found = -1;
         for (int k = 0; k < 3; ++k)
-            if (s == actionName(k)) found = k;
-        if (found < 0) return false;
+            if (s == actionName(k))
+                found = k;
+        if (found < 0)
+            return false;
         w.kind = route::WaypointKind(found);
         break;
     }
-    default: return false;
+    default:
+        return false;
     }
-    if (w == wps[std::size_t(index.row())]) return true;
+    if (w == wps[std::size_t(index.row())])
+        return true;
     m_doc->undoStack()->push(new EditWaypointCommand(m_doc, m_route, index.row(), w));
     return true;
 }

@@ -14,9 +14,12 @@ namespace pf::ui {
 
 QString plannerName(mission::PlannerKind kind) {
     switch (kind) {
-    case mission::PlannerKind::Stride: return QCoreApplication::translate("Planner", "Stride");
-    case mission::PlannerKind::Raster: return QCoreApplication::translate("Planner", "Raster");
-    case mission::PlannerKind::Wavefront: return QCoreApplication::translate("Planner", "Wavefront");
+    case mission::PlannerKind::Stride:
+        return QCoreApplication::translate("Planner", "Stride");
+    case mission::PlannerKind::Raster:
+        return QCoreApplication::translate("Planner", "Raster");
+    case mission::PlannerKind::Wavefront:
+        return QCoreApplication::translate("Planner", "Wavefront");
     }
     return {};
 }
@@ -28,12 +31,14 @@ struct PlanController::Outcome {
     double wallMs = 0.0;
 };
 
-PlanController::PlanController(MissionDocument* doc, QObject* parent) : QObject(parent), m_doc(doc) {
+PlanController::PlanController(MissionDocument* doc, QObject* parent)
+    : QObject(parent), m_doc(doc) {
     m_debounce.setSingleShot(true);
     m_debounce.setInterval(kDebounceMs);
     connect(&m_debounce, &QTimer::timeout, this, [this] { start(false); });
     connect(m_doc, &MissionDocument::changed, this, [this] {
-        if (m_auto) m_debounce.start();
+        if (m_auto)
+            m_debounce.start();
     });
     connect(m_doc, &MissionDocument::missionReset, this, [this] {
         // A different mission: nothing of the old one's plans may appear.
@@ -55,7 +60,8 @@ PlanController::~PlanController() = default;
 
 void PlanController::setAutoPlan(bool on) {
     m_auto = on;
-    if (!on) m_debounce.stop();
+    if (!on)
+        m_debounce.stop();
 }
 
 void PlanController::planNow(bool replaceEdited) {
@@ -65,21 +71,24 @@ void PlanController::planNow(bool replaceEdited) {
 
 void PlanController::cancel() {
     m_debounce.stop();
-    if (!m_busy) return;
+    if (!m_busy)
+        return;
     ++m_generation;
     setBusy(false);
     emit message(tr("Planning cancelled."));
 }
 
 void PlanController::setBusy(bool on) {
-    if (m_busy == on) return;
+    if (m_busy == on)
+        return;
     m_busy = on;
     emit busyChanged(on);
 }
 
 void PlanController::start(bool userAsked, bool replaceEdited) {
     const int generation = ++m_generation;
-    if (replaceEdited) m_replaceGeneration = generation;
+    if (replaceEdited)
+        m_replaceGeneration = generation;
     mission::Mission m = m_doc->mission();
     if (m.area.outer.size() < 3 || m.aircraft.empty()) {
         // Nothing to plan yet: say what is missing instead of a planner error.
@@ -90,7 +99,8 @@ void PlanController::start(bool userAsked, bool replaceEdited) {
         return;
     }
     setBusy(true);
-    if (userAsked) emit message(tr("Planning…"));
+    if (userAsked)
+        emit message(tr("Planning…"));
     auto* watcher = new QFutureWatcher<std::shared_ptr<const Outcome>>(this);
     connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] {
         finished(watcher->result());
@@ -112,7 +122,8 @@ void PlanController::start(bool userAsked, bool replaceEdited) {
 }
 
 void PlanController::finished(const std::shared_ptr<const Outcome>& outcome) {
-    if (!outcome || outcome->generation != m_generation) return; // superseded or cancelled
+    if (!outcome || outcome->generation != m_generation)
+        return; // superseded or cancelled
     setBusy(false);
     m_wallMs = outcome->wallMs;
     if (!outcome->plan) {
@@ -139,7 +150,8 @@ void PlanController::apply(mission::MissionPlan plan, double wallMs) {
         emit pendingPlanChanged(false);
     }
     std::vector<route::Route> routes;
-    for (const auto& a : plan.aircraft) routes.push_back(a.route);
+    for (const auto& a : plan.aircraft)
+        routes.push_back(a.route);
     m_plan = std::move(plan);
     m_wallMs = wallMs;
     m_doc->setPlannedRoutes(std::move(routes));
@@ -148,7 +160,8 @@ void PlanController::apply(mission::MissionPlan plan, double wallMs) {
 }
 
 void PlanController::acceptPendingPlan() {
-    if (!m_pending) return;
+    if (!m_pending)
+        return;
     auto p = std::move(*m_pending);
     m_pending.reset();
     emit pendingPlanChanged(false);
@@ -156,7 +169,8 @@ void PlanController::acceptPendingPlan() {
 }
 
 void PlanController::discardPendingPlan() {
-    if (!m_pending) return;
+    if (!m_pending)
+        return;
     m_pending.reset();
     emit pendingPlanChanged(false);
 }
@@ -164,7 +178,8 @@ void PlanController::discardPendingPlan() {
 void PlanController::compare() {
     const int generation = ++m_compareGeneration;
     const mission::Mission base = m_doc->mission();
-    const mission::PlannerKind kinds[] = {mission::PlannerKind::Stride, mission::PlannerKind::Raster,
+    const mission::PlannerKind kinds[] = {mission::PlannerKind::Stride,
+                                          mission::PlannerKind::Raster,
                                           mission::PlannerKind::Wavefront};
     m_comparison.clear();
     m_comparing = 0;
@@ -176,7 +191,8 @@ void PlanController::compare() {
         auto* watcher = new QFutureWatcher<PlannerComparisonRow>(this);
         connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, generation] {
             watcher->deleteLater();
-            if (generation != m_compareGeneration) return;
+            if (generation != m_compareGeneration)
+                return;
             --m_comparing;
             m_comparison.push_back(watcher->result());
             std::sort(m_comparison.begin(), m_comparison.end(),
@@ -197,13 +213,17 @@ void PlanController::compare() {
             row.ok = true;
             row.totals = r->totals;
             row.coveragePercent = r->coverageRatio > 0 ? 100.0 * r->coverageRatio
-                                  : r->totals.visitable > 0 ? 100.0 * r->totals.cells / r->totals.visitable
-                                                            : 0.0;
+                                  : r->totals.visitable > 0
+                                      ? 100.0 * r->totals.cells / r->totals.visitable
+                                      : 0.0;
             // Time: the makespan of the whole flight (transit and sorties included) when known.
-            if (r->makespanS > 0) row.totals.estimatedTimeS = r->makespanS;
+            if (r->makespanS > 0)
+                row.totals.estimatedTimeS = r->makespanS;
             double flown = 0;
-            for (const auto& ap : r->aircraft) flown += ap.flightDistanceM;
-            if (flown > 0) row.totals.pathLengthM = flown; // home to home, as the statistics show it
+            for (const auto& ap : r->aircraft)
+                flown += ap.flightDistanceM;
+            if (flown > 0)
+                row.totals.pathLengthM = flown; // home to home, as the statistics show it
             return row;
         }));
     }
@@ -213,7 +233,8 @@ bool PlanController::waitForIdle(int timeoutMs) {
     QElapsedTimer t;
     t.start();
     while (m_busy || m_comparing > 0 || m_debounce.isActive()) {
-        if (t.elapsed() > timeoutMs) return false;
+        if (t.elapsed() > timeoutMs)
+            return false;
         QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
         QThread::msleep(5);
     }

@@ -35,12 +35,13 @@ public:
     explicit PlanController(MissionDocument* doc, QObject* parent = nullptr);
     ~PlanController() override;
 
-    // Starts a plan now (Plan button, F5). A running plan is superseded: its result will be dropped.
-    // `replaceEdited`: the user agreed that this plan replaces routes edited by hand; otherwise a
-    // plan finishing while routes are edited waits as the pending plan.
+    // Starts a plan now (Plan button, F5). A running plan is superseded: its result will be
+    // dropped. `replaceEdited`: the user agreed that this plan replaces routes edited by hand;
+    // otherwise a plan finishing while routes are edited waits as the pending plan.
     void planNow(bool replaceEdited = false);
-    // Stops waiting for the running plan. The core has no cancel hook, so the computation finishes on
-    // its worker thread, but its result is dropped (generation numbers): no outdated plan is shown.
+    // Stops waiting for the running plan. The core has no cancel hook, so the computation finishes
+    // on its worker thread, but its result is dropped (generation numbers): no outdated plan is
+    // shown.
     void cancel();
     bool isBusy() const { return m_busy; }
     // Replanning a short while after every edit of the mission.

@@ -15,40 +15,51 @@ QStringList exportRoutes(const mission::Mission& mission, const std::vector<rout
         chosen = routes;
     } else {
         for (int i : request.routes)
-            if (i >= 0 && i < int(routes.size())) chosen.push_back(routes[std::size_t(i)]);
+            if (i >= 0 && i < int(routes.size()))
+                chosen.push_back(routes[std::size_t(i)]);
     }
     auto fail = [&](const QString& why) {
-        if (error) *error = why;
+        if (error)
+            *error = why;
         return written;
     };
-    if (chosen.empty()) return fail(QCoreApplication::translate("Export", "Nothing to export: no route is planned or chosen."));
-    if (request.formats.empty()) return fail(QCoreApplication::translate("Export", "Choose at least one format."));
+    if (chosen.empty())
+        return fail(QCoreApplication::translate(
+            "Export", "Nothing to export: no route is planned or chosen."));
+    if (request.formats.empty())
+        return fail(QCoreApplication::translate("Export", "Choose at least one format."));
     QDir dir(request.folder);
     if (request.folder.isEmpty() || (!dir.exists() && !dir.mkpath(QStringLiteral("."))))
-        return fail(QCoreApplication::translate("Export", "The folder %1 cannot be created.").arg(request.folder));
+        return fail(QCoreApplication::translate("Export", "The folder %1 cannot be created.")
+                        .arg(request.folder));
     io::ExportContext ctx = io::makeExportContext(mission, chosen);
     // The KML export draws the smoothed path; without it the KML still holds the waypoints.
-    if (std::find(request.formats.begin(), request.formats.end(), io::WaypointFormat::Kml) != request.formats.end())
+    if (std::find(request.formats.begin(), request.formats.end(), io::WaypointFormat::Kml) !=
+        request.formats.end())
         (void)io::addTrajectories(ctx);
     for (auto fmt : request.formats) {
         const auto& info = io::formatInfo(fmt);
         if (request.perAircraft || !info.combined) {
             for (std::size_t i = 0; i < ctx.routes.size(); ++i) {
-                const QString path = dir.filePath(request.stem + QLatin1Char('-') +
-                                                  QString::fromStdString(io::routeFileName(ctx, i, fmt)));
+                const QString path =
+                    dir.filePath(request.stem + QLatin1Char('-') +
+                                 QString::fromStdString(io::routeFileName(ctx, i, fmt)));
                 auto st = io::exportRoute(ctx, i, fmt, path.toStdString(), request.options);
-                if (!st) return fail(QString::fromStdString(st.error().message));
+                if (!st)
+                    return fail(QString::fromStdString(st.error().message));
                 written << path;
             }
         }
         if (request.combined && info.combined) {
             const QString path = dir.filePath(request.stem + QString::fromLatin1(info.extension));
             auto st = io::exportCombined(ctx, fmt, path.toStdString(), request.options);
-            if (!st) return fail(QString::fromStdString(st.error().message));
+            if (!st)
+                return fail(QString::fromStdString(st.error().message));
             written << path;
         }
     }
-    if (error) error->clear();
+    if (error)
+        error->clear();
     return written;
 }
 

@@ -1,4 +1,5 @@
-// Writing the document's routes through the core's waypoint exporters (what the export dialog runs).
+// Writing the document's routes through the core's waypoint exporters (what the export dialog
+// runs).
 #pragma once
 
 #include "core/io/waypoint_formats.h"

@@ -11,7 +11,8 @@
 namespace pf::ui {
 
 struct RouteIssues {
-    // Per waypoint: empty when fine, else the reason in words ("inside the safety margin of Warehouse").
+    // Per waypoint: empty when fine, else the reason in words ("inside the safety margin of
+    // Warehouse").
     std::vector<QString> waypoint;
     // Per leg i (waypoint i -> i + 1): empty when fine, else the reason.
     std::vector<QString> leg;

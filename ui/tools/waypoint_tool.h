@@ -12,7 +12,8 @@ class PlanLayer;
 class WaypointTool : public AbstractTool {
     Q_OBJECT
 public:
-    WaypointTool(MissionDocument* doc, MissionLayer* layer, PlanLayer* plan, QObject* parent = nullptr);
+    WaypointTool(MissionDocument* doc, MissionLayer* layer, PlanLayer* plan,
+                 QObject* parent = nullptr);
     QString hint() const override;
     void deactivate(MapView* view) override;
     void mousePressed(QMouseEvent* e, const QPointF& scenePos) override;
