@@ -44,19 +44,29 @@ mission::Mission squareMission(double sideM) {
 TEST(LargeInput, AreaBeyondTheBudgetIsRefusedWithAdvice) {
     mission::Mission m = squareMission(20'000.0);
     m.options.maxCells = 100'000;
+    // The check before planning (what the CLI and the GUI show): the altitude that would fit.
+    const mission::ValidationReport report = mission::validateMission(m);
+    ASSERT_TRUE(report.hasErrors());
+    const std::string summary = report.errorSummary();
+    EXPECT_NE(summary.find("the area is too large for the cell budget"), std::string::npos) << summary;
+    EXPECT_NE(summary.find("more than the budget of 100,000"), std::string::npos) << summary;
+    EXPECT_NE(summary.find("an altitude of at least"), std::string::npos) << summary;
+    EXPECT_NE(summary.find("would fit"), std::string::npos) << summary;
+    // Planning anyway is refused before any per-cell memory is taken, with the cell size that fits.
     const auto plan = mission::planMission(m);
     ASSERT_FALSE(plan);
     const std::string& msg = plan.error().message;
     EXPECT_NE(msg.find("the area is too large for the cell budget"), std::string::npos) << msg;
     EXPECT_NE(msg.find("more than the budget of 100,000"), std::string::npos) << msg;
-    // The advice: the altitude (and cell size) at which the area would fit.
-    EXPECT_NE(msg.find("an altitude of at least"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("a cell size of at least"), std::string::npos) << msg;
     EXPECT_NE(msg.find("would fit"), std::string::npos) << msg;
 }
 
 // About 10^6 cells (Falcon 8 at 40 m: 16.8 m cells, a 16.8 km square). Labelled "large" in CTest.
 TEST(LargeInput, PlanningAMillionCellsStaysUnderOneGigabyte) {
     mission::Mission m = squareMission(16'800.0);
+    // One long flight: the test is about memory, not about splitting the route into sorties.
+    m.aircraft.front().enduranceMin = 1e6;
     const auto plan = mission::planMission(m);
     ASSERT_TRUE(plan) << plan.error().message;
     ASSERT_EQ(plan->aircraft.size(), 1u);
