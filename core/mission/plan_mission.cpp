@@ -271,14 +271,18 @@ Result<MissionPlan> planMission(const Mission& m) {
     fleet::AreaSplitOptions so;
     so.gridAngleDeg = estimateAngle;
     so.safetyMarginM = opt.safetyMarginM;
+    // Tighter than the balancer's default (5 %): the stages after the estimate add their own spread,
+    // and the target is the final makespan within 10 % of the ideal.
+    so.balance.tolerance = 0.03;
     std::vector<double> factor(n, 1.0);
     std::optional<MissionPlan> best;
     const auto ratio = [](const MissionPlan& p) { return p.idealS > 0 ? p.makespanS / p.idealS : 1.0; };
     // The estimate misses what comes after the per-aircraft plan: photos dropped because a neighbour
     // with a larger footprint already sees them, detours, the safe transit. So: split, plan to the
-    // end, measure each aircraft's final time against its estimate, and split again with the
-    // estimates scaled by that factor; at most twice, keeping the plan with the smallest makespan.
-    for (int round = 0; round < 3; ++round) {
+    // end, measure each aircraft's final time against its estimate, and split again with each
+    // estimate scaled by that factor; a few rounds at most, keeping the plan with the smallest makespan.
+    constexpr int kRounds = 5;
+    for (int round = 0; round < kRounds; ++round) {
         const fleet::RegionTimeEstimator estimate = [&](int k, const geo::MultiPolygon& sub) -> Result<double> {
             auto t = rawEstimate(static_cast<std::size_t>(k), sub);
             if (!t)
@@ -291,17 +295,18 @@ Result<MissionPlan> planMission(const Mission& m) {
         auto p = buildPlan(m, *geom, split->subareas, homes, landing);
         if (!p)
             return p.error();
+        // The factors of the plan just made, before it is possibly moved into `best`.
+        std::vector<double> next = factor;
+        for (std::size_t k = 0; k < n; ++k) {
+            auto e = rawEstimate(k, p->aircraft[k].subarea);
+            if (e && *e > 0 && p->aircraft[k].timeS > 0)
+                next[k] = p->aircraft[k].timeS / *e;
+        }
         if (!best || p->makespanS < best->makespanS)
             best = std::move(*p);
-        else
+        if (ratio(*best) <= 1.0 + so.balance.tolerance || next == factor)
             break;
-        if (ratio(*best) <= 1.0 + so.balance.tolerance || round == 2)
-            break;
-        for (std::size_t k = 0; k < n; ++k) {
-            auto e = rawEstimate(k, best->aircraft[k].subarea);
-            if (e && *e > 0 && best->aircraft[k].timeS > 0)
-                factor[k] = best->aircraft[k].timeS / *e;
-        }
+        factor = std::move(next);
     }
     return std::move(*best);
 }

@@ -1,5 +1,7 @@
 #include "core/mission/plan_mission.h"
 
+#include "core/geo/polygon_ops.h"
+
 #include <gtest/gtest.h>
 
 #include <cpl_json.h>
@@ -62,7 +64,12 @@ TEST(PlanMission, DemoSiteStrideCoversEverythingWithoutJumps) {
     EXPECT_GE(a.metrics.photos, a.metrics.cells);
     EXPECT_GE(a.metrics.turnLowerBound, 0);
     EXPECT_EQ(a.anglesTried, 1);
-    EXPECT_TRUE(plan->warnings.empty());
+    // The only warnings: photos of a cell next to a zone that the safety stage moved out of the margin
+    // (the photos of a cell are spread around its flight position). Coverage does not suffer.
+    for (const auto& w : plan->warnings)
+        EXPECT_NE(w.find("was inside a no-fly margin and moved"), std::string::npos) << w;
+    EXPECT_GE(plan->coverageRatio, 0.995);
+    EXPECT_EQ(plan->noFlyViolations, 0);
     // Every cell of the path is flown at a safe position, and the route mirrors the local waypoints.
     for (int c : a.path.cells)
         EXPECT_TRUE(a.grid.pointIsSafe(a.grid.flightPosition(c)));
@@ -103,17 +110,102 @@ TEST(PlanMission, EveryPlannerCompletes) {
     }
 }
 
-TEST(PlanMission, SeveralAircraftWarnAndPlanOnlyTheFirst) {
+// Two aircraft with different cameras and altitudes share the demo site: every aircraft gets a
+// subarea and a complete flight from home and back, the photos of all of them cover the area and no
+// leg breaks a margin; the route is the concatenation of the sorties.
+TEST(PlanMission, SeveralAircraftShareTheAreaEndToEnd) {
     Mission m = demoMission();
     AircraftConfig b = m.aircraft.front();
     b.name = "Falcon 2";
+    b.altitudeM = 70;
+    b.cruiseSpeedMps = 12;
     m.aircraft.push_back(b);
     auto plan = planMission(m);
-    ASSERT_TRUE(plan.ok());
-    EXPECT_EQ(plan->aircraft.size(), 1u);
-    ASSERT_EQ(plan->warnings.size(), 1u);
-    EXPECT_NE(plan->warnings.front().find("multi-aircraft partitioning not available"), std::string::npos);
-    EXPECT_NE(plan->warnings.front().find("\"Falcon 2\""), std::string::npos);
+    ASSERT_TRUE(plan.ok()) << plan.error().message;
+    ASSERT_EQ(plan->aircraft.size(), 2u);
+    for (const auto& w : plan->warnings)
+        EXPECT_EQ(w.find("not available"), std::string::npos) << w;
+    double sum = 0.0;
+    for (const auto& a : plan->aircraft) {
+        EXPECT_FALSE(a.subarea.empty()) << a.aircraft;
+        EXPECT_GT(a.metrics.photos, 0) << a.aircraft;
+        ASSERT_FALSE(a.sorties.empty());
+        EXPECT_EQ(a.sorties.front().firstWaypoint, 0);
+        EXPECT_EQ(a.sorties.back().lastWaypoint, static_cast<int>(a.route.waypoints.size()) - 1);
+        EXPECT_EQ(a.sortieRoutes.size(), a.sorties.size());
+        EXPECT_EQ(a.route.waypoints.size(), a.localWaypoints.size());
+        EXPECT_TRUE(a.route.home.has_value());
+        // Out from home and back by Transit waypoints or straight legs, never a photo at home.
+        EXPECT_NE(a.route.waypoints.front().kind, route::WaypointKind::Turn);
+        double t = 0.0;
+        for (const auto& s : a.sorties)
+            t += s.timeS;
+        EXPECT_NEAR(t, a.timeS, 1e-6);
+        sum += a.timeS;
+        EXPECT_LE(a.timeS, plan->makespanS + 1e-9);
+    }
+    EXPECT_NEAR(plan->idealS, sum / 2, 1e-6);
+    // The two subareas share at most a boundary.
+    const double overlap = geo::area(geo::intersection(plan->aircraft[0].subarea, plan->aircraft[1].subarea.front()));
+    EXPECT_LT(overlap, 1.0);
+    EXPECT_GE(plan->coverageRatio, 0.995);
+    EXPECT_EQ(plan->noFlyViolations, 0);
+    EXPECT_LE(plan->makespanS / plan->idealS, 1.25);
+}
+
+// An endurance too short for the survey splits it into sorties that each return home and fit the
+// battery less the reserve; the route flies them one after the other.
+TEST(PlanMission, ShortEnduranceGivesSorties) {
+    Mission m = demoMission();
+    m.aircraft.front().enduranceMin = 3.0;
+    m.options.batteryReserve = 0.25;
+    auto plan = planMission(m);
+    ASSERT_TRUE(plan.ok()) << plan.error().message;
+    const AircraftPlan& a = plan->aircraft.front();
+    ASSERT_GE(a.sorties.size(), 2u);
+    int photos = 0;
+    for (std::size_t i = 0; i < a.sorties.size(); ++i) {
+        EXPECT_LE(a.sorties[i].timeS, 3.0 * 60 * 0.75 + 1e-6);
+        if (i > 0) {
+            EXPECT_EQ(a.sorties[i].firstWaypoint, a.sorties[i - 1].lastWaypoint + 1);
+        }
+        photos += a.sorties[i].photos;
+        EXPECT_EQ(a.sortieRoutes[i].waypoints.size(),
+                  static_cast<std::size_t>(a.sorties[i].lastWaypoint - a.sorties[i].firstWaypoint + 1));
+    }
+    EXPECT_EQ(photos, a.metrics.photos);
+    bool warned = false;
+    for (const auto& w : plan->warnings)
+        warned = warned || w.find("batteries") != std::string::npos;
+    EXPECT_TRUE(warned);
+    EXPECT_GE(plan->coverageRatio, 0.995);
+}
+
+// Two aircraft at the same altitude: a warning naming both and their altitudes.
+TEST(PlanMission, CloseAltitudesWarn) {
+    Mission m = demoMission();
+    AircraftConfig b = m.aircraft.front();
+    b.name = "Falcon 2";
+    b.altitudeM = 55; // 5 m above Falcon 1, separation asked: 10 m
+    m.aircraft.push_back(b);
+    auto plan = planMission(m);
+    ASSERT_TRUE(plan.ok()) << plan.error().message;
+    EXPECT_EQ(plan->altitudeConflicts, 1);
+    bool named = false;
+    for (const auto& w : plan->warnings)
+        named = named || (w.find("Falcon 1") != std::string::npos && w.find("Falcon 2") != std::string::npos);
+    EXPECT_TRUE(named);
+}
+
+// Keeping waypoints inside the area moves the photos that lay outside it without losing coverage.
+TEST(PlanMission, KeepInsideAreaMovesWaypointsAndKeepsCoverage) {
+    Mission m = demoMission();
+    m.options.keepInsideArea = true;
+    auto plan = planMission(m);
+    ASSERT_TRUE(plan.ok()) << plan.error().message;
+    EXPECT_GT(plan->aircraft.front().keptInside, 0);
+    EXPECT_GE(plan->coverageRatio, 0.995);
+    EXPECT_EQ(plan->noFlyViolations, 0);
 }
 
 TEST(PlanMission, BadInputs) {
@@ -186,6 +278,54 @@ TEST(PlanCli, WritesPlanAndMetrics) {
     EXPECT_GT(photo.GetDouble("alt_m"), 0);
     EXPECT_TRUE(photo.GetObj("heading_deg").IsValid());
     EXPECT_EQ(photo.GetString("aircraft"), aircraft[0].GetString("name"));
+    EXPECT_GT(photo.GetDouble("footprint_across_m"), photo.GetDouble("footprint_along_m"));
+    EXPECT_GT(photo.GetDouble("footprint_along_m"), 0);
+    // The plan-wide checks and the per-aircraft times.
+    EXPECT_GE(metrics.GetRoot().GetDouble("coverage_ratio"), 0.995);
+    EXPECT_EQ(metrics.GetRoot().GetInteger("nofly_violations", -1), 0);
+    const CPLJSONObject total = metrics.GetRoot().GetObj("total");
+    EXPECT_GE(total.GetDouble("coverage_ratio"), 0.995);
+    EXPECT_EQ(total.GetInteger("nofly_violations", -1), 0);
+    double makespan = 0;
+    for (int i = 0; i < aircraft.Size(); ++i) {
+        EXPECT_GT(aircraft[i].GetDouble("time_s"), 0);
+        EXPECT_GE(aircraft[i].GetInteger("sorties"), 1);
+        makespan = std::max(makespan, aircraft[i].GetDouble("time_s"));
+    }
+    EXPECT_DOUBLE_EQ(total.GetDouble("makespan_s"), makespan);
+    int subareas = 0;
+    for (int i = 0; i < features.Size(); ++i)
+        subareas += features[i].GetObj("properties").GetString("kind") == "subarea";
+    EXPECT_EQ(subareas, aircraft.Size());
+    std::filesystem::remove_all(dir);
+}
+
+// --format writes one file per aircraft and format, plus the combined KML; the .plan holds what
+// QGroundControl's loader requires.
+TEST(PlanCli, WritesEveryFormatPerAircraft) {
+    const auto dir = std::filesystem::temp_directory_path() / "pf_plan_cli_formats";
+    std::filesystem::remove_all(dir);
+    std::string err;
+    const int rc = runCli("plan " + std::string(PF_RESOURCES_DIR) +
+                              "/demo/demo_mission.json --grid-angle 0 --format plan,waypoints,kml,gpx,geojson,csv --out " +
+                              dir.string(),
+                          &err);
+    ASSERT_EQ(rc, 0) << err;
+    for (const char* name : {"Falcon_8", "Phantom_4_Pro"})
+        for (const char* ext : {".plan", ".waypoints", ".kml", ".gpx", ".geojson", ".csv"})
+            EXPECT_TRUE(std::filesystem::exists(dir / (std::string("mission-") + name + ext))) << name << ext;
+    for (const char* ext : {".kml", ".gpx", ".geojson"})
+        EXPECT_TRUE(std::filesystem::exists(dir / (std::string("mission") + ext))) << ext;
+    EXPECT_FALSE(std::filesystem::exists(dir / "mission.plan"));
+    CPLJSONDocument plan;
+    ASSERT_TRUE(plan.Load((dir / "mission-Falcon_8.plan").string()));
+    EXPECT_EQ(plan.GetRoot().GetString("fileType"), "Plan");
+    const CPLJSONArray items = plan.GetRoot().GetObj("mission").GetArray("items");
+    ASSERT_GT(items.Size(), 10);
+    for (int i = 0; i < items.Size(); ++i)
+        if (items[i].GetString("type") == "SimpleItem") {
+            EXPECT_EQ(items[i].GetArray("params").Size(), 7) << i;
+        }
     std::filesystem::remove_all(dir);
 }
 
@@ -198,6 +338,13 @@ TEST(PlanCli, BadInputs) {
         << err;
     EXPECT_EQ(runCli("eval /nonexistent.geojson", &err), 2);
     EXPECT_NE(err.find("cannot read the area file /nonexistent.geojson"), std::string::npos) << err;
+    const std::string demo = std::string(PF_RESOURCES_DIR) + "/demo/demo_mission.json";
+    EXPECT_EQ(runCli("plan " + demo + " --format plan,shapefile --out /tmp/pf_never_written", &err), 2);
+    EXPECT_NE(err.find("--format: "), std::string::npos) << err;
+    EXPECT_NE(err.find("shapefile"), std::string::npos) << err;
+    EXPECT_FALSE(std::filesystem::exists("/tmp/pf_never_written"));
+    EXPECT_EQ(runCli("plan " + demo + " --format kml", &err), 2);
+    EXPECT_NE(err.find("--format: needs --out DIR"), std::string::npos) << err;
 }
 
 } // namespace
