@@ -133,7 +133,8 @@ Result<ImportedWaypoints> parseLitchiCsv(const std::string& text, const std::str
             auto t = number(name);
             if (!t)
                 return t.error();
-            isPhoto = isPhoto || static_cast<int>(*t) == kTakePhoto;
+            // Compared as a number: casting a huge value to int would be undefined behaviour.
+            isPhoto = isPhoto || *t == kTakePhoto;
         }
         if (!speedSet && col.count("speed(m/s)")) {
             auto s = number("speed(m/s)");

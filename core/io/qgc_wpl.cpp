@@ -117,6 +117,14 @@ Result<ImportedWaypoints> parseQgcWpl(const std::string& text, const std::string
                                      "\" is not a number");
             v[f] = *num;
         }
+        // Index, frame and command are whole numbers; converting a huge value to int would be
+        // undefined behaviour, so such a line is refused like any other damaged field.
+        for (std::size_t f : {std::size_t{0}, std::size_t{2}, std::size_t{3}}) {
+            if (!(std::abs(v[f]) <= 1e9))
+                return lineError(source, lineNo,
+                                 std::string(kFieldNames[f]) + " \"" + std::string(fields[f]) +
+                                     "\" is out of range");
+        }
         const int frame = static_cast<int>(v[2]);
         const int command = static_cast<int>(v[3]);
         const double lat = v[8], lon = v[9], alt = v[10];
