@@ -135,6 +135,11 @@ const BadInput kCorpus[] = {
     {"truncated .plan", "convert formats/truncated.plan /dev/null/x.gpx", "truncated.plan: line 16, column 30: invalid JSON"},
     {"truncated GPX", "convert formats/truncated.gpx /dev/null/x.plan", "truncated.gpx: not a readable GPX file"},
     {"unknown output format", "convert formats/litchi_hub.csv out.kmz", "cannot tell the waypoint format from the extension \".kmz\""},
+    // inputs the fuzzers found (undefined behaviour before the fix), kept as regressions
+    {"huge MAVLink command", "convert fuzz/regressions/qgc_wpl_huge_frame.waypoints out.gpx",
+     "line 2: command \"2222222222222222222222222222222222222222222222222222222222222222222222222222222222216\" is out of range"},
+    {"huge Litchi action type", "convert fuzz/regressions/litchi_huge_action_type.csv out.gpx",
+     "line 3: expected 46 comma-separated fields but found 34"},
     {"garbage as catalog", "catalog --catalog corpus/garbage.bin", "garbage.bin: not valid JSON"},
 };
 
