@@ -53,13 +53,15 @@ void Autosave::writeNow() {
         removeOwn();
         return;
     }
-    QString error;
-    if (!m_doc->writeCopy(filePath(), &error)) return; // the next edit or tick tries again
+    // The origin (which file this is a copy of) goes first: a kill between the two writes then leaves
+    // a copy that still knows where it belongs, never one recovered as an unnamed mission.
     QSaveFile origin(filePath() + QStringLiteral(".origin"));
     if (origin.open(QIODevice::WriteOnly)) {
         origin.write(m_doc->filePath().toUtf8());
         origin.commit();
     }
+    QString error;
+    m_doc->writeCopy(filePath(), &error); // on failure the next edit or tick tries again
 }
 
 void Autosave::removeOwn() {
