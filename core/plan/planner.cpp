@@ -66,6 +66,24 @@ Result<int> resolveStart(const grid::Grid& g, const CoverageRequest& req) {
     return makeError(ErrorCode::Internal, "no visitable cell found although the grid counts some");
 }
 
+CellPath withTakeoffAndLanding(const grid::Grid& g, const CoverageRequest& req, int start, CellPath body) {
+    CellPath path;
+    if (req.takeoff >= 0 && req.takeoff != start) {
+        path.cells.push_back(req.takeoff);
+        path.revisit.push_back(true);
+        appendTransit(g, path, start);
+        // The transit ends on the start cell, which the body photographs: drop the duplicate.
+        path.cells.pop_back();
+        path.revisit.pop_back();
+    }
+    path.jumps += body.jumps;
+    path.cells.insert(path.cells.end(), body.cells.begin(), body.cells.end());
+    path.revisit.insert(path.revisit.end(), body.revisit.begin(), body.revisit.end());
+    if (req.landing >= 0)
+        appendTransit(g, path, req.landing);
+    return path;
+}
+
 Result<CellPath> planCoverage(const grid::Grid& g, const CoverageRequest& req, const PlanOptions& opt) {
     switch (opt.kind) {
     case PlannerKind::Stride:

@@ -44,6 +44,10 @@ struct PlanOptions {
 // take-off or landing cell outside the grid or not visitable). Returns the resolved start cell.
 Result<int> resolveStart(const grid::Grid& g, const CoverageRequest& req);
 
+// Wraps a planner's coverage `body`, which starts at `start`, with safe transits from the request's
+// take-off cell and to its landing cell (shortest paths over allowed moves, flagged as revisits).
+CellPath withTakeoffAndLanding(const grid::Grid& g, const CoverageRequest& req, int start, CellPath body);
+
 // Runs the chosen planner. Every visitable cell appears at least once without the transit flag.
 Result<CellPath> planCoverage(const grid::Grid& g, const CoverageRequest& req, const PlanOptions& opt);
 

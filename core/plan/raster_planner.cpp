@@ -212,21 +212,7 @@ Result<CellPath> planRaster(const grid::Grid& g, const CoverageRequest& req) {
     CellPath cols = rasterWalk(g, *start, true);
     const PathMetrics mr = computeMetrics(g, rows, mo), mc = computeMetrics(g, cols, mo);
     const bool useCols = mc.turns < mr.turns || (mc.turns == mr.turns && mc.distanceM < mr.distanceM);
-    CellPath body = useCols ? std::move(cols) : std::move(rows);
-    CellPath path;
-    if (req.takeoff >= 0 && req.takeoff != *start) {
-        path.cells.push_back(req.takeoff);
-        path.revisit.push_back(true);
-        appendTransit(g, path, *start);
-        path.cells.pop_back();
-        path.revisit.pop_back();
-    }
-    path.jumps += body.jumps;
-    path.cells.insert(path.cells.end(), body.cells.begin(), body.cells.end());
-    path.revisit.insert(path.revisit.end(), body.revisit.begin(), body.revisit.end());
-    if (req.landing >= 0)
-        appendTransit(g, path, req.landing);
-    return path;
+    return withTakeoffAndLanding(g, req, *start, useCols ? std::move(cols) : std::move(rows));
 }
 
 } // namespace pf::plan

@@ -521,21 +521,7 @@ Result<CellPath> planStride(const Grid& g, const CoverageRequest& req, StrideTra
     if (!start)
         return start.error();
     StridePlanner planner(g, trace);
-    CellPath body = planner.run(*start);
-    CellPath path;
-    if (req.takeoff >= 0 && req.takeoff != *start) {
-        path.cells.push_back(req.takeoff);
-        path.revisit.push_back(true);
-        appendTransit(g, path, *start);
-        // The transit ends on the start cell, which the body photographs: drop the duplicate.
-        path.cells.pop_back();
-        path.revisit.pop_back();
-    }
-    path.jumps += body.jumps;
-    path.cells.insert(path.cells.end(), body.cells.begin(), body.cells.end());
-    path.revisit.insert(path.revisit.end(), body.revisit.begin(), body.revisit.end());
-    if (req.landing >= 0)
-        appendTransit(g, path, req.landing);
+    CellPath path = withTakeoffAndLanding(g, req, *start, planner.run(*start));
     cleanUpRevisits(g, path);
     return path;
 }

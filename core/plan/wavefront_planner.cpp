@@ -256,20 +256,7 @@ Result<CellPath> planWavefront(const grid::Grid& g, const CoverageRequest& req, 
                 trace->chosen = j + 1;
         }
     }
-    CellPath path;
-    if (req.takeoff >= 0 && req.takeoff != *start) {
-        path.cells.push_back(req.takeoff);
-        path.revisit.push_back(true);
-        appendTransit(g, path, *start);
-        path.cells.pop_back();
-        path.revisit.pop_back();
-    }
-    path.jumps += best.jumps;
-    path.cells.insert(path.cells.end(), best.cells.begin(), best.cells.end());
-    path.revisit.insert(path.revisit.end(), best.revisit.begin(), best.revisit.end());
-    if (req.landing >= 0)
-        appendTransit(g, path, req.landing);
-    return path;
+    return withTakeoffAndLanding(g, req, *start, std::move(best));
 }
 
 } // namespace pf::plan
