@@ -1,5 +1,6 @@
 // The camera and aircraft catalog: reading resources/catalog.json and the user's own catalog.
 #include "core/io/catalog.h"
+#include "core/io/json_util.h"
 
 #include "core/io/area_import.h"
 #include "core/io/mission_file.h"
@@ -252,18 +253,7 @@ std::vector<std::string> dataDirectoryCandidates() {
     return dirs;
 }
 
-// A JSON number holding the shortest text that reads back to exactly `v` (json-c's own printing can
-// lose the last digit; the text of a parsed number is written back verbatim).
-CPLJSONObject jsonNumber(double v) {
-    char buf[64];
-    auto res = std::to_chars(buf, buf + sizeof buf - 3, v);
-    std::string text(buf, res.ptr);
-    if (text.find_first_of(".eEn") == std::string::npos)
-        text += ".0";
-    CPLJSONDocument doc;
-    doc.LoadMemory("[" + text + "]");
-    return doc.GetRoot().ToArray()[0];
-}
+using detail::jsonNumber;
 
 std::string userCatalogPath() {
     if (const char* xdg = std::getenv("XDG_DATA_HOME"); xdg && *xdg && xdg[0] == '/')
@@ -317,22 +307,8 @@ std::string catalogToJson(const Catalog& catalog) {
     root.Add("format", kCatalogFormat);
     root.Add("version", kCatalogVersion);
     CPLJSONArray cameras;
-    for (const auto& c : catalog.cameras) {
-        CPLJSONObject o;
-        o.Add("name", c.name);
-        if (c.sensorWidthMm != 0.0 || c.sensorHeightMm != 0.0 || c.focalLengthMm != 0.0) {
-            o.Add("sensor_width_mm", jsonNumber(c.sensorWidthMm));
-            o.Add("sensor_height_mm", jsonNumber(c.sensorHeightMm));
-            o.Add("focal_length_mm", jsonNumber(c.focalLengthMm));
-        }
-        if (c.hfovDeg != 0.0 || c.vfovDeg != 0.0) {
-            o.Add("hfov_deg", jsonNumber(c.hfovDeg));
-            o.Add("vfov_deg", jsonNumber(c.vfovDeg));
-        }
-        o.Add("image_width_px", c.imageWidthPx);
-        o.Add("image_height_px", c.imageHeightPx);
-        cameras.Add(o);
-    }
+    for (const auto& c : catalog.cameras)
+        cameras.Add(detail::cameraToJson(c));
     root.Add("cameras", cameras);
     CPLJSONArray aircraft;
     for (const auto& a : catalog.aircraft) {

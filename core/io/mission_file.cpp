@@ -1,5 +1,6 @@
 // Mission file: versioned JSON (GDAL's CPLJSON) read with field-path errors, written atomically.
 #include "core/io/mission_file.h"
+#include "core/io/json_util.h"
 
 #include "core/io/area_import.h"
 
@@ -27,20 +28,7 @@ constexpr const char* kFormatName = "photoflight-mission";
 
 // ---------------------------------------------------------------- writing
 
-// A JSON number holding the shortest decimal that reads back to exactly `v`. json-c's own double
-// printing drops the last digit now and then (so a write/read cycle could change a coordinate);
-// json-c keeps the text of a parsed number and writes it back verbatim, so the number is built by
-// parsing its exact text.
-CPLJSONObject jsonNumber(double v) {
-    char buf[64];
-    auto res = std::to_chars(buf, buf + sizeof buf - 3, v);
-    std::string text(buf, res.ptr);
-    if (text.find_first_of(".eEn") == std::string::npos)
-        text += ".0"; // stays a double: large integral values would not fit json-c's int64
-    CPLJSONDocument doc;
-    doc.LoadMemory("[" + text + "]"); // a bare number at the end of input is "incomplete" to json-c
-    return doc.GetRoot().ToArray()[0];
-}
+using detail::jsonNumber;
 
 CPLJSONArray jsonPosition(const geo::LonLat& p) {
     CPLJSONArray a;
@@ -66,23 +54,6 @@ CPLJSONObject jsonPolygon(const geo::GeoPolygon& poly) {
     return o;
 }
 
-CPLJSONObject jsonCamera(const sensor::Camera& c) {
-    CPLJSONObject o;
-    o.Add("name", c.name);
-    // Only the definition in use is written (optics or field of view); absent values read as 0.
-    if (c.sensorWidthMm != 0.0 || c.sensorHeightMm != 0.0 || c.focalLengthMm != 0.0) {
-        o.Add("sensor_width_mm", jsonNumber(c.sensorWidthMm));
-        o.Add("sensor_height_mm", jsonNumber(c.sensorHeightMm));
-        o.Add("focal_length_mm", jsonNumber(c.focalLengthMm));
-    }
-    if (c.hfovDeg != 0.0 || c.vfovDeg != 0.0) {
-        o.Add("hfov_deg", jsonNumber(c.hfovDeg));
-        o.Add("vfov_deg", jsonNumber(c.vfovDeg));
-    }
-    o.Add("image_width_px", c.imageWidthPx);
-    o.Add("image_height_px", c.imageHeightPx);
-    return o;
-}
 
 const char* plannerName(mission::PlannerKind k) {
     switch (k) {
@@ -600,7 +571,7 @@ std::string missionToJson(const mission::Mission& m) {
         CPLJSONObject o;
         o.Add("name", a.name);
         o.Add("model", a.model);
-        o.Add("camera", jsonCamera(a.camera));
+        o.Add("camera", detail::cameraToJson(a.camera));
         if (a.altitudeM)
             o.Add("altitude_m", jsonNumber(*a.altitudeM));
         if (a.gsdCm)

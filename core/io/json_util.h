@@ -1,0 +1,20 @@
+// JSON helpers shared by the io readers and writers (CPLJSON). Internal: include from .cpp files only.
+#pragma once
+
+#include "core/sensor/camera.h"
+
+#include <cpl_json.h>
+
+namespace pf::io::detail {
+
+// A JSON number holding the shortest decimal that reads back to exactly `v`. json-c's own double
+// printing drops the last digit now and then (so a write/read cycle could change a coordinate);
+// json-c keeps the text of a parsed number and writes it back verbatim, so the number is built by
+// parsing its exact text.
+CPLJSONObject jsonNumber(double v);
+
+// A camera as the mission file and the catalog store it: only the definition in use is written
+// (optics or field of view); absent values read back as 0.
+CPLJSONObject cameraToJson(const sensor::Camera& c);
+
+} // namespace pf::io::detail
