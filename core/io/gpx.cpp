@@ -18,10 +18,7 @@ namespace {
 
 using detail::DatasetPtr;
 
-struct FeatureDeleter {
-    void operator()(OGRFeature* f) const { OGRFeature::DestroyFeature(f); }
-};
-using FeaturePtr = std::unique_ptr<OGRFeature, FeatureDeleter>;
+using detail::FeaturePtr;
 
 std::string pointName(const std::string& label, std::size_t i) {
     char buf[32];

@@ -16,10 +16,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-struct FeatureDeleter {
-    void operator()(OGRFeature* f) const { OGRFeature::DestroyFeature(f); }
-};
-using FeaturePtr = std::unique_ptr<OGRFeature, FeatureDeleter>;
+using detail::FeaturePtr;
 
 // Colours for routes whose aircraft has no valid colour of its own.
 const char* const kPalette[] = {"#e6194b", "#3cb44b", "#4363d8", "#f58231",
@@ -34,21 +31,6 @@ bool isColour(const std::string& c) {
     return true;
 }
 
-std::unique_ptr<OGRPolygon> polygon(const geo::GeoPolygon& p) {
-    auto poly = std::make_unique<OGRPolygon>();
-    auto ring = [](const geo::GeoRing& r) {
-        auto* lr = new OGRLinearRing();
-        for (const auto& v : r)
-            lr->addPoint(v.lon, v.lat);
-        if (!r.empty())
-            lr->addPoint(r.front().lon, r.front().lat);
-        return lr;
-    };
-    poly->addRingDirectly(ring(p.outer));
-    for (const auto& h : p.holes)
-        poly->addRingDirectly(ring(h));
-    return poly;
-}
 
 class KmlWriter {
 public:
@@ -136,10 +118,10 @@ Status writeKml(const ExportContext& ctx, const std::vector<std::size_t>& routeI
     if (auto st = w.folder(ctx.mission.name.empty() ? "Mission" : ctx.mission.name); !st)
         return st;
     if (!ctx.mission.area.outer.empty())
-        if (auto st = w.add(*polygon(ctx.mission.area), "Area", "area of interest", areaStyle); !st)
+        if (auto st = w.add(*detail::toOgrPolygon(ctx.mission.area), "Area", "area of interest", areaStyle); !st)
             return st;
     for (const auto& z : ctx.mission.noFlyZones)
-        if (auto st = w.add(*polygon(z.polygon), z.name.empty() ? "No-fly zone" : z.name,
+        if (auto st = w.add(*detail::toOgrPolygon(z.polygon), z.name.empty() ? "No-fly zone" : z.name,
                             "no-fly zone", zoneStyle);
             !st)
             return st;
@@ -189,7 +171,7 @@ Status writeKml(const ExportContext& ctx, const std::vector<std::size_t>& routeI
                 return st;
             if (fp) {
                 geo::GeoPolygon poly{footprintCorners(wp.position, wp.headingDeg, *fp), {}};
-                if (auto st = w.add(*polygon(poly), std::string(name) + " footprint",
+                if (auto st = w.add(*detail::toOgrPolygon(poly), std::string(name) + " footprint",
                                     "ground footprint of the photo",
                                     "PEN(c:" + colour + ",w:1px);BRUSH(fc:" + colour + "20)");
                     !st)

@@ -322,4 +322,20 @@ Result<DatasetPtr> openVectorDataset(const std::string& path, const char* driver
     return DatasetPtr(ds);
 }
 
+std::unique_ptr<OGRPolygon> toOgrPolygon(const geo::GeoPolygon& p) {
+    auto poly = std::make_unique<OGRPolygon>();
+    auto ring = [](const geo::GeoRing& r) {
+        auto* lr = new OGRLinearRing();
+        for (const auto& v : r)
+            lr->addPoint(v.lon, v.lat);
+        if (!r.empty())
+            lr->addPoint(r.front().lon, r.front().lat);
+        return lr;
+    };
+    poly->addRingDirectly(ring(p.outer));
+    for (const auto& h : p.holes)
+        poly->addRingDirectly(ring(h));
+    return poly;
+}
+
 } // namespace pf::io::detail

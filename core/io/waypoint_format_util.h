@@ -3,12 +3,14 @@
 // files only.
 #pragma once
 
+#include "core/geo/types.h"
 #include "core/io/export_context.h"
 #include "core/result.h"
 #include "core/route/waypoint.h"
 
 #include <cpl_json.h>
 #include <gdal_priv.h>
+#include <ogrsf_frmts.h>
 
 #include <memory>
 #include <optional>
@@ -70,5 +72,14 @@ Result<DatasetPtr> openVectorDataset(const std::string& path, const char* driver
 Status closeDataset(DatasetPtr& ds, const std::string& path);
 // GDAL's last error message, or `fallback` when GDAL gave none.
 std::string lastGdalError(const std::string& fallback);
+
+// A feature that is destroyed when it goes out of scope.
+struct FeatureDeleter {
+    void operator()(OGRFeature* f) const { OGRFeature::DestroyFeature(f); }
+};
+using FeaturePtr = std::unique_ptr<OGRFeature, FeatureDeleter>;
+
+// A WGS84 polygon as an OGR polygon in lon/lat order, rings closed.
+std::unique_ptr<OGRPolygon> toOgrPolygon(const geo::GeoPolygon& p);
 
 } // namespace pf::io::detail

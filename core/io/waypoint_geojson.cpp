@@ -13,26 +13,9 @@ namespace pf::io {
 
 namespace {
 
-struct FeatureDeleter {
-    void operator()(OGRFeature* f) const { OGRFeature::DestroyFeature(f); }
-};
-using FeaturePtr = std::unique_ptr<OGRFeature, FeatureDeleter>;
+using detail::FeaturePtr;
 
-std::unique_ptr<OGRPolygon> toOgrPolygon(const geo::GeoPolygon& p) {
-    auto poly = std::make_unique<OGRPolygon>();
-    auto ring = [](const geo::GeoRing& r) {
-        auto* lr = new OGRLinearRing();
-        for (const auto& v : r)
-            lr->addPoint(v.lon, v.lat);
-        if (!r.empty())
-            lr->addPoint(r.front().lon, r.front().lat);
-        return lr;
-    };
-    poly->addRingDirectly(ring(p.outer));
-    for (const auto& h : p.holes)
-        poly->addRingDirectly(ring(h));
-    return poly;
-}
+using detail::toOgrPolygon;
 
 geo::GeoRing fromOgrRing(const OGRLinearRing* r) {
     geo::GeoRing out;
