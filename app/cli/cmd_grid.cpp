@@ -68,16 +68,8 @@ int runGrid(const std::vector<std::string>& argv) {
         which = static_cast<std::size_t>(v) - 1;
     }
 
-    const mission::ValidationReport report = mission::validateMission(m);
-    for (const auto& p : report.problems)
-        if (p.severity == geo::Severity::Warning)
-            std::cerr << "photoflight-cli: warning: " << p.message << '\n';
-    if (report.hasErrors()) {
-        for (const auto& p : report.problems)
-            if (p.severity == geo::Severity::Error)
-                std::cerr << "photoflight-cli: error: " << p.message << '\n';
+    if (!printValidationProblems(mission::validateMission(m)))
         return kExitBadInput;
-    }
     auto geom = mission::localGeometry(m);
     if (!geom)
         return reportError(geom.error());

@@ -7,6 +7,7 @@
 #include "core/mission/plan_mission.h"
 #include "core/mission/validation.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -117,21 +118,16 @@ int runPlan(const std::vector<std::string>& argv) {
     for (const auto& note : input->notes)
         std::cerr << "photoflight-cli: note: " << note << '\n';
 
-    const mission::ValidationReport report = mission::validateMission(m);
-    for (const auto& p : report.problems)
-        if (p.severity == geo::Severity::Warning)
-            std::cerr << "photoflight-cli: warning: " << p.message << '\n';
-    if (report.hasErrors()) {
-        for (const auto& p : report.problems)
-            if (p.severity == geo::Severity::Error)
-                std::cerr << "photoflight-cli: error: " << p.message << '\n';
+    std::vector<std::string> printed;
+    if (!printValidationProblems(mission::validateMission(m), &printed))
         return kExitBadInput;
-    }
     auto plan = mission::planMission(m);
     if (!plan)
         return reportError(plan.error());
+    // The planner re-checks the grid and may repeat a validation warning: say each thing once.
     for (const auto& w : plan->warnings)
-        std::cerr << "photoflight-cli: warning: " << w << '\n';
+        if (std::find(printed.begin(), printed.end(), w) == printed.end())
+            std::cerr << "photoflight-cli: warning: " << w << '\n';
 
     const char* planner = plannerLabel(m.options.planner);
     std::vector<std::string> written;

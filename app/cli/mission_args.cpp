@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iostream>
 #include <optional>
 #include <sstream>
 
@@ -354,6 +355,20 @@ Result<MissionInput> missionFromArgs(const Args& args, std::size_t positional) {
         m.options.maxCells = static_cast<std::size_t>(**cells);
     }
     return in;
+}
+
+bool printValidationProblems(const mission::ValidationReport& report, std::vector<std::string>* printed) {
+    for (const geo::Severity severity : {geo::Severity::Warning, geo::Severity::Error}) {
+        for (const auto& p : report.problems) {
+            if (p.severity != severity)
+                continue;
+            std::cerr << "photoflight-cli: " << (severity == geo::Severity::Error ? "error: " : "warning: ")
+                      << p.message << '\n';
+            if (printed)
+                printed->push_back(p.message);
+        }
+    }
+    return !report.hasErrors();
 }
 
 } // namespace pf::cli

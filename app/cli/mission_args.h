@@ -28,6 +28,7 @@
 
 #include "app/cli/args.h"
 #include "core/mission/mission.h"
+#include "core/mission/validation.h"
 #include "core/result.h"
 
 #include <string>
@@ -73,5 +74,10 @@ Result<MissionInput> missionFromArgs(const Args& args, std::size_t positional = 
 // "photoflight-mission" format, or any JSON object that is not GeoJSON (the mission reader then says
 // what is wrong with it).
 bool isMissionFile(const std::string& path);
+
+// Prints the report's warnings and errors on stderr ("photoflight-cli: warning: ..."). Returns
+// false when the report has errors (the command then exits with kExitBadInput). Every message
+// printed is added to `printed`, so a later stage repeating one of them can skip it.
+bool printValidationProblems(const mission::ValidationReport& report, std::vector<std::string>* printed = nullptr);
 
 } // namespace pf::cli
