@@ -1,5 +1,6 @@
 #include "core/route/photo_waypoints.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pf::route {
@@ -25,8 +26,80 @@ double headingDeg(const Vec2& dir) {
     return h;
 }
 
+namespace {
+
+// A waypoint before safe placement: where it would go, and the safe point it may slide back to.
+struct Slot {
+    LocalWaypoint w;  // kind, heading, cell and the planned position
+    Vec2 anchor{0, 0}; // the cell's flight position: safe by construction of the grid
+};
+
+// Why a slid photo keeps its cell covered. The `along` photos of a cell split it into bands s = cell /
+// along long, one per photo, centred on its planned position: together they tile the cell along the
+// track (across it the track spacing tiles the area). A photo slides back towards the flight position,
+// never past it, so by at most its planned offset |a| <= (cell - s) / 2, and it still sees its whole
+// band while its REAL footprint, R long along the track, reaches the band's far end: a + s/2 <= (a - d) +
+// R/2 holds for every slide d <= (R - s)/2, hence for every slide as soon as R >= cell. The real short
+// side is at least the cell side whenever the side overlap is at least 1 - short side / long side
+// (0.25 for a 4:3 sensor), which every usual survey setting meets; the tests check coverage with the
+// independent raster check (plan::checkCoverage). Below that, the part of a band left unseen lies in
+// the margin ahead of the last safe point of the track, where no safe point of this track sees further:
+// the neighbouring tracks' photos may, and the plan's coverage check reports what is left.
+// Nothing of the band is given up for the no-fly zone itself: ground inside a zone is not admissible
+// area, ground inside the margin is, and the slid photo is the one that still looks into it.
+class Placer {
+public:
+    explicit Placer(const grid::Grid& g) : m_g(g) {}
+
+    // The position of slot k (prev: where the waypoint before it went, nextAnchor: the flight position of
+    // the waypoint after it).
+    Vec2 place(const Slot& slot, const Vec2* prev, const Vec2* nextAnchor) const {
+        const Vec2 p = slot.anchor, q = slot.w.pos;
+        // Legs joined straight at the flight position must stay straight and safe from the slid photo;
+        // legs the grid could not join straight (jumps) are the detours' business. Computed lazily: far
+        // from every zone the first test below passes without them.
+        int prevLeg = -1, nextLeg = -1;
+        auto feasible = [&](const Vec2& x) {
+            if (!m_g.pointIsSafe(x) || !m_g.segmentIsSafe(p, x))
+                return false;
+            if (prev && !m_g.segmentIsSafe(*prev, x)) {
+                if (prevLeg < 0)
+                    prevLeg = m_g.segmentIsSafe(*prev, p) ? 1 : 0;
+                if (prevLeg == 1)
+                    return false;
+            }
+            if (nextAnchor && !m_g.segmentIsSafe(x, *nextAnchor)) {
+                if (nextLeg < 0)
+                    nextLeg = m_g.segmentIsSafe(p, *nextAnchor) ? 1 : 0;
+                if (nextLeg == 1)
+                    return false;
+            }
+            return true;
+        };
+        if ((q - p).squaredNorm() == 0.0 || feasible(q))
+            return q;
+        // Bisection on the line from p (feasible: safe, with the same legs as the cell's other
+        // waypoints) to q: lo stays feasible, to a tenth of a millimetre.
+        double lo = 0.0, hi = 1.0;
+        const double len = (q - p).norm();
+        while ((hi - lo) * len > 1e-4) {
+            const double mid = 0.5 * (lo + hi);
+            (feasible(p + mid * (q - p)) ? lo : hi) = mid;
+        }
+        return p + lo * (q - p);
+    }
+
+private:
+    const grid::Grid& m_g;
+};
+
+} // namespace
+
 std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellPath& path,
-                                          const sensor::EffectiveFootprint& fp) {
+                                          const sensor::EffectiveFootprint& fp, PhotoPlacement* placement) {
+    PhotoPlacement localPlacement;
+    PhotoPlacement& rep = placement ? *placement : localPlacement;
+    rep = {};
     std::vector<LocalWaypoint> out;
     const std::size_t n = path.cells.size();
     if (n == 0)
@@ -42,6 +115,8 @@ std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellP
     const double cell = g.cellSize();
     const PhotosPerCell ppc = photosPerCell(cell, fp);
     const double sAlong = cell / ppc.along, sAcross = cell / ppc.across;
+    // 1. Where each waypoint would go on the track.
+    std::vector<Slot> slots;
     bool anyPhoto = false;
     for (std::size_t i = 0; i < n; ++i) {
         const int c = path.cells[i];
@@ -53,7 +128,7 @@ std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellP
             if (turns || i == 0 || i + 1 == n) {
                 // Cells flown over before their photo (before the first photo of the path) are turn
                 // points; later ones are revisits.
-                out.push_back({p, headingDeg(outDir), anyPhoto ? WaypointKind::Transit : WaypointKind::Turn, c});
+                slots.push_back({{p, headingDeg(outDir), anyPhoto ? WaypointKind::Transit : WaypointKind::Turn, c}, p});
             }
             continue;
         }
@@ -65,10 +140,35 @@ std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellP
             for (int k0 = 0; k0 < ppc.along; ++k0) {
                 const int k = (r % 2 == 0) ? k0 : ppc.along - 1 - k0;
                 const double along = (k + 0.5) * sAlong - cell / 2;
-                out.push_back({p + along * in + across * right, h, WaypointKind::Photo, c});
+                slots.push_back({{p + along * in + across * right, h, WaypointKind::Photo, c}, p});
                 anyPhoto = true;
             }
         }
+    }
+    // 2. Safe placement, in flight order: each slot knows where the one before it went.
+    const Placer placer(g);
+    out.reserve(slots.size());
+    for (std::size_t k = 0; k < slots.size(); ++k) {
+        LocalWaypoint w = slots[k].w;
+        if (w.kind == WaypointKind::Photo) {
+            const Vec2* prev = out.empty() ? nullptr : &out.back().pos;
+            const Vec2* next = k + 1 < slots.size() ? &slots[k + 1].anchor : nullptr;
+            const Vec2 x = placer.place(slots[k], prev, next);
+            const double slide = (x - w.pos).norm();
+            if (slide > 0.0) {
+                ++rep.slid;
+                rep.maxSlideM = std::max(rep.maxSlideM, slide);
+                // A photo slid onto the previous photo of its cell would take the same picture.
+                const LocalWaypoint* last = out.empty() ? nullptr : &out.back();
+                if (last && last->kind == WaypointKind::Photo && last->cell == w.cell &&
+                    (last->pos - x).norm() < 0.01) {
+                    ++rep.merged;
+                    continue;
+                }
+            }
+            w.pos = x;
+        }
+        out.push_back(w);
     }
     return out;
 }

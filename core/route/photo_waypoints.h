@@ -33,7 +33,21 @@ double headingDeg(const geo::Vec2& dir);
 // - a cell flown over before it is photographed (the way from the take-off cell to the start) gets a
 //   Turn waypoint where the path changes direction there: a turn point without a photo.
 // Every waypoint carries the cell it belongs to.
+//
+// Safe placement: every waypoint, and the straight leg to it from the previous one, keeps out of the
+// grid's buffered no-fly zones (Grid::pointIsSafe / segmentIsSafe), so the later no-fly stage has no
+// waypoint to move. A photo whose place along the track is unsafe slides back along the straight line
+// to its cell's flight position (safe by construction) up to the last point where the photo, the way
+// to it from the flight position, and its legs to the waypoints before and after are safe; a slid photo
+// that lands on the previous photo of its cell is dropped (it would take the same picture). Legs the
+// planner could not fly straight anyway (jumps between parts of the area) are left to the detours.
+// See photo_waypoints.cpp for why the cell stays covered.
+struct PhotoPlacement {
+    int slid = 0;         // photos slid back along the track out of a no-fly margin
+    int merged = 0;       // slid photos dropped because they coincided with the previous one
+    double maxSlideM = 0; // the longest slide
+};
 std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellPath& path,
-                                          const sensor::EffectiveFootprint& fp);
+                                          const sensor::EffectiveFootprint& fp, PhotoPlacement* placement = nullptr);
 
 } // namespace pf::route
