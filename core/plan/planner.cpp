@@ -87,7 +87,7 @@ CellPath withTakeoffAndLanding(const grid::Grid& g, const CoverageRequest& req, 
 Result<CellPath> planCoverage(const grid::Grid& g, const CoverageRequest& req, const PlanOptions& opt) {
     switch (opt.kind) {
     case PlannerKind::Stride:
-        return planStride(g, req);
+        return opt.strideVariants ? planStride(g, req) : planStrideVariant(g, req, StrideVariant{});
     case PlannerKind::Raster:
         return planRaster(g, req);
     case PlannerKind::Wavefront:

@@ -38,6 +38,9 @@ struct WavefrontOptions {
 struct PlanOptions {
     PlannerKind kind = PlannerKind::Stride;
     WavefrontOptions wavefront;
+    // Stride planner: compare its rule variants and keep the path with the fewest turns (planStride);
+    // false: the paper's rules only, one plan (faster: for estimates planned many times over).
+    bool strideVariants = true;
 };
 
 // Checks the request against the grid: errors name the problem (no cell to photograph, a start,

@@ -1,10 +1,12 @@
 #include "core/plan/stride_planner.h"
 
 #include "core/plan/grid_search.h"
+#include "core/plan/metrics.h"
 
 #include <algorithm>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <unordered_map>
 
 namespace pf::plan {
@@ -13,6 +15,13 @@ using grid::Dir;
 using grid::Grid;
 
 namespace {
+
+constexpr double kLaneWeight = 2.0;
+// Variants cost planning time: lead-ins (up to 12 more plans) only up to kLeadInCellLimit cells to
+// photograph, the fixed lane axes (2 more) up to kAxesCellLimit. Beyond, the paper's rules and one lane
+// variant.
+constexpr int kLeadInCellLimit = 5'000;
+constexpr int kAxesCellLimit = 250'000;
 
 int popcount2(unsigned m) { return static_cast<int>((m & 1u) + ((m >> 1) & 1u)); }
 
@@ -27,7 +36,8 @@ inline unsigned limitsOf(const Grid& g, const std::vector<std::uint8_t>& visited
 }
 
 // Grows a stride; writes its new cells to `out` (cleared) and returns why it stopped.
-StrideStop growStride(const Grid& g, const std::vector<std::uint8_t>& visited, int c0, int d, std::vector<int>& out) {
+StrideStop growStride(const Grid& g, const std::vector<std::uint8_t>& visited, int c0, int d, std::vector<int>& out,
+                      bool full = false) {
     out.clear();
     if (blocked(g, visited, c0, d))
         return StrideStop::None;
@@ -39,7 +49,7 @@ StrideStop growStride(const Grid& g, const std::vector<std::uint8_t>& visited, i
         if (blocked(g, visited, cl, d))
             return StrideStop::AreaLimit;
         const int cn = cl + off;
-        if (popcount2(limitsOf(g, visited, cl, d)) != 2) {
+        if (!full && popcount2(limitsOf(g, visited, cl, d)) != 2) {
             const unsigned mn = limitsOf(g, visited, cn, d);
             if (mn == 0)
                 return StrideStop::NoLimit;
@@ -82,10 +92,10 @@ struct UnionFind {
 
 class StridePlanner {
 public:
-    StridePlanner(const Grid& g, StrideTrace* trace)
+    StridePlanner(const Grid& g, StrideTrace* trace, const StrideVariant& variant)
         : m_g(g), m_n(static_cast<std::size_t>(g.cellCount())), m_visited(m_n, 0), m_search(g),
           m_seedMark(m_n, 0), m_seedSlot(m_n, 0), m_partMark(m_n, 0), m_partGroup(m_n, 0),
-          m_targetMark(m_n, 0), m_trace(trace) {}
+          m_targetMark(m_n, 0), m_trace(trace), m_variant(variant), m_laneAxis(variant.laneAxis) {}
 
     CellPath run(int start) {
         m_remaining = m_g.visitCount();
@@ -102,8 +112,9 @@ public:
             for (int d = 0; d < 4; ++d) {
                 if (blocked(m_g, m_visited, cur, d) || !inTarget(cur + dirOffset(m_g, d)))
                     continue;
-                growStride(m_g, m_visited, cur, d, cand);
+                growStride(m_g, m_visited, cur, d, cand, alongLanes(d));
                 StrideKey key = keyFor(cur, d, cand);
+                laneChange(d, cand, key);
                 if (bestDir < 0 || better(key, bestKey, cand, best, cur, d, bestDir)) {
                     bestDir = d;
                     bestKey = key;
@@ -119,11 +130,14 @@ public:
                 visitNew(c);
             newCellsAdded(best.data(), best.size());
             m_heading = bestDir;
+            if (best.size() >= 2)
+                m_laneAxis = bestDir % 2;
             if (m_trace)
                 m_trace->segmentEnds.push_back(m_g.visitCount() - m_remaining);
         }
         if (m_trace)
-            m_trace->scratchBytes = m_n * (1 + 4 + 1 + 4 + 4 + 4 + 4 + 4);
+            // Planner arrays, plus the search's per-cell wave layers.
+            m_trace->scratchBytes = m_n * (1 + 4 + 1 + 4 + 4 + 4 + 4 + 4) + m_n * 4;
         return std::move(m_path);
     }
 
@@ -163,6 +177,32 @@ private:
         return false;
     }
 
+    // Lane variants (beyond the paper): a stride across the lanes of the last long stride is cut to
+    // its first step when the next lane, entered by that step, is at least 1 / laneWeight as long as
+    // the whole stride. Its key then carries the next lane's length less one, so it competes as that
+    // lane but loses to a lane as long that can be flown without the step.
+    void laneChange(int d, std::vector<int>& cand, StrideKey& key) {
+        if (m_variant.laneWeight <= 0 || m_laneAxis < 0 || d % 2 == m_laneAxis || cand.size() < 2)
+            return;
+        const int step = cand.front();
+        m_visited[step] = 1;
+        int next = 0;
+        for (int ld : {m_laneAxis, m_laneAxis + 2}) {
+            if (blocked(m_g, m_visited, step, ld))
+                continue;
+            growStride(m_g, m_visited, step, ld, m_look, true);
+            next = std::max(next, static_cast<int>(m_look.size()) + 1);
+        }
+        m_visited[step] = 0;
+        if (next >= 2 && next * m_variant.laneWeight >= key.length) {
+            cand.resize(1);
+            key.length = next - 1; // a lane along this axis as long as the next one is taken first
+        }
+    }
+
+    // In a lane variant, strides along the lanes run to the area's limit, as lanes do.
+    bool alongLanes(int d) const { return m_variant.laneWeight > 0 && m_laneAxis >= 0 && d % 2 == m_laneAxis; }
+
     // Heuristic (3): the longest stride available after taking `cells`.
     int nextStrideLength(const std::vector<int>& cells) {
         for (int c : cells)
@@ -200,8 +240,8 @@ private:
     void leaveDeadEnd(int cur) {
         if (m_trace)
             ++m_trace->deadEnds;
-        std::vector<int> p = m_search.pathToNearest(
-            cur, [this](int c) { return !m_visited[c] && inTarget(c); }, [this](int c) { return m_visited[c] != 0; });
+        std::vector<int> p = m_search.pathToNearestStraightest(
+            cur, arrivalDir(), [this](int c) { return !m_visited[c] && inTarget(c); }, [this](int c) { return m_visited[c] != 0; });
         int target;
         if (!p.empty()) {
             for (std::size_t k = 0; k + 1 < p.size(); ++k) {
@@ -221,6 +261,18 @@ private:
         m_heading = -1;
         if (m_trace)
             m_trace->segmentEnds.push_back(m_g.visitCount() - m_remaining);
+    }
+
+    // Direction of the path's last move, or -1 (no move yet).
+    int arrivalDir() const {
+        const std::size_t n = m_path.cells.size();
+        if (n < 2)
+            return -1;
+        const int a = m_path.cells[n - 2], b = m_path.cells[n - 1];
+        for (int d = 0; d < 4; ++d)
+            if (m_g.canMove(a, static_cast<Dir>(d)) && a + dirOffset(m_g, d) == b)
+                return d;
+        return -1;
     }
 
     int nearestUnvisited(int cur) const {
@@ -333,34 +385,40 @@ private:
             int size;
         };
         std::vector<Closed> closed;
+        // Takes the next cell of group gi's queue and grows its wave by that cell's free neighbours,
+        // merging waves that meet. Returns the wave's root.
+        auto expand = [&](int gi) {
+            const int x = m_queues[gi][m_heads[gi]++];
+            int r = guf.find(gi);
+            --m_pending[r];
+            for (int d = 0; d < 4; ++d) {
+                if (blocked(m_g, m_visited, x, d))
+                    continue;
+                const int n = x + dirOffset(m_g, d);
+                if (m_partMark[n] != s) {
+                    m_partMark[n] = s;
+                    m_partGroup[n] = gi;
+                    m_queues[gi].push_back(n);
+                    ++m_size[r];
+                    ++m_pending[r];
+                } else {
+                    const int h = guf.find(m_partGroup[n]);
+                    if (h != r) {
+                        const int sz = m_size[r] + m_size[h], pend = m_pending[r] + m_pending[h];
+                        r = guf.unite(r, h);
+                        m_size[r] = sz;
+                        m_pending[r] = pend;
+                        --live;
+                    }
+                }
+            }
+            return r;
+        };
         while (live >= 2) {
             for (int gi = 0; gi < groups && live >= 2; ++gi) {
                 if (m_heads[gi] == m_queues[gi].size())
                     continue;
-                const int x = m_queues[gi][m_heads[gi]++];
-                int r = guf.find(gi);
-                --m_pending[r];
-                for (int d = 0; d < 4; ++d) {
-                    if (blocked(m_g, m_visited, x, d))
-                        continue;
-                    const int n = x + dirOffset(m_g, d);
-                    if (m_partMark[n] != s) {
-                        m_partMark[n] = s;
-                        m_partGroup[n] = gi;
-                        m_queues[gi].push_back(n);
-                        ++m_size[r];
-                        ++m_pending[r];
-                    } else {
-                        const int h = guf.find(m_partGroup[n]);
-                        if (h != r) {
-                            const int sz = m_size[r] + m_size[h], pend = m_pending[r] + m_pending[h];
-                            r = guf.unite(r, h);
-                            m_size[r] = sz;
-                            m_pending[r] = pend;
-                            --live;
-                        }
-                    }
-                }
+                const int r = expand(gi);
                 if (m_pending[r] == 0) {
                     closed.push_back({r, m_size[r]});
                     --live;
@@ -369,6 +427,25 @@ private:
         }
         if (closed.empty())
             return;
+        // A wave made of several seed groups grows several cells per round, so the part it explores
+        // can close first and still be larger than the last open part. Grow the last open wave until
+        // it has more cells than the smallest closed part (it is then larger) or closes itself.
+        int minClosed = closed.front().size;
+        for (const auto& c : closed)
+            minClosed = std::min(minClosed, c.size);
+        int open = -1;
+        for (int gi = 0; gi < groups && open < 0; ++gi) {
+            const int r = guf.find(gi);
+            if (m_pending[r] > 0)
+                open = r;
+        }
+        while (open >= 0 && m_pending[open] > 0 && m_size[open] <= minClosed) {
+            for (int gi = 0; gi < groups; ++gi)
+                if (guf.find(gi) == open && m_heads[gi] < m_queues[gi].size())
+                    expand(gi);
+        }
+        if (open >= 0 && m_pending[open] == 0)
+            closed.push_back({open, m_size[open]});
         const Closed* smallest = &closed.front();
         for (const auto& c : closed)
             if (c.size < smallest->size)
@@ -426,6 +503,8 @@ private:
     std::uint32_t m_targetId = 0;
 
     StrideTrace* m_trace;
+    StrideVariant m_variant;
+    int m_laneAxis = -1; // axis (0 east-west, 1 north-south) of the last stride of 3 or more cells
 };
 
 } // namespace
@@ -516,14 +595,76 @@ void cleanUpRevisits(const Grid& g, CellPath& path) {
     path = std::move(out);
 }
 
-Result<CellPath> planStride(const Grid& g, const CoverageRequest& req, StrideTrace* trace) {
+std::vector<StrideVariant> strideVariants(const Grid& g, int start) {
+    std::vector<StrideVariant> v{{}, {kLaneWeight, -1, -1}};
+    if (g.visitCount() > kAxesCellLimit)
+        return v;
+    for (int axis : {0, 1})
+        v.push_back({kLaneWeight, axis, -1});
+    if (start < 0 || g.visitCount() > kLeadInCellLimit)
+        return v;
+    // Lead-ins: to the end of the start's row or column, each way.
+    for (int lead = 0; lead < 4; ++lead) {
+        if (!g.canMove(start, static_cast<Dir>(lead)))
+            continue;
+        for (int a : {-1, 0, 1})
+            v.push_back({kLaneWeight, a, lead});
+    }
+    return v;
+}
+
+Result<CellPath> planStrideVariant(const Grid& g, const CoverageRequest& req, const StrideVariant& variant,
+                                   StrideTrace* trace) {
     auto start = resolveStart(g, req);
     if (!start)
         return start.error();
-    StridePlanner planner(g, trace);
-    CellPath path = withTakeoffAndLanding(g, req, *start, planner.run(*start));
+    StridePlanner planner(g, trace, variant);
+    int first = *start;
+    CellPath lead;
+    if (variant.leadIn >= 0) {
+        const int off = dirOffset(g, variant.leadIn);
+        while (g.canMove(first, static_cast<Dir>(variant.leadIn))) {
+            lead.cells.push_back(first);
+            lead.revisit.push_back(true);
+            first += off;
+        }
+    }
+    CellPath body = planner.run(first);
+    if (!lead.cells.empty()) {
+        lead.cells.insert(lead.cells.end(), body.cells.begin(), body.cells.end());
+        lead.revisit.insert(lead.revisit.end(), body.revisit.begin(), body.revisit.end());
+        lead.jumps = body.jumps;
+        body = std::move(lead);
+    }
+    CellPath path = withTakeoffAndLanding(g, req, *start, std::move(body));
     cleanUpRevisits(g, path);
     return path;
+}
+
+Result<CellPath> planStride(const Grid& g, const CoverageRequest& req, StrideTrace* trace) {
+    std::optional<CellPath> best;
+    PathMetrics bestM;
+    MetricsOptions mo;
+    mo.turnLowerBound = false;
+    auto start = resolveStart(g, req);
+    if (!start)
+        return start.error();
+    for (const StrideVariant& v : strideVariants(g, *start)) {
+        StrideTrace t;
+        auto p = planStrideVariant(g, req, v, trace ? &t : nullptr);
+        if (!p)
+            return p.error();
+        const PathMetrics m = computeMetrics(g, *p, mo);
+        if (!best || m.turns < bestM.turns || (m.turns == bestM.turns && m.pathLengthM < bestM.pathLengthM)) {
+            best = std::move(*p);
+            bestM = m;
+            if (trace)
+                *trace = std::move(t);
+        }
+    }
+    if (trace) // the best path so far is held while the next variant is planned
+        trace->scratchBytes += best->cells.capacity() * sizeof(int) + best->revisit.capacity() / 8;
+    return std::move(*best);
 }
 
 } // namespace pf::plan

@@ -57,9 +57,32 @@ struct StrideTrace {
     std::size_t scratchBytes = 0; // heap bytes of the planner's per-cell working arrays
 };
 
+// A rule variant of the planner. The paper's rules take the longest stride; on areas whose lanes are
+// long in one direction that greedy choice often turns across the lanes (a long stride up the side of
+// the area) and leaves short pieces behind. A lane variant cuts such a stride to its first step (a lane
+// change) when the next lane is at least 1 / laneWeight as long as the whole stride.
+struct StrideVariant {
+    double laneWeight = 0.0; // 0: the paper's rules only
+    int laneAxis = -1;       // lane axis before the first long stride: -1 none, 0 east-west, 1 north-south
+    // Lead-in: -1 none; else a direction (grid::Dir): the path first flies straight from the start in
+    // that direction to the area's limit without photographing, and coverage starts there. Starting
+    // in the middle of an edge leaves the other half of the edge to come back to; a lead-in to the
+    // nearer end avoids that for one reversal.
+    int leadIn = -1;
+};
+
+// The variants planStride compares from `start`: the paper's rules first, then lane variants.
+std::vector<StrideVariant> strideVariants(const grid::Grid& g, int start);
+
+// Plans with one variant (the paper's rules by default). See planStride.
+Result<CellPath> planStrideVariant(const grid::Grid& g, const CoverageRequest& req, const StrideVariant& variant,
+                                   StrideTrace* trace = nullptr);
+
 // Plans a complete coverage path with the stride rules, the partition rule (smallest part first),
 // distance-transform paths out of dead ends, clean-up of removable revisits, and transit paths from the
-// take-off cell and to the landing cell.
+// take-off cell and to the landing cell. Every variant of strideVariants(g) is planned from the same
+// start and the path with the fewest turns is kept (then the shorter path, then the earlier variant);
+// `trace` describes that path.
 Result<CellPath> planStride(const grid::Grid& g, const CoverageRequest& req, StrideTrace* trace = nullptr);
 
 // The paper's clean-up: removes each sequence of transit occurrences that joins two cells which are
