@@ -13,7 +13,8 @@
 namespace pf::cli {
 
 const char* const kEvalUsage =
-    "Usage: photoflight-cli eval AREA.geojson... [--planners stride,raster] [--max-starts N] [--out DIR]\n"
+    "Usage: photoflight-cli eval AREA.geojson... [--planners stride,raster] [--paper-rules] [--max-starts N]\n"
+    "                            [--out DIR]\n"
     "\n"
     "Runs each planner from every contour cell of each area (the experiment of Santamaria et al.) and\n"
     "prints per area and planner the cells, runs, the lower bound on turns, the average, minimum and\n"
@@ -25,6 +26,8 @@ const char* const kEvalUsage =
     "\n"
     "Options:\n"
     "  --planners LIST     comma-separated planners: stride, raster, wavefront (default stride,raster)\n"
+    "  --paper-rules       the stride planner with the paper's rules only, without the lane and lead-in\n"
+    "                      variants it otherwise compares (to measure what the variants add)\n"
     "  --max-starts N      at most N start cells per area, spread over the contour (default: all)\n"
     "  --out DIR           write DIR/eval.csv (one line per run) and the charts DIR/turns_<area>.png\n"
     "                      (turns per start cell, paper figures 4 and 5) and DIR/averages.png (average\n"
@@ -34,7 +37,7 @@ const char* const kEvalUsage =
     "Example: photoflight-cli eval resources/areas/*.geojson --out eval/\n";
 
 int runEval(const std::vector<std::string>& argv) {
-    auto args = Args::parse(argv, {{"planners"}, {"max-starts"}, {"out"}});
+    auto args = Args::parse(argv, {{"planners"}, {"paper-rules", false}, {"max-starts"}, {"out"}});
     if (!args)
         return reportError(args.error());
     if (args->positionals().empty())
@@ -53,6 +56,9 @@ int runEval(const std::vector<std::string>& argv) {
         if (opt.planners.empty())
             return reportError("--planners: give at least one planner");
     }
+    opt.strideVariants = !args->has("paper-rules");
+    if (!opt.strideVariants)
+        std::cerr << "stride planner: the paper's rules only\n";
     if (auto n = args->number("max-starts"); !n) {
         return reportError(n.error());
     } else if (*n) {

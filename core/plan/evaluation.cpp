@@ -117,6 +117,7 @@ std::vector<EvalRun> evaluateArea(const std::string& areaName, const grid::Grid&
         PlanOptions po;
         po.kind = kind;
         po.wavefront = opt.wavefront;
+        po.strideVariants = opt.strideVariants;
         MetricsOptions mo;
         mo.turnLowerBound = false;
         mo.diagonalSteps = kind == PlannerKind::Wavefront && opt.wavefront.moore;

@@ -39,6 +39,7 @@ struct EvalOptions {
     std::vector<PlannerKind> planners{PlannerKind::Stride, PlannerKind::Raster};
     WavefrontOptions wavefront;
     int maxStarts = 0; // 0: every contour cell; else that many, evenly spread along the cell order
+    bool strideVariants = true; // false: the stride planner with the paper's rules only
 };
 
 // Runs every planner from every contour start cell of the grid.

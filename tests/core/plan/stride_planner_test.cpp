@@ -184,6 +184,69 @@ TEST(StridePlanner, CoversRectangleWithFewTurns) {
     EXPECT_LE(m.turns, 19);
 }
 
+// The invariants of a stride path: complete coverage with only allowed moves, no jump inside a connected
+// area, nothing left for the clean-up to remove, and the partition rule (smallest part first) replayed
+// stride by stride from the trace.
+void expectStrideInvariants(const grid::Grid& g, const CellPath& path, const StrideTrace& trace, int parts,
+                            const std::string& what) {
+    test::expectValidCoverage(g, path, false, parts - 1, what);
+    if (parts == 1) {
+        EXPECT_EQ(path.jumps, 0) << what;
+    }
+
+    // Clean-up left nothing removable: no run of transits joins two equal or adjacent cells.
+    const auto& c = path.cells;
+    for (std::size_t i = 0; i + 2 < c.size(); ++i) {
+        for (std::size_t j = i + 2; j < c.size(); ++j) {
+            if (!path.revisit[j - 1])
+                break;
+            const bool joined = c[i] == c[j] || isAllowedStep(g, c[i], c[j], false);
+            EXPECT_FALSE(joined) << what << ": transits " << i + 1 << ".." << j - 1
+                                 << " could be removed";
+        }
+    }
+
+    // Partition rule: replay the photographed cells stride by stride; whenever a stride splits
+    // a free part, the next cell photographed lies in a smallest piece of it.
+    std::vector<int> order;
+    for (std::size_t i = 0; i < c.size(); ++i)
+        if (!path.revisit[i])
+            order.push_back(c[i]);
+    std::vector<std::uint8_t> visited(static_cast<std::size_t>(g.cellCount()), 0);
+    std::vector<int> prevSizes, curSizes;
+    std::vector<int> prevComp = test::freeComponents(g, visited, &prevSizes);
+    std::size_t done = 0;
+    int splits = 0;
+    for (int end : trace.segmentEnds) {
+        for (; done < static_cast<std::size_t>(end); ++done)
+            visited[order[done]] = 1;
+        std::vector<int> comp = test::freeComponents(g, visited, &curSizes);
+        if (done < order.size()) {
+            // Pieces per previous component.
+            std::vector<std::set<int>> pieces(prevSizes.size());
+            for (int i = 0; i < g.cellCount(); ++i)
+                if (comp[i] >= 0)
+                    pieces[prevComp[i]].insert(comp[i]);
+            for (const auto& ps : pieces) {
+                if (ps.size() < 2)
+                    continue;
+                ++splits;
+                int smallest = g.cellCount();
+                for (int p : ps)
+                    smallest = std::min(smallest, curSizes[p]);
+                const int next = comp[order[done]];
+                EXPECT_TRUE(ps.count(next) && curSizes[next] == smallest)
+                    << what << ": after " << done << " cells a part was split into " << ps.size()
+                    << " pieces, but the next cell is in a piece of "
+                    << (next >= 0 ? curSizes[next] : -1) << " cells instead of " << smallest;
+            }
+        }
+        prevComp = std::move(comp);
+        prevSizes = curSizes;
+    }
+    EXPECT_EQ(static_cast<int>(trace.partitions.size()), splits) << what;
+}
+
 class StrideInvariants : public ::testing::TestWithParam<test::Shape> {};
 
 TEST_P(StrideInvariants, ManySeededShapes) {
@@ -208,62 +271,20 @@ TEST_P(StrideInvariants, ManySeededShapes) {
             StrideTrace trace;
             auto path = planStride(g, req, &trace);
             ASSERT_TRUE(path.ok()) << what;
-            test::expectValidCoverage(g, *path, false, parts - 1, what);
-            if (parts == 1) {
-                EXPECT_EQ(path->jumps, 0) << what;
+            expectStrideInvariants(g, *path, trace, parts, what);
+            // Every variant on its own keeps the same rules (the best one is kept above).
+            if (seed > 12)
+                continue;
+            const PathMetrics best = computeMetrics(g, *path);
+            const auto variants = strideVariants(g, *resolveStart(g, req));
+            for (std::size_t v = 0; v < variants.size(); ++v) {
+                StrideTrace vt;
+                auto vp = planStrideVariant(g, req, variants[v], &vt);
+                ASSERT_TRUE(vp.ok()) << what;
+                const std::string vwhat = what + " start " + std::to_string(start) + " variant " + std::to_string(v);
+                expectStrideInvariants(g, *vp, vt, parts, vwhat);
+                EXPECT_LE(best.turns, computeMetrics(g, *vp).turns) << vwhat;
             }
-
-            // Clean-up left nothing removable: no run of transits joins two equal or adjacent cells.
-            const auto& c = path->cells;
-            for (std::size_t i = 0; i + 2 < c.size(); ++i) {
-                for (std::size_t j = i + 2; j < c.size(); ++j) {
-                    if (!path->revisit[j - 1])
-                        break;
-                    const bool joined = c[i] == c[j] || isAllowedStep(g, c[i], c[j], false);
-                    EXPECT_FALSE(joined) << what << ": transits " << i + 1 << ".." << j - 1
-                                         << " could be removed";
-                }
-            }
-
-            // Partition rule: replay the photographed cells stride by stride; whenever a stride splits
-            // a free part, the next cell photographed lies in a smallest piece of it.
-            std::vector<int> order;
-            for (std::size_t i = 0; i < c.size(); ++i)
-                if (!path->revisit[i])
-                    order.push_back(c[i]);
-            std::vector<std::uint8_t> visited(static_cast<std::size_t>(g.cellCount()), 0);
-            std::vector<int> prevSizes, curSizes;
-            std::vector<int> prevComp = test::freeComponents(g, visited, &prevSizes);
-            std::size_t done = 0;
-            int splits = 0;
-            for (int end : trace.segmentEnds) {
-                for (; done < static_cast<std::size_t>(end); ++done)
-                    visited[order[done]] = 1;
-                std::vector<int> comp = test::freeComponents(g, visited, &curSizes);
-                if (done < order.size()) {
-                    // Pieces per previous component.
-                    std::vector<std::set<int>> pieces(prevSizes.size());
-                    for (int i = 0; i < g.cellCount(); ++i)
-                        if (comp[i] >= 0)
-                            pieces[prevComp[i]].insert(comp[i]);
-                    for (const auto& ps : pieces) {
-                        if (ps.size() < 2)
-                            continue;
-                        ++splits;
-                        int smallest = g.cellCount();
-                        for (int p : ps)
-                            smallest = std::min(smallest, curSizes[p]);
-                        const int next = comp[order[done]];
-                        EXPECT_TRUE(ps.count(next) && curSizes[next] == smallest)
-                            << what << ": after " << done << " cells a part was split into " << ps.size()
-                            << " pieces, but the next cell is in a piece of "
-                            << (next >= 0 ? curSizes[next] : -1) << " cells instead of " << smallest;
-                    }
-                }
-                prevComp = std::move(comp);
-                prevSizes = curSizes;
-            }
-            EXPECT_EQ(static_cast<int>(trace.partitions.size()), splits) << what;
         }
     }
 }
@@ -375,6 +396,43 @@ TEST(StridePlanner, BadRequestsAreErrors) {
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.error().code, ErrorCode::InvalidInput);
     EXPECT_NE(r.error().message.find("no cell to photograph"), std::string::npos);
+}
+
+// A staircase started in the middle of its long bottom edge: the paper's rules climb the steps in short
+// column strides and leave half of the bottom edge behind; the lane and lead-in variants fly long rows.
+TEST(StrideVariants, StaircaseFromMidEdgeNeedsFarFewerTurnsThanThePaperRules) {
+    std::vector<std::string> pic;
+    for (int step = 0; step < 6; ++step) {
+        const std::string row = std::string(static_cast<std::size_t>(4 * step), '#') +
+                                std::string(static_cast<std::size_t>(40 - 4 * step), '.');
+        pic.push_back(row);
+        pic.push_back(row);
+    }
+    std::reverse(pic.begin(), pic.end()); // drawGrid's first line is the top row
+    const grid::Grid g = drawGrid(pic);
+    CoverageRequest req;
+    req.start = g.index(10, 0);
+    auto paper = planStrideVariant(g, req, StrideVariant{});
+    auto best = planStride(g, req);
+    ASSERT_TRUE(paper.ok());
+    ASSERT_TRUE(best.ok());
+    test::expectValidCoverage(g, *best, false, 0, "staircase");
+    const int paperTurns = computeMetrics(g, *paper).turns, bestTurns = computeMetrics(g, *best).turns;
+    // 12 rows: a boustrophedon needs 22 turns, plus the way back to the bottom edge's other half.
+    EXPECT_LE(bestTurns, 26);
+    EXPECT_LT(bestTurns * 10, paperTurns * 8) << "paper " << paperTurns << ", variants " << bestTurns;
+}
+
+TEST(StrideVariants, LargeGridsCompareFewerVariants) {
+    std::vector<std::uint8_t> small(50 * 50, 1), large(600 * 500, 1);
+    const grid::Grid gs = grid::Grid::fromMask(50, 50, small);
+    const grid::Grid gl = grid::Grid::fromMask(600, 500, large);
+    const auto vs = strideVariants(gs, gs.index(25, 0));
+    const auto vl = strideVariants(gl, gl.index(300, 0));
+    // Paper rules, 3 lane variants, and 3 lane variants after each of the 3 lead-ins of a mid-edge cell.
+    EXPECT_EQ(vs.size(), 13u);
+    EXPECT_EQ(vs.front().laneWeight, 0.0); // the paper's rules come first
+    EXPECT_EQ(vl.size(), 2u);
 }
 
 TEST(StridePlanner, DisconnectedPartsAreJoinedByDeclaredJumps) {
