@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <string>
 #include <vector>
@@ -221,6 +222,35 @@ TEST(PhotoPlacement, GeneratedMissionsArePlacedSafeAndStayCovered) {
 
 // ---- end to end -------------------------------------------------------------------------------------
 
+// The ground of every cell of the plan's grids that lies wholly within a margin (Unflyable: never flown
+// over) is on the real footprints of the plan's photos; returns how many such cells there were.
+int expectUnflyableGroundPhotographed(const mission::MissionPlan& plan, const geo::MultiPolygon& admissible,
+                                      const std::string& what) {
+    std::vector<plan::PhotoFootprint> photos;
+    for (const auto& a : plan.aircraft)
+        for (const auto& w : a.localWaypoints)
+            if (w.kind == WaypointKind::Photo)
+                photos.push_back({w.pos, w.headingDeg, a.footprint.real.longSideM, a.footprint.real.shortSideM});
+    int cells = 0;
+    for (const auto& a : plan.aircraft) {
+        const grid::Grid& g = a.grid;
+        for (int c = 0; c < g.cellCount(); ++c) {
+            if (g.state(c) != grid::CellState::Unflyable)
+                continue;
+            const auto ground = geo::intersection(admissible, geo::Polygon{g.cellCorners(c), {}});
+            if (geo::area(ground) <= 1e-6)
+                continue;
+            ++cells;
+            auto cov = plan::checkCoverage(ground, photos);
+            EXPECT_TRUE(cov.ok());
+            if (cov.ok()) {
+                EXPECT_GE(cov->coveredFraction, 0.995) << what << ", " << a.aircraft << ", cell " << c;
+            }
+        }
+    }
+    return cells;
+}
+
 void expectNothingMoved(const mission::MissionPlan& plan, const std::string& what) {
     for (const auto& a : plan.aircraft)
         EXPECT_EQ(a.waypointsMoved, 0) << what << ", " << a.aircraft;
@@ -271,15 +301,21 @@ mission::Mission sampleMission(const std::string& name) {
 }
 
 TEST(PhotoPlacement, SampleAreasHaveNothingToMoveAndStayCovered) {
+    int unflyable = 0;
     for (const std::string name : {"a_concave", "b_teeth", "c_l_shape", "d_nofly", "e_staircase", "f_complex"}) {
         for (auto kind : {mission::PlannerKind::Stride, mission::PlannerKind::Wavefront}) {
             mission::Mission m = sampleMission(name);
             m.options.planner = kind;
             auto plan = mission::planMission(m);
             ASSERT_TRUE(plan.ok()) << name << ": " << plan.error().message;
-            expectNothingMoved(*plan, name + (kind == mission::PlannerKind::Stride ? " stride" : " wavefront"));
+            const std::string what = name + (kind == mission::PlannerKind::Stride ? " stride" : " wavefront");
+            expectNothingMoved(*plan, what);
+            auto geom = mission::localGeometry(m);
+            ASSERT_TRUE(geom.ok());
+            unflyable += expectUnflyableGroundPhotographed(*plan, geo::difference(geom->area, geom->noFly), what);
         }
     }
+    std::printf("cells wholly within a margin, their ground photographed: %d\n", unflyable);
 }
 
 // What validation says of the cells wholly inside a safety margin (Unflyable): they are not flown over,
