@@ -36,17 +36,20 @@ struct Slot {
 
 // Why a slid photo keeps its cell covered. The `along` photos of a cell split it into bands s = cell /
 // along long, one per photo, centred on its planned position: together they tile the cell along the
-// track (across it the track spacing tiles the area). A photo slides back towards the flight position,
-// never past it, so by at most its planned offset |a| <= (cell - s) / 2, and it still sees its whole
-// band while its REAL footprint, R long along the track, reaches the band's far end: a + s/2 <= (a - d) +
-// R/2 holds for every slide d <= (R - s)/2, hence for every slide as soon as R >= cell. The real short
-// side is at least the cell side whenever the side overlap is at least 1 - short side / long side
-// (0.25 for a 4:3 sensor), which every usual survey setting meets; the tests check coverage with the
-// independent raster check (plan::checkCoverage). Below that, the part of a band left unseen lies in
-// the margin ahead of the last safe point of the track, where no safe point of this track sees further:
-// the neighbouring tracks' photos may, and the plan's coverage check reports what is left.
-// Nothing of the band is given up for the no-fly zone itself: ground inside a zone is not admissible
-// area, ground inside the margin is, and the slid photo is the one that still looks into it.
+// track (across it the track spacing tiles the area). Ground inside a no-fly zone is not admissible
+// area, but ground inside its margin is, and must still be seen: from outside the margin. A photo
+// slides back towards the flight position, never past it, so by at most its planned offset
+// |a| <= (cell - s) / 2, and it still sees its whole band while its REAL footprint, R long along the
+// track, reaches the band's far end: a + s/2 <= (a - d) + R/2 holds for every slide d <= (R - s)/2,
+// hence for every slide as soon as R >= cell. The real short side is at least the cell side whenever
+// the side overlap is at least 1 - short side / long side (0.25 for a 4:3 sensor), which usual survey
+// settings meet; the tests measure the coverage with the independent raster check (plan::checkCoverage).
+// Below that, what a band loses lies in the margin ahead of the last safe point of the track, which no
+// safe point of this track sees (so a further photo here would not help): the neighbouring tracks'
+// photos may, and the plan's coverage check reports whatever is left. With several photos across the
+// track (overlaps that make the along spacing the longer effective side, so the cell is at most the
+// real short side) the line to the flight position also moves a photo across, by at most its offset
+// across; the same argument with the real long side, longer than the cell, keeps its band seen.
 class Placer {
 public:
     explicit Placer(const grid::Grid& g) : m_g(g) {}
@@ -79,7 +82,8 @@ public:
         if ((q - p).squaredNorm() == 0.0 || feasible(q))
             return q;
         // Bisection on the line from p (feasible: safe, with the same legs as the cell's other
-        // waypoints) to q: lo stays feasible, to a tenth of a millimetre.
+        // waypoints) to q: lo stays feasible, to a tenth of a millimetre. Without the legs' conditions
+        // feasibility only shrinks along the line, so this finds the last safe point of the track.
         double lo = 0.0, hi = 1.0;
         const double len = (q - p).norm();
         while ((hi - lo) * len > 1e-4) {

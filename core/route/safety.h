@@ -75,7 +75,9 @@ struct SafetyReport {
 
 // Moves any waypoint inside a margin to the nearest safe point and replaces every leg crossing a
 // margin by the shortest safe detour (Transit waypoints, heading along the direction of travel).
-// Errors: no safe way between two waypoints.
+// The safety net of the route: photoWaypoints already places every photo outside the margins, so on a
+// planned route it moves nothing and only flies the jumps around the zones; it stays to catch a
+// waypoint that a later stage may have moved. Errors: no safe way between two waypoints.
 Result<std::vector<LocalWaypoint>> enforceNoFly(const std::vector<LocalWaypoint>& waypoints,
                                                 const SafePathFinder& finder, SafetyReport* report = nullptr);
 
