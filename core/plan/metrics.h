@@ -10,7 +10,7 @@ struct MetricsOptions {
     double speedMps = 10.0;     // V: cruise speed
     double turnRateDegS = 90.0; // omega: rotation rate while stopped at a turn
     bool diagonalSteps = false; // diagonal steps between safe neighbours are moves, not jumps (8-connected)
-    bool turnLowerBound = true; // compute the lower bound on turns (a bipartite matching over the grid)
+    bool turnLowerBound = true; // compute the lower bound on turns (computeTurnBound; not for diagonal steps)
 };
 
 struct PathMetrics {
@@ -27,9 +27,8 @@ struct PathMetrics {
     int revisits = 0;           // transit occurrences
     double estimatedTimeS = 0.0; // T = S / V + sum(theta) / omega (paper 004), S = path length
     double planningMs = 0.0;    // wall time of the planner (filled in by the caller)
-    // The minimum number of straight runs of cells (horizontal or vertical, joined by allowed moves)
-    // that cover every visitable cell, minus one: no jump-free 4-connected path can turn fewer times.
-    // -1 when not computed.
+    // computeTurnBound(grid).turns: no jump-free 4-connected path that visits every visitable cell can
+    // turn fewer times. -1 when not computed (not asked, or diagonal steps count as moves).
     int turnLowerBound = -1;
     double turnRatio = 0.0;     // turns / turnLowerBound (1 when both are 0)
     bool complete() const { return cells == visitable; }
@@ -42,5 +41,22 @@ PathMetrics computeMetrics(const grid::Grid& g, const CellPath& path, const Metr
 // The minimum number of straight runs covering all visitable cells: by Koenig's theorem, the maximum
 // matching between row segments and column segments (each cell an edge), found with Hopcroft-Karp.
 int minStraightRuns(const grid::Grid& g);
+
+// Work allowed to the exact part of computeTurnBound (about 20 ms on this machine); the sample areas
+// need less than 0.1 % of it.
+constexpr long long kTurnBoundWork = 2'000'000;
+
+// A lower bound on the turns of every path over the grid's allowed 4-connected moves (no jumps) that
+// visits every visitable cell, whatever its start and end; metrics.cpp gives the proof. A run is a
+// maximal straight line of cells joined by allowed moves, a row run (East-West) or a column run.
+struct TurnBound {
+    int turns = 0;        // the bound: 2M - 2, or 2M - 1 when every cover with at most M runs per side
+                          // has exactly M on each (M = balancedRuns); never below straightRuns - 1
+    int straightRuns = 0; // fewest runs covering all cells (minStraightRuns)
+    int balancedRuns = 0; // M = min over sets of runs covering all cells of max(row runs, column runs);
+                          // when !exact, a proven lower bound on M
+    bool exact = false;   // M was found within the work budget (on large grids it may not be)
+};
+TurnBound computeTurnBound(const grid::Grid& g, long long workBudget = kTurnBoundWork);
 
 } // namespace pf::plan

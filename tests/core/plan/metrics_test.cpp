@@ -33,9 +33,9 @@ TEST(Metrics, BoustrophedonByHand) {
     EXPECT_EQ(m.jumps, 0);
     EXPECT_EQ(m.revisits, 0);
     EXPECT_NEAR(m.estimatedTimeS, 80.0 / 10 + 360.0 / 90, 1e-9);
-    // Three rows: at least three straight runs, so at least two turns; this path makes four.
-    EXPECT_EQ(m.turnLowerBound, 2);
-    EXPECT_DOUBLE_EQ(m.turnRatio, 2.0);
+    // Three lanes either way, each lane change a connector with two turns: four at least, as flown here.
+    EXPECT_EQ(m.turnLowerBound, 4);
+    EXPECT_DOUBLE_EQ(m.turnRatio, 1.0);
 }
 
 TEST(Metrics, UTurnJumpAndRevisitByHand) {
