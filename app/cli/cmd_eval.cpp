@@ -80,8 +80,7 @@ int runEval(const std::vector<std::string>& argv) {
         auto r = plan::evaluateArea(area->name, *g, opt);
         runs.insert(runs.end(), r.begin(), r.end());
         const int runsN = static_cast<int>(runs.size());
-        const int b = plan::minStraightRuns(*g);
-        bounds.push_back(b > 0 ? b - 1 : 0);
+        bounds.push_back(plan::computeTurnBound(*g).turns);
         std::cerr << area->name << ": " << g->visitCount() << " cells, " << (runsN - runs0) << " runs\n";
     }
     const auto summary = plan::summarise(runs, bounds);
