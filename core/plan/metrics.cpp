@@ -137,7 +137,8 @@ private:
         }
     }
 
-    // Size of a maximum matching among the uncovered cells, stopping once it exceeds `limit`. The matching
+    // Size of a maximum matching among the uncovered cells, stopping once it exceeds `limit` or the work
+    // budget runs out (then the size of the matching found, a lower bound, is returned). The matching
     // is kept between calls (pairs with a run no longer open are dropped), so a search node only repairs
     // what its parent's choices broke.
     int matching(int limit) {
@@ -170,7 +171,9 @@ private:
             m_work -= m_g.start[r + 1] - m_g.start[r];
         }
         std::vector<int>& queue = m_queue;
-        for (int r = 0; r < m_g.rows && size <= limit; ++r) {
+        // Out of budget: the matching so far is smaller than the maximum, so it only prunes if it is
+        // already too large.
+        for (int r = 0; r < m_g.rows && size <= limit && m_work >= 0; ++r) {
             if (m_status[r] != kOpen || m_mate[r] >= 0 || m_deg[r] == 0)
                 continue;
             ++m_stamp;

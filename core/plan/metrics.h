@@ -42,9 +42,10 @@ PathMetrics computeMetrics(const grid::Grid& g, const CellPath& path, const Metr
 // matching between row segments and column segments (each cell an edge), found with Hopcroft-Karp.
 int minStraightRuns(const grid::Grid& g);
 
-// Work allowed to the exact part of computeTurnBound (about 20 ms on this machine); the sample areas
-// need less than 0.1 % of it.
-constexpr long long kTurnBoundWork = 2'000'000;
+// Work (adjacency entries scanned) allowed to the exact part of computeTurnBound: about 10 to 30 ms on
+// this machine. The sample areas need less than 1 % of it; large grids with many holes run out of it and
+// get the proven part of the bound (never below straightRuns - 1).
+constexpr long long kTurnBoundWork = 5'000'000;
 
 // A lower bound on the turns of every path over the grid's allowed 4-connected moves (no jumps) that
 // visits every visitable cell, whatever its start and end; metrics.cpp gives the proof. A run is a
