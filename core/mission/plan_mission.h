@@ -118,8 +118,11 @@ std::string planToGeoJson(const MissionPlan& plan);
 std::string planMetricsJson(const MissionPlan& plan, const std::string& plannerName);
 
 // Plans the mission end to end. One aircraft flies the whole admissible area; several share it through
-// fleet::splitArea, balanced on the flight times planRegion estimates at a fixed grid angle (the
-// mission's, or the one the search picks for the fastest aircraft over the whole area). Then per
+// fleet::splitArea, balanced on the time of the route planRegion makes at a fixed grid angle (the
+// mission's, or the one the search picks for the aircraft with the coarsest grid over the whole area),
+// from home through the photo waypoints and back. The split is planned to the end and corrected with
+// each aircraft's final/estimated time (up to 3 rounds), from two starts (the aircraft in the mission's
+// order and reversed: the order places the subareas); the plan with the smallest makespan is kept. Then per
 // aircraft: planRegion over its subarea (grid angle: the mission's, or searched per subarea), photos
 // another aircraft already takes are dropped, waypoints are kept inside the area if asked, out of every
 // no-fly margin (detours), the flight gets its safe transit from and to its home (the aircraft's, else
