@@ -1,7 +1,12 @@
 #include "core/route/photo_waypoints.h"
 
+#include "core/geo/polygon_ops.h"
+#include "core/plan/coverage_check.h"
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 
 namespace pf::route {
 
@@ -45,9 +50,10 @@ struct Slot {
 // the side overlap is at least 1 - short side / long side (0.25 for a 4:3 sensor), which usual survey
 // settings meet; the tests measure the coverage with the independent raster check (plan::checkCoverage).
 // Below that, what a band loses lies in the margin ahead of the last safe point of the track, which no
-// safe point of this track sees (so a further photo here would not help): the neighbouring tracks'
-// photos may, and the plan's coverage check reports whatever is left. With several photos across the
-// track (overlaps that make the along spacing the longer effective side, so the cell is at most the
+// safe point of this track sees: so the photo gets a companion off the track, at the safe point nearest
+// to where it was planned (just outside the margin, beside the lost ground), when that one sees part of
+// what is lost. Its legs may have to go round the margin (the no-fly stage's detours fly them); the
+// plan's coverage check reports whatever is still unseen. With several photos across the track (overlaps that make the along spacing the longer effective side, so the cell is at most the
 // real short side) the line to the flight position also moves a photo across, by at most its offset
 // across; the same argument with the real long side, longer than the cell, keeps its band seen.
 class Placer {
@@ -93,9 +99,42 @@ public:
         return p + lo * (q - p);
     }
 
+    // The point just outside the buffered zones nearest to q (q inside one), if it is safe: where a photo
+    // planned at q sees most of the margin ground around q.
+    std::optional<Vec2> nearestSafePoint(const Vec2& q) const {
+        Vec2 best = q;
+        double bestD = std::numeric_limits<double>::infinity();
+        auto scan = [&](const geo::Ring& r) {
+            for (std::size_t i = 0; i < r.size(); ++i) {
+                const Vec2 a = r[i], ab = r[(i + 1) % r.size()] - a;
+                const double len2 = ab.squaredNorm();
+                const double t = len2 > 0 ? std::clamp((q - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+                const Vec2 c = a + t * ab;
+                if ((c - q).squaredNorm() < bestD) {
+                    bestD = (c - q).squaredNorm();
+                    best = c;
+                }
+            }
+        };
+        for (const auto& z : m_g.bufferedNoFly()) {
+            scan(z.outer);
+            for (const auto& h : z.holes)
+                scan(h);
+        }
+        if (!std::isfinite(bestD) || bestD == 0.0)
+            return std::nullopt;
+        // 1 cm further out, so that rounding keeps it outside.
+        const Vec2 n = best + 0.01 * (best - q).normalized();
+        return m_g.pointIsSafe(n) ? std::optional<Vec2>(n) : std::nullopt;
+    }
+
 private:
     const grid::Grid& m_g;
 };
+
+geo::Polygon rectangle(const Vec2& centre, double headingDeg, double acrossM, double alongM) {
+    return {plan::footprintRing(plan::PhotoFootprint{centre, headingDeg, acrossM, alongM}), {}};
+}
 
 } // namespace
 
@@ -151,28 +190,67 @@ std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellP
     }
     // 2. Safe placement, in flight order: each slot knows where the one before it went.
     const Placer placer(g);
+    const bool realKnown = fp.real.longSideM > 0 && fp.real.shortSideM > 0 && !g.admissible().empty();
+    std::vector<Vec2> cellPhotos; // photos placed so far for the current cell
     out.reserve(slots.size());
     for (std::size_t k = 0; k < slots.size(); ++k) {
         LocalWaypoint w = slots[k].w;
-        if (w.kind == WaypointKind::Photo) {
-            const Vec2* prev = out.empty() ? nullptr : &out.back().pos;
-            const Vec2* next = k + 1 < slots.size() ? &slots[k + 1].anchor : nullptr;
-            const Vec2 x = placer.place(slots[k], prev, next);
-            const double slide = (x - w.pos).norm();
-            if (slide > 0.0) {
-                ++rep.slid;
-                rep.maxSlideM = std::max(rep.maxSlideM, slide);
-                // A photo slid onto the previous photo of its cell would take the same picture.
-                const LocalWaypoint* last = out.empty() ? nullptr : &out.back();
-                if (last && last->kind == WaypointKind::Photo && last->cell == w.cell &&
-                    (last->pos - x).norm() < 0.01) {
-                    ++rep.merged;
-                    continue;
-                }
-            }
-            w.pos = x;
+        if (w.kind != WaypointKind::Photo) {
+            cellPhotos.clear();
+            out.push_back(w);
+            continue;
         }
+        if (!out.empty() && out.back().cell != w.cell)
+            cellPhotos.clear();
+        const Vec2* prev = out.empty() ? nullptr : &out.back().pos;
+        const Vec2* next = k + 1 < slots.size() ? &slots[k + 1].anchor : nullptr;
+        const Vec2 q = w.pos;
+        const Vec2 x = placer.place(slots[k], prev, next);
+        const double slide = (x - q).norm();
+        if (slide == 0.0) {
+            cellPhotos.push_back(x);
+            out.push_back(w);
+            continue;
+        }
+        ++rep.slid;
+        rep.maxSlideM = std::max(rep.maxSlideM, slide);
+        // A photo slid onto another photo of its cell would take the same picture.
+        bool same = false;
+        for (const auto& c : cellPhotos)
+            same = same || (c - x).norm() < 0.01;
+        if (same) {
+            ++rep.merged;
+        } else {
+            w.pos = x;
+            out.push_back(w);
+            cellPhotos.push_back(x);
+        }
+        if (!realKnown)
+            continue;
+        // The admissible ground of this photo's band that no photo of the cell sees (only when the real
+        // footprint is shorter than the cell, see above): one more photo at the safe point nearest to
+        // the planned one, off the track, when it sees some of it.
+        geo::MultiPolygon lost = geo::intersection(g.admissible(), rectangle(q, w.headingDeg, sAcross, sAlong));
+        for (const auto& c : cellPhotos) {
+            if (lost.empty())
+                break;
+            lost = geo::difference(lost, geo::MultiPolygon{rectangle(c, w.headingDeg, fp.real.longSideM,
+                                                                     fp.real.shortSideM)});
+        }
+        const double lostArea = geo::area(lost);
+        if (lostArea <= 1e-3 * sAcross * sAlong)
+            continue;
+        const auto extra = placer.nearestSafePoint(q);
+        if (!extra)
+            continue;
+        const double stillLost = geo::area(geo::difference(
+            lost, geo::MultiPolygon{rectangle(*extra, w.headingDeg, fp.real.longSideM, fp.real.shortSideM)}));
+        if (lostArea - stillLost <= 1e-3 * sAcross * sAlong)
+            continue;
+        w.pos = *extra;
         out.push_back(w);
+        cellPhotos.push_back(*extra);
+        ++rep.added;
     }
     return out;
 }

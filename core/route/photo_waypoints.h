@@ -39,12 +39,17 @@ double headingDeg(const geo::Vec2& dir);
 // waypoint to move. A photo whose place along the track is unsafe slides back along the straight line
 // to its cell's flight position (safe by construction) up to the last point where the photo, the way
 // to it from the flight position, and its legs to the waypoints before and after are safe; a slid photo
-// that lands on the previous photo of its cell is dropped (it would take the same picture). Legs the
+// that lands on another photo of its cell is dropped (it would take the same picture). Legs the
 // planner could not fly straight anyway (jumps between parts of the area) are left to the detours.
-// See photo_waypoints.cpp for why the cell stays covered.
+// See photo_waypoints.cpp for why the cell stays covered. When the real footprint (fp.real) is shorter
+// than the cell (a side overlap below about 25 %), a slid photo may no longer see all of its share of
+// the cell's admissible ground: then one extra photo is taken at the safe point nearest to the planned
+// one if it sees some of it; it is safe too, but the legs to and from it may need the no-fly stage's
+// detours. With fp.real unset (zero sides) no extra photo is considered.
 struct PhotoPlacement {
     int slid = 0;         // photos slid back along the track out of a no-fly margin
-    int merged = 0;       // slid photos dropped because they coincided with the previous one
+    int merged = 0;       // slid photos dropped because they coincided with another photo of the cell
+    int added = 0;        // extra photos beside a margin for ground the slid photos no longer see
     double maxSlideM = 0; // the longest slide
 };
 std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellPath& path,

@@ -156,15 +156,23 @@ geo::Polygon randomArea(std::mt19937& rng, double r) {
     return {ring, {}};
 }
 
-// Invariants on seeded generated missions (area, 1 to 3 zones, margin, camera, overlaps, grid angle):
-// every waypoint is safe, every leg whose cells the grid joins straight is safe, the exact no-fly stage
-// moves nothing, no margin is breached once it has added its detours, and the real footprints cover the
-// admissible area as well as the photos planned along the tracks without any zone (minus what the
-// zones' margins make unreachable, which the un-slid photos would not have seen from a safe place).
-TEST(PhotoPlacement, GeneratedMissionsArePlacedSafeAndStayCovered) {
-    std::mt19937 rng(20261122);
+struct GeneratedStats {
+    int shapes = 0;
+    int slid = 0;
+    int added = 0;
+    double minCoverage = 1.0;
+    double meanCoverage = 0.0;
+};
+
+// Seeded generated missions (a star-shaped area, 1 to 3 zones, margin, a 4:3 sensor, overlaps with the
+// side overlap in [sideLo, sideHi], grid angle), each checked for: every waypoint safe, every leg whose
+// cells the grid joins straight safe (except the legs of extra photos, which the detours fly), nothing
+// for the exact no-fly stage to move, no margin breached once it has added its detours. Returns the
+// coverage of the admissible area by the real footprints.
+GeneratedStats placeGeneratedMissions(unsigned seed, double sideLo, double sideHi) {
+    std::mt19937 rng(seed);
     std::uniform_real_distribution<double> u(0.0, 1.0);
-    int slidTotal = 0, shapes = 0;
+    GeneratedStats st;
     for (int trial = 0; trial < 40; ++trial) {
         SCOPED_TRACE("trial " + std::to_string(trial));
         const double r = 150 + 150 * u(rng);
@@ -177,9 +185,8 @@ TEST(PhotoPlacement, GeneratedMissionsArePlacedSafeAndStayCovered) {
             zones.push_back(rect(cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2));
         }
         const double margin = 3 + 12 * u(rng);
-        // A 4:3 sensor with usual overlaps (side >= 0.3): the real short side is at least the cell side.
         const double longSide = 30 + 50 * u(rng), shortSide = 0.75 * longSide;
-        const double side = 0.3 + 0.5 * u(rng), front = 0.6 + 0.25 * u(rng);
+        const double side = sideLo + (sideHi - sideLo) * u(rng), front = 0.6 + 0.25 * u(rng);
         const auto fp = footprint(longSide * (1 - side), shortSide * (1 - front), longSide, shortSide);
         grid::GridOptions opt;
         opt.cellSize = sensor::cellSizeFor(fp);
@@ -189,35 +196,70 @@ TEST(PhotoPlacement, GeneratedMissionsArePlacedSafeAndStayCovered) {
         if (!g.ok())
             continue; // a zone covering the area: nothing to place
         auto path = plan::planCoverage(*g, {}, {});
-        ASSERT_TRUE(path.ok()) << path.error().message;
-        ++shapes;
+        EXPECT_TRUE(path.ok()) << path.error().message;
+        if (!path.ok())
+            continue;
+        ++st.shapes;
         PhotoPlacement placed;
         const auto wps = photoWaypoints(*g, *path, fp, &placed);
-        slidTotal += placed.slid;
+        st.slid += placed.slid;
+        st.added += placed.added;
 
         for (std::size_t k = 0; k < wps.size(); ++k) {
             EXPECT_TRUE(g->pointIsSafe(wps[k].pos)) << "waypoint " << k;
-            if (k > 0 && g->segmentIsSafe(g->flightPosition(wps[k - 1].cell), g->flightPosition(wps[k].cell))) {
+            if (placed.added == 0 && k > 0 &&
+                g->segmentIsSafe(g->flightPosition(wps[k - 1].cell), g->flightPosition(wps[k].cell))) {
                 EXPECT_TRUE(g->segmentIsSafe(wps[k - 1].pos, wps[k].pos)) << "leg to waypoint " << k;
             }
         }
         const SafePathFinder finder(NoFlyField(zones, margin));
         SafetyReport rep;
         auto safe = enforceNoFly(wps, finder, &rep);
-        ASSERT_TRUE(safe.ok()) << safe.error().message;
+        EXPECT_TRUE(safe.ok()) << safe.error().message;
+        if (!safe.ok())
+            continue;
         EXPECT_EQ(rep.waypointsMoved, 0);
         std::vector<Vec2> flown;
         for (const auto& w : *safe)
             flown.push_back(w.pos);
         EXPECT_EQ(plan::countNoFlyViolations({flown}, zones, margin).total(), 0);
 
-        const geo::MultiPolygon admissible = geo::difference(area, zones);
-        auto cov = plan::checkCoverage(admissible, realFootprints(*safe, fp));
-        ASSERT_TRUE(cov.ok());
-        EXPECT_GE(cov->coveredFraction, 0.995) << "uncovered " << cov->uncoveredAreaM2 << " m2";
+        auto cov = plan::checkCoverage(geo::difference(area, zones), realFootprints(*safe, fp));
+        EXPECT_TRUE(cov.ok());
+        if (!cov.ok())
+            continue;
+        st.minCoverage = std::min(st.minCoverage, cov->coveredFraction);
+        st.meanCoverage += cov->coveredFraction;
     }
-    EXPECT_GE(shapes, 30);
-    EXPECT_GT(slidTotal, 0); // the generated zones do put photos in margins
+    if (st.shapes > 0)
+        st.meanCoverage /= st.shapes;
+    return st;
+}
+
+// Usual overlaps (side >= 0.3): the real short side is at least the cell side, so a slid photo always
+// keeps its share of the cell in view: no extra photo, and coverage >= 0.995 on every mission.
+TEST(PhotoPlacement, GeneratedMissionsArePlacedSafeAndStayCovered) {
+    const GeneratedStats st = placeGeneratedMissions(20261122, 0.3, 0.8);
+    std::printf("usual overlaps: %d missions, %d photos slid, %d added, coverage min %.4f mean %.4f\n", st.shapes,
+                st.slid, st.added, st.minCoverage, st.meanCoverage);
+    EXPECT_GE(st.shapes, 30);
+    EXPECT_GT(st.slid, 0); // the generated zones do put photos in margins
+    EXPECT_EQ(st.added, 0);
+    EXPECT_GE(st.minCoverage, 0.995);
+}
+
+// A low side overlap (< 0.2) makes the real short side shorter than the cell: slid photos may lose part
+// of their share in a margin, and an extra photo beside the margin takes it back. Such missions lose
+// some ground whatever the placement (the ground deep in a margin is seen only from inside it); the
+// bounds below are what this placement keeps, measured with the independent check.
+TEST(PhotoPlacement, LowSideOverlapAddsPhotosBesideTheMargins) {
+    const GeneratedStats st = placeGeneratedMissions(20261122, 0.0, 0.2);
+    std::printf("low side overlap: %d missions, %d photos slid, %d added, coverage min %.4f mean %.4f\n", st.shapes,
+                st.slid, st.added, st.minCoverage, st.meanCoverage);
+    EXPECT_GE(st.shapes, 30);
+    EXPECT_GT(st.added, 0);
+    EXPECT_GE(st.minCoverage, 0.99);
+    EXPECT_GE(st.meanCoverage, 0.998);
 }
 
 // ---- end to end -------------------------------------------------------------------------------------
