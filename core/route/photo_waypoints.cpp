@@ -190,7 +190,11 @@ std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellP
     }
     // 2. Safe placement, in flight order: each slot knows where the one before it went.
     const Placer placer(g);
-    const bool realKnown = fp.real.longSideM > 0 && fp.real.shortSideM > 0 && !g.admissible().empty();
+    // Whether a slid photo may lose part of its band (see above): only with a real footprint shorter
+    // than the cell (its long side never is: the cell is an effective side); the polygon work is skipped
+    // otherwise.
+    const bool mayLose = fp.real.longSideM > 0 && fp.real.shortSideM > 0 && fp.real.shortSideM < cell &&
+                         !g.admissible().empty();
     std::vector<Vec2> cellPhotos; // photos placed so far for the current cell
     out.reserve(slots.size());
     for (std::size_t k = 0; k < slots.size(); ++k) {
@@ -225,7 +229,7 @@ std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellP
             out.push_back(w);
             cellPhotos.push_back(x);
         }
-        if (!realKnown)
+        if (!mayLose)
             continue;
         // The admissible ground of this photo's band that no photo of the cell sees (only when the real
         // footprint is shorter than the cell, see above): one more photo at the safe point nearest to
