@@ -117,6 +117,10 @@ int runPlan(const std::vector<std::string>& argv) {
     const mission::Mission& m = input->mission;
     for (const auto& note : input->notes)
         std::cerr << "photoflight-cli: note: " << note << '\n';
+    if (!m.editedRoutes.empty())
+        std::cerr << "photoflight-cli: note: the mission file holds " << m.editedRoutes.size() << " hand-edited route"
+                  << (m.editedRoutes.size() == 1 ? "; it is" : "s; they are")
+                  << " not used: this is a fresh plan (the desktop application keeps and exports them)\n";
 
     std::vector<std::string> printed;
     if (!printValidationProblems(mission::validateMission(m), &printed))

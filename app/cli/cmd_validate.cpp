@@ -72,6 +72,14 @@ int runValidate(const std::vector<std::string>& argv) {
        << ")\n";
     for (const auto& n : input->notes)
         os << "Note:             " << n << '\n';
+    if (!m.editedRoutes.empty()) {
+        os << "Edited routes:    " << m.editedRoutes.size() << " hand-edited route" << (m.editedRoutes.size() == 1 ? "" : "s")
+           << " (";
+        for (std::size_t i = 0; i < m.editedRoutes.size(); ++i)
+            os << (i ? ", " : "") << m.editedRoutes[i].aircraft << ": " << m.editedRoutes[i].waypoints.size()
+               << " waypoints";
+        os << "), read but not checked here; 'plan' does not use them\n";
+    }
     os << "Area:             " << grouped(r.areaM2) << " m² (" << fmt("%.2f", r.areaM2 / 10000.0) << " ha)\n";
     os << "Admissible area:  " << grouped(r.admissibleAreaM2) << " m² (area minus " << m.noFlyZones.size()
        << " no-fly zone" << (m.noFlyZones.size() == 1 ? "" : "s") << ")\n";

@@ -55,6 +55,34 @@ CPLJSONObject jsonPolygon(const geo::GeoPolygon& poly) {
 }
 
 
+const char* kindName(route::WaypointKind k) {
+    switch (k) {
+    case route::WaypointKind::Photo: return "photo";
+    case route::WaypointKind::Turn: return "turn";
+    case route::WaypointKind::Transit: return "transit";
+    }
+    return "photo";
+}
+
+CPLJSONObject jsonRoute(const route::Route& r) {
+    CPLJSONObject o;
+    o.Add("aircraft", r.aircraft);
+    if (r.home)
+        o.Add("home", jsonPosition(*r.home));
+    o.Add("cruise_speed_mps", jsonNumber(r.cruiseSpeedMps));
+    CPLJSONArray wps;
+    for (const auto& w : r.waypoints) {
+        CPLJSONObject wo;
+        wo.Add("position", jsonPosition(w.position));
+        wo.Add("altitude_m", jsonNumber(w.altitudeM));
+        wo.Add("heading_deg", jsonNumber(w.headingDeg));
+        wo.Add("kind", kindName(w.kind));
+        wps.Add(wo);
+    }
+    o.Add("waypoints", wps);
+    return o;
+}
+
 const char* plannerName(mission::PlannerKind k) {
     switch (k) {
     case mission::PlannerKind::Stride: return "stride";
@@ -115,7 +143,8 @@ public:
     // A misspelt optional field would otherwise be ignored and its default used without a word, which
     // for a safety margin or an overlap is worse than refusing the file. "note" is allowed anywhere
     // for the user's own remarks.
-    void checkKeys(const CPLJSONObject& o, const std::string& path, std::initializer_list<const char*> known) {
+    void checkKeys(const CPLJSONObject& o, const std::string& path, std::initializer_list<const char*> known,
+                   const char* separator = ".") {
         if (failed() || o.GetType() != CPLJSONObject::Type::Object)
             return;
         for (const auto& child : o.GetChildren()) {
@@ -127,7 +156,7 @@ public:
                 std::string list;
                 for (const char* k : known)
                     list += (list.empty() ? "" : ", ") + std::string(k);
-                fail(join(path, key), "unknown field (known here: " + list + ")");
+                fail(path.empty() ? key : path + separator + key, "unknown field (known here: " + list + ")");
                 return;
             }
         }
@@ -393,6 +422,87 @@ public:
         return opt;
     }
 
+    // One waypoint; `wp` reads like "routes[1] (\"Falcon 8\"): waypoint 12" (counted from 1, as the
+    // waypoint table and the problem list count them).
+    route::Waypoint waypoint(const CPLJSONObject& o, const std::string& wp) {
+        route::Waypoint w;
+        if (!expectType(o, wp, o.GetType() == CPLJSONObject::Type::Object, "an object"))
+            return w;
+        auto field = [&](const char* key) { return wp + ": " + key; };
+        auto required = [&](const char* key) {
+            CPLJSONObject v = member(o, key);
+            if (!v.IsValid() && !failed())
+                fail(field(key), "missing required field");
+            return v;
+        };
+        if (CPLJSONObject pos = required("position"); pos.IsValid() && !failed())
+            w.position = position(pos, field("position"));
+        if (CPLJSONObject alt = required("altitude_m"); alt.IsValid() && !failed())
+            w.altitudeM = number(alt, field("altitude_m"));
+        if (CPLJSONObject heading = member(o, "heading_deg"); heading.IsValid() && !failed())
+            w.headingDeg = number(heading, field("heading_deg"));
+        if (CPLJSONObject kind = required("kind"); kind.IsValid() && !failed()) {
+            if (expectType(kind, field("kind"), kind.GetType() == CPLJSONObject::Type::String, "a string")) {
+                const std::string k = kind.ToString();
+                if (k == "photo")
+                    w.kind = route::WaypointKind::Photo;
+                else if (k == "turn")
+                    w.kind = route::WaypointKind::Turn;
+                else if (k == "transit")
+                    w.kind = route::WaypointKind::Transit;
+                else
+                    fail(field("kind"), "unknown kind \"" + k + "\" (expected photo, turn or transit)");
+            }
+        }
+        checkKeys(o, wp, {"position", "altitude_m", "heading_deg", "kind"}, ": ");
+        return w;
+    }
+
+    route::Route editedRoute(const CPLJSONObject& o, const std::string& path) {
+        route::Route r;
+        if (!expectType(o, path, o.GetType() == CPLJSONObject::Type::Object, "an object"))
+            return r;
+        r.aircraft = string(o, path, "aircraft", "", true);
+        if (failed())
+            return r;
+        // The aircraft's name goes into every message: "routes[1]" alone is hard to find in a file.
+        const std::string label = path + " (\"" + r.aircraft + "\")";
+        r.home = optionalPosition(o, label, "home");
+        r.cruiseSpeedMps = number(o, label, "cruise_speed_mps", r.cruiseSpeedMps);
+        if (!failed() && !(r.cruiseSpeedMps > 0.0))
+            fail(join(label, "cruise_speed_mps"),
+                 "the cruise speed must be greater than 0 but is " + member(o, "cruise_speed_mps").ToString());
+        CPLJSONObject wps = member(o, "waypoints");
+        if (!wps.IsValid()) {
+            fail(join(label, "waypoints"), "missing required field");
+        } else if (!failed()) {
+            CPLJSONArray a = array(wps, join(label, "waypoints"));
+            r.waypoints.reserve(static_cast<std::size_t>(a.Size()));
+            for (int i = 0; i < a.Size() && !failed(); ++i)
+                r.waypoints.push_back(waypoint(a[i], label + ": waypoint " + std::to_string(i + 1)));
+        }
+        checkKeys(o, label, {"aircraft", "home", "cruise_speed_mps", "waypoints"});
+        return r;
+    }
+
+    std::vector<route::Route> editedRoutes(const CPLJSONObject& root, long long version) {
+        std::vector<route::Route> out;
+        CPLJSONObject routes = member(root, "routes");
+        if (!routes.IsValid() || failed())
+            return out;
+        if (version < 2) {
+            // A version 1 reader refuses the field; a file claiming version 1 with routes was not
+            // written by Photoflight and would be refused by the releases it claims to suit.
+            fail("routes", "hand-edited routes need version 2 of the mission file, but the file says version " +
+                               std::to_string(version));
+            return out;
+        }
+        CPLJSONArray a = array(routes, "routes");
+        for (int i = 0; i < a.Size() && !failed(); ++i)
+            out.push_back(editedRoute(a[i], "routes[" + std::to_string(i) + "]"));
+        return out;
+    }
+
     mission::Mission mission(const CPLJSONObject& root) {
         mission::Mission m;
         if (!expectType(root, "", root.GetType() == CPLJSONObject::Type::Object, "a JSON object"))
@@ -453,8 +563,10 @@ public:
         }
         if (!failed())
             m.options = planner(root);
+        if (!failed())
+            m.editedRoutes = editedRoutes(root, version);
         checkKeys(root, "", {"format", "version", "name", "area", "no_fly_zones", "home", "landing", "aircraft",
-                             "planner"});
+                             "planner", "routes"});
         return m;
     }
 
@@ -545,13 +657,41 @@ std::optional<std::string> firstNonFinite(const mission::Mission& m) {
     return std::nullopt;
 }
 
+// What the reader would refuse in the edited routes, as "<where> <what>"; a file that cannot be read
+// back must never replace a good one.
+std::optional<std::string> firstUnreadableRoute(const mission::Mission& m) {
+    auto badPos = [](const geo::LonLat& p) {
+        return !std::isfinite(p.lon) || !std::isfinite(p.lat) || std::abs(p.lon) > 180.0 || std::abs(p.lat) > 90.0;
+    };
+    for (std::size_t i = 0; i < m.editedRoutes.size(); ++i) {
+        const auto& r = m.editedRoutes[i];
+        const std::string label = "routes[" + std::to_string(i) + "] (\"" + r.aircraft + "\")";
+        if (r.home && badPos(*r.home))
+            return label + ": the home is not a valid longitude/latitude";
+        if (!std::isfinite(r.cruiseSpeedMps) || !(r.cruiseSpeedMps > 0.0))
+            return label + ": the cruise speed is not a number greater than 0";
+        for (std::size_t k = 0; k < r.waypoints.size(); ++k) {
+            const auto& w = r.waypoints[k];
+            const std::string wp = label + ": waypoint " + std::to_string(k + 1);
+            if (badPos(w.position))
+                return wp + ": the position is not a valid longitude/latitude";
+            if (!std::isfinite(w.altitudeM))
+                return wp + ": the altitude is not a finite number";
+            if (!std::isfinite(w.headingDeg))
+                return wp + ": the heading is not a finite number";
+        }
+    }
+    return std::nullopt;
+}
+
 } // namespace
 
 std::string missionToJson(const mission::Mission& m) {
     CPLJSONDocument doc;
     CPLJSONObject root = doc.GetRoot();
     root.Add("format", kFormatName);
-    root.Add("version", mission::kMissionFileVersion);
+    // Version 1 when there is nothing of version 2 in it, so older releases still open the file.
+    root.Add("version", m.editedRoutes.empty() ? 1 : mission::kMissionFileVersion);
     root.Add("name", m.name);
     root.Add("area", jsonPolygon(m.area));
     CPLJSONArray zones;
@@ -601,6 +741,12 @@ std::string missionToJson(const mission::Mission& m) {
     planner.Add("battery_reserve", jsonNumber(m.options.batteryReserve));
     planner.Add("max_cells", static_cast<GInt64>(m.options.maxCells));
     root.Add("planner", planner);
+    if (!m.editedRoutes.empty()) {
+        CPLJSONArray routes;
+        for (const auto& r : m.editedRoutes)
+            routes.Add(jsonRoute(r));
+        root.Add("routes", routes);
+    }
     return root.Format(CPLJSONObject::PrettyFormat::Pretty) + "\n";
 }
 
@@ -631,10 +777,17 @@ Result<mission::Mission> readMissionFile(const std::string& path) {
     return parseMissionJson(ss.str(), path);
 }
 
-Status writeMissionFile(const mission::Mission& m, const std::string& path) {
+Status checkWritable(const mission::Mission& m, const std::string& path) {
     if (auto field = firstNonFinite(m))
-        return makeError(ErrorCode::InvalidInput,
-                         path + ": not saved: " + *field + " is not a finite number");
+        return makeError(ErrorCode::InvalidInput, path + ": not saved: " + *field + " is not a finite number");
+    if (auto problem = firstUnreadableRoute(m))
+        return makeError(ErrorCode::InvalidInput, path + ": not saved: " + *problem);
+    return {};
+}
+
+Status writeMissionFile(const mission::Mission& m, const std::string& path) {
+    if (auto s = checkWritable(m, path); !s)
+        return s;
     const std::string text = missionToJson(m);
 
     // Write beside the target and rename over it: a crash or a full disk leaves either the old file

@@ -14,6 +14,9 @@ Result<mission::Mission> readMissionFile(const std::string& path);
 Result<mission::Mission> parseMissionJson(const std::string& text, const std::string& sourceName);
 // Serialises a mission; parseMissionJson(missionToJson(m)) == m exactly.
 std::string missionToJson(const mission::Mission& m);
+// Refuses what could not be read back (a NaN, a waypoint off the globe): "<path>: not saved: <why>".
+// writeMissionFile checks it; other writers (the desktop application's QSaveFile) call it first.
+Status checkWritable(const mission::Mission& m, const std::string& path);
 // Writes atomically: to a temporary file beside `path`, then renames it over `path`.
 Status writeMissionFile(const mission::Mission& m, const std::string& path);
 

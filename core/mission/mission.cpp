@@ -17,7 +17,17 @@ bool operator==(const PlannerOptions& a, const PlannerOptions& b) {
            a.maxCells == b.maxCells;
 }
 
+bool sameRoute(const route::Route& a, const route::Route& b) {
+    return a.aircraft == b.aircraft && a.home == b.home && a.cruiseSpeedMps == b.cruiseSpeedMps &&
+           a.waypoints == b.waypoints;
+}
+
 bool operator==(const Mission& a, const Mission& b) {
+    if (a.editedRoutes.size() != b.editedRoutes.size())
+        return false;
+    for (std::size_t i = 0; i < a.editedRoutes.size(); ++i)
+        if (!sameRoute(a.editedRoutes[i], b.editedRoutes[i]))
+            return false;
     return a.name == b.name && a.area == b.area && a.noFlyZones == b.noFlyZones && a.home == b.home &&
            a.landing == b.landing && a.aircraft == b.aircraft && a.options == b.options;
 }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/geo/types.h"
+#include "core/route/waypoint.h"
 #include "core/sensor/camera.h"
 
 #include <optional>
@@ -58,11 +59,19 @@ struct Mission {
     std::optional<geo::LonLat> landing; // landing point; home if unset
     std::vector<AircraftConfig> aircraft;
     PlannerOptions options;
+    // Routes the operator changed by hand, kept with the mission so that saving never loses them.
+    // Planning ignores them (a new plan is computed from the definition above); the desktop
+    // application shows them instead of a fresh plan until the user agrees to replace them.
+    std::vector<route::Route> editedRoutes;
     friend bool operator==(const Mission& a, const Mission& b);
     friend bool operator!=(const Mission& a, const Mission& b) { return !(a == b); }
 };
 
-// Current mission file format version.
-constexpr int kMissionFileVersion = 1;
+// Equal aircraft, home, speed and waypoints (route::Route has no operator== of its own).
+bool sameRoute(const route::Route& a, const route::Route& b);
+
+// Newest mission file format version: 2 added the optional "routes" (hand-edited routes). Files
+// without edited routes are still written as version 1 so that older releases keep reading them.
+constexpr int kMissionFileVersion = 2;
 
 } // namespace pf::mission

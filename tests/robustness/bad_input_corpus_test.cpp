@@ -69,7 +69,7 @@ const BadInput kCorpus[] = {
     {"another program's file", "plan corpus/wrong_format.json",
      "wrong_format.json: format: not a Photoflight mission file (format is \"qgc-plan\", expected \"photoflight-mission\")"},
     {"newer file version", "plan corpus/future_version.json",
-     "future_version.json: version: the file has version 99, newer than the version 1 this Photoflight reads"},
+     "future_version.json: version: the file has version 99, newer than the version 2 this Photoflight reads"},
     {"version as text", "plan corpus/version_as_text.json", "version_as_text.json: version: expected a number but found a string"},
     {"missing area", "plan corpus/missing_area.json", "missing_area.json: area: missing required field"},
     {"area of the wrong type", "plan corpus/area_not_object.json", "area_not_object.json: area: expected an object but found a string"},
@@ -88,6 +88,18 @@ const BadInput kCorpus[] = {
     {"unknown planner", "plan corpus/unknown_planner.json",
      "planner.planner: unknown planner \"spiral\" (expected stride, raster or wavefront)"},
     {"negative cell budget", "plan corpus/max_cells_negative.json", "planner.max_cells: value -5 is out of range"},
+    // --- hand-edited routes (version 2): the message names the route, its aircraft and the waypoint ---
+    {"edited waypoint without altitude", "plan corpus/route_waypoint_no_altitude.json",
+     "route_waypoint_no_altitude.json: routes[1] (\"Falcon 8\"): waypoint 12: altitude_m: missing required field"},
+    {"edited routes in a version 1 file", "validate corpus/route_in_version_1.json",
+     "route_in_version_1.json: routes: hand-edited routes need version 2 of the mission file, but the file says "
+     "version 1"},
+    {"unknown waypoint kind", "plan corpus/route_unknown_kind.json",
+     "routes[0] (\"Test copter\"): waypoint 5: kind: unknown kind \"hover\" (expected photo, turn or transit)"},
+    {"waypoint as a bare coordinate", "plan corpus/route_waypoint_not_object.json",
+     "routes[0] (\"Test copter\"): waypoint 8: expected an object but found an array"},
+    {"routes as an object", "plan corpus/route_not_array.json",
+     "route_not_array.json: routes: expected an array but found an object"},
     // --- geometry that cannot be planned ---
     {"self-intersecting area", "plan bad/area_self_intersecting.json", "the area intersects itself: edges 1-2 and 3-4 cross near"},
     {"bow-tie area (GeoJSON)", "plan bad/area_bow_tie.geojson", "the area intersects itself"},
@@ -177,6 +189,18 @@ TEST(BadInputCorpus, NoFlyZoneOutsideTheAreaIsAWarning) {
     EXPECT_NE(r.err.find("warning: no-fly zone \"Far away\" lies entirely outside the area; it is ignored"),
               std::string::npos)
         << r.err;
+}
+
+// A mission file with hand-edited routes plans like any other; the user is told once that the
+// edited routes are not part of the fresh plan.
+TEST(BadInputCorpus, EditedRoutesAreNotedAndNotPlanned) {
+    const CliRun r = cli("plan corpus/route_edited_mission.json");
+    EXPECT_EQ(r.signal, 0) << r.err;
+    EXPECT_EQ(r.code, 0) << r.err;
+    const std::string note = "note: the mission file holds 1 hand-edited route; it is not used: this is a fresh plan";
+    const auto at = r.err.find(note);
+    EXPECT_NE(at, std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find(note, at + 1), std::string::npos) << "said more than once:\n" << r.err;
 }
 
 // Figures the planner cannot use must be refused like the other aircraft figures (a negative cruise

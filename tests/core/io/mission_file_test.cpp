@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include <dirent.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 using namespace pf;
@@ -121,6 +122,26 @@ mission::Mission randomMission(std::mt19937_64& rng) {
     m.options.altitudeSeparationM = pos(rng);
     m.options.batteryReserve = unit(rng);
     m.options.maxCells = 1 + rng() % 1'000'000'000ULL;
+    // Hand-edited routes in about half of the missions (so both file versions are written).
+    if (coin()) {
+        std::uniform_real_distribution<double> alt(-50.0, 500.0), heading(0.0, 360.0);
+        for (int i = small(rng) + 1; i > 0; --i) {
+            route::Route r;
+            r.aircraft = coin() ? m.aircraft[rng() % m.aircraft.size()].name : name();
+            if (coin())
+                r.home = geo::LonLat{lon(rng), lat(rng)};
+            r.cruiseSpeedMps = pos(rng);
+            for (int k = static_cast<int>(rng() % 40); k > 0; --k) {
+                route::Waypoint w;
+                w.position = {lon(rng), lat(rng)};
+                w.altitudeM = alt(rng);
+                w.headingDeg = heading(rng);
+                w.kind = static_cast<route::WaypointKind>(rng() % 3);
+                r.waypoints.push_back(w);
+            }
+            m.editedRoutes.push_back(r);
+        }
+    }
     return m;
 }
 
@@ -320,11 +341,13 @@ TEST(MissionFileErrors, WrongOrMissingFormat) {
 }
 
 TEST(MissionFileErrors, UnknownVersion) {
-    EXPECT_EQ(errorOf(with(kMinimal, "\"version\": 1", "\"version\": 2")),
-              "x.json: version: the file has version 2, newer than the version 1 this Photoflight reads; please "
+    EXPECT_EQ(errorOf(with(kMinimal, "\"version\": 1", "\"version\": 3")),
+              "x.json: version: the file has version 3, newer than the version 2 this Photoflight reads; please "
               "update Photoflight");
     EXPECT_EQ(errorOf(with(kMinimal, "\"version\": 1", "\"version\": 0")),
-              "x.json: version: unknown version 0 (expected 1 to 1)");
+              "x.json: version: unknown version 0 (expected 1 to 2)");
+    // Version 2 without routes is fine too (a hand-written file, or one whose edits were removed).
+    EXPECT_EQ(errorOf(with(kMinimal, "\"version\": 1", "\"version\": 2")), "<parsed>");
     EXPECT_EQ(errorOf(with(kMinimal, "\"version\": 1", "\"version\": \"1\"")),
               "x.json: version: expected a number but found a string");
     EXPECT_EQ(errorOf(with(kMinimal, "\"version\": 1,", "")), "x.json: version: missing required field");
@@ -402,4 +425,211 @@ TEST(MissionFileErrors, BadValues) {
     EXPECT_EQ(errorOf(with(kMinimal, "\"hfov_deg\": 60.0", "\"hfov_deg\": 190.0")),
               "x.json: aircraft[0].camera: camera: horizontal field of view must be between 0 and 180 degrees, "
               "exclusive (got 190 degrees)");
+}
+
+// ---- hand-edited routes (version 2) ----
+
+namespace {
+
+// kMinimal as version 2 with one edited route of three waypoints; tests break one field at a time.
+std::string withRoutes() {
+    std::string t = with(kMinimal, "\"version\": 1", "\"version\": 2");
+    return with(t, "\"planner\": {\"planner\": \"stride\", \"grid_angle_deg\": \"auto\"}",
+                R"("planner": {"planner": "stride", "grid_angle_deg": "auto"},
+  "routes": [
+    {"aircraft": "A", "cruise_speed_mps": 8.0, "waypoints": []},
+    {"aircraft": "Falcon 8", "home": [8.0, 49.0], "cruise_speed_mps": 12.5, "waypoints": [
+      {"position": [8.0005, 49.0005], "altitude_m": 40.0, "heading_deg": 90.0, "kind": "transit"},
+      {"position": [8.0006, 49.0005], "altitude_m": 40.5, "heading_deg": 90.0, "kind": "photo"},
+      {"position": [8.0007, 49.0005], "altitude_m": 41.0, "kind": "turn"}
+    ]}
+  ])");
+}
+
+route::Route sampleRoute() {
+    route::Route r;
+    r.aircraft = "Falcon 8";
+    r.home = geo::LonLat{8.0, 49.0};
+    r.cruiseSpeedMps = 7.25;
+    for (int i = 0; i < 5; ++i)
+        r.waypoints.push_back({{8.0 + i * 1e-4, 49.0 + 1e-7 * i}, 40.0 + 0.1 * i, 45.0 * i,
+                               static_cast<route::WaypointKind>(i % 3)});
+    return r;
+}
+
+} // namespace
+
+TEST(MissionFileRoutes, ReadsEveryFieldOfEveryWaypoint) {
+    auto m = parseMissionJson(withRoutes(), "x.json");
+    ASSERT_TRUE(m) << m.error().message;
+    ASSERT_EQ(m->editedRoutes.size(), 2u);
+    EXPECT_EQ(m->editedRoutes[0].aircraft, "A");
+    EXPECT_FALSE(m->editedRoutes[0].home);
+    EXPECT_TRUE(m->editedRoutes[0].waypoints.empty());
+    const auto& r = m->editedRoutes[1];
+    EXPECT_EQ(r.aircraft, "Falcon 8");
+    ASSERT_TRUE(r.home);
+    EXPECT_EQ(*r.home, (geo::LonLat{8.0, 49.0}));
+    EXPECT_EQ(r.cruiseSpeedMps, 12.5);
+    ASSERT_EQ(r.waypoints.size(), 3u);
+    EXPECT_EQ(r.waypoints[0].kind, route::WaypointKind::Transit);
+    EXPECT_EQ(r.waypoints[1].kind, route::WaypointKind::Photo);
+    EXPECT_EQ(r.waypoints[2].kind, route::WaypointKind::Turn);
+    EXPECT_EQ(r.waypoints[1].position, (geo::LonLat{8.0006, 49.0005}));
+    EXPECT_EQ(r.waypoints[1].altitudeM, 40.5);
+    EXPECT_EQ(r.waypoints[0].headingDeg, 90.0);
+    EXPECT_EQ(r.waypoints[2].headingDeg, 0.0); // optional, north by default
+}
+
+TEST(MissionFileRoutes, VersionOneUnlessThereAreEditedRoutes) {
+    auto m = parseMissionJson(kMinimal, "x.json");
+    ASSERT_TRUE(m);
+    // Without edits the file stays readable by releases that only know version 1.
+    std::string text = missionToJson(*m);
+    EXPECT_NE(text.find("\"version\":1,"), std::string::npos) << text;
+    EXPECT_EQ(text.find("\"routes\""), std::string::npos);
+    m->editedRoutes.push_back(sampleRoute());
+    text = missionToJson(*m);
+    EXPECT_NE(text.find("\"version\":2,"), std::string::npos) << text;
+    auto back = parseMissionJson(text, "x.json");
+    ASSERT_TRUE(back) << back.error().message;
+    EXPECT_TRUE(*back == *m);
+    ASSERT_EQ(back->editedRoutes.size(), 1u);
+    EXPECT_TRUE(mission::sameRoute(back->editedRoutes[0], sampleRoute()));
+}
+
+TEST(MissionFileRoutes, EqualityLooksAtEveryWaypointField) {
+    mission::Mission a;
+    a.editedRoutes.push_back(sampleRoute());
+    const mission::Mission b = a;
+    EXPECT_TRUE(a == b);
+    auto changed = [&](auto edit) {
+        mission::Mission c = b;
+        edit(c.editedRoutes[0]);
+        return c != b;
+    };
+    EXPECT_TRUE(changed([](route::Route& r) { r.aircraft += "x"; }));
+    EXPECT_TRUE(changed([](route::Route& r) { r.home.reset(); }));
+    EXPECT_TRUE(changed([](route::Route& r) { r.cruiseSpeedMps += 1e-12; }));
+    EXPECT_TRUE(changed([](route::Route& r) { r.waypoints[3].position.lat = std::nextafter(r.waypoints[3].position.lat, 90.0); }));
+    EXPECT_TRUE(changed([](route::Route& r) { r.waypoints[3].altitudeM += 1e-9; }));
+    EXPECT_TRUE(changed([](route::Route& r) { r.waypoints[3].headingDeg += 1e-9; }));
+    EXPECT_TRUE(changed([](route::Route& r) { r.waypoints[3].kind = route::WaypointKind::Turn; }));
+    EXPECT_TRUE(changed([](route::Route& r) { r.waypoints.pop_back(); }));
+    mission::Mission none = b;
+    none.editedRoutes.clear();
+    EXPECT_TRUE(none != b);
+}
+
+TEST(MissionFileRoutes, BadRoutesNameTheRouteAndTheWaypoint) {
+    const std::string t = withRoutes();
+    EXPECT_EQ(errorOf(with(t, "\"altitude_m\": 40.5, ", "")),
+              "x.json: routes[1] (\"Falcon 8\"): waypoint 2: altitude_m: missing required field");
+    EXPECT_EQ(errorOf(with(t, "\"altitude_m\": 40.5", "\"altitude_m\": \"high\"")),
+              "x.json: routes[1] (\"Falcon 8\"): waypoint 2: altitude_m: expected a number but found a string");
+    EXPECT_EQ(errorOf(with(t, "\"altitude_m\": 41.0", "\"altitude_m\": NaN")),
+              "x.json: routes[1] (\"Falcon 8\"): waypoint 3: altitude_m: expected a finite number but found NaN");
+    EXPECT_EQ(errorOf(with(t, "\"kind\": \"turn\"", "\"kind\": \"hover\"")),
+              "x.json: routes[1] (\"Falcon 8\"): waypoint 3: kind: unknown kind \"hover\" (expected photo, turn or "
+              "transit)");
+    EXPECT_EQ(errorOf(with(t, ", \"kind\": \"turn\"", "")),
+              "x.json: routes[1] (\"Falcon 8\"): waypoint 3: kind: missing required field");
+    EXPECT_EQ(errorOf(with(t, "[8.0006, 49.0005]", "[8.0006, 91.0]")),
+              "x.json: routes[1] (\"Falcon 8\"): waypoint 2: position[1]: latitude 91.0 is out of range (-90 to 90)");
+    EXPECT_EQ(errorOf(with(t, "\"position\": [8.0005, 49.0005], ", "")),
+              "x.json: routes[1] (\"Falcon 8\"): waypoint 1: position: missing required field");
+    EXPECT_EQ(errorOf(with(t, "\"heading_deg\": 90.0, \"kind\": \"photo\"", "\"heading_deg\": 90.0, \"kind\": \"photo\", \"gimbal\": -90")),
+              "x.json: routes[1] (\"Falcon 8\"): waypoint 2: gimbal: unknown field (known here: position, altitude_m, "
+              "heading_deg, kind)");
+    EXPECT_EQ(errorOf(with(t, "{\"position\": [8.0007, 49.0005], \"altitude_m\": 41.0, \"kind\": \"turn\"}", "[8.0007, 49.0005]")),
+              "x.json: routes[1] (\"Falcon 8\"): waypoint 3: expected an object but found an array");
+    EXPECT_EQ(errorOf(with(t, "\"aircraft\": \"Falcon 8\", ", "")), "x.json: routes[1].aircraft: missing required field");
+    EXPECT_EQ(errorOf(with(t, "\"cruise_speed_mps\": 12.5", "\"cruise_speed_mps\": 0")),
+              "x.json: routes[1] (\"Falcon 8\").cruise_speed_mps: the cruise speed must be greater than 0 but is 0");
+    EXPECT_EQ(errorOf(with(t, "\"cruise_speed_mps\": 8.0, \"waypoints\": []", "\"cruise_speed_mps\": 8.0")),
+              "x.json: routes[0] (\"A\").waypoints: missing required field");
+    EXPECT_EQ(errorOf(with(t, "\"waypoints\": []", "\"waypoints\": {}")),
+              "x.json: routes[0] (\"A\").waypoints: expected an array but found an object");
+    EXPECT_EQ(errorOf(with(t, "\"home\": [8.0, 49.0]", "\"hom\": [8.0, 49.0]")),
+              "x.json: routes[1] (\"Falcon 8\").hom: unknown field (known here: aircraft, home, cruise_speed_mps, "
+              "waypoints)");
+    EXPECT_EQ(errorOf(with(t, "{\"aircraft\": \"A\", \"cruise_speed_mps\": 8.0, \"waypoints\": []}", "7")),
+              "x.json: routes[0]: expected an object but found a number");
+    // A version 1 file cannot hold routes: the releases reading version 1 refuse the field.
+    EXPECT_EQ(errorOf(with(t, "\"version\": 2", "\"version\": 1")),
+              "x.json: routes: hand-edited routes need version 2 of the mission file, but the file says version 1");
+}
+
+TEST(MissionFileRoutes, RandomDamageNeverCrashesAndAlwaysExplains) {
+    // Every prefix and every single-byte change of a file with routes either parses or gives a message
+    // naming the file, and what parses writes and reads back.
+    const std::string t = withRoutes();
+    std::mt19937_64 rng(99);
+    const char junk[] = "{}[],:\"0-.e9aZ \n";
+    for (int i = 0; i < 400; ++i) {
+        std::string s = t;
+        if (i % 2 == 0)
+            s.resize(rng() % s.size());
+        else
+            s[rng() % s.size()] = junk[rng() % (sizeof junk - 1)];
+        auto r = parseMissionJson(s, "x.json");
+        if (!r) {
+            EXPECT_EQ(r.error().message.rfind("x.json: ", 0), 0u) << r.error().message;
+            continue;
+        }
+        auto back = parseMissionJson(missionToJson(*r), "again.json");
+        ASSERT_TRUE(back) << back.error().message;
+        EXPECT_TRUE(*back == *r);
+    }
+}
+
+TEST(MissionFileRoutes, WriterRefusesWhatCouldNotBeReadBack) {
+    const std::string dir = makeTempDir();
+    ASSERT_FALSE(dir.empty());
+    const std::string path = dir + "/m.json";
+    auto m = parseMissionJson(withRoutes(), "x.json");
+    ASSERT_TRUE(m);
+    ASSERT_TRUE(writeMissionFile(*m, path));
+    const std::string before = readText(path);
+
+    auto refused = [&](auto edit) {
+        mission::Mission bad = *m;
+        edit(bad.editedRoutes[1]);
+        EXPECT_FALSE(checkWritable(bad, path));
+        auto s = writeMissionFile(bad, path);
+        EXPECT_EQ(readText(path), before); // the good file stays
+        return s ? std::string("<saved>") : s.error().message;
+    };
+    EXPECT_EQ(refused([](route::Route& r) { r.waypoints[1].position.lon = 181.0; }),
+              path + ": not saved: routes[1] (\"Falcon 8\"): waypoint 2: the position is not a valid longitude/latitude");
+    EXPECT_EQ(refused([](route::Route& r) { r.waypoints[2].altitudeM = std::nan(""); }),
+              path + ": not saved: routes[1] (\"Falcon 8\"): waypoint 3: the altitude is not a finite number");
+    EXPECT_EQ(refused([](route::Route& r) { r.waypoints[0].headingDeg = HUGE_VAL; }),
+              path + ": not saved: routes[1] (\"Falcon 8\"): waypoint 1: the heading is not a finite number");
+    EXPECT_EQ(refused([](route::Route& r) { r.cruiseSpeedMps = 0.0; }),
+              path + ": not saved: routes[1] (\"Falcon 8\"): the cruise speed is not a number greater than 0");
+    EXPECT_EQ(refused([](route::Route& r) { r.home = geo::LonLat{0.0, -95.0}; }),
+              path + ": not saved: routes[1] (\"Falcon 8\"): the home is not a valid longitude/latitude");
+    EXPECT_EQ(listDir(dir), std::vector<std::string>{"m.json"});
+    std::remove(path.c_str());
+    ::rmdir(dir.c_str());
+}
+
+// `photoflight-cli validate` says in one line which edited routes it read.
+TEST(MissionFileRoutes, ValidateMentionsTheEditedRoutes) {
+    const std::string cmd = std::string("'") + PF_CLI_PATH + "' validate '" + PF_TEST_DATA_DIR +
+                            "/corpus/route_edited_mission.json' 2>/dev/null";
+    FILE* p = ::popen(cmd.c_str(), "r");
+    ASSERT_NE(p, nullptr);
+    std::string out;
+    char buf[4096];
+    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;)
+        out.append(buf, n);
+    const int status = ::pclose(p);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << out;
+    EXPECT_NE(out.find("Edited routes:    1 hand-edited route (Test copter: 52 waypoints), read but not checked "
+                       "here; 'plan' does not use them\n"),
+              std::string::npos)
+        << out;
+    EXPECT_NE(out.find("OK: 0 errors"), std::string::npos) << out;
 }
