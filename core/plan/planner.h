@@ -17,8 +17,10 @@ const char* plannerName(PlannerKind kind);
 std::optional<PlannerKind> parsePlannerKind(const std::string& name);
 
 struct CoverageRequest {
-    // First cell photographed. -1: the take-off cell if set, else the first visitable cell in index
-    // order (the lowest row's leftmost cell, always on the contour).
+    // Where the coverage path begins. -1: the take-off cell if set, else the first visitable cell in
+    // index order (the lowest row's leftmost cell, always on the contour). The raster and wavefront
+    // planners and the stride planner's paper rules photograph it first; the stride planner's lead-in
+    // variants may first fly from it, without photographing, to a corner of the area.
     int start = -1;
     // Cell under the take-off point: when it differs from the start, a transit path over allowed
     // moves leads from it to the start. -1: none.

@@ -588,9 +588,12 @@ void cleanUpRevisits(const Grid& g, CellPath& path) {
             continue;
         }
         // Occurrences i+1 .. far-1 are all transits: drop them. When path[far] is the same cell as
-        // path[i] (itself a transit occurrence), drop it too and keep i's occurrence.
+        // path[i], drop it too and keep i's occurrence, photographed if either of the two was (a path
+        // that leaves a cell in transit and comes back to photograph it photographs it once).
         i = far;
         pushCurrent = !same;
+        if (same && !path.revisit[far])
+            out.revisit.back() = false;
     }
     path = std::move(out);
 }
@@ -603,12 +606,26 @@ std::vector<StrideVariant> strideVariants(const Grid& g, int start) {
         v.push_back({kLaneWeight, axis, -1});
     if (start < 0 || g.visitCount() > kLeadInCellLimit)
         return v;
-    // Lead-ins: to the end of the start's row or column, each way.
-    for (int lead = 0; lead < 4; ++lead) {
-        if (!g.canMove(start, static_cast<Dir>(lead)))
+    // Lead-ins: to the area's four corners (the cells with the smallest and largest col + row and
+    // col - row). Lead-ins to the ends of the start's row and column were tried too; on the sample areas
+    // they saved 0.2 % of the turns for twice the plans.
+    int corner[4] = {-1, -1, -1, -1};
+    auto key = [&](int i, int k) { return (k & 1 ? -1 : 1) * g.col(i) + (k & 2 ? -1 : 1) * g.row(i); };
+    for (int i = 0; i < g.cellCount(); ++i) {
+        if (!g.needsVisit(i))
+            continue;
+        for (int k = 0; k < 4; ++k)
+            if (corner[k] < 0 || key(i, k) < key(corner[k], k))
+                corner[k] = i;
+    }
+    std::vector<int> targets(corner, corner + 4);
+    std::sort(targets.begin(), targets.end());
+    targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
+    for (int t : targets) {
+        if (t == start)
             continue;
         for (int a : {-1, 0, 1})
-            v.push_back({kLaneWeight, a, lead});
+            v.push_back({kLaneWeight, a, t});
     }
     return v;
 }
@@ -621,12 +638,18 @@ Result<CellPath> planStrideVariant(const Grid& g, const CoverageRequest& req, co
     StridePlanner planner(g, trace, variant);
     int first = *start;
     CellPath lead;
-    if (variant.leadIn >= 0) {
-        const int off = dirOffset(g, variant.leadIn);
-        while (g.canMove(first, static_cast<Dir>(variant.leadIn))) {
+    if (variant.leadTo >= 0 && variant.leadTo != first) {
+        GridSearch search(g);
+        const std::vector<int> p =
+            search.pathToNearestStraightest(first, -1, [&](int c) { return c == variant.leadTo; }, [](int) { return true; });
+        if (!p.empty()) { // else the corner lies in another part: start where asked
             lead.cells.push_back(first);
             lead.revisit.push_back(true);
-            first += off;
+            for (std::size_t k = 0; k + 1 < p.size(); ++k) {
+                lead.cells.push_back(p[k]);
+                lead.revisit.push_back(true);
+            }
+            first = p.back();
         }
     }
     CellPath body = planner.run(first);

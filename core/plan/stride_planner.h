@@ -64,11 +64,12 @@ struct StrideTrace {
 struct StrideVariant {
     double laneWeight = 0.0; // 0: the paper's rules only
     int laneAxis = -1;       // lane axis before the first long stride: -1 none, 0 east-west, 1 north-south
-    // Lead-in: -1 none; else a direction (grid::Dir): the path first flies straight from the start in
-    // that direction to the area's limit without photographing, and coverage starts there. Starting
-    // in the middle of an edge leaves the other half of the edge to come back to; a lead-in to the
-    // nearer end avoids that for one reversal.
-    int leadIn = -1;
+    // Lead-in: -1 none; else the cell where coverage starts: the path first flies there from the start
+    // without photographing (the shortest, straightest path over allowed moves). Starting in the middle
+    // of an edge leaves the other half of the edge to come back to, and lanes flown towards a receding
+    // side of the area need a way back at each step: starting at an end of the edge or at a corner of
+    // the area avoids both for the price of the lead-in.
+    int leadTo = -1;
 };
 
 // The variants planStride compares from `start`: the paper's rules first, then lane variants.

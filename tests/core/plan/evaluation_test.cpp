@@ -120,8 +120,8 @@ TEST(Evaluation, StrideTurnsNearTheRasterAndBelowThePaperRules) {
         paperSum += rules[0].avgTurns / raster.avgTurns;
     }
     const double n = static_cast<double>(std::size(kAreas));
-    EXPECT_LE(ratioSum / n, 1.06);
-    EXPECT_LE(ratioSum / n, paperSum / n - 0.15) << "the variants must save a real share of the paper's turns";
+    EXPECT_LE(ratioSum / n, 1.02);
+    EXPECT_LE(ratioSum / n, paperSum / n - 0.2) << "the variants must save a real share of the paper's turns";
 }
 
 TEST(Evaluation, CsvAndTable) {

@@ -347,11 +347,18 @@ TEST(StridePlanner, TakeoffAndLandingTransits) {
     ASSERT_TRUE(path.ok());
     test::expectValidCoverage(g, *path, false, 0, "take-off");
     EXPECT_EQ(path->cells.front(), req.takeoff);
-    EXPECT_TRUE(path->revisit.front());
     EXPECT_EQ(path->cells.back(), req.landing);
-    // The first photographed cell is the start.
-    const auto first = std::find(path->revisit.begin(), path->revisit.end(), false) - path->revisit.begin();
-    EXPECT_EQ(path->cells[first], req.start);
+    // The take-off cell is the corner where lanes begin best: the variants fly no way to the start and
+    // back but photograph from the take-off cell on.
+    EXPECT_FALSE(path->revisit.front());
+    // With the paper's rules the first photographed cell is the start.
+    auto paper = planStrideVariant(g, req, StrideVariant{});
+    ASSERT_TRUE(paper.ok());
+    test::expectValidCoverage(g, *paper, false, 0, "take-off, paper rules");
+    EXPECT_EQ(paper->cells.front(), req.takeoff);
+    EXPECT_EQ(paper->cells.back(), req.landing);
+    const auto first = std::find(paper->revisit.begin(), paper->revisit.end(), false) - paper->revisit.begin();
+    EXPECT_EQ(paper->cells[first], req.start);
 }
 
 TEST(StridePlanner, CleanUpRemovesTransitsBetweenAdjacentCells) {
@@ -378,6 +385,15 @@ TEST(StridePlanner, CleanUpRemovesTransitsBetweenAdjacentCells) {
     cleanUpRevisits(g, r);
     EXPECT_EQ(r.cells, (std::vector<int>{0, 1, 2, 3}));
     EXPECT_EQ(r.revisit, (std::vector<bool>{false, false, false, false}));
+
+    // A transit loop from a cell back to it, where the coverage then photographs it: the loop goes
+    // and the cell stays photographed once (a take-off cell that is also where coverage begins).
+    CellPath t;
+    t.cells = {3, 2, 1, 2, 3, 7, 6};
+    t.revisit = {true, true, true, true, false, false, false};
+    cleanUpRevisits(g, t);
+    EXPECT_EQ(t.cells, (std::vector<int>{3, 7, 6}));
+    EXPECT_EQ(t.revisit, (std::vector<bool>{false, false, false}));
 }
 
 TEST(StridePlanner, BadRequestsAreErrors) {
@@ -429,8 +445,8 @@ TEST(StrideVariants, LargeGridsCompareFewerVariants) {
     const grid::Grid gl = grid::Grid::fromMask(600, 500, large);
     const auto vs = strideVariants(gs, gs.index(25, 0));
     const auto vl = strideVariants(gl, gl.index(300, 0));
-    // Paper rules, 3 lane variants, and 3 lane variants after each of the 3 lead-ins of a mid-edge cell.
-    EXPECT_EQ(vs.size(), 13u);
+    // Paper rules, 3 lane variants, and 3 lane variants after a lead-in to each of the 4 corners.
+    EXPECT_EQ(vs.size(), 16u);
     EXPECT_EQ(vs.front().laneWeight, 0.0); // the paper's rules come first
     EXPECT_EQ(vl.size(), 2u);
 }
