@@ -35,6 +35,11 @@ plan::PlannerKind toPlanKind(PlannerKind k) {
     return plan::PlannerKind::Stride;
 }
 
+// The covered fraction of the admissible area below which a plan gets a warning.
+constexpr double kCoverageTarget = 0.995;
+// The makespan / ideal (total time / aircraft) a shared plan aims to stay within.
+constexpr double kBalanceTarget = 1.10;
+
 double normaliseAngle(double a) {
     a = std::fmod(a, 180.0);
     if (a < 0)
@@ -193,10 +198,30 @@ std::string metres(double v, int decimals = 0) {
     return buf;
 }
 
-Result<MissionPlan> buildPlan(const Mission& m, const LocalGeometry& geom,
+// Steps 2 to 6 of planMission for given regions (one per aircraft), planned with `opt`. Without
+// `check`, step 6 (the coverage raster and the margin breaches) is left out: the candidates of the
+// split are compared on their times alone, and only the plan returned is checked.
+Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const LocalGeometry& geom,
                               const std::vector<geo::MultiPolygon>& regions,
                               const std::vector<std::optional<geo::Vec2>>& homes,
-                              const std::optional<geo::Vec2>& landing);
+                              const std::optional<geo::Vec2>& landing, bool check,
+                              std::vector<double>* aloneTimes = nullptr);
+
+// The time of the route an aircraft would fly alone over its survey waypoints: from home along the
+// straight line to the first one, through all, and straight back (to the landing point if any), timed
+// as the final plan times it (length / speed + turn angles / turn rate).
+double aloneRouteTimeS(const std::vector<route::LocalWaypoint>& survey, const AircraftConfig& a,
+                       const std::optional<geo::Vec2>& home, const std::optional<geo::Vec2>& landing) {
+    std::vector<geo::Vec2> pts;
+    pts.reserve(survey.size() + 2);
+    if (home)
+        pts.push_back(*home);
+    for (const auto& w : survey)
+        pts.push_back(w.pos);
+    if (home)
+        pts.push_back(landing ? *landing : *home);
+    return route::flightTimeS(pts, route::FlightModel{a.cruiseSpeedMps, a.turnRateDegS, 0.0});
+}
 
 } // namespace
 
@@ -232,7 +257,7 @@ Result<MissionPlan> planMission(const Mission& m) {
 
     // 1. Each aircraft's region: the whole area alone, else a time-balanced split.
     if (n == 1) {
-        auto one = buildPlan(m, *geom, {geo::MultiPolygon{geom->area}}, homes, landing);
+        auto one = buildPlan(m, opt, *geom, {geo::MultiPolygon{geom->area}}, homes, landing, true);
         return one;
     }
     // The split estimates times at one fixed angle (a full angle search per estimate would cost 37
@@ -254,28 +279,16 @@ Result<MissionPlan> planMission(const Mission& m) {
     }
     PlannerOptions fixed = opt;
     fixed.gridAngleDeg = estimateAngle;
-    // The time of the route the aircraft would fly alone over `sub`: from home along the straight line
-    // to the first photo, through every photo waypoint, and straight back, timed as the final plan
-    // times it (length / speed + turn angles / turn rate). The planner's own cell-path time misses
-    // where the photos sit (the route runs through photo waypoints, not cell centres) and was off by
-    // up to 7 % on large footprints; the route leaves only what needs the neighbours (photos already
-    // taken by another aircraft) and the no-fly detours to the correction factors below. An aircraft
-    // whose subarea lies far from its home gets less of the area.
+    // The time of the route the aircraft would fly alone over `sub` (aloneRouteTimeS). The planner's
+    // own cell-path time misses where the photos sit (the route runs through photo waypoints, not
+    // cell centres) and was off by up to 7 % on large footprints; the route leaves only what needs
+    // the neighbours (photos another aircraft already takes) and the no-fly detours to the correction
+    // factors below. An aircraft whose subarea lies far from its home gets less of the area.
     const auto rawEstimate = [&](std::size_t k, const geo::MultiPolygon& sub) -> Result<double> {
-        const auto& a = m.aircraft[k];
-        auto ap = planRegion(sub, geom->noFly, a, fixed, frame, homes[k], landing);
+        auto ap = planRegion(sub, geom->noFly, m.aircraft[k], fixed, frame, homes[k], landing);
         if (!ap)
             return ap.error();
-        const auto survey = surveyPart(ap->localWaypoints);
-        std::vector<geo::Vec2> pts;
-        pts.reserve(survey.size() + 2);
-        if (homes[k])
-            pts.push_back(*homes[k]);
-        for (const auto& w : survey)
-            pts.push_back(w.pos);
-        if (homes[k])
-            pts.push_back(landing ? *landing : *homes[k]);
-        return route::flightTimeS(pts, route::FlightModel{a.cruiseSpeedMps, a.turnRateDegS, 0.0});
+        return aloneRouteTimeS(surveyPart(ap->localWaypoints), m.aircraft[k], homes[k], landing);
     };
     fleet::AreaSplitOptions so;
     so.gridAngleDeg = estimateAngle;
@@ -283,18 +296,30 @@ Result<MissionPlan> planMission(const Mission& m) {
     // Tighter than the balancer's default (5 %): the stages after the estimate add their own spread,
     // and the target is the final makespan within 10 % of the ideal.
     so.balance.tolerance = 0.03;
-    std::optional<MissionPlan> best;
+    // Every split tried, with the makespan of its plan at the fixed angle and whether that makespan
+    // is within kBalanceTarget of the ideal.
+    struct Candidate {
+        bool balanced = false;
+        double makespanS = 0.0;
+        std::vector<geo::MultiPolygon> regions;
+    };
+    std::vector<Candidate> candidates;
     const auto ratio = [](const MissionPlan& p) { return p.idealS > 0 ? p.makespanS / p.idealS : 1.0; };
-    // Two starts: the aircraft in the mission's order and reversed. The partition seeds the aircraft
-    // one after the other from the far end of the free cells, so the order decides which aircraft
-    // gets which end of the area and the shapes of the subareas; the flight time depends on those
-    // shapes (turns, pieces, photos a neighbour already takes) far more than on their sizes, so two
-    // balanced splits can differ by 10 % in makespan. The plan with the smallest makespan is kept.
+    // Up to two starts: the aircraft in the mission's order, then, if no round of it came within the
+    // balancer's tolerance, reversed. The partition seeds the aircraft one after the other from the
+    // far end of the free cells, so the order decides which aircraft gets which end of the area and
+    // the shapes of the subareas; the flight time depends on those shapes (turns, pieces, photos a
+    // neighbour already takes) far more than on their sizes, so two splits balanced on the estimate
+    // can differ by 10 % in makespan. The second start is skipped when the first is balanced, to keep
+    // the planning time near that of one split. Every split planned is a candidate (below).
     std::vector<std::vector<std::size_t>> orders(1);
     for (std::size_t k = 0; k < n; ++k)
         orders[0].push_back(k);
     orders.emplace_back(orders[0].rbegin(), orders[0].rend());
+    bool reachedTolerance = false;
     for (const auto& order : orders) {
+        if (reachedTolerance)
+            break;
         std::vector<fleet::Capability> ordered;
         for (std::size_t k : order)
             ordered.push_back(caps[k]);
@@ -319,38 +344,62 @@ Result<MissionPlan> planMission(const Mission& m) {
             std::vector<geo::MultiPolygon> regions(n);
             for (std::size_t i = 0; i < n; ++i)
                 regions[order[i]] = std::move(split->subareas[i]);
-            auto p = buildPlan(m, *geom, regions, homes, landing);
+            std::vector<double> alone; // the estimate of each subarea, as the plan made it
+            auto p = buildPlan(m, fixed, *geom, regions, homes, landing, false, &alone);
             if (!p)
                 return p.error();
-            // The factors of the plan just made, before it is possibly moved into `best`.
+            // The factors of the plan just made.
             std::vector<double> next = factor;
-            for (std::size_t k = 0; k < n; ++k) {
-                auto e = rawEstimate(k, p->aircraft[k].subarea);
-                if (e && *e > 0 && p->aircraft[k].timeS > 0)
-                    next[k] = p->aircraft[k].timeS / *e;
-            }
+            for (std::size_t k = 0; k < n; ++k)
+                if (alone[k] > 0 && p->aircraft[k].timeS > 0)
+                    next[k] = p->aircraft[k].timeS / alone[k];
             const bool balanced = ratio(*p) <= 1.0 + so.balance.tolerance;
-            if (!best || p->makespanS < best->makespanS)
-                best = std::move(*p);
+            candidates.push_back({ratio(*p) <= kBalanceTarget, p->makespanS, std::move(regions)});
+            reachedTolerance = reachedTolerance || balanced;
             if (balanced || next == factor)
                 break;
             factor = std::move(next);
         }
     }
-    return std::move(*best);
+    // The candidates were planned at the estimate's fixed angle (a full angle search per candidate
+    // would cost up to 37 times as much) and without the coverage check. They are ranked: those
+    // within kBalanceTarget of the ideal first (a plan that leaves the other aircraft idle while one
+    // flies on is not what a shared area asks for, even if its makespan is a little shorter), then
+    // by makespan. The first is planned once more with the mission's options (which may search the
+    // angle per subarea; if that makes the makespan longer, the fixed angle is kept) and checked.
+    // Should its photos miss the coverage target, the next one is tried; if none meets it, the first
+    // is returned with its coverage warning.
+    std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+        return a.balanced != b.balanced ? a.balanced : a.makespanS < b.makespanS;
+    });
+    std::optional<MissionPlan> first;
+    for (const Candidate& c : candidates) {
+        auto chosen = buildPlan(m, opt, *geom, c.regions, homes, landing, true);
+        if (!chosen)
+            return chosen.error();
+        if (!opt.gridAngleDeg && chosen->makespanS > c.makespanS) {
+            chosen = buildPlan(m, fixed, *geom, c.regions, homes, landing, true);
+            if (!chosen)
+                return chosen.error();
+        }
+        if (chosen->coverageRatio >= kCoverageTarget)
+            return chosen;
+        if (!first)
+            first = std::move(*chosen);
+    }
+    return std::move(*first);
 }
 
 namespace {
 
-// Steps 2 to 6 of planMission for given regions (one per aircraft).
-Result<MissionPlan> buildPlan(const Mission& m, const LocalGeometry& geomRef,
+Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const LocalGeometry& geomRef,
                               const std::vector<geo::MultiPolygon>& regions,
                               const std::vector<std::optional<geo::Vec2>>& homes,
-                              const std::optional<geo::Vec2>& landing) {
+                              const std::optional<geo::Vec2>& landing, bool check,
+                              std::vector<double>* aloneTimes) {
     const LocalGeometry* geom = &geomRef;
     const geo::LocalFrame& frame = geom->frame;
     const std::size_t n = m.aircraft.size();
-    const PlannerOptions& opt = m.options;
     MissionPlan plan;
     plan.frame = frame;
 
@@ -364,6 +413,8 @@ Result<MissionPlan> buildPlan(const Mission& m, const LocalGeometry& geomRef,
             return ap.error();
         ap->subarea = regions[k];
         ap->surveyWaypoints = surveyPart(ap->localWaypoints);
+        if (aloneTimes)
+            aloneTimes->push_back(aloneRouteTimeS(ap->surveyWaypoints, m.aircraft[k], homes[k], landing));
         plan.aircraft.push_back(std::move(*ap));
     }
 
@@ -512,21 +563,23 @@ Result<MissionPlan> buildPlan(const Mission& m, const LocalGeometry& geomRef,
     }
 
     // 6. The independent check: real footprints of every photo of every aircraft, margin breaches.
-    auto cov = plan::checkCoverage(admissible, photoFootprints);
-    if (!cov)
-        return makeError(cov.error().code, "checking the coverage: " + cov.error().message);
-    plan.coverageRatio = cov->coveredFraction;
-    plan.uncoveredAreaM2 = cov->uncoveredAreaM2;
-    for (const auto& p : cov->patches)
-        plan.uncovered.push_back({p.shape, p.areaM2});
-    if (cov->coveredFraction < 0.995)
-        plan.warnings.push_back("the photos leave " + metres(cov->uncoveredAreaM2) + " m2 of the area (" +
-                                metres(100.0 * (1.0 - cov->coveredFraction), 1) + " %) unseen, in " +
-                                std::to_string(cov->patchCount) + " patch(es)");
-    plan.noFlyViolations = plan::countNoFlyViolations(flownPaths, geom->noFly, opt.safetyMarginM).total();
-    if (plan.noFlyViolations > 0)
-        plan.warnings.push_back(std::to_string(plan.noFlyViolations) +
-                                " waypoint(s) or leg(s) come closer to a no-fly zone than the safety margin");
+    if (check) {
+        auto cov = plan::checkCoverage(admissible, photoFootprints);
+        if (!cov)
+            return makeError(cov.error().code, "checking the coverage: " + cov.error().message);
+        plan.coverageRatio = cov->coveredFraction;
+        plan.uncoveredAreaM2 = cov->uncoveredAreaM2;
+        for (const auto& p : cov->patches)
+            plan.uncovered.push_back({p.shape, p.areaM2});
+        if (cov->coveredFraction < kCoverageTarget)
+            plan.warnings.push_back("the photos leave " + metres(cov->uncoveredAreaM2) + " m2 of the area (" +
+                                    metres(100.0 * (1.0 - cov->coveredFraction), 1) + " %) unseen, in " +
+                                    std::to_string(cov->patchCount) + " patch(es)");
+        plan.noFlyViolations = plan::countNoFlyViolations(flownPaths, geom->noFly, opt.safetyMarginM).total();
+        if (plan.noFlyViolations > 0)
+            plan.warnings.push_back(std::to_string(plan.noFlyViolations) +
+                                    " waypoint(s) or leg(s) come closer to a no-fly zone than the safety margin");
+    }
 
     PlanTotals& t = plan.totals;
     double sumTime = 0.0;

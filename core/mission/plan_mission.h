@@ -121,8 +121,11 @@ std::string planMetricsJson(const MissionPlan& plan, const std::string& plannerN
 // fleet::splitArea, balanced on the time of the route planRegion makes at a fixed grid angle (the
 // mission's, or the one the search picks for the aircraft with the coarsest grid over the whole area),
 // from home through the photo waypoints and back. The split is planned to the end and corrected with
-// each aircraft's final/estimated time (up to 3 rounds), from two starts (the aircraft in the mission's
-// order and reversed: the order places the subareas); the plan with the smallest makespan is kept. Then per
+// each aircraft's final/estimated time (up to 3 rounds), from the aircraft in the mission's order and,
+// if that never came within 3 % of the ideal, reversed (the order places the subareas); of the splits
+// tried (each planned at the fixed angle, without the coverage check), the one with the smallest
+// makespan among those within 1.10 x the ideal (total time / aircraft), else overall, is kept (the next
+// one if its photos miss the 0.995 coverage target) and planned with the mission's options. Per
 // aircraft: planRegion over its subarea (grid angle: the mission's, or searched per subarea), photos
 // another aircraft already takes are dropped, waypoints are kept inside the area if asked, out of every
 // no-fly margin (detours), the flight gets its safe transit from and to its home (the aircraft's, else

@@ -1,10 +1,14 @@
-// Fleet stages: partition speed, time balancing with the real planner, coverage check, detours.
+// Fleet stages: partition speed, time balancing with the real planner, planMission end to end with
+// several aircraft (time and makespan), coverage check, detours.
 #include "core/fleet/capability.h"
 #include "core/fleet/partition.h"
 #include "core/geo/local_frame.h"
 #include "core/geo/polygon_ops.h"
 #include "core/grid/grid.h"
+#include "core/io/catalog.h"
+#include "core/io/mission_file.h"
 #include "core/mission/plan_mission.h"
+#include "core/plan/evaluation.h"
 #include "core/plan/coverage_check.h"
 #include "core/route/safety.h"
 
@@ -14,6 +18,7 @@
 #include <cmath>
 #include <numeric>
 #include <random>
+#include <string>
 
 using namespace pf;
 
@@ -145,6 +150,83 @@ void BM_BalanceDemoWithStridePlanner(benchmark::State& state) {
     state.counters["estimator_calls"] = calls;
 }
 BENCHMARK(BM_BalanceDemoWithStridePlanner)->Arg(2)->Arg(3)->Arg(4)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// planMission end to end on the demo mission (two aircraft, grid angle searched): the time-balanced
+// split with its correction rounds, then every stage after it. Counters: the makespan and its ratio
+// to the ideal (total time / aircraft).
+void BM_PlanMissionDemo(benchmark::State& state) {
+    auto m = io::readMissionFile(std::string(PF_RESOURCES_DIR) + "/demo/demo_mission.json");
+    if (!m) {
+        state.SkipWithError(m.error().message.c_str());
+        return;
+    }
+    double makespan = 0, ideal = 0;
+    for (auto _ : state) {
+        auto plan = mission::planMission(*m);
+        if (!plan) {
+            state.SkipWithError(plan.error().message.c_str());
+            return;
+        }
+        makespan = plan->makespanS;
+        ideal = plan->idealS;
+    }
+    state.counters["makespan_s"] = makespan;
+    state.counters["makespan_over_ideal"] = makespan / ideal;
+}
+BENCHMARK(BM_PlanMissionDemo)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+// planMission on the sample area c_l_shape with 2 to 4 mixed catalog aircraft (as the fleet target
+// test flies them: grid angle 0, home 30 m south of the southernmost vertex).
+void BM_PlanMissionLShapeFleet(benchmark::State& state) {
+    const int n = static_cast<int>(state.range(0));
+    auto ea = plan::loadEvalArea(std::string(PF_RESOURCES_DIR) + "/areas/c_l_shape.geojson");
+    auto cat = io::loadCatalog(std::string(PF_RESOURCES_DIR) + "/catalog.json");
+    if (!ea || !cat) {
+        state.SkipWithError("the sample area or the catalog cannot be read");
+        return;
+    }
+    mission::Mission m;
+    m.area = ea->area;
+    geo::LonLat south = m.area.outer.front();
+    for (const auto& p : m.area.outer)
+        if (p.lat < south.lat)
+            south = p;
+    m.home = geo::LonLat{south.lon, south.lat - 30.0 / 111320.0};
+    m.options.gridAngleDeg = 0.0;
+    const std::pair<const char*, double> fleet[4] = {
+        {"Falcon 8", 50.0}, {"DJI Phantom 4 Pro", 60.0}, {"DJI Mavic 3 Enterprise", 70.0}, {"DJI Matrice 300 RTK", 80.0}};
+    for (int k = 0; k < n; ++k) {
+        const fleet::AircraftSpec* s = cat->findAircraft(fleet[k].first);
+        const sensor::Camera* c = s ? cat->findCamera(s->defaultCamera) : nullptr;
+        if (!s || !c) {
+            state.SkipWithError("a fleet aircraft is missing from the catalog");
+            return;
+        }
+        mission::AircraftConfig a;
+        a.name = s->name;
+        a.model = s->name;
+        a.cruiseSpeedMps = s->cruiseSpeedMps;
+        a.turnRateDegS = s->turnRateDegS;
+        a.enduranceMin = s->enduranceMin;
+        a.maxAltitudeM = s->maxAltitudeM;
+        a.camera = *c;
+        a.altitudeM = fleet[k].second;
+        m.aircraft.push_back(a);
+    }
+    double makespan = 0, ideal = 0;
+    for (auto _ : state) {
+        auto plan = mission::planMission(m);
+        if (!plan) {
+            state.SkipWithError(plan.error().message.c_str());
+            return;
+        }
+        makespan = plan->makespanS;
+        ideal = plan->idealS;
+    }
+    state.counters["makespan_s"] = makespan;
+    state.counters["makespan_over_ideal"] = makespan / ideal;
+}
+BENCHMARK(BM_PlanMissionLShapeFleet)->Arg(2)->Arg(3)->Arg(4)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 // Coverage check of the demo site tiled by 30 x 20 m footprints at 0.5 m pixels.
 void BM_CoverageCheckDemo(benchmark::State& state) {
