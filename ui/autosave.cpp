@@ -35,6 +35,8 @@ Autosave::Autosave(MissionDocument* doc, QString dir, int periodMs, int debounce
     connect(&m_debounce, &QTimer::timeout, this, &Autosave::writeNow);
     connect(&m_period, &QTimer::timeout, this, &Autosave::writeNow);
     connect(doc, &MissionDocument::changed, this, [this] { m_debounce.start(); });
+    // A hand edit of a route is not a `changed` (it must not trigger a new plan) but must be saved.
+    connect(doc, &MissionDocument::routesChanged, this, [this] { m_debounce.start(); });
     connect(doc, &MissionDocument::dirtyChanged, this, [this](bool dirty) {
         if (!dirty) removeOwn(); // saved: the file on disk is the latest state
     });

@@ -484,7 +484,7 @@ bool MainWindow::openDemoMission(QString* error) {
         return false;
     }
     // The bundled file is read-only data: saving asks for a new place.
-    m_doc->reset(m_doc->mission(), QString());
+    m_doc->reset(m_doc->missionWithEditedRoutes(), QString());
     zoomToMission();
     return true;
 }

@@ -19,6 +19,8 @@ QString MissionDocument::displayName() const {
 }
 
 void MissionDocument::reset(mission::Mission m, const QString& filePath, bool markDirty) {
+    std::vector<route::Route> edited = std::move(m.editedRoutes);
+    m.editedRoutes.clear();
     m_mission = std::move(m);
     m_undo.clear();
     if (markDirty) {
@@ -32,6 +34,7 @@ void MissionDocument::reset(mission::Mission m, const QString& filePath, bool ma
         emit filePathChanged(m_filePath);
     }
     m_routes.clear();
+    for (auto& r : edited) m_routes.push_back({std::move(r), true});
     ++m_routeGeneration;
     emit routesChanged();
     emit missionReset();
@@ -53,13 +56,26 @@ bool MissionDocument::load(const QString& path, QString* error) {
     return true;
 }
 
+mission::Mission MissionDocument::missionWithEditedRoutes() const {
+    mission::Mission m = m_mission;
+    for (const auto& r : m_routes)
+        if (r.edited) m.editedRoutes.push_back(r.route);
+    return m;
+}
+
 bool MissionDocument::writeCopy(const QString& path, QString* error) const {
+    const mission::Mission m = missionWithEditedRoutes();
+    // Never replace a good file with one that cannot be opened again.
+    if (auto ok = io::checkWritable(m, path.toStdString()); !ok) {
+        if (error) *error = QString::fromStdString(ok.error().message);
+        return false;
+    }
     QSaveFile f(path);
     if (!f.open(QIODevice::WriteOnly)) {
         if (error) *error = tr("Cannot write %1: %2").arg(path, f.errorString());
         return false;
     }
-    const std::string json = io::missionToJson(m_mission);
+    const std::string json = io::missionToJson(m);
     f.write(json.data(), qint64(json.size()));
     if (!f.commit()) {
         if (error) *error = tr("Cannot write %1: %2").arg(path, f.errorString());

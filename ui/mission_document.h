@@ -36,14 +36,17 @@ public:
     QString displayName() const;
     bool isDirty() const { return !m_undo.isClean(); }
 
-    // Replaces the whole mission (new, open, recover): clears the undo history.
+    // Replaces the whole mission (new, open, recover): clears the undo history. The mission's
+    // editedRoutes become the document's routes, marked edited (so a new plan waits for consent).
     // `markDirty` is for recovered autosaves, which differ from what is on disk.
     void reset(mission::Mission m, const QString& filePath, bool markDirty = false);
+    // The mission as it is saved: mission() plus the routes marked edited, in their order.
+    mission::Mission missionWithEditedRoutes() const;
     // Reads a mission file; on failure the document is unchanged and `error` says why.
     bool load(const QString& path, QString* error);
-    // Writes atomically (QSaveFile) and marks the document clean.
+    // Writes atomically (QSaveFile), edited routes included, and marks the document clean.
     bool save(const QString& path, QString* error);
-    // Writes a copy without changing the path or the clean state (autosave).
+    // Writes a copy (edited routes included) without changing the path or the clean state (autosave).
     bool writeCopy(const QString& path, QString* error) const;
 
     // --- setters used by undo commands ---
@@ -61,9 +64,9 @@ public:
     void setOptions(const mission::PlannerOptions& options);
 
     // --- the planned (and possibly hand-edited) routes, one per planned aircraft ---
-    // They live beside the mission, not in the mission file (its format belongs to the core's io);
-    // they leave the program through the waypoint exports. A route marked `edited` was changed by
-    // hand and is never replaced without the user's consent.
+    // mission() never holds them (planning must not see them). Saving writes the routes marked
+    // `edited` into the mission file (mission::Mission::editedRoutes); unedited ones are recomputed.
+    // A route marked `edited` was changed by hand and is never replaced without the user's consent.
     struct PlannedRoute {
         route::Route route;
         bool edited = false;
