@@ -87,7 +87,10 @@ CellPath withTakeoffAndLanding(const grid::Grid& g, const CoverageRequest& req, 
 Result<CellPath> planCoverage(const grid::Grid& g, const CoverageRequest& req, const PlanOptions& opt) {
     switch (opt.kind) {
     case PlannerKind::Stride:
-        return opt.strideVariants ? planStride(g, req) : planStrideVariant(g, req, StrideVariant{});
+        if (!opt.strideVariants)
+            return planStrideVariant(g, req, StrideVariant{});
+        return planStride(g, req, nullptr,
+                          opt.strideByTime ? StrideChoice{true, opt.speedMps, opt.turnRateDegS} : StrideChoice{});
     case PlannerKind::Raster:
         return planRaster(g, req);
     case PlannerKind::Wavefront:

@@ -40,9 +40,15 @@ struct WavefrontOptions {
 struct PlanOptions {
     PlannerKind kind = PlannerKind::Stride;
     WavefrontOptions wavefront;
-    // Stride planner: compare its rule variants and keep the path with the fewest turns (planStride);
-    // false: the paper's rules only, one plan (faster: for estimates planned many times over).
+    // Stride planner: compare its rule variants (planStride); false: the paper's rules only, one plan
+    // (faster: for estimates planned many times over).
     bool strideVariants = true;
+    // What the variants are compared on: false, the fewest turns (the paper's measure; then the shorter
+    // path); true, the shortest estimated time T = length / speedMps + sum of turn angles / turnRateDegS
+    // (a mission: an aircraft that turns fast flies a shorter path with a few more turns sooner).
+    bool strideByTime = false;
+    double speedMps = 10.0;
+    double turnRateDegS = 90.0;
 };
 
 // Checks the request against the grid: errors name the problem (no cell to photograph, a start,

@@ -4,6 +4,7 @@
 #include "core/plan/metrics.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <numeric>
 #include <optional>
@@ -664,11 +665,21 @@ Result<CellPath> planStrideVariant(const Grid& g, const CoverageRequest& req, co
     return path;
 }
 
-Result<CellPath> planStride(const Grid& g, const CoverageRequest& req, StrideTrace* trace) {
+Result<CellPath> planStride(const Grid& g, const CoverageRequest& req, StrideTrace* trace, const StrideChoice& choice) {
     std::optional<CellPath> best;
     PathMetrics bestM;
     MetricsOptions mo;
     mo.turnLowerBound = false;
+    mo.speedMps = choice.speedMps;
+    mo.turnRateDegS = choice.turnRateDegS;
+    auto better = [&](const PathMetrics& m) {
+        if (choice.byTime) {
+            if (std::abs(m.estimatedTimeS - bestM.estimatedTimeS) > 1e-9)
+                return m.estimatedTimeS < bestM.estimatedTimeS;
+            return m.turns < bestM.turns;
+        }
+        return m.turns < bestM.turns || (m.turns == bestM.turns && m.pathLengthM < bestM.pathLengthM);
+    };
     auto start = resolveStart(g, req);
     if (!start)
         return start.error();
@@ -678,7 +689,7 @@ Result<CellPath> planStride(const Grid& g, const CoverageRequest& req, StrideTra
         if (!p)
             return p.error();
         const PathMetrics m = computeMetrics(g, *p, mo);
-        if (!best || m.turns < bestM.turns || (m.turns == bestM.turns && m.pathLengthM < bestM.pathLengthM)) {
+        if (!best || better(m)) {
             best = std::move(*p);
             bestM = m;
             if (trace)

@@ -259,4 +259,38 @@ std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellP
     return out;
 }
 
+void straightenTransits(const grid::Grid& g, std::vector<LocalWaypoint>& waypoints) {
+    // True if the straight leg ab keeps out of every no-fly margin and passes only over cells of the
+    // grid that are flown (sampled every quarter cell): the aircraft stays over the area.
+    const double step = g.cellSize() / 4;
+    auto straightIsFine = [&](const Vec2& a, const Vec2& b) {
+        if (!g.segmentIsSafe(a, b))
+            return false;
+        const double len = (b - a).norm();
+        const int n = static_cast<int>(std::ceil(len / step));
+        for (int k = 1; k < n; ++k) {
+            const auto c = g.cellAt(a + (b - a) * (static_cast<double>(k) / n));
+            if (!c || !g.needsVisit(*c))
+                return false;
+        }
+        return true;
+    };
+    std::vector<LocalWaypoint> out;
+    out.reserve(waypoints.size());
+    std::size_t i = 0;
+    while (i < waypoints.size()) {
+        out.push_back(waypoints[i]);
+        // A run of waypoints without a photo after this one, up to the next photo.
+        std::size_t j = i + 1;
+        while (j < waypoints.size() && waypoints[j].kind != WaypointKind::Photo)
+            ++j;
+        if (j > i + 1 && j < waypoints.size() && straightIsFine(waypoints[i].pos, waypoints[j].pos)) {
+            i = j; // fly straight to the next photo
+            continue;
+        }
+        ++i;
+    }
+    waypoints.swap(out);
+}
+
 } // namespace pf::route

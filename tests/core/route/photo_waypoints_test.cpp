@@ -129,5 +129,78 @@ TEST(PhotoWaypoints, RotatedGridHeadings) {
     }
 }
 
+// Legs without a photo between two waypoints fly straight where that is safe and over the area.
+TEST(StraightenTransits, OpenGridFliesStraightAndKeepsEveryPhoto) {
+    std::vector<std::uint8_t> mask(3 * 3, 1);
+    const grid::Grid g = grid::Grid::fromMask(3, 3, mask, 10.0);
+    plan::CellPath path;
+    path.cells = {g.index(1, 2), g.index(2, 2), g.index(2, 1), g.index(2, 0), g.index(1, 0), g.index(0, 0),
+                  g.index(1, 0), g.index(1, 1)};
+    path.revisit = {true, true, true, false, false, false, true, false};
+    auto wps = photoWaypoints(g, path, footprint(10, 10));
+    std::vector<geo::Vec2> photosBefore;
+    for (const auto& w : wps)
+        if (w.kind == WaypointKind::Photo)
+            photosBefore.push_back(w.pos);
+    straightenTransits(g, wps);
+    // The first point stays; the take-off leg's turn at (2,2) and the transit at (1,0) go.
+    ASSERT_FALSE(wps.empty());
+    EXPECT_EQ(wps.front().cell, g.index(1, 2));
+    std::vector<geo::Vec2> photosAfter;
+    int others = 0;
+    for (const auto& w : wps) {
+        if (w.kind == WaypointKind::Photo)
+            photosAfter.push_back(w.pos);
+        else
+            ++others;
+    }
+    EXPECT_EQ(others, 1);
+    EXPECT_EQ(photosAfter, photosBefore);
+}
+
+TEST(StraightenTransits, KeepsTheWayAroundANoFlyZone) {
+    const geo::Polygon area{{{0, 0}, {100, 0}, {100, 60}, {0, 60}}, {}};
+    const geo::Polygon zone{{{41, 21}, {59, 21}, {59, 39}, {41, 39}}, {}};
+    grid::GridOptions opt;
+    opt.cellSize = 20;
+    opt.safetyMarginM = 3; // the zone and its margin cover the middle cell (2,1) whole
+    auto g = grid::Grid::build(area, {zone}, opt);
+    ASSERT_TRUE(g.ok()) << g.error().message;
+    ASSERT_FALSE(g->needsVisit(g->index(2, 1)));
+    plan::CellPath path;
+    path.cells = {g->index(1, 1), g->index(1, 2), g->index(2, 2), g->index(3, 2), g->index(3, 1)};
+    path.revisit = {false, true, true, true, false};
+    auto wps = photoWaypoints(*g, path, footprint(20, 20));
+    const auto before = wps.size();
+    straightenTransits(*g, wps);
+    EXPECT_EQ(wps.size(), before); // the straight leg would cross the zone's margin
+}
+
+TEST(StraightenTransits, KeepsTheWayRoundAConcaveArea) {
+    // A U: cells (2,1) and (2,2) lie outside; a straight leg across the notch would leave the area.
+    const geo::Polygon area{{{0, 0}, {100, 0}, {100, 60}, {60, 60}, {60, 20}, {40, 20}, {40, 60}, {0, 60}}, {}};
+    grid::GridOptions opt;
+    opt.cellSize = 20;
+    auto g = grid::Grid::build(area, {}, opt);
+    ASSERT_TRUE(g.ok()) << g.error().message;
+    ASSERT_FALSE(g->needsVisit(g->index(2, 2)));
+    plan::CellPath path;
+    path.cells = {g->index(1, 2), g->index(1, 1), g->index(1, 0), g->index(2, 0),
+                  g->index(3, 0), g->index(3, 1), g->index(3, 2)};
+    path.revisit = {false, true, true, true, true, true, false};
+    auto wps = photoWaypoints(*g, path, footprint(20, 20));
+    const auto before = wps.size();
+    straightenTransits(*g, wps);
+    EXPECT_EQ(wps.size(), before);
+    // A way back on the left arm, where the straight leg stays over the area, is cut short.
+    plan::CellPath open;
+    open.cells = {g->index(0, 2), g->index(0, 1), g->index(0, 0), g->index(1, 0), g->index(1, 1)};
+    open.revisit = {false, true, true, true, false};
+    auto straight = photoWaypoints(*g, open, footprint(20, 20));
+    straightenTransits(*g, straight);
+    for (const auto& w : straight)
+        EXPECT_EQ(w.kind, WaypointKind::Photo);
+}
+
 } // namespace
 } // namespace pf::route
