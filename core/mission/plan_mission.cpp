@@ -367,8 +367,8 @@ Result<MissionPlan> planMission(const Mission& m) {
     // flies on is not what a shared area asks for, even if its makespan is a little shorter), then
     // by makespan. The first is planned once more with the mission's options (which may search the
     // angle per subarea; if that makes the makespan longer, the fixed angle is kept) and checked.
-    // Should its photos miss the coverage target, the next one is tried; if none meets it, the first
-    // is returned with its coverage warning.
+    // Should its photos miss the coverage target or a leg breach a no-fly margin, the next one is
+    // tried; if none passes, the first is returned with its warnings.
     std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
         return a.balanced != b.balanced ? a.balanced : a.makespanS < b.makespanS;
     });
@@ -382,7 +382,7 @@ Result<MissionPlan> planMission(const Mission& m) {
             if (!chosen)
                 return chosen.error();
         }
-        if (chosen->coverageRatio >= kCoverageTarget)
+        if (chosen->coverageRatio >= kCoverageTarget && chosen->noFlyViolations == 0)
             return chosen;
         if (!first)
             first = std::move(*chosen);

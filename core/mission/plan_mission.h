@@ -125,7 +125,8 @@ std::string planMetricsJson(const MissionPlan& plan, const std::string& plannerN
 // if that never came within 3 % of the ideal, reversed (the order places the subareas); of the splits
 // tried (each planned at the fixed angle, without the coverage check), the one with the smallest
 // makespan among those within 1.10 x the ideal (total time / aircraft), else overall, is kept (the next
-// one if its photos miss the 0.995 coverage target) and planned with the mission's options. Per
+// one if its photos miss the 0.995 coverage target or it breaches a no-fly margin) and planned with
+// the mission's options. Per
 // aircraft: planRegion over its subarea (grid angle: the mission's, or searched per subarea), photos
 // another aircraft already takes are dropped, waypoints are kept inside the area if asked, out of every
 // no-fly margin (detours), the flight gets its safe transit from and to its home (the aircraft's, else
