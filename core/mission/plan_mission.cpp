@@ -94,6 +94,9 @@ Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vect
     popt.kind = toPlanKind(options.planner);
     popt.wavefront.speedMps = aircraft.cruiseSpeedMps;
     popt.wavefront.turnRateDegS = aircraft.turnRateDegS;
+    popt.strideByTime = true; // a mission wants the variant the aircraft flies soonest
+    popt.speedMps = aircraft.cruiseSpeedMps;
+    popt.turnRateDegS = aircraft.turnRateDegS;
     plan::MetricsOptions mopt;
     mopt.speedMps = aircraft.cruiseSpeedMps;
     mopt.turnRateDegS = aircraft.turnRateDegS;
@@ -153,6 +156,7 @@ Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vect
     mopt.turnLowerBound = true;
     p.metrics = plan::computeMetrics(p.grid, p.path, mopt);
     p.localWaypoints = route::photoWaypoints(p.grid, p.path, *eff);
+    route::straightenTransits(p.grid, p.localWaypoints);
     p.metrics.photos = static_cast<int>(std::count_if(p.localWaypoints.begin(), p.localWaypoints.end(), [](const auto& w) {
         return w.kind == route::WaypointKind::Photo;
     }));
@@ -505,9 +509,14 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
                                             " batteries (sorties returning home), " + metres(sp->totalTimeS / 60.0, 1) +
                                             " min in all for " + metres(sp->budgetS / 60.0, 1) + " min per battery");
             }
+            // Every sortie starts and ends at home: the legs between sorties are flown through it.
             path.push_back(*home);
-            for (const auto& w : flown)
-                path.push_back(w.pos);
+            for (std::size_t si = 0; si < ap.sorties.size(); ++si) {
+                for (int i = ap.sorties[si].firstWaypoint; i <= ap.sorties[si].lastWaypoint; ++i)
+                    path.push_back(flown[static_cast<std::size_t>(i)].pos);
+                if (si + 1 < ap.sorties.size())
+                    path.push_back(*home);
+            }
             path.push_back(ap.sorties.size() == 1 && landing ? *landing : *home);
         } else {
             // No home: the survey alone, one flight; no transit to check.
@@ -679,8 +688,14 @@ std::string planToGeoJson(const MissionPlan& plan) {
         CPLJSONArray coords;
         if (a.route.home)
             coords.Add(position(*a.route.home));
-        for (const auto& w : a.route.waypoints)
-            coords.Add(position(w.position));
+        for (std::size_t i = 0; i < a.route.waypoints.size(); ++i) {
+            coords.Add(position(a.route.waypoints[i].position));
+            // Between two sorties the aircraft lands at home for a fresh battery.
+            const bool sortieEnds = std::any_of(a.sorties.begin(), a.sorties.end() - (a.sorties.empty() ? 0 : 1),
+                                                [&](const SortieSummary& s) { return s.lastWaypoint == static_cast<int>(i); });
+            if (a.route.home && sortieEnds)
+                coords.Add(position(*a.route.home));
+        }
         if (a.route.home)
             coords.Add(position(*a.route.home));
         geom.Add("coordinates", coords);

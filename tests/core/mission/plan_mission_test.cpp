@@ -179,6 +179,29 @@ TEST(PlanMission, ShortEnduranceGivesSorties) {
         warned = warned || w.find("batteries") != std::string::npos;
     EXPECT_TRUE(warned);
     EXPECT_GE(plan->coverageRatio, 0.995);
+    EXPECT_EQ(plan->noFlyViolations, 0);
+
+    // The drawn path lands at home between sorties: home starts, separates and ends them.
+    CPLJSONDocument doc;
+    ASSERT_TRUE(doc.LoadMemory(planToGeoJson(*plan)));
+    const CPLJSONArray features = doc.GetRoot().GetArray("features");
+    bool found = false;
+    for (int i = 0; i < features.Size(); ++i) {
+        const CPLJSONObject f = features[i];
+        if (f.GetString("properties/kind") != "path" || f.GetString("properties/aircraft") != a.aircraft)
+            continue;
+        found = true;
+        const CPLJSONArray coords = f.GetArray("geometry/coordinates");
+        ASSERT_TRUE(a.route.home.has_value());
+        int atHome = 0;
+        for (int k = 0; k < coords.Size(); ++k) {
+            const CPLJSONArray c = coords[k].ToArray();
+            atHome += c[0].ToDouble() == a.route.home->lon && c[1].ToDouble() == a.route.home->lat;
+        }
+        EXPECT_EQ(atHome, static_cast<int>(a.sorties.size()) + 1);
+        EXPECT_EQ(coords.Size(), static_cast<int>(a.route.waypoints.size() + a.sorties.size() + 1));
+    }
+    EXPECT_TRUE(found);
 }
 
 // Two aircraft at the same altitude: a warning naming both and their altitudes.

@@ -439,6 +439,33 @@ TEST(StrideVariants, StaircaseFromMidEdgeNeedsFarFewerTurnsThanThePaperRules) {
     EXPECT_LT(bestTurns * 10, paperTurns * 8) << "paper " << paperTurns << ", variants " << bestTurns;
 }
 
+// Choosing by time keeps the variant the aircraft flies soonest; choosing by turns the one with the fewest
+// turns: each is at least as good as the other on its own measure.
+TEST(StrideVariants, ChoiceByTimeOrByTurns) {
+    MetricsOptions mo;
+    mo.speedMps = 10.0;
+    mo.turnRateDegS = 150.0;
+    int differ = 0;
+    for (unsigned seed = 1; seed <= 15; ++seed) {
+        const grid::Grid g = test::randomShape(test::Shape::Concave, seed);
+        if (g.visitCount() == 0)
+            continue;
+        CoverageRequest req;
+        auto byTurns = planStride(g, req);
+        auto byTime = planStride(g, req, nullptr, StrideChoice{true, mo.speedMps, mo.turnRateDegS});
+        ASSERT_TRUE(byTurns.ok() && byTime.ok());
+        std::vector<int> sizes;
+        test::freeComponents(g, std::vector<std::uint8_t>(static_cast<std::size_t>(g.cellCount()), 0), &sizes);
+        test::expectValidCoverage(g, *byTime, false, static_cast<int>(sizes.size()) - 1,
+                                  "by time, seed " + std::to_string(seed));
+        const PathMetrics a = computeMetrics(g, *byTurns, mo), b = computeMetrics(g, *byTime, mo);
+        EXPECT_LE(a.turns, b.turns) << "seed " << seed;
+        EXPECT_LE(b.estimatedTimeS, a.estimatedTimeS + 1e-9) << "seed " << seed;
+        differ += a.turns != b.turns;
+    }
+    EXPECT_GT(differ, 0) << "the two choices should differ somewhere";
+}
+
 TEST(StrideVariants, LargeGridsCompareFewerVariants) {
     std::vector<std::uint8_t> small(50 * 50, 1), large(600 * 500, 1);
     const grid::Grid gs = grid::Grid::fromMask(50, 50, small);
