@@ -270,8 +270,10 @@ ValidationReport validateMission(const Mission& m) {
                     }
                     if (f.unflyableCells > 0)
                         warning(out, who + ": " + std::to_string(f.unflyableCells) +
-                                         " cell(s) of the area lie within the safety margin of a no-fly zone and "
-                                         "cannot be photographed from above");
+                                         " cell(s) of the area lie wholly within the safety margin of a no-fly "
+                                         "zone: they are not flown over, and their ground is photographed from "
+                                         "the neighbouring cells (the plan's coverage check reports any part left "
+                                         "unseen)");
                 }
             }
         }

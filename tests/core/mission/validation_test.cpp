@@ -71,6 +71,24 @@ TEST(MissionValidation, DemoFigures) {
     EXPECT_LE(f.cellsToVisit, f.cols * f.rows);
 }
 
+// A fine grid next to a wide margin: cells wholly inside the margin are counted, and the warning says
+// what happens to them instead of suggesting their ground is lost.
+TEST(MissionValidation, CellsWithinAMarginAreExplained) {
+    Mission m = demo();
+    m.options.safetyMarginM = 25.0;
+    m.aircraft[0].altitudeM = 20.0;
+    const auto r = validateMission(m);
+    ASSERT_EQ(r.aircraft.size(), 1u);
+    ASSERT_GT(r.aircraft[0].unflyableCells, 0);
+    bool explained = false;
+    for (const auto& p : r.problems)
+        explained = explained || (p.message.find(std::to_string(r.aircraft[0].unflyableCells) +
+                                                 " cell(s) of the area lie wholly within the safety margin") !=
+                                      std::string::npos &&
+                                  p.message.find("photographed from the neighbouring cells") != std::string::npos);
+    EXPECT_TRUE(explained);
+}
+
 TEST(MissionValidation, NoFlyZoneOutsideTheAreaIsAWarning) {
     Mission m = demo();
     m.noFlyZones.push_back({"Far away", {{{8.40, 49.05}, {8.41, 49.05}, {8.41, 49.06}}, {}}});
