@@ -609,10 +609,15 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         sumTime += a.timeS;
     }
     plan.idealS = sumTime / static_cast<double>(n);
-    if (t.jumps > 0)
+    if (t.jumps > 0) {
+        int detours = 0;
+        for (const auto& a : plan.aircraft)
+            detours += a.detours;
         plan.warnings.push_back(std::to_string(t.jumps) +
-                                " jump(s) between parts of the area that no safe move joins: check the route's "
-                                "transits there");
+                                " leg(s) join parts of an aircraft's area that no grid move connects (a no-fly "
+                                "zone or its margin separates them): they are flown straight where that is safe, "
+                                "else around the margins (" + std::to_string(detours) + " detour(s) in all)");
+    }
     return plan;
 }
 
