@@ -88,17 +88,6 @@ const io::Catalog* catalogOrError(std::optional<io::Catalog>& cache, Error* err)
     return &*cache;
 }
 
-mission::AircraftConfig aircraftFromSpec(const fleet::AircraftSpec& spec) {
-    mission::AircraftConfig a;
-    a.name = spec.name;
-    a.model = spec.name;
-    a.cruiseSpeedMps = spec.cruiseSpeedMps;
-    a.turnRateDegS = spec.turnRateDegS;
-    a.enduranceMin = spec.enduranceMin;
-    a.maxAltitudeM = spec.maxAltitudeM;
-    return a;
-}
-
 } // namespace
 
 bool isMissionFile(const std::string& path) {
@@ -190,9 +179,7 @@ Result<MissionInput> missionFromArgs(const Args& args, std::size_t positional) {
             const fleet::AircraftSpec* s = cat->findAircraft(name);
             if (!s)
                 return flagError("aircraft", "no aircraft named '" + name + "' in the catalog (see: photoflight-cli catalog)");
-            mission::AircraftConfig a = aircraftFromSpec(*s);
-            if (const sensor::Camera* c = cat->findCamera(s->defaultCamera))
-                a.camera = *c;
+            mission::AircraftConfig a = mission::aircraftFromCatalog(*s, cat->findCamera(s->defaultCamera));
             a.altitudeM = alt;
             m.aircraft.push_back(std::move(a));
         }
@@ -211,10 +198,7 @@ Result<MissionInput> missionFromArgs(const Args& args, std::size_t positional) {
                                num(a.maxAltitudeM) + " m)");
         } else {
             const auto& s = cat->aircraft.front();
-            mission::AircraftConfig a = aircraftFromSpec(s);
-            if (const sensor::Camera* c = cat->findCamera(s.defaultCamera))
-                a.camera = *c;
-            m.aircraft.push_back(std::move(a));
+            m.aircraft.push_back(mission::aircraftFromCatalog(s, cat->findCamera(s.defaultCamera)));
             in.notes.push_back("no aircraft given: using the catalog's " + s.name);
         }
     }

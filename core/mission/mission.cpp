@@ -2,6 +2,19 @@
 
 namespace pf::mission {
 
+AircraftConfig aircraftFromCatalog(const fleet::AircraftSpec& spec, const sensor::Camera* camera) {
+    AircraftConfig a;
+    a.name = spec.name;
+    a.model = spec.name;
+    if (camera)
+        a.camera = *camera;
+    a.cruiseSpeedMps = spec.cruiseSpeedMps;
+    a.turnRateDegS = spec.turnRateDegS;
+    a.enduranceMin = spec.enduranceMin;
+    a.maxAltitudeM = spec.maxAltitudeM;
+    return a;
+}
+
 bool operator==(const AircraftConfig& a, const AircraftConfig& b) {
     return a.name == b.name && a.model == b.model && a.camera == b.camera && a.altitudeM == b.altitudeM &&
            a.gsdCm == b.gsdCm && a.overlap.front == b.overlap.front && a.overlap.side == b.overlap.side &&

@@ -1,6 +1,7 @@
 // Mission: what the operator defines (area, no-fly zones, aircraft, options), as plain value types.
 #pragma once
 
+#include "core/fleet/aircraft.h"
 #include "core/geo/types.h"
 #include "core/route/waypoint.h"
 #include "core/sensor/camera.h"
@@ -36,6 +37,11 @@ struct AircraftConfig {
     std::optional<geo::LonLat> home; // take-off and landing point; the mission's home if unset
     friend bool operator==(const AircraftConfig& a, const AircraftConfig& b);
 };
+
+// A catalog aircraft as a mission flies it: the catalog name as label and model, its speed, turn rate,
+// endurance and ceiling, and `camera` when given (its default camera, looked up by the caller). The
+// altitude is left for the caller to set.
+AircraftConfig aircraftFromCatalog(const fleet::AircraftSpec& spec, const sensor::Camera* camera);
 
 enum class PlannerKind { Stride, Raster, Wavefront };
 

@@ -11,6 +11,7 @@
 #include "core/plan/evaluation.h"
 #include "core/plan/coverage_check.h"
 #include "core/route/safety.h"
+#include "tests/sample_missions.h"
 
 #include <benchmark/benchmark.h>
 
@@ -185,33 +186,16 @@ void BM_PlanMissionLShapeFleet(benchmark::State& state) {
         state.SkipWithError("the sample area or the catalog cannot be read");
         return;
     }
-    mission::Mission m;
-    m.area = ea->area;
-    geo::LonLat south = m.area.outer.front();
-    for (const auto& p : m.area.outer)
-        if (p.lat < south.lat)
-            south = p;
-    m.home = geo::LonLat{south.lon, south.lat - 30.0 / 111320.0};
-    m.options.gridAngleDeg = 0.0;
+    mission::Mission m = test::sampleAreaMission(*ea);
     const std::pair<const char*, double> fleet[4] = {
         {"Falcon 8", 50.0}, {"DJI Phantom 4 Pro", 60.0}, {"DJI Mavic 3 Enterprise", 70.0}, {"DJI Matrice 300 RTK", 80.0}};
     for (int k = 0; k < n; ++k) {
-        const fleet::AircraftSpec* s = cat->findAircraft(fleet[k].first);
-        const sensor::Camera* c = s ? cat->findCamera(s->defaultCamera) : nullptr;
-        if (!s || !c) {
+        auto a = test::catalogAircraft(*cat, fleet[k].first, fleet[k].second);
+        if (!a) {
             state.SkipWithError("a fleet aircraft is missing from the catalog");
             return;
         }
-        mission::AircraftConfig a;
-        a.name = s->name;
-        a.model = s->name;
-        a.cruiseSpeedMps = s->cruiseSpeedMps;
-        a.turnRateDegS = s->turnRateDegS;
-        a.enduranceMin = s->enduranceMin;
-        a.maxAltitudeM = s->maxAltitudeM;
-        a.camera = *c;
-        a.altitudeM = fleet[k].second;
-        m.aircraft.push_back(a);
+        m.aircraft.push_back(*a);
     }
     double makespan = 0, ideal = 0;
     for (auto _ : state) {

@@ -222,16 +222,11 @@ QString AircraftPanel::nextColour() const {
 void AircraftPanel::addFromCatalog(const QString& aircraftName) {
     const fleet::AircraftSpec* spec = m_catalog.findAircraft(aircraftName.toStdString());
     if (!spec) return;
-    mission::AircraftConfig a;
-    a.name = nextName(aircraftName).toStdString();
-    a.model = spec->name;
     const sensor::Camera* cam = m_catalog.findCamera(spec->defaultCamera);
-    a.camera = cam ? *cam : (m_catalog.cameras.empty() ? genericCamera() : m_catalog.cameras.front());
+    mission::AircraftConfig a = mission::aircraftFromCatalog(*spec, cam);
+    if (!cam) a.camera = m_catalog.cameras.empty() ? genericCamera() : m_catalog.cameras.front();
+    a.name = nextName(aircraftName).toStdString();
     a.altitudeM = std::min(60.0, spec->maxAltitudeM);
-    a.cruiseSpeedMps = spec->cruiseSpeedMps;
-    a.turnRateDegS = spec->turnRateDegS;
-    a.enduranceMin = spec->enduranceMin;
-    a.maxAltitudeM = spec->maxAltitudeM;
     a.colour = nextColour().toStdString();
     m_doc->undoStack()->push(new AddAircraftCommand(m_doc, a));
     setCurrent(int(m_doc->mission().aircraft.size()) - 1);

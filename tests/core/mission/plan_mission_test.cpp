@@ -1,6 +1,7 @@
 #include "core/mission/plan_mission.h"
 
 #include "core/geo/polygon_ops.h"
+#include "core/io/catalog.h"
 
 #include <gtest/gtest.h>
 
@@ -84,6 +85,26 @@ TEST(PlanMission, DemoSiteStrideCoversEverythingWithoutJumps) {
     EXPECT_DOUBLE_EQ(plan->totals.estimatedTimeS, a.metrics.estimatedTimeS);
     // Take-off and landing near home: the path starts and ends at the cell nearest to it.
     EXPECT_EQ(a.path.cells.front(), a.path.cells.back());
+}
+
+TEST(PlanMission, CatalogAircraftAsAMissionFliesIt) {
+    auto cat = io::loadCatalog(std::string(PF_RESOURCES_DIR) + "/catalog.json");
+    ASSERT_TRUE(cat.ok()) << cat.error().message;
+    const fleet::AircraftSpec* spec = cat->findAircraft("DJI Phantom 4 Pro");
+    ASSERT_NE(spec, nullptr);
+    const sensor::Camera* cam = cat->findCamera(spec->defaultCamera);
+    ASSERT_NE(cam, nullptr);
+    const AircraftConfig a = aircraftFromCatalog(*spec, cam);
+    EXPECT_EQ(a.name, "DJI Phantom 4 Pro");
+    EXPECT_EQ(a.model, "DJI Phantom 4 Pro");
+    EXPECT_TRUE(a.camera == *cam);
+    EXPECT_EQ(a.cruiseSpeedMps, spec->cruiseSpeedMps);
+    EXPECT_EQ(a.turnRateDegS, spec->turnRateDegS);
+    EXPECT_EQ(a.enduranceMin, spec->enduranceMin);
+    EXPECT_EQ(a.maxAltitudeM, spec->maxAltitudeM);
+    EXPECT_FALSE(a.altitudeM.has_value());
+    // Without a camera the default one stays.
+    EXPECT_TRUE(aircraftFromCatalog(*spec, nullptr).camera == AircraftConfig{}.camera);
 }
 
 TEST(PlanMission, AutoAngleIsNoWorseThanZero) {

@@ -10,6 +10,7 @@
 #include "core/plan/planner.h"
 #include "core/route/photo_waypoints.h"
 #include "core/route/safety.h"
+#include "tests/sample_missions.h"
 
 #include <gtest/gtest.h>
 
@@ -315,20 +316,10 @@ TEST(PhotoPlacement, DemoMissionHasNothingToMoveAndStaysCovered) {
 mission::Mission sampleMission(const std::string& name) {
     auto ea = plan::loadEvalArea(std::string(PF_RESOURCES_DIR) + "/areas/" + name + ".geojson");
     EXPECT_TRUE(ea.ok()) << name;
-    mission::Mission m;
     if (!ea.ok())
-        return m;
+        return {};
+    mission::Mission m = test::sampleAreaMission(*ea);
     m.name = name;
-    m.area = ea->area;
-    int i = 0;
-    for (const auto& z : ea->noFly)
-        m.noFlyZones.push_back({"zone " + std::to_string(++i), z});
-    geo::LonLat south = m.area.outer.front();
-    for (const auto& p : m.area.outer)
-        if (p.lat < south.lat)
-            south = p;
-    m.home = geo::LonLat{south.lon, south.lat - 30.0 / 111320.0};
-    m.options.gridAngleDeg = 0.0;
     mission::AircraftConfig a;
     a.name = "survey";
     a.camera.hfovDeg = 61.93;

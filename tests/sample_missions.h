@@ -1,0 +1,46 @@
+// Missions built from the sample areas (resources/areas/) and catalog aircraft, shared by the tests and
+// the benchmarks that plan them end to end.
+#pragma once
+
+#include "core/io/catalog.h"
+#include "core/mission/mission.h"
+#include "core/plan/evaluation.h"
+
+#include <optional>
+#include <string>
+
+namespace pf::test {
+
+// The mission of a sample area as `photoflight-cli eval` reads it: its area, its no-fly zones named
+// "zone 1", "zone 2", ..., grid angle 0, and the home 30 m south of the area's southernmost vertex
+// (outside the area, as a take-off point usually is). No aircraft.
+inline mission::Mission sampleAreaMission(const plan::EvalArea& ea) {
+    mission::Mission m;
+    m.name = ea.name;
+    m.area = ea.area;
+    int i = 0;
+    for (const auto& z : ea.noFly)
+        m.noFlyZones.push_back({"zone " + std::to_string(++i), z});
+    geo::LonLat south = m.area.outer.front();
+    for (const auto& p : m.area.outer)
+        if (p.lat < south.lat)
+            south = p;
+    m.home = geo::LonLat{south.lon, south.lat - 30.0 / 111320.0};
+    m.options.gridAngleDeg = 0.0;
+    return m;
+}
+
+// A catalog aircraft with its default camera at `altitudeM`, as `--aircraft NAME:ALT` builds it;
+// nothing if the catalog lacks the aircraft or its camera.
+inline std::optional<mission::AircraftConfig> catalogAircraft(const io::Catalog& cat, const std::string& name,
+                                                              double altitudeM) {
+    const fleet::AircraftSpec* s = cat.findAircraft(name);
+    const sensor::Camera* c = s ? cat.findCamera(s->defaultCamera) : nullptr;
+    if (!s || !c)
+        return std::nullopt;
+    mission::AircraftConfig a = mission::aircraftFromCatalog(*s, c);
+    a.altitudeM = altitudeM;
+    return a;
+}
+
+} // namespace pf::test
