@@ -295,9 +295,10 @@ private:
     // The partition rule. Cells just visited can only split the free region if their free neighbours
     // (the seeds) are not already connected around them; that local test settles almost every stride.
     // Otherwise one breadth-first wave per group of seeds grows in turn, one cell at a time; waves that
-    // meet merge. A wave that runs out of cells has closed off a part, and the first to do so is the
-    // smallest. The search stops when a single wave is left, so it costs about the size of the parts
-    // closed off (times the number of groups), not the size of the whole area.
+    // meet merge. A wave that runs out of cells has closed off a part; the smallest closed part is
+    // visited first. When a single wave is left it grows on only until it is larger than that part, so
+    // the search costs about the size of the parts closed off (times the number of groups), not the
+    // size of the whole area.
     void newCellsAdded(const int* cells, std::size_t count) {
         if (m_remaining <= 0)
             return;
