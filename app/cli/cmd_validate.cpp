@@ -44,8 +44,9 @@ const char* const kValidateUsage =
     "           coordinates out of range, a no-fly zone covering the whole area, altitude <= 0 or above\n"
     "           the aircraft's maximum, GSD <= 0, overlaps outside [0, 1), an area too large for the\n"
     "           cell budget (with the altitude and cell size that would fit), ...\n"
-    "  warnings (planning goes on): a no-fly zone outside the area (ignored), cells inside a safety\n"
-    "           margin that cannot be photographed, a home point inside a no-fly zone, ...\n"
+    "  warnings (planning goes on): a no-fly zone outside the area (ignored), cells wholly inside a\n"
+    "           safety margin (not flown over; neighbouring photos cover them), a home point inside a\n"
+    "           no-fly zone, ...\n"
     "\n"
     "Options (they override the mission file):\n"
     PF_CLI_MISSION_OPTIONS_HELP
@@ -126,9 +127,11 @@ int runValidate(const std::vector<std::string>& argv) {
     os << (errors ? "INVALID" : "OK") << ": " << errors << " error" << (errors == 1 ? "" : "s") << ", " << warnings
        << " warning" << (warnings == 1 ? "" : "s") << '\n';
     os.flush();
+    // Errors also on stderr, for scripts; warnings are in the report above only (no second copy on the
+    // terminal).
     for (const auto& p : r.problems)
-        std::cerr << "photoflight-cli: " << (p.severity == geo::Severity::Error ? "error: " : "warning: ") << p.message
-                  << '\n';
+        if (p.severity == geo::Severity::Error)
+            std::cerr << "photoflight-cli: error: " << p.message << '\n';
     return errors ? kExitBadInput : kExitOk;
 }
 
