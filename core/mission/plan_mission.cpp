@@ -94,9 +94,7 @@ Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vect
     popt.kind = toPlanKind(options.planner);
     popt.wavefront.speedMps = aircraft.cruiseSpeedMps;
     popt.wavefront.turnRateDegS = aircraft.turnRateDegS;
-    popt.strideByTime = true; // a mission wants the variant the aircraft flies soonest
-    popt.speedMps = aircraft.cruiseSpeedMps;
-    popt.turnRateDegS = aircraft.turnRateDegS;
+    popt.stride = {true, aircraft.cruiseSpeedMps, aircraft.turnRateDegS}; // the variant flown soonest
     plan::MetricsOptions mopt;
     mopt.speedMps = aircraft.cruiseSpeedMps;
     mopt.turnRateDegS = aircraft.turnRateDegS;

@@ -89,8 +89,7 @@ Result<CellPath> planCoverage(const grid::Grid& g, const CoverageRequest& req, c
     case PlannerKind::Stride:
         if (!opt.strideVariants)
             return planStrideVariant(g, req, StrideVariant{});
-        return planStride(g, req, nullptr,
-                          opt.strideByTime ? StrideChoice{true, opt.speedMps, opt.turnRateDegS} : StrideChoice{});
+        return planStride(g, req, nullptr, opt.stride);
     case PlannerKind::Raster:
         return planRaster(g, req);
     case PlannerKind::Wavefront:

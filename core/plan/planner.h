@@ -37,18 +37,24 @@ struct WavefrontOptions {
     double turnRateDegS = 90.0; // omega
 };
 
+// How the stride planner compares its variants' paths: byTime false, the fewest turns (the paper's
+// measure), then the shorter path; true, the shortest time T = path length / speedMps + sum of turn
+// angles / turnRateDegS, then fewer turns.
+struct StrideChoice {
+    bool byTime = false;
+    double speedMps = 10.0;
+    double turnRateDegS = 90.0;
+};
+
 struct PlanOptions {
     PlannerKind kind = PlannerKind::Stride;
     WavefrontOptions wavefront;
     // Stride planner: compare its rule variants (planStride); false: the paper's rules only, one plan
     // (faster: for estimates planned many times over).
     bool strideVariants = true;
-    // What the variants are compared on: false, the fewest turns (the paper's measure; then the shorter
-    // path); true, the shortest estimated time T = length / speedMps + sum of turn angles / turnRateDegS
-    // (a mission: an aircraft that turns fast flies a shorter path with a few more turns sooner).
-    bool strideByTime = false;
-    double speedMps = 10.0;
-    double turnRateDegS = 90.0;
+    // What the variants are compared on (a mission: an aircraft that turns fast flies a shorter path
+    // with a few more turns sooner).
+    StrideChoice stride;
 };
 
 // Checks the request against the grid: errors name the problem (no cell to photograph, a start,

@@ -83,12 +83,6 @@ Result<CellPath> planStrideVariant(const grid::Grid& g, const CoverageRequest& r
 // distance-transform paths out of dead ends, clean-up of removable revisits, and transit paths from the
 // take-off cell and to the landing cell. Every variant of strideVariants(g) is planned from the same
 // start and the best path by `choice` is kept (the earlier variant on a tie); `trace` describes it.
-// How planStride compares the variants' paths.
-struct StrideChoice {
-    bool byTime = false;        // false: fewest turns, then shorter path; true: shortest time T, then fewer turns
-    double speedMps = 10.0;     // T = path length / speedMps + sum of turn angles / turnRateDegS
-    double turnRateDegS = 90.0;
-};
 Result<CellPath> planStride(const grid::Grid& g, const CoverageRequest& req, StrideTrace* trace = nullptr,
                             const StrideChoice& choice = {});
 

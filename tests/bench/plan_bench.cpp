@@ -81,8 +81,8 @@ void reportStride(benchmark::State& state, const pf::grid::Grid& g, const pf::pl
     state.SetItemsProcessed(state.iterations() * g.cellCount());
 }
 
-void BM_StrideHoledMask(benchmark::State& state) {
-    const pf::grid::Grid g = holedMask(state.range(0));
+// Plans the whole grid with the stride planner once per iteration and reports the last plan.
+void runStride(benchmark::State& state, const pf::grid::Grid& g) {
     pf::plan::CellPath path;
     pf::plan::StrideTrace trace;
     for (auto _ : state) {
@@ -93,20 +93,11 @@ void BM_StrideHoledMask(benchmark::State& state) {
     }
     reportStride(state, g, path, trace);
 }
+
+void BM_StrideHoledMask(benchmark::State& state) { runStride(state, holedMask(state.range(0))); }
 BENCHMARK(BM_StrideHoledMask)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
 
-void BM_StrideNoFly(benchmark::State& state) {
-    const pf::grid::Grid& g = noFlyGrid(state.range(0));
-    pf::plan::CellPath path;
-    pf::plan::StrideTrace trace;
-    for (auto _ : state) {
-        trace = {};
-        auto p = pf::plan::planStride(g, {}, &trace);
-        path = std::move(*p);
-        benchmark::DoNotOptimize(path);
-    }
-    reportStride(state, g, path, trace);
-}
+void BM_StrideNoFly(benchmark::State& state) { runStride(state, noFlyGrid(state.range(0))); }
 BENCHMARK(BM_StrideNoFly)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
 
 void BM_RasterNoFly(benchmark::State& state) {
