@@ -7,11 +7,11 @@ namespace pf::fleet {
 
 double areaRateM2PerS(const Capability& c, double trackLengthM) {
     const double w = c.footprint.acrossM;
-    const double v = c.cruiseSpeedMps;
-    if (!(w > 0) || !(v > 0) || !(c.turnRateDegS > 0) || !(trackLengthM > 0))
+    const double v = c.time.speedMps;
+    if (!(w > 0) || !(v > 0) || !(c.time.turnRateDegS > 0) || !(trackLengthM > 0))
         return 0.0;
     const double trackTime = trackLengthM / v;
-    const double turnTime = 180.0 / c.turnRateDegS + w / v;
+    const double turnTime = 180.0 / c.time.turnRateDegS + 2.0 * c.time.stopCostS() + w / v;
     return w * trackLengthM / (trackTime + turnTime);
 }
 
@@ -27,10 +27,10 @@ Result<std::vector<double>> capabilityShares(const std::vector<Capability>& flee
         if (!(c.footprint.acrossM > 0) || !(c.footprint.alongM > 0))
             return makeError(ErrorCode::InvalidInput,
                              "Aircraft \"" + c.name + "\" has no usable camera footprint (check altitude and overlap).");
-        if (!(c.cruiseSpeedMps > 0))
+        if (!(c.time.speedMps > 0))
             return makeError(ErrorCode::InvalidInput,
                              "Aircraft \"" + c.name + "\" has a cruise speed that is not positive.");
-        if (!(c.turnRateDegS > 0))
+        if (!(c.time.turnRateDegS > 0))
             return makeError(ErrorCode::InvalidInput,
                              "Aircraft \"" + c.name + "\" has a turn rate that is not positive.");
         rates.push_back(areaRateM2PerS(c, track));

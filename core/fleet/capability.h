@@ -1,6 +1,7 @@
 // Each aircraft's share of a shared area from its capability, and the base grid's cell size.
 #pragma once
 
+#include "core/plan/flight_time.h"
 #include "core/result.h"
 #include "core/sensor/camera.h"
 
@@ -13,17 +14,17 @@ namespace pf::fleet {
 struct Capability {
     std::string name;
     sensor::EffectiveFootprint footprint; // across (track spacing) and along (photo spacing)
-    double cruiseSpeedMps = 10.0;
-    double turnRateDegS = 90.0;
+    plan::FlightTimeModel time;           // speed, turn rate and the stop at each turn
 };
 
 // Estimated area rate in m^2/s of a back-and-forth survey with tracks of length `trackLengthM`:
 //
-//   rate = across * trackLength / (trackLength / v + 180 / turnRate + across / v)
+//   rate = across * trackLength / (trackLength / v + 180 / turnRate + 2 * stop + across / v)
 //
 // A track of length L sweeps across * L square metres in L / v seconds; at its end the aircraft
 // turns 180 degrees (modelled as two stop-and-turn manoeuvres at `turnRate`, i.e. 180 / turnRate
-// seconds in total) and moves `across` metres sideways to the next track. The discount is what
+// seconds in total, each with the stop of plan::FlightTimeModel) and moves `across` metres sideways
+// to the next track. The discount is what
 // makes a fast aircraft with a narrow footprint less valuable on a small area than its
 // across * v product suggests. Returns 0 for unusable figures.
 double areaRateM2PerS(const Capability& c, double trackLengthM);

@@ -164,18 +164,20 @@ public:
         where = entryLabel("aircraft", i, a.name);
         a.cruiseSpeedMps = number(o, where, "cruise_speed_mps", true);
         a.turnRateDegS = number(o, where, "turn_rate_deg_s", true);
+        a.accelerationMps2 = number(o, where, "acceleration_mps2", false, a.accelerationMps2);
         a.enduranceMin = number(o, where, "endurance_min", true);
         a.maxAltitudeM = number(o, where, "max_altitude_m", true);
         a.defaultCamera = string(o, where, "default_camera", false);
         a.notes = string(o, where, "note", false);
-        checkKeys(o, where, {"name", "cruise_speed_mps", "turn_rate_deg_s", "endurance_min", "max_altitude_m",
-                             "default_camera"});
+        checkKeys(o, where, {"name", "cruise_speed_mps", "turn_rate_deg_s", "acceleration_mps2", "endurance_min",
+                             "max_altitude_m", "default_camera"});
         if (failed())
             return a;
         if (a.name.empty())
             fail(where, "name: must not be empty");
         const std::pair<const char*, double> positive[] = {{"cruise_speed_mps", a.cruiseSpeedMps},
                                                            {"turn_rate_deg_s", a.turnRateDegS},
+                                                           {"acceleration_mps2", a.accelerationMps2},
                                                            {"endurance_min", a.enduranceMin},
                                                            {"max_altitude_m", a.maxAltitudeM}};
         for (const auto& [key, v] : positive)
@@ -316,6 +318,8 @@ std::string catalogToJson(const Catalog& catalog) {
         o.Add("name", a.name);
         o.Add("cruise_speed_mps", jsonNumber(a.cruiseSpeedMps));
         o.Add("turn_rate_deg_s", jsonNumber(a.turnRateDegS));
+        if (a.accelerationMps2 != plan::kDefaultAccelerationMps2)
+            o.Add("acceleration_mps2", jsonNumber(a.accelerationMps2));
         o.Add("endurance_min", jsonNumber(a.enduranceMin));
         o.Add("max_altitude_m", jsonNumber(a.maxAltitudeM));
         if (!a.defaultCamera.empty())

@@ -371,13 +371,14 @@ public:
         a.overlap.side = number(o, path, "side_overlap", a.overlap.side);
         a.cruiseSpeedMps = number(o, path, "cruise_speed_mps", a.cruiseSpeedMps);
         a.turnRateDegS = number(o, path, "turn_rate_deg_s", a.turnRateDegS);
+        a.accelerationMps2 = number(o, path, "acceleration_mps2", a.accelerationMps2);
         a.enduranceMin = number(o, path, "endurance_min", a.enduranceMin);
         a.maxAltitudeM = number(o, path, "max_altitude_m", a.maxAltitudeM);
         a.colour = colour(o, path, a.colour);
         a.home = optionalPosition(o, path, "home");
         checkKeys(o, path, {"name", "model", "camera", "altitude_m", "gsd_cm", "front_overlap", "side_overlap",
-                            "cruise_speed_mps", "turn_rate_deg_s", "endurance_min", "max_altitude_m", "colour",
-                            "home"});
+                            "cruise_speed_mps", "turn_rate_deg_s", "acceleration_mps2", "endurance_min",
+                            "max_altitude_m", "colour", "home"});
         return a;
     }
 
@@ -638,7 +639,8 @@ std::optional<std::string> firstNonFinite(const mission::Mission& m) {
             {"camera.vfov_deg", c.vfovDeg},              {"altitude_m", a.altitudeM.value_or(0.0)},
             {"gsd_cm", a.gsdCm.value_or(0.0)},           {"front_overlap", a.overlap.front},
             {"side_overlap", a.overlap.side},            {"cruise_speed_mps", a.cruiseSpeedMps},
-            {"turn_rate_deg_s", a.turnRateDegS},         {"endurance_min", a.enduranceMin},
+            {"turn_rate_deg_s", a.turnRateDegS},         {"acceleration_mps2", a.accelerationMps2},
+            {"endurance_min", a.enduranceMin},
             {"max_altitude_m", a.maxAltitudeM},          {"home[0]", a.home ? a.home->lon : 0.0},
             {"home[1]", a.home ? a.home->lat : 0.0}};
         for (const auto& [name, v] : fields)
@@ -684,14 +686,22 @@ std::optional<std::string> firstUnreadableRoute(const mission::Mission& m) {
     return std::nullopt;
 }
 
+// The oldest file version that holds everything in `m`, so that older releases (which refuse
+// unknown fields) keep opening files that use nothing newer.
+int requiredVersion(const mission::Mission& m) {
+    for (const auto& a : m.aircraft)
+        if (a.accelerationMps2 != plan::kDefaultAccelerationMps2)
+            return 3;
+    return m.editedRoutes.empty() ? 1 : 2;
+}
+
 } // namespace
 
 std::string missionToJson(const mission::Mission& m) {
     CPLJSONDocument doc;
     CPLJSONObject root = doc.GetRoot();
     root.Add("format", kFormatName);
-    // Version 1 when there is nothing of version 2 in it, so older releases still open the file.
-    root.Add("version", m.editedRoutes.empty() ? 1 : mission::kMissionFileVersion);
+    root.Add("version", requiredVersion(m));
     root.Add("name", m.name);
     root.Add("area", jsonPolygon(m.area));
     CPLJSONArray zones;
@@ -720,6 +730,8 @@ std::string missionToJson(const mission::Mission& m) {
         o.Add("side_overlap", jsonNumber(a.overlap.side));
         o.Add("cruise_speed_mps", jsonNumber(a.cruiseSpeedMps));
         o.Add("turn_rate_deg_s", jsonNumber(a.turnRateDegS));
+        if (a.accelerationMps2 != plan::kDefaultAccelerationMps2)
+            o.Add("acceleration_mps2", jsonNumber(a.accelerationMps2));
         o.Add("endurance_min", jsonNumber(a.enduranceMin));
         o.Add("max_altitude_m", jsonNumber(a.maxAltitudeM));
         o.Add("colour", a.colour);

@@ -10,15 +10,25 @@ AircraftConfig aircraftFromCatalog(const fleet::AircraftSpec& spec, const sensor
         a.camera = *camera;
     a.cruiseSpeedMps = spec.cruiseSpeedMps;
     a.turnRateDegS = spec.turnRateDegS;
+    a.accelerationMps2 = spec.accelerationMps2;
     a.enduranceMin = spec.enduranceMin;
     a.maxAltitudeM = spec.maxAltitudeM;
     return a;
+}
+
+plan::FlightTimeModel flightModel(const AircraftConfig& a) {
+    plan::FlightTimeModel m;
+    m.speedMps = a.cruiseSpeedMps;
+    m.turnRateDegS = a.turnRateDegS;
+    m.accelerationMps2 = a.accelerationMps2;
+    return m;
 }
 
 bool operator==(const AircraftConfig& a, const AircraftConfig& b) {
     return a.name == b.name && a.model == b.model && a.camera == b.camera && a.altitudeM == b.altitudeM &&
            a.gsdCm == b.gsdCm && a.overlap.front == b.overlap.front && a.overlap.side == b.overlap.side &&
            a.cruiseSpeedMps == b.cruiseSpeedMps && a.turnRateDegS == b.turnRateDegS &&
+           a.accelerationMps2 == b.accelerationMps2 &&
            a.enduranceMin == b.enduranceMin && a.maxAltitudeM == b.maxAltitudeM && a.colour == b.colour &&
            a.home == b.home;
 }

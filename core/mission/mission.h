@@ -3,6 +3,7 @@
 
 #include "core/fleet/aircraft.h"
 #include "core/geo/types.h"
+#include "core/plan/flight_time.h"
 #include "core/route/waypoint.h"
 #include "core/sensor/camera.h"
 
@@ -31,6 +32,7 @@ struct AircraftConfig {
     sensor::Overlap overlap;
     double cruiseSpeedMps = 10.0;
     double turnRateDegS = 90.0;
+    double accelerationMps2 = plan::kDefaultAccelerationMps2; // for the stop at each turn
     double enduranceMin = 20.0;
     double maxAltitudeM = 120.0;
     std::string colour = "#e6194b"; // #rrggbb, used on the map
@@ -42,6 +44,9 @@ struct AircraftConfig {
 // endurance and ceiling, and `camera` when given (its default camera, looked up by the caller). The
 // altitude is left for the caller to set.
 AircraftConfig aircraftFromCatalog(const fleet::AircraftSpec& spec, const sensor::Camera* camera);
+
+// The one flight-time model with this aircraft's speed, turn rate and acceleration.
+plan::FlightTimeModel flightModel(const AircraftConfig& a);
 
 enum class PlannerKind { Stride, Raster, Wavefront };
 
@@ -76,8 +81,9 @@ struct Mission {
 // Equal aircraft, home, speed and waypoints (route::Route has no operator== of its own).
 bool sameRoute(const route::Route& a, const route::Route& b);
 
-// Newest mission file format version: 2 added the optional "routes" (hand-edited routes). Files
-// without edited routes are still written as version 1 so that older releases keep reading them.
-constexpr int kMissionFileVersion = 2;
+// Newest mission file format version: 2 added the optional "routes" (hand-edited routes), 3 the
+// aircraft's "acceleration_mps2". A file is written with the oldest version that holds what it
+// contains (version 1 without either), so that older releases keep reading it.
+constexpr int kMissionFileVersion = 3;
 
 } // namespace pf::mission

@@ -92,12 +92,11 @@ Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vect
         options.gridAngleDeg ? std::vector<double>{*options.gridAngleDeg} : candidateAngles(region);
     plan::PlanOptions popt;
     popt.kind = toPlanKind(options.planner);
-    popt.wavefront.speedMps = aircraft.cruiseSpeedMps;
-    popt.wavefront.turnRateDegS = aircraft.turnRateDegS;
-    popt.stride = {true, aircraft.cruiseSpeedMps, aircraft.turnRateDegS}; // the variant flown soonest
+    const plan::FlightTimeModel model = flightModel(aircraft);
+    popt.wavefront.time = model;
+    popt.stride = {true, model}; // the variant flown soonest
     plan::MetricsOptions mopt;
-    mopt.speedMps = aircraft.cruiseSpeedMps;
-    mopt.turnRateDegS = aircraft.turnRateDegS;
+    mopt.time = model;
     mopt.diagonalSteps = popt.kind == plan::PlannerKind::Wavefront && popt.wavefront.moore;
     mopt.turnLowerBound = false;
 
@@ -222,7 +221,7 @@ double aloneRouteTimeS(const std::vector<route::LocalWaypoint>& survey, const Ai
         pts.push_back(w.pos);
     if (home)
         pts.push_back(landing ? *landing : *home);
-    return route::flightTimeS(pts, route::FlightModel{a.cruiseSpeedMps, a.turnRateDegS, 0.0});
+    return route::flightTimeS(pts, flightModel(a));
 }
 
 } // namespace
@@ -249,7 +248,7 @@ Result<MissionPlan> planMission(const Mission& m) {
         if (!eff)
             return makeError(eff.error().code, aircraftLabel(a) + ": " + eff.error().message);
         footprints.push_back(*eff);
-        caps.push_back({a.name, *eff, a.cruiseSpeedMps, a.turnRateDegS});
+        caps.push_back({a.name, *eff, flightModel(a)});
         const std::optional<geo::LonLat> h = a.home ? a.home : m.home;
         homes.push_back(h ? std::optional<geo::Vec2>(frame.toLocal(*h)) : std::nullopt);
     }
@@ -467,7 +466,7 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         ap.keptInside = rep.keptInside;
         ap.surveyWaypoints = survey;
 
-        const route::FlightModel model{cfg.cruiseSpeedMps, cfg.turnRateDegS, 0.0};
+        const route::FlightModel model = flightModel(cfg);
         std::vector<route::LocalWaypoint> flown;
         std::vector<geo::Vec2> path; // home, every waypoint, landing
         const auto& home = homes[k];

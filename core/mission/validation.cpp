@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 namespace pf::mission {
 
@@ -192,6 +193,15 @@ ValidationReport validateMission(const Mission& m) {
         for (auto [v, side] : {std::pair{a.overlap.front, "front"}, std::pair{a.overlap.side, "side"}})
             if (!std::isfinite(v) || v < 0.0 || v >= 1.0) {
                 error(out, who + ": the " + std::string(side) + " overlap must lie in [0, 1), e.g. 0.7 for 70 % (got " +
+                               num("%g", v) + ")");
+                ok = false;
+            }
+        // The flight-time model divides by these: a zero or negative figure would give nonsense times.
+        for (auto [v, what, unit] : {std::tuple{a.cruiseSpeedMps, "cruise speed", "m/s"},
+                                     std::tuple{a.turnRateDegS, "turn rate", "deg/s"},
+                                     std::tuple{a.accelerationMps2, "acceleration", "m/s2"}})
+            if (!std::isfinite(v) || v <= 0.0) {
+                error(out, who + ": the " + std::string(what) + " must be greater than 0 " + unit + " (got " +
                                num("%g", v) + ")");
                 ok = false;
             }

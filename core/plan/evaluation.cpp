@@ -121,8 +121,7 @@ std::vector<EvalRun> evaluateArea(const std::string& areaName, const grid::Grid&
         MetricsOptions mo;
         mo.turnLowerBound = false;
         mo.diagonalSteps = kind == PlannerKind::Wavefront && opt.wavefront.moore;
-        mo.speedMps = opt.wavefront.speedMps;
-        mo.turnRateDegS = opt.wavefront.turnRateDegS;
+        mo.time = opt.wavefront.time;
         for (int s : starts) {
             CoverageRequest req;
             req.start = s;

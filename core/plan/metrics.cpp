@@ -334,8 +334,11 @@ PathMetrics computeMetrics(const grid::Grid& g, const CellPath& path, const Metr
     m.distanceM = m.pathLengthM;
     if (n >= 2)
         m.distanceM += (g.flightPosition(path.cells.front()) - g.flightPosition(path.cells.back())).norm();
-    m.estimatedTimeS = (opt.speedMps > 0 ? m.pathLengthM / opt.speedMps : 0.0) +
-                       (opt.turnRateDegS > 0 ? m.turnAngleDeg / opt.turnRateDegS : 0.0);
+    // The one time model, with the turns counted on the grid steps (the offsets of shifted flight
+    // positions are not turns the planner chose).
+    m.estimatedTimeS = (opt.time.speedMps > 0 ? m.pathLengthM / opt.time.speedMps : 0.0) +
+                       (opt.time.turnRateDegS > 0 ? m.turnAngleDeg / opt.time.turnRateDegS : 0.0) +
+                       (m.pathLengthM > 0 ? (m.turns + 1) * opt.time.stopCostS() : 0.0);
     // The bound counts 4-connected moves only: a diagonal step is not on a row or column run.
     if (opt.turnLowerBound && !opt.diagonalSteps) {
         m.turnLowerBound = computeTurnBound(g).turns;

@@ -3,12 +3,12 @@
 
 #include "core/grid/grid.h"
 #include "core/plan/cell_path.h"
+#include "core/plan/flight_time.h"
 
 namespace pf::plan {
 
 struct MetricsOptions {
-    double speedMps = 10.0;     // V: cruise speed
-    double turnRateDegS = 90.0; // omega: rotation rate while stopped at a turn
+    FlightTimeModel time;       // V, omega and the stop at each turn
     bool diagonalSteps = false; // diagonal steps between safe neighbours are moves, not jumps (8-connected)
     bool turnLowerBound = true; // compute the lower bound on turns (computeTurnBound; not for diagonal steps)
 };
@@ -25,7 +25,8 @@ struct PathMetrics {
     double turnAngleDeg = 0.0;  // sum of the direction changes
     int jumps = 0;              // consecutive cells joined by no allowed move
     int revisits = 0;           // transit occurrences
-    double estimatedTimeS = 0.0; // T = S / V + sum(theta) / omega (paper 004), S = path length
+    double estimatedTimeS = 0.0; // plan::FlightTimeModel over the flight positions: S / V + sum(theta) /
+                                 // omega (paper 004) + a stop per turn, S = path length
     double planningMs = 0.0;    // wall time of the planner (filled in by the caller)
     // computeTurnBound(grid).turns: no jump-free 4-connected path that visits every visitable cell can
     // turn fewer times. -1 when not computed (not asked, or diagonal steps count as moves).

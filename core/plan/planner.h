@@ -3,6 +3,7 @@
 
 #include "core/grid/grid.h"
 #include "core/plan/cell_path.h"
+#include "core/plan/flight_time.h"
 #include "core/result.h"
 
 #include <optional>
@@ -33,17 +34,15 @@ struct CoverageRequest {
 struct WavefrontOptions {
     bool moore = true;         // 8-connected (Moore) moves; false: 4-connected (von Neumann)
     int maxCandidates = 8;     // candidate paths compared (branches at recorded ties), >= 1
-    double speedMps = 10.0;    // V in T = S / V + sum(theta) / omega
-    double turnRateDegS = 90.0; // omega
+    FlightTimeModel time;      // what the candidate paths are compared on
 };
 
 // How the stride planner compares its variants' paths: byTime false, the fewest turns (the paper's
-// measure), then the shorter path; true, the shortest time T = path length / speedMps + sum of turn
-// angles / turnRateDegS, then fewer turns.
+// measure), then the shorter path; true, the shortest time by the one flight-time model, then fewer
+// turns.
 struct StrideChoice {
     bool byTime = false;
-    double speedMps = 10.0;
-    double turnRateDegS = 90.0;
+    FlightTimeModel time;
 };
 
 struct PlanOptions {

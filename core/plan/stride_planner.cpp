@@ -671,8 +671,7 @@ Result<CellPath> planStride(const Grid& g, const CoverageRequest& req, StrideTra
     PathMetrics bestM;
     MetricsOptions mo;
     mo.turnLowerBound = false;
-    mo.speedMps = choice.speedMps;
-    mo.turnRateDegS = choice.turnRateDegS;
+    mo.time = choice.time;
     auto better = [&](const PathMetrics& m) {
         if (choice.byTime) {
             if (std::abs(m.estimatedTimeS - bestM.estimatedTimeS) > 1e-9)

@@ -227,8 +227,7 @@ Result<CellPath> planWavefront(const grid::Grid& g, const CoverageRequest& req, 
     const std::vector<int> pot = propagate(g, moves, goal);
     Ascent ascent(g, moves, pot);
     MetricsOptions mo;
-    mo.speedMps = opt.speedMps;
-    mo.turnRateDegS = opt.turnRateDegS;
+    mo.time = opt.time;
     mo.diagonalSteps = opt.moore;
     mo.turnLowerBound = false;
 

@@ -12,13 +12,9 @@ namespace {
 
 using geo::Vec2;
 
-// Direction change in degrees at b between the legs a->b and b->c (0 when a leg has no length).
-double turnDeg(const Vec2& a, const Vec2& b, const Vec2& c) {
-    const Vec2 u = b - a, v = c - b;
-    if (u.squaredNorm() == 0.0 || v.squaredNorm() == 0.0)
-        return 0.0;
-    const double cosA = std::clamp(u.dot(v) / (u.norm() * v.norm()), -1.0, 1.0);
-    return std::acos(cosA) * 180.0 / M_PI;
+// The time the vertex b of the legs a->b, b->c costs (its turn and, for a real turn, the stop).
+double vertexCostS(const Vec2& a, const Vec2& b, const Vec2& c, const FlightModel& m) {
+    return plan::turnCostS(plan::turnAngleDeg(a, b, c), m);
 }
 
 std::string fmt(double v, int decimals = 0) {
@@ -29,15 +25,7 @@ std::string fmt(double v, int decimals = 0) {
 
 } // namespace
 
-double flightTimeS(const std::vector<Vec2>& pts, const FlightModel& m) {
-    double len = 0, turn = 0;
-    for (std::size_t i = 1; i < pts.size(); ++i) {
-        len += (pts[i] - pts[i - 1]).norm();
-        if (i + 1 < pts.size())
-            turn += turnDeg(pts[i - 1], pts[i], pts[i + 1]);
-    }
-    return len / m.speedMps + turn / m.turnRateDegS;
-}
+double flightTimeS(const std::vector<Vec2>& pts, const FlightModel& m) { return plan::flightTime(pts, m).totalS; }
 
 Result<SortiePlan> splitIntoSorties(const std::vector<LocalWaypoint>& survey, const Vec2& home,
                                     const SafePathFinder& finder, const FlightModel& model,
@@ -47,15 +35,16 @@ Result<SortiePlan> splitIntoSorties(const std::vector<LocalWaypoint>& survey, co
         return makeError(ErrorCode::InvalidInput, who + " has an endurance that is not positive.");
     if (!(opt.reserveFraction >= 0 && opt.reserveFraction < 1))
         return makeError(ErrorCode::InvalidInput, "The battery reserve must be a fraction from 0 up to (not including) 1.");
-    if (!(model.speedMps > 0) || !(model.turnRateDegS > 0) || model.photoDwellS < 0)
-        return makeError(ErrorCode::InvalidInput, who + " needs a positive speed and turn rate to estimate flight times.");
+    if (!(model.speedMps > 0) || !(model.turnRateDegS > 0) || !(model.accelerationMps2 > 0) || model.photoDwellS < 0)
+        return makeError(ErrorCode::InvalidInput,
+                         who + " needs a positive speed, turn rate and acceleration to estimate flight times.");
     SortiePlan plan;
     plan.budgetS = opt.enduranceMin * 60.0 * (1.0 - opt.reserveFraction);
     const int n = static_cast<int>(survey.size());
     if (n == 0)
         return plan;
 
-    // Prefix sums over the survey: legs, turns at interior waypoints, photo dwell.
+    // Prefix sums over the survey: legs, the cost of the turns at interior waypoints, photo dwell.
     std::vector<double> legPrefix(static_cast<std::size_t>(n), 0.0), turnPrefix(static_cast<std::size_t>(n), 0.0),
         dwellPrefix(static_cast<std::size_t>(n) + 1, 0.0);
     for (int k = 0; k < n; ++k) {
@@ -64,7 +53,7 @@ Result<SortiePlan> splitIntoSorties(const std::vector<LocalWaypoint>& survey, co
             legPrefix[uk] = legPrefix[uk - 1] + (survey[uk].pos - survey[uk - 1].pos).norm();
         if (k > 0)
             turnPrefix[uk] = turnPrefix[uk - 1] +
-                             (k + 1 < n ? turnDeg(survey[uk - 1].pos, survey[uk].pos, survey[uk + 1].pos) : 0.0);
+                             (k + 1 < n ? vertexCostS(survey[uk - 1].pos, survey[uk].pos, survey[uk + 1].pos, model) : 0.0);
         dwellPrefix[uk + 1] = dwellPrefix[uk] + (survey[uk].kind == WaypointKind::Photo ? model.photoDwellS : 0.0);
     }
     const auto pos = [&](int k) { return survey[static_cast<std::size_t>(k)].pos; };
@@ -91,20 +80,22 @@ Result<SortiePlan> splitIntoSorties(const std::vector<LocalWaypoint>& survey, co
         }
         return &p;
     };
-    // Home -> out[i] ... -> w_i .. w_j -> in[j] ... -> home.
+    // Home -> out[i] ... -> w_i .. w_j -> in[j] ... -> home. The transits out and back are each timed
+    // from rest to rest; the sortie starts and ends at rest only once, so one stop cost comes off.
     auto sortieTime = [&](int i, int j, const std::vector<Vec2>& out, const std::vector<Vec2>& in) {
         const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
-        double t = flightTimeS(out, model) + flightTimeS(in, model);
+        const plan::FlightTime to = plan::flightTime(out, model), ti = plan::flightTime(in, model);
+        double t = to.totalS + ti.totalS - (to.lengthM > 0 && ti.lengthM > 0 ? model.stopCostS() : 0.0);
         t += (legPrefix[uj] - legPrefix[ui]) / model.speedMps;
         if (j - 1 > i)
-            t += (turnPrefix[uj - 1] - turnPrefix[ui]) / model.turnRateDegS;
+            t += turnPrefix[uj - 1] - turnPrefix[ui];
         const Vec2 beforeI = out[out.size() - 2];
         const Vec2 afterJ = in[1];
         if (i == j) {
-            t += turnDeg(beforeI, pos(i), afterJ) / model.turnRateDegS;
+            t += vertexCostS(beforeI, pos(i), afterJ, model);
         } else {
-            t += turnDeg(beforeI, pos(i), pos(i + 1)) / model.turnRateDegS;
-            t += turnDeg(pos(j - 1), pos(j), afterJ) / model.turnRateDegS;
+            t += vertexCostS(beforeI, pos(i), pos(i + 1), model);
+            t += vertexCostS(pos(j - 1), pos(j), afterJ, model);
         }
         return t + dwellPrefix[uj + 1] - dwellPrefix[ui];
     };

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/geo/types.h"
+#include "core/plan/flight_time.h"
 #include "core/result.h"
 #include "core/route/safety.h"
 #include "core/route/waypoint.h"
@@ -11,15 +12,10 @@
 
 namespace pf::route {
 
-// The flight time model (paper 004, as the planners' metrics): T = S / V + sum(theta) / omega,
-// S the path length, theta the direction change at each vertex, plus a dwell per photo.
-struct FlightModel {
-    double speedMps = 10.0;
-    double turnRateDegS = 90.0;
-    double photoDwellS = 0.0; // time spent at each Photo waypoint (0: photos taken on the fly)
-};
+// Flight times come from the one model, plan::FlightTimeModel (straight legs, turns, stops).
+using FlightModel = plan::FlightTimeModel;
 
-// Time to fly the polyline (no turn counted at its two ends).
+// Time to fly the polyline from rest to rest (plan::flightTime(...).totalS).
 double flightTimeS(const std::vector<geo::Vec2>& polyline, const FlightModel& model);
 
 struct SortieOptions {

@@ -111,7 +111,7 @@ void BM_BalanceDemoWithStridePlanner(benchmark::State& state) {
     std::vector<double> sizes;
     for (const auto& a : fleetCfg) {
         auto fp = sensor::effectiveFootprint(a.camera, *a.altitudeM, a.overlap);
-        caps.push_back({a.name, *fp, a.cruiseSpeedMps, a.turnRateDegS});
+        caps.push_back({a.name, *fp, mission::flightModel(a)});
         sizes.push_back(fleet::aircraftCellSize(*fp));
     }
     const double areaM2 = geo::area(d.area);

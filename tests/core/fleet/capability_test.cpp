@@ -3,18 +3,22 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 using namespace pf;
 using namespace pf::fleet;
 
 namespace {
-Capability make(const std::string& name, double across, double speed, double turn) {
+// Without the stop at each turn (infinite acceleration) unless `accel` is given.
+Capability make(const std::string& name, double across, double speed, double turn,
+                double accel = std::numeric_limits<double>::infinity()) {
     Capability c;
     c.name = name;
     c.footprint.acrossM = across;
     c.footprint.alongM = across * 0.5;
-    c.cruiseSpeedMps = speed;
-    c.turnRateDegS = turn;
+    c.time.speedMps = speed;
+    c.time.turnRateDegS = turn;
+    c.time.accelerationMps2 = accel;
     return c;
 }
 } // namespace
@@ -23,6 +27,11 @@ TEST(Capability, AreaRateMatchesHandComputedValue) {
     // 20 m tracks spacing, 10 m/s, 90 deg/s, 100 m tracks: 2000 m^2 in 10 s + 2 s + 2 s.
     EXPECT_NEAR(areaRateM2PerS(make("a", 20, 10, 90), 100.0), 2000.0 / 14.0, 1e-12);
     EXPECT_EQ(areaRateM2PerS(make("a", 0, 10, 90), 100.0), 0.0);
+}
+
+TEST(Capability, AreaRateCountsTheStopsOfEachUTurn) {
+    // As above, plus two stops of V / a = 10 / 2.5 = 4 s at the two corners of each U-turn.
+    EXPECT_NEAR(areaRateM2PerS(make("a", 20, 10, 90, 2.5), 100.0), 2000.0 / 22.0, 1e-12);
 }
 
 TEST(Capability, TurnsDiscountFastNarrowAircraftOnSmallAreas) {

@@ -186,7 +186,7 @@ TEST(FleetOnGrid, BalanceWithTheStridePlannerWithinTenPercent) {
         for (const auto& a : cfg) {
             auto fp = sensor::effectiveFootprint(a.camera, *a.altitudeM, a.overlap);
             ASSERT_TRUE(fp.ok());
-            caps.push_back({a.name, *fp, a.cruiseSpeedMps, a.turnRateDegS});
+            caps.push_back({a.name, *fp, mission::flightModel(a)});
             sizes.push_back(aircraftCellSize(*fp));
         }
         const double areaM2 = geo::area(area);
@@ -236,7 +236,7 @@ TEST(FleetOnGrid, DemoSiteEndToEndCoveredAndSafe) {
     for (const auto& a : cfg) {
         auto fp = sensor::effectiveFootprint(a.camera, *a.altitudeM, a.overlap);
         ASSERT_TRUE(fp.ok());
-        caps.push_back({a.name, *fp, a.cruiseSpeedMps, a.turnRateDegS});
+        caps.push_back({a.name, *fp, mission::flightModel(a)});
         sizes.push_back(aircraftCellSize(*fp));
     }
     const double areaM2 = geo::area(site.area);
@@ -286,7 +286,7 @@ TEST(FleetOnGrid, DemoSiteEndToEndCoveredAndSafe) {
         path.push_back(site.home);
         paths.push_back(path);
         auto sorties = route::splitIntoSorties(*safe, site.home, finder,
-                                               route::FlightModel{cfg[k].cruiseSpeedMps, cfg[k].turnRateDegS, 0.0},
+                                               mission::flightModel(cfg[k]),
                                                route::SortieOptions{3.0, 0.2}, cfg[k].name);
         ASSERT_TRUE(sorties.ok()) << sorties.error().message;
         EXPECT_GE(sorties->batteries(), 1);
@@ -308,8 +308,7 @@ TEST(SplitArea, DemoSiteWithThePlannerAsEstimator) {
     const auto cfg = mixedConfigs(3, rng);
     std::vector<Capability> caps;
     for (const auto& a : cfg)
-        caps.push_back({a.name, *sensor::effectiveFootprint(a.camera, *a.altitudeM, a.overlap), a.cruiseSpeedMps,
-                        a.turnRateDegS});
+        caps.push_back({a.name, *sensor::effectiveFootprint(a.camera, *a.altitudeM, a.overlap), mission::flightModel(a)});
     mission::PlannerOptions po;
     po.gridAngleDeg = 0.0;
     po.safetyMarginM = 5;

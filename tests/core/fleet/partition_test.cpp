@@ -44,8 +44,8 @@ std::vector<Capability> mixedFleet(std::mt19937& rng, int n) {
         c.name = "A" + std::to_string(k + 1);
         c.footprint.acrossM = across(rng);
         c.footprint.alongM = 0.6 * c.footprint.acrossM;
-        c.cruiseSpeedMps = speed(rng);
-        c.turnRateDegS = turn(rng);
+        c.time.speedMps = speed(rng);
+        c.time.turnRateDegS = turn(rng);
         fleet.push_back(c);
     }
     return fleet;
@@ -66,7 +66,8 @@ double analyticTime(const BaseGrid& g, const Capability& c, const std::vector<in
     const double shortSide = std::min(x1 - x0 + 1, y1 - y0 + 1) * g.cellSize;
     const double tracks = std::ceil(shortSide / c.footprint.acrossM);
     const double length = cells.size() * g.cellSize * g.cellSize / c.footprint.acrossM;
-    return length / c.cruiseSpeedMps + tracks * (180.0 / c.turnRateDegS + c.footprint.acrossM / c.cruiseSpeedMps);
+    return length / c.time.speedMps + tracks * (180.0 / c.time.turnRateDegS + 2.0 * c.time.stopCostS() +
+                                                c.footprint.acrossM / c.time.speedMps);
 }
 
 } // namespace

@@ -104,6 +104,8 @@ mission::Mission randomMission(std::mt19937_64& rng) {
         a.overlap = {unit(rng), unit(rng)};
         a.cruiseSpeedMps = pos(rng);
         a.turnRateDegS = pos(rng);
+        if (coin())
+            a.accelerationMps2 = pos(rng);
         a.enduranceMin = pos(rng);
         a.maxAltitudeM = pos(rng);
         char colour[8];
@@ -341,11 +343,13 @@ TEST(MissionFileErrors, WrongOrMissingFormat) {
 }
 
 TEST(MissionFileErrors, UnknownVersion) {
-    EXPECT_EQ(errorOf(with(kMinimal, "\"version\": 1", "\"version\": 3")),
-              "x.json: version: the file has version 3, newer than the version 2 this Photoflight reads; please "
-              "update Photoflight");
+    const std::string newest = std::to_string(mission::kMissionFileVersion);
+    const std::string next = std::to_string(mission::kMissionFileVersion + 1);
+    EXPECT_EQ(errorOf(with(kMinimal, "\"version\": 1", "\"version\": " + next)),
+              "x.json: version: the file has version " + next + ", newer than the version " + newest +
+                  " this Photoflight reads; please update Photoflight");
     EXPECT_EQ(errorOf(with(kMinimal, "\"version\": 1", "\"version\": 0")),
-              "x.json: version: unknown version 0 (expected 1 to 2)");
+              "x.json: version: unknown version 0 (expected 1 to " + newest + ")");
     // Version 2 without routes is fine too (a hand-written file, or one whose edits were removed).
     EXPECT_EQ(errorOf(with(kMinimal, "\"version\": 1", "\"version\": 2")), "<parsed>");
     EXPECT_EQ(errorOf(with(kMinimal, "\"version\": 1", "\"version\": \"1\"")),
@@ -390,8 +394,8 @@ TEST(MissionFileErrors, MisspeltFieldsAreNotIgnored) {
               "keep_inside_area, inside_margin_m, altitude_separation_m, battery_reserve, max_cells)");
     EXPECT_EQ(errorOf(with(kMinimal, "\"altitude_m\": 50.0", "\"altitude_m\": 50.0, \"front_overlpa\": 0.8")),
               "x.json: aircraft[0].front_overlpa: unknown field (known here: name, model, camera, altitude_m, gsd_cm, "
-              "front_overlap, side_overlap, cruise_speed_mps, turn_rate_deg_s, endurance_min, max_altitude_m, "
-              "colour, home)");
+              "front_overlap, side_overlap, cruise_speed_mps, turn_rate_deg_s, acceleration_mps2, endurance_min, "
+              "max_altitude_m, colour, home)");
     // "note" is allowed anywhere for the user's remarks.
     EXPECT_EQ(errorOf(with(kMinimal, "\"name\": \"t\",", "\"name\": \"t\", \"note\": \"surveyed twice\",")),
               "<parsed>");
@@ -479,6 +483,22 @@ TEST(MissionFileRoutes, ReadsEveryFieldOfEveryWaypoint) {
     EXPECT_EQ(r.waypoints[1].altitudeM, 40.5);
     EXPECT_EQ(r.waypoints[0].headingDeg, 90.0);
     EXPECT_EQ(r.waypoints[2].headingDeg, 0.0); // optional, north by default
+}
+
+// An aircraft's own acceleration needs version 3; the default is not written, so the file stays at the
+// oldest version that holds the rest.
+TEST(MissionFile, AccelerationOnlyWrittenWhenSetAndThenVersion3) {
+    auto m = parseMissionJson(kMinimal, "x.json");
+    ASSERT_TRUE(m);
+    EXPECT_EQ(m->aircraft[0].accelerationMps2, plan::kDefaultAccelerationMps2);
+    std::string text = missionToJson(*m);
+    EXPECT_EQ(text.find("acceleration_mps2"), std::string::npos) << text;
+    m->aircraft[0].accelerationMps2 = 4.5;
+    text = missionToJson(*m);
+    EXPECT_NE(text.find("\"version\":3,"), std::string::npos) << text;
+    auto back = parseMissionJson(text, "x.json");
+    ASSERT_TRUE(back) << back.error().message;
+    EXPECT_EQ(back->aircraft[0].accelerationMps2, 4.5);
 }
 
 TEST(MissionFileRoutes, VersionOneUnlessThereAreEditedRoutes) {

@@ -20,8 +20,9 @@ TEST(Metrics, BoustrophedonByHand) {
         p.revisit.push_back(false);
     }
     MetricsOptions opt;
-    opt.speedMps = 10;
-    opt.turnRateDegS = 90;
+    opt.time.speedMps = 10;
+    opt.time.turnRateDegS = 90;
+    opt.time.accelerationMps2 = 2.5;
     const PathMetrics m = computeMetrics(g, p, opt);
     EXPECT_EQ(m.visitable, 9);
     EXPECT_EQ(m.cells, 9);
@@ -32,7 +33,9 @@ TEST(Metrics, BoustrophedonByHand) {
     EXPECT_NEAR(m.turnAngleDeg, 360.0, 1e-9);
     EXPECT_EQ(m.jumps, 0);
     EXPECT_EQ(m.revisits, 0);
-    EXPECT_NEAR(m.estimatedTimeS, 80.0 / 10 + 360.0 / 90, 1e-9);
+    // Straight legs, turns, and a stop of V / a = 4 s at each of the 4 turns and once for the start and
+    // the end at rest.
+    EXPECT_NEAR(m.estimatedTimeS, 80.0 / 10 + 360.0 / 90 + 5 * 4.0, 1e-9);
     // Three lanes either way, each lane change a connector with two turns: four at least, as flown here.
     EXPECT_EQ(m.turnLowerBound, 4);
     EXPECT_DOUBLE_EQ(m.turnRatio, 1.0);

@@ -443,8 +443,8 @@ TEST(StrideVariants, StaircaseFromMidEdgeNeedsFarFewerTurnsThanThePaperRules) {
 // turns: each is at least as good as the other on its own measure.
 TEST(StrideVariants, ChoiceByTimeOrByTurns) {
     MetricsOptions mo;
-    mo.speedMps = 10.0;
-    mo.turnRateDegS = 150.0;
+    mo.time.speedMps = 10.0;
+    mo.time.turnRateDegS = 150.0;
     int differ = 0;
     for (unsigned seed = 1; seed <= 15; ++seed) {
         const grid::Grid g = test::randomShape(test::Shape::Concave, seed);
@@ -452,7 +452,7 @@ TEST(StrideVariants, ChoiceByTimeOrByTurns) {
             continue;
         CoverageRequest req;
         auto byTurns = planStride(g, req);
-        auto byTime = planStride(g, req, nullptr, StrideChoice{true, mo.speedMps, mo.turnRateDegS});
+        auto byTime = planStride(g, req, nullptr, StrideChoice{true, mo.time});
         ASSERT_TRUE(byTurns.ok() && byTime.ok());
         std::vector<int> sizes;
         test::freeComponents(g, std::vector<std::uint8_t>(static_cast<std::size_t>(g.cellCount()), 0), &sizes);

@@ -46,8 +46,7 @@ TEST(Wavefront, KeepsTheMinimumTimeCandidate) {
             EXPECT_DOUBLE_EQ(trace.candidateTimes[trace.chosen], *minIt);
             MetricsOptions mo;
             mo.diagonalSteps = moore;
-            mo.speedMps = opt.speedMps;
-            mo.turnRateDegS = opt.turnRateDegS;
+            mo.time = opt.time;
             mo.turnLowerBound = false;
             EXPECT_NEAR(computeMetrics(g, *p, mo).estimatedTimeS, *minIt, 1e-9);
             if (trace.tiePoints > 0) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 using namespace pf;
 using namespace pf::route;
@@ -22,10 +23,18 @@ std::vector<LocalWaypoint> photoLine(int x0, int x1) {
     }
     return out;
 }
+// Paper 004's model alone: no stop at the turns (infinite acceleration).
+FlightModel noStops(double speed, double turnRate) {
+    FlightModel m;
+    m.speedMps = speed;
+    m.turnRateDegS = turnRate;
+    m.accelerationMps2 = std::numeric_limits<double>::infinity();
+    return m;
+}
 } // namespace
 
 TEST(FlightTime, LengthOverSpeedPlusTurnsOverRate) {
-    const FlightModel m{10.0, 90.0, 0.0};
+    const FlightModel m = noStops(10.0, 90.0);
     EXPECT_DOUBLE_EQ(flightTimeS({Vec2(0, 0), Vec2(100, 0)}, m), 10.0);
     EXPECT_DOUBLE_EQ(flightTimeS({Vec2(0, 0), Vec2(100, 0), Vec2(100, 100)}, m), 21.0);
     EXPECT_DOUBLE_EQ(flightTimeS({Vec2(0, 0), Vec2(100, 0), Vec2(0, 0)}, m), 22.0);
@@ -39,7 +48,7 @@ TEST(FlightTime, LengthOverSpeedPlusTurnsOverRate) {
 TEST(Sorties, HandComputedSplit) {
     const auto survey = photoLine(-300, 300);
     const SafePathFinder finder;
-    auto plan = splitIntoSorties(survey, Vec2(0, 0), finder, FlightModel{10.0, 90.0, 0.0}, SortieOptions{1.8, 0.25},
+    auto plan = splitIntoSorties(survey, Vec2(0, 0), finder, noStops(10.0, 90.0), SortieOptions{1.8, 0.25},
                                  "Falcon 8 #1");
     ASSERT_TRUE(plan.ok()) << plan.error().message;
     EXPECT_DOUBLE_EQ(plan->budgetS, 81.0);
@@ -80,7 +89,8 @@ TEST(Sorties, EverySortieFitsAndTransitsSafely) {
     const std::vector<geo::Polygon> zones{
         geo::Polygon{{Vec2(-20, 40), Vec2(220, 40), Vec2(220, 60), Vec2(-20, 60)}, {}}};
     const SafePathFinder finder(NoFlyField(zones, 5));
-    const FlightModel model{8.0, 60.0, 1.0};
+    // With the stops and a dwell per photo: the sortie times must still add up leg by leg.
+    const FlightModel model{8.0, 60.0, 2.0, 1.0};
     auto plan = splitIntoSorties(survey, Vec2(100, 0), finder, model, SortieOptions{4.0, 0.2}, "Hexa");
     ASSERT_TRUE(plan.ok()) << plan.error().message;
     EXPECT_GE(plan->batteries(), 3);
@@ -105,7 +115,7 @@ TEST(Sorties, EverySortieFitsAndTransitsSafely) {
 }
 
 TEST(Sorties, UnreachableWaypointIsAnError) {
-    auto plan = splitIntoSorties(photoLine(1000, 1000), Vec2(0, 0), SafePathFinder(), FlightModel{10, 90, 0},
+    auto plan = splitIntoSorties(photoLine(1000, 1000), Vec2(0, 0), SafePathFinder(), noStops(10, 90),
                                  SortieOptions{1.8, 0.25}, "Falcon 8 #1");
     ASSERT_FALSE(plan.ok());
     EXPECT_EQ(plan.error().message,
@@ -122,7 +132,7 @@ TEST(Sorties, BadSettingsAreRejectedWithAMessage) {
     auto r = splitIntoSorties(survey, Vec2(0, 0), SafePathFinder(), FlightModel{}, SortieOptions{10, 1.0}, "K");
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.error().message, "The battery reserve must be a fraction from 0 up to (not including) 1.");
-    auto s = splitIntoSorties(survey, Vec2(0, 0), SafePathFinder(), FlightModel{0, 90, 0}, SortieOptions{}, "K");
+    auto s = splitIntoSorties(survey, Vec2(0, 0), SafePathFinder(), FlightModel{0, 90}, SortieOptions{}, "K");
     ASSERT_FALSE(s.ok());
-    EXPECT_EQ(s.error().message, "Aircraft \"K\" needs a positive speed and turn rate to estimate flight times.");
+    EXPECT_EQ(s.error().message, "Aircraft \"K\" needs a positive speed, turn rate and acceleration to estimate flight times.");
 }
