@@ -2,6 +2,7 @@
 // optionally every waypoint kept inside the area without losing the part of the area it covers.
 #pragma once
 
+#include "core/geo/no_fly_field.h"
 #include "core/geo/types.h"
 #include "core/result.h"
 #include "core/route/waypoint.h"
@@ -11,54 +12,9 @@
 
 namespace pf::route {
 
-// No-fly zones with their safety margin, measured exactly (distances to the zones' edges) rather
-// than through a polygonised buffer, so that every stage agrees on what "safe" means.
-class NoFlyField {
-public:
-    NoFlyField() = default;
-    NoFlyField(std::vector<geo::Polygon> zones, double marginM);
-
-    const std::vector<geo::Polygon>& zones() const { return m_zones; }
-    double marginM() const { return m_margin; }
-    bool empty() const { return m_zones.empty(); }
-    // Slack granted below the margin: 1 cm + 0.5 % of it, the gap between a circle and the polygon
-    // GEOS uses for a buffer (8 segments per quarter), so points on such a buffer count as safe.
-    double tolerance() const { return 0.01 + 0.005 * m_margin; }
-
-    // Distance from p (or from the segment ab) to the nearest zone; 0 inside or across one.
-    double clearance(const geo::Vec2& p) const;
-    double clearance(const geo::Vec2& a, const geo::Vec2& b) const;
-    // Inside or touching a zone is never safe, whatever the margin.
-    bool pointIsSafe(const geo::Vec2& p) const { return isSafeClearance(clearance(p)); }
-    bool segmentIsSafe(const geo::Vec2& a, const geo::Vec2& b) const { return isSafeClearance(clearance(a, b)); }
-    bool isSafeClearance(double c) const { return c > 0.0 && c >= m_margin - tolerance(); }
-
-private:
-    std::vector<geo::Polygon> m_zones;
-    std::vector<std::pair<geo::Vec2, geo::Vec2>> m_boxes; // per zone: min, max
-    double m_margin = 0.0;
-};
-
-// Shortest safe paths around the zones: a visibility graph over the vertices of the zones buffered
-// by a little more than the margin (so the graph's straight edges, chords of that buffer, still
-// keep the margin), searched with Dijkstra.
-class SafePathFinder {
-public:
-    explicit SafePathFinder(NoFlyField field = {});
-
-    const NoFlyField& field() const { return m_field; }
-    // The points strictly between a and b of the shortest safe path (empty when the straight
-    // segment is safe). Errors: a or b inside a margin, or no safe way around.
-    Result<std::vector<geo::Vec2>> detour(const geo::Vec2& a, const geo::Vec2& b) const;
-    // The nearest safe point to p (p itself when it is safe): on the inflated margin's boundary.
-    geo::Vec2 nearestSafePoint(const geo::Vec2& p) const;
-
-private:
-    NoFlyField m_field;
-    std::vector<geo::Vec2> m_nodes;
-    std::vector<std::vector<std::pair<int, double>>> m_edges;
-    geo::MultiPolygon m_inflated;
-};
+// The no-fly model (exact clearances, shortest safe paths) lives in geo/no_fly_field.h.
+using geo::NoFlyField;
+using geo::SafePathFinder;
 
 // Heading in degrees clockwise from north, [0, 360), of the direction from a to b.
 double headingDeg(const geo::Vec2& a, const geo::Vec2& b);

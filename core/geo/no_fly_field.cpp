@@ -1,0 +1,229 @@
+#include "core/geo/no_fly_field.h"
+
+#include "core/geo/polygon_ops.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <queue>
+#include <string>
+
+namespace pf::geo {
+
+namespace {
+
+using geo::Vec2;
+
+double pointSegDist(const Vec2& p, const Vec2& a, const Vec2& b) {
+    const Vec2 ab = b - a;
+    const double len2 = ab.squaredNorm();
+    const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+    return (a + t * ab - p).norm();
+}
+
+double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+bool segmentsIntersect(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+    const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
+    const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+    if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
+        return true;
+    return false; // touching or collinear cases give distance 0 through pointSegDist below
+}
+
+double segSegDist(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+    if (segmentsIntersect(a, b, c, d))
+        return 0.0;
+    return std::min({pointSegDist(a, c, d), pointSegDist(b, c, d), pointSegDist(c, a, b), pointSegDist(d, a, b)});
+}
+
+template <class F> void forEachEdge(const geo::Polygon& poly, F f) {
+    auto ring = [&](const geo::Ring& r) {
+        for (std::size_t i = 0; i < r.size(); ++i)
+            f(r[i], r[(i + 1) % r.size()]);
+    };
+    ring(poly.outer);
+    for (const auto& h : poly.holes)
+        ring(h);
+}
+
+double boxGap(const Vec2& amin, const Vec2& amax, const Vec2& bmin, const Vec2& bmax) {
+    const double dx = std::max({0.0, bmin.x() - amax.x(), amin.x() - bmax.x()});
+    const double dy = std::max({0.0, bmin.y() - amax.y(), amin.y() - bmax.y()});
+    return std::hypot(dx, dy);
+}
+
+// The nearest point to p on any ring of polys.
+Vec2 nearestOnBoundary(const geo::MultiPolygon& polys, const Vec2& p) {
+    Vec2 best = p;
+    double bestD = std::numeric_limits<double>::infinity();
+    for (const auto& poly : polys)
+        forEachEdge(poly, [&](const Vec2& a, const Vec2& b) {
+            const Vec2 ab = b - a;
+            const double len2 = ab.squaredNorm();
+            const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+            const Vec2 q = a + t * ab;
+            const double d = (q - p).squaredNorm();
+            if (d < bestD) {
+                bestD = d;
+                best = q;
+            }
+        });
+    return best;
+}
+
+std::string fmt(double v, int decimals = 1) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    return buf;
+}
+
+std::string where(const Vec2& p) { return "(" + fmt(p.x()) + ", " + fmt(p.y()) + ") m"; }
+
+} // namespace
+
+NoFlyField::NoFlyField(std::vector<geo::Polygon> zones, double marginM)
+    : m_zones(std::move(zones)), m_margin(std::max(0.0, marginM)) {
+    for (const auto& z : m_zones) {
+        const auto b = geo::bounds(z);
+        m_boxes.emplace_back(b.min, b.max);
+    }
+}
+
+double NoFlyField::clearance(const Vec2& p) const {
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < m_zones.size(); ++i) {
+        if (boxGap(p, p, m_boxes[i].first, m_boxes[i].second) >= best)
+            continue;
+        if (geo::contains(m_zones[i], p))
+            return 0.0;
+        best = std::min(best, geo::distanceToBoundary(m_zones[i], p));
+    }
+    return best;
+}
+
+double NoFlyField::clearance(const Vec2& a, const Vec2& b) const {
+    double best = std::numeric_limits<double>::infinity();
+    const Vec2 smin = a.cwiseMin(b), smax = a.cwiseMax(b);
+    for (std::size_t i = 0; i < m_zones.size(); ++i) {
+        if (boxGap(smin, smax, m_boxes[i].first, m_boxes[i].second) >= best)
+            continue;
+        if (geo::contains(m_zones[i], a) || geo::contains(m_zones[i], b))
+            return 0.0;
+        forEachEdge(m_zones[i], [&](const Vec2& c, const Vec2& d) { best = std::min(best, segSegDist(a, b, c, d)); });
+        if (best == 0.0)
+            return 0.0;
+    }
+    return best;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+SafePathFinder::SafePathFinder(NoFlyField field) : m_field(std::move(field)) {
+    if (m_field.empty())
+        return;
+    // 4 segments per quarter circle: each chord spans 22.5 degrees, so a buffer of
+    // margin / cos(11.25 deg) keeps its chords at least `margin` away; 5 cm more absorbs rounding.
+    const double r = m_field.marginM() / std::cos(M_PI / 16.0) + 0.05;
+    geo::MultiPolygon buffered;
+    for (const auto& z : m_field.zones())
+        for (auto& b : geo::buffer(z, r, 4))
+            buffered.push_back(std::move(b));
+    m_inflated = geo::unite(buffered);
+    for (const auto& poly : m_inflated) {
+        auto add = [&](const geo::Ring& ring) {
+            for (const auto& v : ring)
+                if (m_field.pointIsSafe(v))
+                    m_nodes.push_back(v);
+        };
+        add(poly.outer);
+        for (const auto& h : poly.holes)
+            add(h);
+    }
+    m_edges.assign(m_nodes.size(), {});
+    for (std::size_t i = 0; i < m_nodes.size(); ++i)
+        for (std::size_t j = i + 1; j < m_nodes.size(); ++j)
+            if (m_field.segmentIsSafe(m_nodes[i], m_nodes[j])) {
+                const double d = (m_nodes[i] - m_nodes[j]).norm();
+                m_edges[i].emplace_back(static_cast<int>(j), d);
+                m_edges[j].emplace_back(static_cast<int>(i), d);
+            }
+}
+
+Vec2 SafePathFinder::nearestSafePoint(const Vec2& p) const {
+    if (m_field.pointIsSafe(p))
+        return p;
+    const Vec2 q = nearestOnBoundary(m_inflated, p);
+    if (m_field.pointIsSafe(q))
+        return q;
+    Vec2 best = q;
+    double bestD = std::numeric_limits<double>::infinity();
+    for (const auto& n : m_nodes)
+        if ((n - p).squaredNorm() < bestD) {
+            bestD = (n - p).squaredNorm();
+            best = n;
+        }
+    return best;
+}
+
+Result<std::vector<Vec2>> SafePathFinder::detour(const Vec2& a, const Vec2& b) const {
+    const std::string margin = fmt(m_field.marginM());
+    if (!m_field.pointIsSafe(a))
+        return makeError(ErrorCode::NoPath, "The point " + where(a) + " lies within the " + margin +
+                                                " m safety margin of a no-fly zone.");
+    if (!m_field.pointIsSafe(b))
+        return makeError(ErrorCode::NoPath, "The point " + where(b) + " lies within the " + margin +
+                                                " m safety margin of a no-fly zone.");
+    if (m_field.segmentIsSafe(a, b))
+        return std::vector<Vec2>{};
+    // Dijkstra over the nodes plus a (index n) and b (index n + 1).
+    const int n = static_cast<int>(m_nodes.size());
+    std::vector<double> dist(static_cast<std::size_t>(n + 2), std::numeric_limits<double>::infinity());
+    std::vector<int> prev(static_cast<std::size_t>(n + 2), -1);
+    std::vector<char> visibleFromB(static_cast<std::size_t>(n), 0);
+    for (int i = 0; i < n; ++i)
+        visibleFromB[static_cast<std::size_t>(i)] = m_field.segmentIsSafe(m_nodes[static_cast<std::size_t>(i)], b);
+    using Item = std::pair<double, int>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<>> q;
+    dist[static_cast<std::size_t>(n)] = 0;
+    q.emplace(0.0, n);
+    while (!q.empty()) {
+        // Plain variables, not a structured binding: the lambda below captures them, which C++17
+        // allows only for variables (clang rejects captured bindings; GCC accepts them as an extension).
+        const double d = q.top().first;
+        const int u = q.top().second;
+        q.pop();
+        if (d > dist[static_cast<std::size_t>(u)])
+            continue;
+        if (u == n + 1)
+            break;
+        auto relax = [&](int v, double w) {
+            if (d + w < dist[static_cast<std::size_t>(v)]) {
+                dist[static_cast<std::size_t>(v)] = d + w;
+                prev[static_cast<std::size_t>(v)] = u;
+                q.emplace(d + w, v);
+            }
+        };
+        if (u == n) {
+            for (int i = 0; i < n; ++i)
+                if (m_field.segmentIsSafe(a, m_nodes[static_cast<std::size_t>(i)]))
+                    relax(i, (a - m_nodes[static_cast<std::size_t>(i)]).norm());
+            continue;
+        }
+        for (const auto& [v, w] : m_edges[static_cast<std::size_t>(u)])
+            relax(v, w);
+        if (visibleFromB[static_cast<std::size_t>(u)])
+            relax(n + 1, (m_nodes[static_cast<std::size_t>(u)] - b).norm());
+    }
+    if (prev[static_cast<std::size_t>(n + 1)] < 0)
+        return makeError(ErrorCode::NoPath, "No safe way from " + where(a) + " to " + where(b) +
+                                                " keeps the " + margin + " m margin around the no-fly zones.");
+    std::vector<Vec2> path;
+    for (int v = prev[static_cast<std::size_t>(n + 1)]; v != n; v = prev[static_cast<std::size_t>(v)])
+        path.push_back(m_nodes[static_cast<std::size_t>(v)]);
+    std::reverse(path.begin(), path.end());
+    return path;
+}
+
+} // namespace pf::geo

@@ -1,0 +1,61 @@
+// The no-fly model: zones with their safety margin, exact clearances and the shortest safe paths.
+#pragma once
+
+#include "core/geo/types.h"
+#include "core/result.h"
+
+#include <utility>
+#include <vector>
+
+namespace pf::geo {
+
+// No-fly zones with their safety margin, measured exactly (distances to the zones' edges) rather
+// than through a polygonised buffer, so that every stage agrees on what "safe" means.
+class NoFlyField {
+public:
+    NoFlyField() = default;
+    NoFlyField(std::vector<Polygon> zones, double marginM);
+
+    const std::vector<Polygon>& zones() const { return m_zones; }
+    double marginM() const { return m_margin; }
+    bool empty() const { return m_zones.empty(); }
+    // Slack granted below the margin: 1 cm + 0.5 % of it, the gap between a circle and the polygon
+    // GEOS uses for a buffer (8 segments per quarter), so points on such a buffer count as safe.
+    double tolerance() const { return 0.01 + 0.005 * m_margin; }
+
+    // Distance from p (or from the segment ab) to the nearest zone; 0 inside or across one.
+    double clearance(const Vec2& p) const;
+    double clearance(const Vec2& a, const Vec2& b) const;
+    // Inside or touching a zone is never safe, whatever the margin.
+    bool pointIsSafe(const Vec2& p) const { return isSafeClearance(clearance(p)); }
+    bool segmentIsSafe(const Vec2& a, const Vec2& b) const { return isSafeClearance(clearance(a, b)); }
+    bool isSafeClearance(double c) const { return c > 0.0 && c >= m_margin - tolerance(); }
+
+private:
+    std::vector<Polygon> m_zones;
+    std::vector<std::pair<Vec2, Vec2>> m_boxes; // per zone: min, max
+    double m_margin = 0.0;
+};
+
+// Shortest safe paths around the zones: a visibility graph over the vertices of the zones buffered
+// by a little more than the margin (so the graph's straight edges, chords of that buffer, still
+// keep the margin), searched with Dijkstra.
+class SafePathFinder {
+public:
+    explicit SafePathFinder(NoFlyField field = {});
+
+    const NoFlyField& field() const { return m_field; }
+    // The points strictly between a and b of the shortest safe path (empty when the straight
+    // segment is safe). Errors: a or b inside a margin, or no safe way around.
+    Result<std::vector<Vec2>> detour(const Vec2& a, const Vec2& b) const;
+    // The nearest safe point to p (p itself when it is safe): on the inflated margin's boundary.
+    Vec2 nearestSafePoint(const Vec2& p) const;
+
+private:
+    NoFlyField m_field;
+    std::vector<Vec2> m_nodes;
+    std::vector<std::vector<std::pair<int, double>>> m_edges;
+    MultiPolygon m_inflated;
+};
+
+} // namespace pf::geo

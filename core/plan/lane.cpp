@@ -1,0 +1,39 @@
+#include "core/plan/lane.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pf::plan {
+
+std::vector<geo::Vec2> stripPhotos(const geo::Vec2& a, const geo::Vec2& b, double spacing) {
+    const geo::Vec2 d = b - a;
+    const double len = d.norm();
+    if (!(spacing > 0) || !std::isfinite(spacing) || len == 0.0)
+        return {0.5 * (a + b)};
+    // A tolerance keeps a strip exactly k spacings long at k photos despite rounding.
+    const double k = std::ceil(len / spacing - 1e-9);
+    const int n = std::max(1, static_cast<int>(std::min(k, 1e9)));
+    const geo::Vec2 u = d / len, mid = 0.5 * (a + b);
+    std::vector<geo::Vec2> out;
+    out.reserve(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i)
+        out.push_back(mid + ((i - 0.5 * (n - 1)) * spacing) * u);
+    return out;
+}
+
+Lane makeLane(const geo::Vec2& a, const geo::Vec2& b, double spacing) {
+    Lane l;
+    l.stripStart = a;
+    l.stripEnd = b;
+    l.photos = stripPhotos(a, b, spacing);
+    const geo::Vec2 d = b - a;
+    if (d.squaredNorm() > 0) {
+        double h = std::atan2(d.x(), d.y()) * 180.0 / M_PI;
+        if (h < 0)
+            h += 360.0;
+        l.headingDeg = h >= 360.0 ? 0.0 : h;
+    }
+    return l;
+}
+
+} // namespace pf::plan

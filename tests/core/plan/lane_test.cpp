@@ -1,0 +1,41 @@
+#include "core/plan/lane.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace pf;
+using namespace pf::plan;
+using geo::Vec2;
+
+// A 100 m strip with a 19.9 m trigger distance: ceil(100 / 19.9) = 6 photos 19.9 m apart, centred,
+// so the first and last effective footprints (19.9 m long) reach past both ends of the strip.
+TEST(Lane, PhotosAtTheTriggerDistanceCentredOnTheStrip) {
+    const auto p = stripPhotos(Vec2(0, 0), Vec2(100, 0), 19.9);
+    ASSERT_EQ(p.size(), 6u);
+    for (std::size_t i = 1; i < p.size(); ++i)
+        EXPECT_NEAR((p[i] - p[i - 1]).norm(), 19.9, 1e-9);
+    EXPECT_NEAR(p.front().x() + p.back().x(), 100.0, 1e-9);
+    EXPECT_LE(p.front().x() - 19.9 / 2, 0.0);
+    EXPECT_GE(p.back().x() + 19.9 / 2, 100.0);
+    EXPECT_GT(p.front().x(), 0.0); // inside the strip: the lane turns at its last photo, not past the end
+    for (const auto& q : p)
+        EXPECT_NEAR(q.y(), 0.0, 1e-12);
+}
+
+// Exactly k spacings: k photos, not k + 1; a strip shorter than one spacing: one photo in its middle.
+TEST(Lane, ExactMultiplesAndShortStrips) {
+    EXPECT_EQ(stripPhotos(Vec2(0, 0), Vec2(0, 60), 20).size(), 3u);
+    const auto one = stripPhotos(Vec2(10, 10), Vec2(14, 13), 20);
+    ASSERT_EQ(one.size(), 1u);
+    EXPECT_NEAR((one[0] - Vec2(12, 11.5)).norm(), 0.0, 1e-12);
+    EXPECT_EQ(stripPhotos(Vec2(5, 5), Vec2(5, 5), 20).size(), 1u);
+}
+
+TEST(Lane, MakeLaneKeepsTheStripAndHeadsAlongIt) {
+    const Lane l = makeLane(Vec2(0, 100), Vec2(0, 0), 30);
+    EXPECT_NEAR(l.headingDeg, 180.0, 1e-9); // south
+    ASSERT_EQ(l.photos.size(), 4u);
+    EXPECT_GT(l.photos.front().y(), l.photos.back().y()); // in flight order
+    EXPECT_NEAR(makeLane(Vec2(0, 0), Vec2(1, 0), 30).headingDeg, 90.0, 1e-9);
+}
