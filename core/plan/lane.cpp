@@ -36,4 +36,24 @@ Lane makeLane(const geo::Vec2& a, const geo::Vec2& b, double spacing) {
     return l;
 }
 
+Lane makeLane(const geo::Vec2& a, const geo::Vec2& b, double spacing, const geo::Vec2& flyA,
+              const geo::Vec2& flyB) {
+    Lane l = makeLane(a, b, spacing);
+    const geo::Vec2 d = b - a;
+    const double len2 = d.squaredNorm();
+    if (len2 == 0.0)
+        return l;
+    const double ta = (flyA - a).dot(d) / len2, tb = (flyB - a).dot(d) / len2;
+    std::vector<geo::Vec2> kept;
+    kept.reserve(l.photos.size());
+    for (const auto& p : l.photos) {
+        const double t = (p - a).dot(d) / len2;
+        const geo::Vec2 q = t < ta ? flyA : (t > tb ? flyB : p);
+        if (kept.empty() || (kept.back() - q).norm() >= 0.01)
+            kept.push_back(q);
+    }
+    l.photos = std::move(kept);
+    return l;
+}
+
 } // namespace pf::plan

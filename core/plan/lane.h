@@ -30,4 +30,12 @@ std::vector<geo::Vec2> stripPhotos(const geo::Vec2& a, const geo::Vec2& b, doubl
 // A Lane from its strip: the photos by stripPhotos, the heading from a to b (north for a == b).
 Lane makeLane(const geo::Vec2& a, const geo::Vec2& b, double spacing);
 
+// The same when only [flyA, flyB] of the strip's line may be flown (a no-fly margin covers the strip's
+// ends: its ground is admissible and must be seen, but from outside the margin). flyA and flyB lie on
+// the segment ab, flyA nearer to a. A photo that stripPhotos puts beyond them moves to the nearer of
+// them, where the real footprint, longer than the trigger distance, still sees the margin's ground up
+// to half its length ahead; photos that then coincide (within 1 cm) become one. The spacing stays
+// exact between the photos that did not move.
+Lane makeLane(const geo::Vec2& a, const geo::Vec2& b, double spacing, const geo::Vec2& flyA, const geo::Vec2& flyB);
+
 } // namespace pf::plan

@@ -32,6 +32,22 @@ TEST(Lane, ExactMultiplesAndShortStrips) {
     EXPECT_EQ(stripPhotos(Vec2(5, 5), Vec2(5, 5), 20).size(), 1u);
 }
 
+// A margin covers the strip's last 8 m: the photo that would fall in it moves back to the margin's
+// edge; the others keep their places and spacing.
+TEST(Lane, PhotosInAMarginMoveToItsEdge) {
+    const Lane free = makeLane(Vec2(0, 0), Vec2(100, 0), 19.9);
+    const Lane cut = makeLane(Vec2(0, 0), Vec2(100, 0), 19.9, Vec2(0, 0), Vec2(92, 0));
+    ASSERT_EQ(free.photos.size(), cut.photos.size());
+    for (std::size_t i = 0; i + 1 < cut.photos.size(); ++i)
+        EXPECT_EQ(cut.photos[i], free.photos[i]);
+    ASSERT_GT(free.photos.back().x(), 92.0);
+    EXPECT_NEAR(cut.photos.back().x(), 92.0, 1e-12);
+    // Two photos pushed onto the same edge become one.
+    const Lane tight = makeLane(Vec2(0, 0), Vec2(100, 0), 19.9, Vec2(35, 0), Vec2(100, 0));
+    EXPECT_EQ(tight.photos.size(), free.photos.size() - 1);
+    EXPECT_NEAR(tight.photos.front().x(), 35.0, 1e-12);
+}
+
 TEST(Lane, MakeLaneKeepsTheStripAndHeadsAlongIt) {
     const Lane l = makeLane(Vec2(0, 100), Vec2(0, 0), 30);
     EXPECT_NEAR(l.headingDeg, 180.0, 1e-9); // south
