@@ -2,6 +2,7 @@
 
 #include "core/geo/polygon_ops.h"
 #include "core/plan/coverage_check.h"
+#include "core/route/lanes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -37,6 +38,10 @@ namespace {
 struct Slot {
     LocalWaypoint w;  // kind, heading, cell and the planned position
     Vec2 anchor{0, 0}; // the cell's flight position: safe by construction of the grid
+    // A lane's first or last photo: the flight positions of the lane's end cells up to its first (last)
+    // cell crossed safely by its line, in flight order: the way onto (off) the lane over the cell path's
+    // own safe moves when a straight leg onto or off it is unsafe. Empty for other slots.
+    std::vector<Vec2> laneIn, laneOut;
 };
 
 // Why a slid photo keeps its cell covered. The `along` photos of a cell split it into bands s = cell /
@@ -139,7 +144,8 @@ geo::Polygon rectangle(const Vec2& centre, double headingDeg, double acrossM, do
 } // namespace
 
 std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellPath& path,
-                                          const sensor::EffectiveFootprint& fp, PhotoPlacement* placement) {
+                                          const sensor::EffectiveFootprint& fp, PhotoPlacement* placement,
+                                          PhotoRule rule) {
     PhotoPlacement localPlacement;
     PhotoPlacement& rep = placement ? *placement : localPlacement;
     rep = {};
@@ -158,24 +164,25 @@ std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellP
     const double cell = g.cellSize();
     const PhotosPerCell ppc = photosPerCell(cell, fp);
     const double sAlong = cell / ppc.along, sAcross = cell / ppc.across;
-    // 1. Where each waypoint would go on the track.
+    // 1. Where each waypoint would go: lanes (or, by the paper's rule, every cell alone) and the turn
+    // and transit points of the cells flown over.
+    std::vector<PathGroup> groups;
+    if (rule == PhotoRule::Lanes) {
+        groups = cellPathGroups(g, path, fp);
+    } else {
+        for (std::size_t i = 0; i < n; ++i)
+            if (!path.revisit[i])
+                groups.push_back({false, static_cast<int>(i), static_cast<int>(i), {}, 0, 0});
+    }
     std::vector<Slot> slots;
     bool anyPhoto = false;
-    for (std::size_t i = 0; i < n; ++i) {
+    auto push = [&](const Slot& s) { slots.push_back(s); };
+    // Photos of one cell by the per-cell rule: the long side across `in`, spaced along it; rows across in
+    // a back-and-forth order.
+    auto perCellSlots = [&](std::size_t i) {
         const int c = path.cells[i];
         const Vec2 p = g.flightPosition(c);
         const Vec2 in = i > 0 ? stepDir(i - 1, i) : (n > 1 ? stepDir(0, 1) : ex);
-        const Vec2 outDir = i + 1 < n ? stepDir(i, i + 1) : in;
-        const bool turns = (in - outDir).norm() > 1e-9;
-        if (path.revisit[i]) {
-            if (turns || i == 0 || i + 1 == n) {
-                // Cells flown over before their photo (before the first photo of the path) are turn
-                // points; later ones are revisits.
-                slots.push_back({{p, headingDeg(outDir), anyPhoto ? WaypointKind::Transit : WaypointKind::Turn, c}, p});
-            }
-            continue;
-        }
-        // Photos: the long side across `in`, spaced along it; rows across in a back-and-forth order.
         const Vec2 right(in.y(), -in.x());
         const double h = headingDeg(in);
         for (int r = 0; r < ppc.across; ++r) {
@@ -183,10 +190,50 @@ std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellP
             for (int k0 = 0; k0 < ppc.along; ++k0) {
                 const int k = (r % 2 == 0) ? k0 : ppc.along - 1 - k0;
                 const double along = (k + 0.5) * sAlong - cell / 2;
-                slots.push_back({{p + along * in + across * right, h, WaypointKind::Photo, c}, p});
+                push(Slot{{p + along * in + across * right, h, WaypointKind::Photo, c}, p, {}, {}});
                 anyPhoto = true;
             }
         }
+    };
+    std::size_t gi = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const int c = path.cells[i];
+        if (path.revisit[i]) {
+            const Vec2 p = g.flightPosition(c);
+            const Vec2 in = i > 0 ? stepDir(i - 1, i) : (n > 1 ? stepDir(0, 1) : ex);
+            const Vec2 outDir = i + 1 < n ? stepDir(i, i + 1) : in;
+            const bool turns = (in - outDir).norm() > 1e-9;
+            if (turns || i == 0 || i + 1 == n) {
+                // Cells flown over before their photo (before the first photo of the path) are turn
+                // points; later ones are revisits.
+                push(Slot{{p, headingDeg(outDir), anyPhoto ? WaypointKind::Transit : WaypointKind::Turn, c}, p, {}, {}});
+            }
+            continue;
+        }
+        const PathGroup& grp = groups[gi++];
+        if (grp.lane) {
+            const auto& photos = grp.strip.photos;
+            const int first = path.cells[static_cast<std::size_t>(grp.first)];
+            const int last = path.cells[static_cast<std::size_t>(grp.last)];
+            for (std::size_t k = 0; k < photos.size(); ++k) {
+                // A photo belongs to the cell it is taken over (the lane's end cells at the ends).
+                const auto under = g.cellAt(photos[k]);
+                const int owner = under && *under >= 0 && g.needsVisit(*under) ? *under : (k == 0 ? first : last);
+                Slot s{{photos[k], grp.strip.headingDeg, WaypointKind::Photo, owner}, photos[k], {}, {}};
+                if (k == 0)
+                    for (int j = grp.first; j <= grp.firstClean; ++j)
+                        s.laneIn.push_back(g.flightPosition(path.cells[static_cast<std::size_t>(j)]));
+                if (k + 1 == photos.size())
+                    for (int j = grp.last; j >= grp.lastClean; --j)
+                        s.laneOut.push_back(g.flightPosition(path.cells[static_cast<std::size_t>(j)]));
+                push(s);
+            }
+            anyPhoto = true;
+        } else {
+            for (int j = grp.first; j <= grp.last; ++j)
+                perCellSlots(static_cast<std::size_t>(j));
+        }
+        i = static_cast<std::size_t>(grp.last);
     }
     // 2. Safe placement, in flight order: each slot knows where the one before it went.
     const Placer placer(g);
@@ -197,8 +244,33 @@ std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellP
                          !g.admissible().empty();
     std::vector<Vec2> cellPhotos; // photos placed so far for the current cell
     out.reserve(slots.size());
+    // The legs onto and off a lane: when the straight leg between the waypoint before and the lane's
+    // first photo, or between the lane's last photo and the waypoint after, is unsafe, the aircraft flies
+    // through the centre of the lane's end cell instead (on the lane's line, one safe grid move from the
+    // cell path's neighbouring cell).
+    const std::vector<Vec2>* offLane = nullptr; // the way off the lane whose last photo was output last
+    bool photoOut = false;
+    auto via = [&](const std::vector<Vec2>& pts, bool reversed, int cellIndex, const Vec2& towards) {
+        for (std::size_t j = 0; j < pts.size(); ++j) {
+            const Vec2& c = reversed ? pts[pts.size() - 1 - j] : pts[j];
+            const Vec2& next = j + 1 < pts.size() ? (reversed ? pts[pts.size() - 2 - j] : pts[j + 1]) : towards;
+            out.push_back({c, headingDeg(next - c), photoOut ? WaypointKind::Transit : WaypointKind::Turn, cellIndex});
+        }
+    };
     for (std::size_t k = 0; k < slots.size(); ++k) {
         LocalWaypoint w = slots[k].w;
+        if (offLane && !g.segmentIsSafe(out.back().pos, w.kind == WaypointKind::Photo ? slots[k].anchor : w.pos)) {
+            // laneOut runs from the lane's last cell back to its last clean one: flown in reverse.
+            via(*offLane, true, out.back().cell, w.pos);
+        }
+        offLane = nullptr;
+        if (!slots[k].laneIn.empty() && !out.empty() && !g.segmentIsSafe(out.back().pos, w.pos))
+            via(slots[k].laneIn, false, w.cell, w.pos);
+        if (w.kind == WaypointKind::Photo) {
+            photoOut = true;
+            if (!slots[k].laneOut.empty())
+                offLane = &slots[k].laneOut;
+        }
         if (w.kind != WaypointKind::Photo) {
             cellPhotos.clear();
             out.push_back(w);

@@ -1,4 +1,5 @@
-// Photo waypoints from a cell path (paper 001, section IV): several photos per cell along the track.
+// Photo waypoints from a cell path: straight lanes with photos at the trigger distance, or paper 001's
+// several photos per cell (section IV).
 #pragma once
 
 #include "core/grid/grid.h"
@@ -22,12 +23,25 @@ PhotosPerCell photosPerCell(double cellSizeM, const sensor::EffectiveFootprint& 
 // Heading of a direction in the local frame, clockwise from north (local +y), in [0, 360).
 double headingDeg(const geo::Vec2& dir);
 
+// Which rule places the photos of a cell path.
+enum class PhotoRule {
+    // Straight lanes (route/lanes.h): each straight run of photographed cells is one lane with photos at
+    // the trigger distance from one exact end to the other; cells next to a no-fly margin keep the
+    // per-cell photos. What every planner flies.
+    Lanes,
+    // Paper 001's rule alone: every cell gets its own photos around its flight position.
+    PerCell,
+};
+
 // The waypoints of a cell path, in flight order:
-// - a photographed cell gets its photos (kind Photo) with the sensor's long side across the direction of
-//   flight into the cell (out of it for the first cell): `along` photos spaced by cell / along <= the
-//   effective short side, centred on the cell's flight position so that together they cover the whole
-//   cell (the middle one sits on the flight position when `along` is odd). At a turn the aircraft turns
-//   at the cell's last photo.
+// - lanes (PhotoRule::Lanes): see cellPathGroups; a lane's photos carry the cell under them. The way
+//   from a lane's end to the next waypoint, and onto a lane, is straight when safe, else through the
+//   centre of the lane's end cell (on the lane's safe line), from where the cell path's moves lead on.
+// - a photographed cell outside a lane (and every cell under PhotoRule::PerCell) gets its photos (kind
+//   Photo) with the sensor's long side across the direction of flight into the cell (out of it for the
+//   first cell): `along` photos spaced by cell / along <= the effective short side, centred on the cell's
+//   flight position so that together they cover the whole cell (the middle one sits on the flight
+//   position when `along` is odd). At a turn the aircraft turns at the cell's last photo.
 // - a revisited cell gets no second photo: a Transit waypoint where the path changes direction there,
 //   and at the path's ends, keeps the transit on its safe cell-to-cell legs.
 // - a cell flown over before it is photographed (the way from the take-off cell to the start) gets a
@@ -45,7 +59,8 @@ double headingDeg(const geo::Vec2& dir);
 // than the cell (a side overlap below about 25 %), a slid photo may no longer see all of its share of
 // the cell's admissible ground: then one extra photo is taken at the safe point nearest to the planned
 // one if it sees some of it; it is safe too, but the legs to and from it may need the no-fly stage's
-// detours. With fp.real unset (zero sides) no extra photo is considered.
+// detours. With fp.real unset (zero sides) no extra photo is considered. Lane photos lie on their lane's
+// safe line and never slide.
 struct PhotoPlacement {
     int slid = 0;         // photos slid back along the track out of a no-fly margin
     int merged = 0;       // slid photos dropped because they coincided with another photo of the cell
@@ -53,7 +68,8 @@ struct PhotoPlacement {
     double maxSlideM = 0; // the longest slide
 };
 std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellPath& path,
-                                          const sensor::EffectiveFootprint& fp, PhotoPlacement* placement = nullptr);
+                                          const sensor::EffectiveFootprint& fp, PhotoPlacement* placement = nullptr,
+                                          PhotoRule rule = PhotoRule::Lanes);
 
 // The cell path flies back through photographed cells over grid moves (a dead end's way out, a lead-in
 // to where the photos begin). Between two waypoints with nothing to photograph in between, the

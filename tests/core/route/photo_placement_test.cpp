@@ -83,7 +83,7 @@ TEST(PhotoPlacement, PhotoInAMarginSlidesBackAlongTheTrackToTheMarginAndKeepsThe
     ASSERT_EQ(fx.grid.state(fx.grid.index(4, 0)), grid::CellState::Free);
     const auto fp = footprint(20, 10, 40, 30);
     PhotoPlacement placed;
-    const auto wps = photoWaypoints(fx.grid, fx.path, fp, &placed);
+    const auto wps = photoWaypoints(fx.grid, fx.path, fp, &placed, PhotoRule::PerCell);
     ASSERT_EQ(wps.size(), 10u);
     EXPECT_EQ(placed.slid, 1);
     EXPECT_EQ(placed.merged, 0);
@@ -115,6 +115,34 @@ TEST(PhotoPlacement, PhotoInAMarginSlidesBackAlongTheTrackToTheMarginAndKeepsThe
     EXPECT_GE(cov->coveredFraction, 0.9999);
 }
 
+// The same row as one lane: it ends at the margin, the last photo moved back to the margin's edge by the
+// lane rule (nothing left to slide), the other photos at the trigger distance, the area still covered.
+TEST(PhotoPlacement, LaneIntoAMarginEndsAtTheMarginAndKeepsTheAreaCovered) {
+    RowFixture fx(104.0);
+    const auto fp = footprint(20, 10, 40, 30);
+    PhotoPlacement placed;
+    const auto wps = photoWaypoints(fx.grid, fx.path, fp, &placed);
+    ASSERT_EQ(wps.size(), 10u);
+    EXPECT_EQ(placed.slid, 0);
+    for (std::size_t k = 0; k + 1 < wps.size(); ++k) {
+        EXPECT_NEAR(wps[k].pos.x(), 5.0 + 10.0 * static_cast<double>(k), 1e-9);
+        EXPECT_NEAR(wps[k].pos.y(), 10.0, 1e-9);
+    }
+    EXPECT_LT(wps.back().pos.x(), 94.0 + 1e-6);
+    EXPECT_GT(wps.back().pos.x(), 93.0);
+    EXPECT_NEAR(wps.back().pos.y(), 10.0, 1e-9);
+    EXPECT_TRUE(fx.grid.pointIsSafe(wps.back().pos));
+    const SafePathFinder finder(NoFlyField(fx.zones, 10));
+    SafetyReport rep;
+    auto safe = enforceNoFly(wps, finder, &rep);
+    ASSERT_TRUE(safe.ok());
+    EXPECT_EQ(rep.waypointsMoved, 0);
+    EXPECT_EQ(rep.detours, 0);
+    auto cov = plan::checkCoverage({fx.area}, realFootprints(wps, fp));
+    ASSERT_TRUE(cov.ok());
+    EXPECT_GE(cov->coveredFraction, 0.9999);
+}
+
 TEST(PhotoPlacement, TwoPhotosSlidOntoTheSamePointBecomeOne) {
     // Four photos per cell (at 82.5, 87.5, 92.5, 97.5 in the last cell); the margin ends at 91.8, so the
     // last two slide to the same point and the second is dropped.
@@ -122,7 +150,7 @@ TEST(PhotoPlacement, TwoPhotosSlidOntoTheSamePointBecomeOne) {
     ASSERT_EQ(fx.grid.state(fx.grid.index(4, 0)), grid::CellState::Free);
     const auto fp = footprint(20, 5, 30, 22);
     PhotoPlacement placed;
-    const auto wps = photoWaypoints(fx.grid, fx.path, fp, &placed);
+    const auto wps = photoWaypoints(fx.grid, fx.path, fp, &placed, PhotoRule::PerCell);
     EXPECT_EQ(placed.slid, 2);
     EXPECT_EQ(placed.merged, 1);
     EXPECT_EQ(countPhotos(wps), 19);
@@ -170,7 +198,7 @@ struct GeneratedStats {
 // cells the grid joins straight safe (except the legs of extra photos, which the detours fly), nothing
 // for the exact no-fly stage to move, no margin breached once it has added its detours. Returns the
 // coverage of the admissible area by the real footprints.
-GeneratedStats placeGeneratedMissions(unsigned seed, double sideLo, double sideHi) {
+GeneratedStats placeGeneratedMissions(unsigned seed, double sideLo, double sideHi, PhotoRule rule) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     GeneratedStats st;
@@ -202,7 +230,7 @@ GeneratedStats placeGeneratedMissions(unsigned seed, double sideLo, double sideH
             continue;
         ++st.shapes;
         PhotoPlacement placed;
-        const auto wps = photoWaypoints(*g, *path, fp, &placed);
+        const auto wps = photoWaypoints(*g, *path, fp, &placed, rule);
         st.slid += placed.slid;
         st.added += placed.added;
 
@@ -210,7 +238,17 @@ GeneratedStats placeGeneratedMissions(unsigned seed, double sideLo, double sideH
             EXPECT_TRUE(g->pointIsSafe(wps[k].pos)) << "waypoint " << k;
             if (placed.added == 0 && k > 0 &&
                 g->segmentIsSafe(g->flightPosition(wps[k - 1].cell), g->flightPosition(wps[k].cell))) {
-                EXPECT_TRUE(g->segmentIsSafe(wps[k - 1].pos, wps[k].pos)) << "leg to waypoint " << k;
+                EXPECT_TRUE(g->segmentIsSafe(wps[k - 1].pos, wps[k].pos)) << "leg to waypoint " << k << [&] {
+                    std::string s;
+                    for (std::size_t j = k >= 3 ? k - 3 : 0; j < std::min(wps.size(), k + 3); ++j)
+                        s += "\n  " + std::to_string(j) + " kind " + std::to_string(int(wps[j].kind)) + " cell " +
+                             std::to_string(wps[j].cell) + " (" + std::to_string(g->col(wps[j].cell)) + "," +
+                             std::to_string(g->row(wps[j].cell)) + ") pos " + std::to_string(wps[j].pos.x()) + " " +
+                             std::to_string(wps[j].pos.y()) + " fp " + std::to_string(g->flightPosition(wps[j].cell).x()) +
+                             " " + std::to_string(g->flightPosition(wps[j].cell).y()) + " state " +
+                             std::to_string(int(g->state(wps[j].cell)));
+                    return s;
+                }();
             }
         }
         const SafePathFinder finder(NoFlyField(zones, margin));
@@ -240,13 +278,16 @@ GeneratedStats placeGeneratedMissions(unsigned seed, double sideLo, double sideH
 // Usual overlaps (side >= 0.3): the real short side is at least the cell side, so a slid photo always
 // keeps its share of the cell in view: no extra photo, and coverage >= 0.995 on every mission.
 TEST(PhotoPlacement, GeneratedMissionsArePlacedSafeAndStayCovered) {
-    const GeneratedStats st = placeGeneratedMissions(20261122, 0.3, 0.8);
-    std::printf("usual overlaps: %d missions, %d photos slid, %d added, coverage min %.4f mean %.4f\n", st.shapes,
-                st.slid, st.added, st.minCoverage, st.meanCoverage);
-    EXPECT_GE(st.shapes, 30);
-    EXPECT_GT(st.slid, 0); // the generated zones do put photos in margins
-    EXPECT_EQ(st.added, 0);
-    EXPECT_GE(st.minCoverage, 0.995);
+    for (PhotoRule rule : {PhotoRule::PerCell, PhotoRule::Lanes}) {
+        const char* name = rule == PhotoRule::Lanes ? "lanes" : "per cell";
+        const GeneratedStats st = placeGeneratedMissions(20261122, 0.3, 0.8, rule);
+        std::printf("usual overlaps, %s: %d missions, %d photos slid, %d added, coverage min %.4f mean %.4f\n", name,
+                    st.shapes, st.slid, st.added, st.minCoverage, st.meanCoverage);
+        EXPECT_GE(st.shapes, 30) << name;
+        EXPECT_GT(st.slid, 0) << name; // the generated zones do put photos in margins
+        EXPECT_EQ(st.added, 0) << name;
+        EXPECT_GE(st.minCoverage, 0.995) << name;
+    }
 }
 
 // A low side overlap (< 0.2) makes the real short side shorter than the cell: slid photos may lose part
@@ -254,13 +295,16 @@ TEST(PhotoPlacement, GeneratedMissionsArePlacedSafeAndStayCovered) {
 // some ground whatever the placement (the ground deep in a margin is seen only from inside it); the
 // bounds below are what this placement keeps, measured with the independent check.
 TEST(PhotoPlacement, LowSideOverlapAddsPhotosBesideTheMargins) {
-    const GeneratedStats st = placeGeneratedMissions(20261122, 0.0, 0.2);
-    std::printf("low side overlap: %d missions, %d photos slid, %d added, coverage min %.4f mean %.4f\n", st.shapes,
-                st.slid, st.added, st.minCoverage, st.meanCoverage);
-    EXPECT_GE(st.shapes, 30);
-    EXPECT_GT(st.added, 0);
-    EXPECT_GE(st.minCoverage, 0.99);
-    EXPECT_GE(st.meanCoverage, 0.998);
+    for (PhotoRule rule : {PhotoRule::PerCell, PhotoRule::Lanes}) {
+        const char* name = rule == PhotoRule::Lanes ? "lanes" : "per cell";
+        const GeneratedStats st = placeGeneratedMissions(20261122, 0.0, 0.2, rule);
+        std::printf("low side overlap, %s: %d missions, %d photos slid, %d added, coverage min %.4f mean %.4f\n",
+                    name, st.shapes, st.slid, st.added, st.minCoverage, st.meanCoverage);
+        EXPECT_GE(st.shapes, 30) << name;
+        EXPECT_GT(st.added, 0) << name;
+        EXPECT_GE(st.minCoverage, 0.99) << name;
+        EXPECT_GE(st.meanCoverage, 0.998) << name;
+    }
 }
 
 // ---- end to end -------------------------------------------------------------------------------------

@@ -1,4 +1,5 @@
 #include "core/route/photo_waypoints.h"
+#include "core/plan/coverage_check.h"
 
 #include "core/plan/stride_planner.h"
 
@@ -34,13 +35,14 @@ TEST(PhotoWaypoints, PhotosPerCell) {
     EXPECT_EQ(photosPerCell(20, footprint(12, 20)).across, 2);
 }
 
+// Paper 001's rule: every cell alone.
 TEST(PhotoWaypoints, StraightRowSpacingAndHeading) {
     std::vector<std::uint8_t> mask(3, 1);
     const grid::Grid g = grid::Grid::fromMask(3, 1, mask, 24.0);
     plan::CellPath path;
     path.cells = {0, 1, 2};
     path.revisit = {false, false, false};
-    const auto wps = photoWaypoints(g, path, footprint(24, 13.5));
+    const auto wps = photoWaypoints(g, path, footprint(24, 13.5), nullptr, PhotoRule::PerCell);
     ASSERT_EQ(wps.size(), 6u);
     for (std::size_t k = 0; k < wps.size(); ++k) {
         EXPECT_EQ(wps[k].kind, WaypointKind::Photo);
@@ -59,7 +61,7 @@ TEST(PhotoWaypoints, EveryCellCoveredAlongTheTrack) {
     auto path = plan::planStride(g, {});
     ASSERT_TRUE(path.ok());
     const auto fp = footprint(30, 11);
-    const auto wps = photoWaypoints(g, *path, fp);
+    const auto wps = photoWaypoints(g, *path, fp, nullptr, PhotoRule::PerCell);
     std::map<int, std::vector<const LocalWaypoint*>> byCell;
     for (const auto& w : wps)
         if (w.kind == WaypointKind::Photo)
@@ -80,6 +82,63 @@ TEST(PhotoWaypoints, EveryCellCoveredAlongTheTrack) {
         }
         EXPECT_LE(lo, -15.0 + 1e-9);
         EXPECT_GE(hi, 15.0 - 1e-9);
+    }
+}
+
+// The same row as lanes: one lane 72 m long, photos the trigger distance apart (ceil(72 / 13.5) = 6 at
+// 13.5 m, centred), all on the row's centre line and heading east: the aircraft flies it straight.
+TEST(PhotoWaypoints, StraightRowIsOneLaneAtTheTriggerDistance) {
+    std::vector<std::uint8_t> mask(3, 1);
+    const grid::Grid g = grid::Grid::fromMask(3, 1, mask, 24.0);
+    plan::CellPath path;
+    path.cells = {0, 1, 2};
+    path.revisit = {false, false, false};
+    const auto wps = photoWaypoints(g, path, footprint(24, 13.5));
+    ASSERT_EQ(wps.size(), 6u);
+    for (std::size_t k = 0; k < wps.size(); ++k) {
+        EXPECT_EQ(wps[k].kind, WaypointKind::Photo);
+        EXPECT_DOUBLE_EQ(wps[k].headingDeg, 90.0);
+        EXPECT_NEAR(wps[k].pos.y(), 12.0, 1e-9);
+        EXPECT_NEAR(wps[k].pos.x(), 36.0 + 13.5 * (static_cast<double>(k) - 2.5), 1e-9);
+    }
+    // The first and last effective footprints reach the row's ends.
+    EXPECT_LE(wps.front().pos.x() - 13.5 / 2, 0.0);
+    EXPECT_GE(wps.back().pos.x() + 13.5 / 2, 72.0);
+}
+
+// Lanes on the planned paths of an area with a hole, at several grid angles: consecutive photos of a
+// lane (same heading, on one line) keep the trigger distance, every heading change comes at a lane's
+// end, and the real footprints cover the whole area.
+TEST(PhotoWaypoints, LanesKeepTheTriggerDistanceAndCoverTheArea) {
+    const geo::Polygon area{{{0, 0}, {260, 0}, {260, 170}, {0, 170}}, {{{90, 60}, {150, 60}, {150, 110}, {90, 110}}}};
+    for (double angle : {0.0, 17.0, 90.0, 133.0}) {
+        grid::GridOptions opt;
+        opt.cellSize = 30;
+        opt.angleDeg = angle;
+        auto g = grid::Grid::build(area, {}, opt);
+        ASSERT_TRUE(g.ok()) << g.error().message;
+        auto path = plan::planStride(*g, {});
+        ASSERT_TRUE(path.ok());
+        sensor::EffectiveFootprint fp = footprint(30, 11);
+        fp.real.longSideM = 30 / 0.8;
+        fp.real.shortSideM = 11 / 0.8;
+        const auto wps = photoWaypoints(*g, *path, fp);
+        std::vector<plan::PhotoFootprint> photos;
+        for (std::size_t k = 0; k < wps.size(); ++k) {
+            if (wps[k].kind != WaypointKind::Photo)
+                continue;
+            photos.push_back({wps[k].pos, wps[k].headingDeg, fp.real.longSideM, fp.real.shortSideM});
+            if (k == 0 || wps[k - 1].kind != WaypointKind::Photo || wps[k].headingDeg != wps[k - 1].headingDeg)
+                continue;
+            const double h = wps[k].headingDeg * M_PI / 180.0;
+            const geo::Vec2 dir(std::sin(h), std::cos(h)), step = wps[k].pos - wps[k - 1].pos;
+            if (std::fabs(step.x() * dir.y() - step.y() * dir.x()) < 1e-6 && step.dot(dir) > 0) {
+                EXPECT_NEAR(step.norm(), 11.0, 1e-6) << "angle " << angle << ", photo " << k;
+            }
+        }
+        auto cov = plan::checkCoverage({area}, photos);
+        ASSERT_TRUE(cov.ok());
+        EXPECT_GE(cov->coveredFraction, 0.9999) << "angle " << angle;
     }
 }
 
