@@ -186,7 +186,7 @@ int runPlan(const std::vector<std::string>& argv) {
         const auto& mt = a.metrics;
         std::snprintf(line, sizeof line, "%-20.20s %-9s %6.1f %6.1f %6.1f %6d %6d %9.0f %8.1f %7d %6d %5d\n",
                       a.aircraft.c_str(), planner, a.altitudeM, a.gridAngleDeg, a.cellSizeM, mt.photos, a.photosSaved,
-                      a.flightDistanceM, a.timeS / 60.0, static_cast<int>(a.sorties.size()), mt.turns, mt.jumps);
+                      a.flightDistanceM, a.timeS / 60.0, static_cast<int>(a.sorties.size()), a.flight.turns, mt.jumps);
         std::cout << line;
     }
     const auto& t = plan->totals;
@@ -197,7 +197,7 @@ int runPlan(const std::vector<std::string>& argv) {
         sorties += static_cast<int>(a.sorties.size());
     }
     std::snprintf(line, sizeof line, "%-20s %-9s %6s %6s %6s %6d %6d %9.0f %8.1f %7d %6d %5d\n", "total", "", "", "",
-                  "", t.photos, plan->photosSaved, dist, plan->makespanS / 60.0, sorties, t.turns, t.jumps);
+                  "", t.photos, plan->photosSaved, dist, plan->makespanS / 60.0, sorties, t.flightTurns, t.jumps);
     std::cout << line;
     std::snprintf(line, sizeof line,
                   "coverage %.2f %% (uncovered %.0f m2), makespan %.1f min (ideal %.1f min, x%.3f), no-fly "

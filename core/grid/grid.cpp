@@ -399,6 +399,25 @@ Result<Grid> GridBuilder::build(const geo::MultiPolygon& area, const std::vector
     if (!zoneUnion.empty())
         g.m_bufferedNoFly = opt.safetyMarginM > 0 ? geo::buffer(zoneUnion, opt.safetyMarginM / std::cos(M_PI / 16), 8)
                                                   : zoneUnion;
+    // Pockets: ground enclosed by margins that merge round it (zones a few metres apart, a U-shaped zone
+    // whose margin closes the U) is a hole of the buffered zones. No safe path leads into it, so it is
+    // flown like a margin: never entered, its ground photographed from outside as far as the
+    // footprints reach. The holes are filled; what they held of the admissible area is kept for reports.
+    {
+        geo::MultiPolygon pockets;
+        for (auto& z : g.m_bufferedNoFly) {
+            for (auto& h : z.holes)
+                pockets.push_back(geo::Polygon{std::move(h), {}});
+            z.holes.clear();
+        }
+        if (!pockets.empty()) {
+            for (const auto& p : pockets)
+                for (const auto& part : geo::intersection(g.m_admissible, p))
+                    g.m_pockets.push_back(part);
+            g.m_bufferedNoFly.insert(g.m_bufferedNoFly.end(), pockets.begin(), pockets.end());
+            g.m_bufferedNoFly = geo::unite(g.m_bufferedNoFly);
+        }
+    }
     for (const auto& z : g.m_bufferedNoFly)
         g.m_noFlyBoxes.push_back(geo::bounds(z));
 

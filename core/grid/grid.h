@@ -122,7 +122,12 @@ public:
 
     // The admissible area and buffered no-fly zones used to build the grid (local metres).
     const geo::MultiPolygon& admissible() const { return m_admissible; }
+    // The buffered no-fly zones with every pocket filled (see pockets()).
     const geo::MultiPolygon& bufferedNoFly() const { return m_bufferedNoFly; }
+    // The admissible ground inside pockets: holes of the buffered zones, enclosed by margins that merge
+    // round them, which no safe path reaches. They are treated as margin (never flown into); their
+    // ground is photographed from outside as far as the footprints reach.
+    const geo::MultiPolygon& pockets() const { return m_pockets; }
 
     // Approximate heap bytes held by the grid (for the memory budget).
     std::size_t memoryBytes() const;
@@ -141,6 +146,7 @@ private:
     std::vector<std::pair<int, geo::Vec2>> m_shifts;
     geo::MultiPolygon m_admissible;
     geo::MultiPolygon m_bufferedNoFly;
+    geo::MultiPolygon m_pockets;
     std::vector<geo::Box> m_noFlyBoxes; // bounding boxes of m_bufferedNoFly, to skip far zones fast
     double m_cos = 1.0;                 // cos/sin of the grid angle, cached for the cell transforms
     double m_sin = 0.0;

@@ -431,6 +431,9 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         for (std::size_t k = 0; k < n; ++k) {
             plan.aircraft[k].surveyWaypoints = std::move(photos[k].waypoints);
             plan.aircraft[k].photosSaved = saved->photosSaved[k];
+            // Where dropped photos leave only turn and transit points between two photos, fly straight.
+            if (saved->photosSaved[k] > 0)
+                route::straightenTransits(plan.aircraft[k].grid, plan.aircraft[k].surveyWaypoints);
         }
         plan.photosSaved = saved->totalSaved;
     }
@@ -553,6 +556,7 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         ap.metrics.photos = static_cast<int>(std::count_if(flown.begin(), flown.end(), [](const auto& w) {
             return w.kind == route::WaypointKind::Photo;
         }));
+        ap.flight = plan::flightTime(path, model);
         flownPaths.push_back(std::move(path));
     }
 
@@ -581,6 +585,11 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
             plan.warnings.push_back("the photos leave " + metres(cov->uncoveredAreaM2) + " m2 of the area (" +
                                     metres(100.0 * (1.0 - cov->coveredFraction), 1) + " %) unseen, in " +
                                     std::to_string(cov->patchCount) + " patch(es)");
+        geo::MultiPolygon pockets;
+        for (const auto& a : plan.aircraft)
+            pockets.insert(pockets.end(), a.grid.pockets().begin(), a.grid.pockets().end());
+        if (!pockets.empty())
+            plan.warnings.push_back(pocketWarning(geo::unite(pockets)));
         plan.noFlyViolations = plan::countNoFlyViolations(flownPaths, geom->noFly, opt.safetyMarginM).total();
         if (plan.noFlyViolations > 0)
             plan.warnings.push_back(std::to_string(plan.noFlyViolations) +
@@ -597,6 +606,7 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         t.pathLengthM += a.metrics.pathLengthM;
         t.distanceM += a.metrics.distanceM;
         t.turns += a.metrics.turns;
+        t.flightTurns += a.flight.turns;
         t.turnAngleDeg += a.metrics.turnAngleDeg;
         t.jumps += a.metrics.jumps;
         t.revisits += a.metrics.revisits;
@@ -768,6 +778,8 @@ std::string planMetricsJson(const MissionPlan& plan, const std::string& plannerN
         addMetrics(o, a.metrics);
         o.Add("time_s", a.timeS);
         o.Add("flight_distance_m", a.flightDistanceM);
+        o.Add("flight_turns", a.flight.turns);
+        o.Add("flight_turn_angle_deg", a.flight.turnAngleDeg);
         o.Add("sorties", static_cast<int>(a.sorties.size()));
         CPLJSONArray sorties;
         for (const auto& s : a.sorties) {
@@ -798,6 +810,7 @@ std::string planMetricsJson(const MissionPlan& plan, const std::string& plannerN
     total.Add("path_length_m", t.pathLengthM);
     total.Add("distance_m", t.distanceM);
     total.Add("turns", t.turns);
+    total.Add("flight_turns", t.flightTurns);
     total.Add("turn_angle_deg", t.turnAngleDeg);
     total.Add("jumps", t.jumps);
     total.Add("revisits", t.revisits);

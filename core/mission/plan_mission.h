@@ -6,6 +6,7 @@
 #include "core/grid/grid.h"
 #include "core/mission/mission.h"
 #include "core/plan/cell_path.h"
+#include "core/plan/flight_time.h"
 #include "core/plan/metrics.h"
 #include "core/result.h"
 #include "core/route/waypoint.h"
@@ -52,6 +53,8 @@ struct AircraftPlan {
     std::vector<SortieSummary> sorties; // one per battery; route.waypoints holds them in order
     std::vector<route::Route> sortieRoutes; // each sortie as a flight of its own (home to home)
     double timeS = 0.0;           // whole flight, home to home over every sortie, transit included
+    plan::FlightTime flight;      // the flown path (home, every waypoint, home between sorties, landing):
+                                  // its length, turns and time by the one model (timeS adds the sorties)
     double flightDistanceM = 0.0; // the same as a distance
     int photosSaved = 0;          // photos left out because another aircraft already takes them
     int detours = 0;              // legs replaced by a detour around a no-fly margin
@@ -66,8 +69,9 @@ struct PlanTotals {
     int photos = 0;
     double pathLengthM = 0.0;
     double distanceM = 0.0;
-    int turns = 0;
+    int turns = 0;               // of the planners' cell paths
     double turnAngleDeg = 0.0;
+    int flightTurns = 0;         // of the flown routes (AircraftPlan::flight)
     int jumps = 0;
     int revisits = 0;
     double estimatedTimeS = 0.0; // the longest aircraft's time: they fly at the same time

@@ -8,6 +8,16 @@
 
 namespace pf::mission {
 
+std::string pocketWarning(const geo::MultiPolygon& pockets) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%d pocket(s) with %.0f m2 of the area", static_cast<int>(pockets.size()),
+                  geo::area(pockets));
+    return std::string(buf) +
+           " lie enclosed by no-fly margins that merge round them: no safe path leads in, so they are not "
+           "entered; their ground is photographed from outside as far as the footprints reach (the plan's "
+           "coverage check reports what stays unseen)";
+}
+
 namespace {
 
 using geo::Problem;
@@ -284,6 +294,8 @@ ValidationReport validateMission(const Mission& m) {
                                          "zone: they are not flown over, and their ground is photographed from "
                                          "the neighbouring cells (the plan's coverage check reports any part left "
                                          "unseen)");
+                    if (!g->pockets().empty())
+                        warning(out, pocketWarning(g->pockets()));
                 }
             }
         }

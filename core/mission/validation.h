@@ -57,6 +57,10 @@ struct LocalGeometry {
 };
 Result<LocalGeometry> localGeometry(const Mission& m);
 
+// The warning for ground enclosed by merged no-fly margins (grid::Grid::pockets): how many, their area,
+// and that they are photographed from outside, never entered.
+std::string pocketWarning(const geo::MultiPolygon& pockets);
+
 // The flight altitude of an aircraft: its altitude, or the one giving its GSD. Errors name the aircraft.
 Result<double> resolvedAltitude(const AircraftConfig& a);
 

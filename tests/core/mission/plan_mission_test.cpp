@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <tuple>
 
 namespace pf::mission {
 namespace {
@@ -388,6 +389,59 @@ TEST(PlanCli, BadInputs) {
     EXPECT_FALSE(std::filesystem::exists("/tmp/pf_never_written"));
     EXPECT_EQ(runCli("plan " + demo + " --format kml", &err), 2);
     EXPECT_NE(err.find("--format: needs --out DIR"), std::string::npos) << err;
+}
+
+} // namespace
+} // namespace pf::mission
+
+namespace pf::mission {
+namespace {
+
+// Local metres around the demo site as WGS84 (for hand-made test missions).
+geo::GeoPolygon localRect(double x0, double y0, double x1, double y1) {
+    const double lon0 = 8.33, lat0 = 49.01;
+    const double kx = 1.0 / (111320.0 * std::cos(lat0 * M_PI / 180)), ky = 1.0 / 110540.0;
+    geo::GeoPolygon p;
+    p.outer = {{lon0 + x0 * kx, lat0 + y0 * ky}, {lon0 + x1 * kx, lat0 + y0 * ky}, {lon0 + x1 * kx, lat0 + y1 * ky},
+               {lon0 + x0 * kx, lat0 + y1 * ky}};
+    return p;
+}
+
+// A U-shaped zone whose 8 m wide opening the 5 m margins close: the 40 x 40 m inside is a pocket no safe
+// path reaches. The plan must still be made (it used to stop with "No safe way ..."), never enter the
+// pocket, warn about it with its area, and see its ground from outside as far as the footprints reach.
+TEST(PlanMission, PocketClosedByMarginsIsPhotographedFromOutsideNotEntered) {
+    Mission m = demoMission();
+    m.noFlyZones.clear();
+    m.area = localRect(0, 0, 300, 240);
+    for (auto [x0, y0, x1, y1] : {std::tuple{100.0, 95.0, 105.0, 145.0}, std::tuple{100.0, 140.0, 150.0, 145.0},
+                                  std::tuple{145.0, 95.0, 150.0, 145.0}, std::tuple{100.0, 95.0, 121.0, 100.0},
+                                  std::tuple{129.0, 95.0, 150.0, 100.0}}) {
+        NoFlyZone z;
+        z.name = "wall";
+        z.polygon = localRect(x0, y0, x1, y1);
+        m.noFlyZones.push_back(z);
+    }
+    m.home = localRect(-20, -20, -19, -19).outer[0];
+    m.options.safetyMarginM = 5;
+    for (PlannerKind kind : {PlannerKind::Stride, PlannerKind::Raster, PlannerKind::Wavefront}) {
+        m.options.planner = kind;
+        auto plan = planMission(m);
+        ASSERT_TRUE(plan.ok()) << plan.error().message;
+        bool warned = false;
+        for (const auto& w : plan->warnings)
+            warned = warned || w.find("pocket") != std::string::npos;
+        EXPECT_TRUE(warned);
+        EXPECT_EQ(plan->noFlyViolations, 0);
+        const auto& a = plan->aircraft.front();
+        ASSERT_FALSE(a.grid.pockets().empty());
+        // Nothing is flown inside the pocket (x 105..145, y 100..140 in the mission's frame).
+        for (const auto& w : a.localWaypoints)
+            EXPECT_FALSE(geo::contains(a.grid.pockets(), w.pos)) << w.pos.transpose();
+        // All but the pocket's middle is seen: the pocket is 32 x 32 m of admissible ground, the
+        // photos reach about 10 m into it from beyond its 5 m margin.
+        EXPECT_GE(plan->coverageRatio, 0.99);
+    }
 }
 
 } // namespace
