@@ -2,7 +2,6 @@
 
 #include "core/geo/polygon_ops.h"
 #include "core/geo/prepared_region.h"
-#include "core/plan/coverage_check.h"
 
 #include <algorithm>
 #include <cmath>
@@ -37,8 +36,6 @@ public:
         const double a = g.angleDeg() * M_PI / 180.0;
         m_ex = Vec2(std::cos(a), std::sin(a));
         m_ey = Vec2(-std::sin(a), std::cos(a));
-        if (!g.admissible().empty())
-            m_region.emplace(g.admissible());
     }
 
     std::vector<PathGroup> run() {
@@ -126,27 +123,62 @@ private:
         return s.dc * m_ex + s.dr * m_ey;
     }
 
-    // Along-line extent [lo, hi] (relative to the cell's centre, along u) of the admissible ground of the
-    // cell: the whole cell inside the area, its exact part on a boundary.
+    // Along-line extent [lo, hi] (relative to the cell's centre, along u) of the cell's ground inside the
+    // area: each outer ring of the admissible area clipped to the cell's square (Sutherland-Hodgman;
+    // the clipped points span exactly the ring's part in the square). Holes (the no-fly zones) are left
+    // out: where a zone cuts an end cell, the lane's line enters its margin and the lane ends at the
+    // margin's edge instead (emit), which is never further than the zone.
     std::pair<double, double> groundExtent(int c, const Vec2& u) const {
         const double h = m_g.cellSize() / 2;
-        if (!m_region)
+        const geo::MultiPolygon& adm = m_g.admissible();
+        if (adm.empty())
             return {-h, h};
-        const geo::Polygon square{m_g.cellCorners(c), {}};
-        if (m_region->contains(square))
-            return {-h, h};
-        const geo::MultiPolygon part = m_region->intersection(square);
+        const Vec2 centre = m_g.cellCenter(c), v(-u.y(), u.x());
+        const geo::Box box = geo::bounds(m_g.cellCorners(c));
         double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-        const Vec2 centre = m_g.cellCenter(c);
-        for (const auto& poly : part)
-            for (const auto& v : poly.outer) {
-                const double t = (v - centre).dot(u);
-                lo = std::min(lo, t);
-                hi = std::max(hi, t);
+        std::vector<Vec2> a, b;
+        for (const auto& poly : adm) {
+            if (!geo::bounds(poly.outer).intersects(box))
+                continue;
+            a.clear();
+            for (const auto& p : poly.outer)
+                a.emplace_back((p - centre).dot(u), (p - centre).dot(v));
+            for (int axis = 0; axis < 2 && !a.empty(); ++axis)
+                for (double side : {-1.0, 1.0}) {
+                    clip(a, b, axis, side * h, side < 0);
+                    a.swap(b);
+                }
+            for (const auto& q : a) {
+                lo = std::min(lo, q.x());
+                hi = std::max(hi, q.x());
             }
+        }
         if (!(lo <= hi))
             return {-h, h};
         return {std::max(-h, lo), std::min(h, hi)};
+    }
+
+    // Sutherland-Hodgman clip of a ring against coord(axis) >= v (keepAbove) or <= v.
+    static void clip(const std::vector<Vec2>& in, std::vector<Vec2>& out, int axis, double v, bool keepAbove) {
+        out.clear();
+        if (in.empty())
+            return;
+        auto inside = [&](const Vec2& p) { return keepAbove ? p[axis] >= v : p[axis] <= v; };
+        Vec2 prev = in.back();
+        bool prevIn = inside(prev);
+        for (const auto& cur : in) {
+            const bool curIn = inside(cur);
+            if (curIn != prevIn) {
+                const double t = (v - prev[axis]) / (cur[axis] - prev[axis]);
+                Vec2 x = prev + t * (cur - prev);
+                x[axis] = v;
+                out.push_back(x);
+            }
+            if (curIn)
+                out.push_back(cur);
+            prev = cur;
+            prevIn = curIn;
+        }
     }
 
     void emit(const Piece& p, std::vector<PathGroup>& out) const {
@@ -251,30 +283,44 @@ private:
     }
 
     // True if the photos of the lane with strip [a, b] flown over [flyA, flyB] see all of cell c's
-    // admissible ground through their real footprints.
+    // admissible ground through their real footprints. The footprints are aligned with the lane and at
+    // least the cell wide across it (the cell is an effective side, the real long side longer), so only
+    // the positions along the lane matter: every stretch of the cell along u that no footprint reaches
+    // must hold no admissible ground (tested on the prepared region, 1 cm inside the stretch so that a
+    // boundary running along it does not count).
     bool coversCell(int c, const Vec2& a, const Vec2& b, const Vec2& flyA, const Vec2& flyB, const Vec2& u) const {
-        if (!m_region || !(m_fp.real.longSideM > 0) || !(m_fp.real.shortSideM > 0))
+        const double h = m_g.cellSize() / 2;
+        if (m_g.admissible().empty() || !(m_fp.real.shortSideM > 0) || m_fp.real.longSideM < m_g.cellSize())
             return false;
+        if (!m_region) // built on first use: most paths never need it
+            m_region.emplace(m_g.admissible());
         if ((flyB - flyA).dot(u) <= 0)
             return false; // nothing of the line is flyable
-        const geo::Polygon square{m_g.cellCorners(c), {}};
-        geo::MultiPolygon rest = m_region->intersection(square);
-        const double cellArea = m_g.cellSize() * m_g.cellSize();
-        if (geo::area(rest) <= 1e-3 * cellArea)
-            return true;
         const plan::Lane lane = plan::makeLane(a, b, m_spacing, flyA, flyB);
-        const Vec2 centre = m_g.cellCenter(c);
-        const double reach = 0.5 * (m_g.cellSize() + m_fp.real.shortSideM) + 1e-6;
+        const Vec2 centre = m_g.cellCenter(c), v(-u.y(), u.x());
+        std::vector<std::pair<double, double>> seen;
         for (const auto& ph : lane.photos) {
-            if (std::fabs((ph - centre).dot(u)) > reach)
-                continue;
-            const geo::Ring fpRing =
-                plan::footprintRing({ph, lane.headingDeg, m_fp.real.longSideM, m_fp.real.shortSideM});
-            rest = geo::difference(rest, geo::MultiPolygon{geo::Polygon{fpRing, {}}});
-            if (rest.empty())
-                break;
+            const double t = (ph - centre).dot(u);
+            seen.emplace_back(t - m_fp.real.shortSideM / 2, t + m_fp.real.shortSideM / 2);
         }
-        return geo::area(rest) <= 1e-3 * cellArea;
+        std::sort(seen.begin(), seen.end());
+        constexpr double kIn = 0.01;
+        auto groundIn = [&](double t0, double t1) {
+            if (t1 - t0 <= 2 * kIn)
+                return false;
+            const geo::Ring r{centre + (t0 + kIn) * u + (-h + kIn) * v, centre + (t1 - kIn) * u + (-h + kIn) * v,
+                              centre + (t1 - kIn) * u + (h - kIn) * v, centre + (t0 + kIn) * u + (h - kIn) * v};
+            return m_region->intersects(geo::Polygon{r, {}});
+        };
+        double from = -h; // everything of the cell before `from` along u is seen
+        for (const auto& [s0, s1] : seen) {
+            if (s0 > from && groundIn(from, std::min(s0, h)))
+                return false;
+            from = std::max(from, s1);
+            if (from >= h)
+                return true;
+        }
+        return !groundIn(from, h);
     }
 
     const grid::Grid& m_g;
@@ -282,7 +328,7 @@ private:
     sensor::EffectiveFootprint m_fp;
     double m_spacing;
     Vec2 m_ex{1, 0}, m_ey{0, 1};
-    std::optional<geo::PreparedRegion> m_region;
+    mutable std::optional<geo::PreparedRegion> m_region;
 };
 
 } // namespace
