@@ -46,10 +46,11 @@ std::string fmt(const char* f, double v) {
     return b;
 }
 
+// A table column: `s` padded to `w` characters (right-aligned unless `left`), then a space.
 std::string pad(std::string s, std::size_t w, bool left = false) {
-    if (s.size() >= w)
-        return s + ' ';
-    return left ? s + std::string(w - s.size(), ' ') : std::string(w - s.size(), ' ') + s;
+    if (s.size() < w)
+        s = left ? s + std::string(w - s.size(), ' ') : std::string(w - s.size(), ' ') + s;
+    return s + ' ';
 }
 
 } // namespace
@@ -340,14 +341,14 @@ std::string surveyTable(const std::vector<SurveyComparison>& areas) {
         AreaSet set;
         const char* what;
     };
-    for (const Named& n : {Named{AreaSet::All, "all %d areas"}, Named{AreaSet::WithoutZones, "the %d areas without no-fly zones"},
-                           Named{AreaSet::WithZones, "the %d areas with no-fly zones"}}) {
+    for (const Named& n : {Named{AreaSet::All, "all %d area%s"}, Named{AreaSet::WithoutZones, "the %d area%s without no-fly zones"},
+                           Named{AreaSet::WithZones, "the %d area%s with no-fly zones"}}) {
         const auto sum = summariseSurvey(areas, n.set);
         const auto lm = summariseLawnmower(areas, n.set);
         if (lm.areas == 0 || (n.set != AreaSet::All && lm.areas == static_cast<int>(areas.size())))
             continue;
         char title[128];
-        std::snprintf(title, sizeof title, n.what, lm.areas);
+        std::snprintf(title, sizeof title, n.what, lm.areas, lm.areas == 1 ? "" : "s");
         out += std::string("\nMedian over ") + title + ", planner / lawnmower:\n";
         out += pad("", 44, true);
         for (const auto& s : sum)
@@ -380,7 +381,18 @@ std::string surveyTable(const std::vector<SurveyComparison>& areas) {
                       fmt("%.1f", lm.medianLegsCrossing).c_str());
         out += line;
     }
-    return out;
+    // The columns end in a space: none at the end of a line.
+    std::string trimmed, line;
+    for (char ch : out) {
+        if (ch != '\n') {
+            line += ch;
+            continue;
+        }
+        line.erase(line.find_last_not_of(' ') + 1);
+        trimmed += line + '\n';
+        line.clear();
+    }
+    return trimmed + line;
 }
 
 std::string surveyCsv(const std::vector<SurveyComparison>& areas) {

@@ -159,9 +159,11 @@ struct ZoneGroup {
     std::string kind;
 };
 
+// Kinds drawn per group: 8 % pockets, 10 % pairs, 10 % U-shaped zones, 30 % circles, 42 % rectangles
+// (a pocket or pair only while that many zones remain to be placed).
 ZoneGroup zoneGroup(Rng& rng, int remaining, double marginM, double size) {
     const double pick = rng.uniform(0.0, 1.0);
-    if (pick < 0.15 && remaining >= 4) {
+    if (pick < 0.08 && remaining >= 4) {
         // Four bars around a square, gaps at the corners narrower than two margins.
         const double q = rng.uniform(2.4, 6.0) * marginM, t = rng.uniform(5.0, 10.0) * size;
         const double g = rng.uniform(0.6, 2.4) * marginM;
@@ -169,20 +171,20 @@ ZoneGroup zoneGroup(Rng& rng, int remaining, double marginM, double size) {
                  rect(-t, g / 2, 0, q - g / 2)},
                 "pocket"};
     }
-    if (pick < 0.30 && remaining >= 2) {
+    if (pick < 0.18 && remaining >= 2) {
         const double g = rng.uniform(0.4, 2.0) * marginM;
         const double a = rng.uniform(8.0, 40.0) * size, b = rng.uniform(8.0, 40.0) * size;
         const double c = rng.uniform(8.0, 40.0) * size;
         return {{rect(-a, 0, 0, b), rect(g, 0, g + c, b * rng.uniform(0.6, 1.4))}, "pair"};
     }
-    if (pick < 0.45) {
+    if (pick < 0.28) {
         // A U whose opening the margin closes.
         const double g = rng.uniform(0.6, 1.6) * marginM, t = rng.uniform(5.0, 12.0) * std::max(size, 0.5);
         const double h = rng.uniform(20.0, 45.0) * size + t, tb = rng.uniform(5.0, 10.0) * std::max(size, 0.5);
         const double w = g + 2 * t;
         return {{{{0, 0}, {w, 0}, {w, h}, {w - t, h}, {w - t, tb}, {t, tb}, {t, h}, {0, h}}}, "U"};
     }
-    if (pick < 0.70) {
+    if (pick < 0.58) {
         const double r = rng.uniform(6.0, 25.0) * size;
         geo::Ring c;
         for (int i = 0; i < 24; ++i)

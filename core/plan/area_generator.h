@@ -41,6 +41,7 @@ struct AreaGeneratorOptions {
 // - "pair": two rectangles 2-10 m apart, whose margins merge;
 // - "pocket": four bars around a square of 12-30 m with gaps of 2-8.5 m at the corners: the margins
 //   merge into a closed ring and the square inside can only be photographed from outside it.
+// Each group of zones is a pocket (8 %), a pair (10 %), a U (10 %), a circle (30 %) or a rectangle.
 // Zones lie inside the area, at least 2 m from each other (except within a pair or pocket, by
 // design), and cover at most a quarter of it.
 struct GeneratedArea {

@@ -121,22 +121,31 @@ std::vector<geo::Vec2> withHome(const std::vector<geo::Vec2>& flight, const std:
     return pts;
 }
 
-// The Survey's trigger points: at the entry, then every `spacing` while still on the transect.
+// A last trigger point closer than this to the exit is the exit photo itself.
+constexpr double kSamePhotoM = 0.01;
+
+// The Survey's trigger points: one at the entry (the trigger starts with an immediate photo), one every
+// `spacing` while still on the transect, and one at the exit (the trigger stops with an immediate photo).
 std::vector<geo::Vec2> triggerPoints(const geo::Vec2& a, const geo::Vec2& b, double spacing) {
     const geo::Vec2 d = b - a;
     const double len = d.norm();
     const int n = static_cast<int>(std::floor(len / spacing + 1e-9)) + 1;
     std::vector<geo::Vec2> out;
-    out.reserve(static_cast<std::size_t>(n));
+    out.reserve(static_cast<std::size_t>(n) + 1);
     for (int i = 0; i < n; ++i)
-        out.push_back(a + (i * spacing / len) * d);
+        out.push_back(a + (len > 0 ? i * spacing / len : 0.0) * d);
+    if ((b - out.back()).norm() > kSamePhotoM)
+        out.push_back(b);
     return out;
 }
 
 int photoCount(const std::vector<Transect>& ts, double spacing) {
     int n = 0;
-    for (const auto& t : ts)
-        n += static_cast<int>(std::floor((t.b - t.a).norm() / spacing + 1e-9)) + 1;
+    for (const auto& t : ts) {
+        const double len = (t.b - t.a).norm();
+        const double k = std::floor(len / spacing + 1e-9);
+        n += static_cast<int>(k) + 1 + (len - k * spacing > kSamePhotoM ? 1 : 0);
+    }
     return n;
 }
 
@@ -228,9 +237,15 @@ Result<LawnmowerPlan> planLawnmower(const geo::MultiPolygon& area, const Lawnmow
         // The fastest candidate whose photos see enough of the area; the best-covering one if none does.
         CoverageCheckOptions co;
         co.resolutionM = kSearchCoverageResolutionM;
-        const std::size_t n = std::min(candidates.size(), kMaxCoverageChecks);
-        for (std::size_t i = 0; i < n; ++i) {
+        // An angle whose fastest entry misses the target is not tried with its other entries (they fly
+        // the same transects; only the trigger points shift).
+        std::vector<char> failed(angles.size(), 0);
+        std::size_t checks = 0;
+        for (std::size_t i = 0; i < candidates.size() && checks < kMaxCoverageChecks; ++i) {
             const Candidate& c = candidates[i];
+            if (failed[c.angleIndex])
+                continue;
+            ++checks;
             std::vector<PhotoFootprint> fps;
             for (const auto& t : flownTransects(perAngle[c.angleIndex], c.entry)) {
                 const double heading = makeLane(t.a, t.b, o.photoSpacingM).headingDeg;
@@ -249,6 +264,7 @@ Result<LawnmowerPlan> planLawnmower(const geo::MultiPolygon& area, const Lawnmow
                 coverage = cov->coveredFraction;
                 break;
             }
+            failed[c.angleIndex] = 1;
         }
     }
     const Candidate& best = candidates[chosen];

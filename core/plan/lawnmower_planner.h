@@ -27,7 +27,7 @@ struct LawnmowerOptions {
     // The real ground footprint of one photo across and along the track. When both are set and the
     // angle is searched, the fastest angle and entry whose photos see at least minCoverage of the area
     // are chosen (a degree off an edge often flies a little shorter and leaves corners unseen: no
-    // operator would pick it); the best-covering of the 40 fastest when none does.
+    // operator would pick it); the best-covering of the 40 fastest angles when none does.
     double footprintAcrossM = 0.0;
     double footprintAlongM = 0.0;
     double minCoverage = 0.995;
@@ -57,9 +57,10 @@ struct LawnmowerPlan {
 //   it edge to edge (the Survey's grid phase is arbitrary; this is its best case);
 // - boustrophedon order, each transect extended by `turnaroundM` at both ends, the legs between
 //   transects straight;
-// - the camera triggers by distance: the first photo where the flown transect enters the area, then one
-//   every `photoSpacingM` up to where it leaves (floor(length / spacing) + 1 photos per transect;
-//   no photos in the turnarounds);
+// - the camera triggers by distance on each transect: the trigger starts with a photo where the flown
+//   transect enters the area, takes one every `photoSpacingM`, and stops with a photo where it leaves
+//   (floor(length / spacing) + 2 photos, one fewer when the length is a whole number of spacings; none
+//   in the turnarounds). The exit photo is what keeps the far end of every transect covered;
 // - the entry corner (first transect and its direction, the four choices the Survey offers) and, when
 //   `angleDeg` is unset, the angle (every degree and every edge direction of the area) are those with
 //   the least flight time by `flightTime` (to the millisecond; ties: fewer photos, then the entry nearest

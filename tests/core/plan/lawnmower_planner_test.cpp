@@ -36,7 +36,8 @@ void expectNear(const geo::Vec2& a, const geo::Vec2& b, const std::string& what)
 
 // 200 x 100 m, transects along x at the spacings: ceil(100 / 27.7) = 4 transects centred
 // across the 100 m (first 8.45 m from the edge), each 200 m long with floor(200 / 19.9) + 1 = 11 photos
-// from its entry; the home south-west of the area makes the first transect the southern one, flown east.
+// from its entry and one at its exit, 1 m after the last; the home south-west of the area makes the
+// first transect the southern one, flown east.
 TEST(Lawnmower, RectangleMatchesHandComputedTransects) {
     LawnmowerOptions o = options(27.7, 19.9);
     o.angleDeg = 0;
@@ -44,7 +45,7 @@ TEST(Lawnmower, RectangleMatchesHandComputedTransects) {
     auto p = planLawnmower(rectangle(200, 100), o);
     ASSERT_TRUE(p.ok()) << p.error().message;
     ASSERT_EQ(p->transects.size(), 4u);
-    EXPECT_EQ(p->photos, 44);
+    EXPECT_EQ(p->photos, 48);
     EXPECT_DOUBLE_EQ(p->angleDeg, 0.0);
     const double ys[] = {8.45, 36.15, 63.85, 91.55};
     for (int k = 0; k < 4; ++k) {
@@ -53,10 +54,11 @@ TEST(Lawnmower, RectangleMatchesHandComputedTransects) {
         expectNear(l.stripStart, {east ? 0.0 : 200.0, ys[k]}, "entry " + std::to_string(k));
         expectNear(l.stripEnd, {east ? 200.0 : 0.0, ys[k]}, "exit " + std::to_string(k));
         EXPECT_DOUBLE_EQ(l.headingDeg, east ? 90.0 : 270.0);
-        ASSERT_EQ(l.photos.size(), 11u);
-        // The Survey's trigger: the first photo at the entry, then every trigger distance.
-        for (std::size_t j = 0; j < l.photos.size(); ++j)
+        ASSERT_EQ(l.photos.size(), 12u);
+        // The Survey's trigger: the first photo at the entry, then every trigger distance, one at the exit.
+        for (std::size_t j = 0; j < 11; ++j)
             expectNear(l.photos[j], {east ? 19.9 * j : 200.0 - 19.9 * j, ys[k]}, "photo");
+        expectNear(l.photos.back(), l.stripEnd, "exit photo");
     }
     // Turnaround 10 m beyond each end, the legs between transects straight.
     ASSERT_EQ(p->flight.size(), 16u);
@@ -74,8 +76,8 @@ TEST(Lawnmower, RectangleMatchesHandComputedTransects) {
 }
 
 // An L of 200 x 200 m without its north-east quarter, transects along x, track 25 m and trigger 20 m:
-// 8 transects at y = 12.5 + 25 k; the four southern ones run 200 m (11 photos, a length of exactly 10
-// trigger distances), the four northern ones 100 m (6 photos).
+// 8 transects at y = 12.5 + 25 k; the four southern ones run 200 m (11 photos: a length of exactly 10
+// trigger distances puts the last one on the exit), the four northern ones 100 m (6 photos).
 TEST(Lawnmower, LShapeMatchesHandComputedTransects) {
     const geo::MultiPolygon l{geo::Polygon{{{0, 0}, {200, 0}, {200, 100}, {100, 100}, {100, 200}, {0, 200}}, {}}};
     LawnmowerOptions o = options(25, 20);
