@@ -245,6 +245,9 @@ int runEvalSurvey(const std::vector<std::string>& argv) {
         in.fromMissionFile = true;
         if (auto st = applyMissionFlags(*args, in); !st)
             return reportError(st.error());
+        if (i == 0)
+            for (const auto& note : in.notes)
+                std::cerr << "note: " << note << '\n';
         if (in.mission.aircraft.size() != 1)
             return reportError("eval --survey compares the planners for one aircraft: give at most one --aircraft");
         const auto report = mission::validateMission(in.mission);
@@ -257,7 +260,7 @@ int runEvalSurvey(const std::vector<std::string>& argv) {
         std::cerr << "[" << i + 1 << "/" << areas.size() << "] " << area.name << ": lawnmower "
                   << fixed(c->lawnmower.timeS, 0) << " s";
         for (const auto& r : c->planners)
-            std::cerr << ", " << mission::plannerName(r.kind) << " "
+            std::cerr << ", " << mission::plannerKindName(r.kind) << " "
                       << (r.m.ok ? fixed(mission::ratiosTo(r.m, *c).time, 2) + "x" : std::string("failed"));
         std::cerr << '\n';
         results.push_back(std::move(c).value());

@@ -121,7 +121,7 @@ int runPlan(const std::vector<std::string>& argv) {
         if (std::find(printed.begin(), printed.end(), w) == printed.end())
             std::cerr << "photoflight-cli: warning: " << w << '\n';
 
-    const char* planner = mission::plannerName(m.options.planner);
+    const char* planner = mission::plannerKindName(m.options.planner);
     std::vector<std::string> written;
     if (const auto out = args->value("out")) {
         std::error_code ec;

@@ -190,7 +190,7 @@ int writeSurveyCharts(const std::vector<mission::SurveyComparison>& areas, const
                 drawPlan(p, c, v, panel, L, QColor(90, 90, 90), l1, l2);
             } else {
                 const auto& r = c.planners[k];
-                const char* name = mission::plannerName(r.kind);
+                const char* name = mission::plannerKindName(r.kind);
                 if (!r.m.ok) {
                     drawPlan(p, c, v, panel, r.m, plannerColour(k), std::string(name) + ": no plan", r.m.error);
                     continue;

@@ -728,7 +728,7 @@ std::string missionToJson(const mission::Mission& m) {
     }
     root.Add("aircraft", aircraft);
     CPLJSONObject planner;
-    planner.Add("planner", mission::plannerName(m.options.planner));
+    planner.Add("planner", mission::plannerKindName(m.options.planner));
     if (m.options.gridAngleDeg)
         planner.Add("grid_angle_deg", jsonNumber(*m.options.gridAngleDeg));
     else

@@ -29,7 +29,7 @@ const std::vector<PlannerKind>& plannerKinds() {
     return kinds;
 }
 
-const char* plannerName(PlannerKind kind) {
+const char* plannerKindName(PlannerKind kind) {
     switch (kind) {
     case PlannerKind::Stride:
         return "stride";
@@ -43,7 +43,7 @@ const char* plannerName(PlannerKind kind) {
 
 std::optional<PlannerKind> parsePlannerKind(const std::string& name) {
     for (PlannerKind k : plannerKinds())
-        if (name == plannerName(k))
+        if (name == plannerKindName(k))
             return k;
     return std::nullopt;
 }
@@ -54,7 +54,7 @@ std::string plannerNamesList() {
     for (std::size_t i = 0; i < kinds.size(); ++i) {
         if (i > 0)
             out += i + 1 == kinds.size() ? " or " : ", ";
-        out += plannerName(kinds[i]);
+        out += plannerKindName(kinds[i]);
     }
     return out;
 }

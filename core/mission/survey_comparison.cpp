@@ -321,7 +321,7 @@ std::string surveyTable(const std::vector<SurveyComparison>& areas) {
                pad(std::to_string(c.crossings.photosInZones) + "/" + std::to_string(c.crossings.legsCrossing), 6) +
                "\n";
         for (const auto& r : c.planners) {
-            const char* name = plannerName(r.kind);
+            const char* name = plannerKindName(r.kind);
             if (!r.m.ok) {
                 out += pad("", 26, true) + pad("", 6) + pad(name, 11, true) + "no plan: " + r.m.error + "\n";
                 continue;
@@ -352,7 +352,7 @@ std::string surveyTable(const std::vector<SurveyComparison>& areas) {
         out += std::string("\nMedian over ") + title + ", planner / lawnmower:\n";
         out += pad("", 44, true);
         for (const auto& s : sum)
-            out += pad(plannerName(s.kind), 11);
+            out += pad(plannerKindName(s.kind), 11);
         out += "\n";
         auto row = [&](const char* label, auto get, const char* f) {
             out += pad(label, 44, true);
@@ -365,7 +365,10 @@ std::string surveyTable(const std::vector<SurveyComparison>& areas) {
             "%.2f");
         row("the same + 3 s per turn", [](const SurveySummary& s) { return s.medians.simpleStopsTime; }, "%.2f");
         row("photos", [](const SurveySummary& s) { return s.medians.photos; }, "%.2f");
-        if (n.set != AreaSet::WithoutZones)
+        const bool zonesInSet = std::any_of(areas.begin(), areas.end(), [&](const SurveyComparison& c) {
+            return inSet(c, n.set) && c.zones > 0;
+        });
+        if (zonesInSet)
             row("photos / lawnmower's photos outside zones",
                 [](const SurveySummary& s) { return s.medians.photosOutside; }, "%.2f");
         row("path length", [](const SurveySummary& s) { return s.medians.path; }, "%.2f");
@@ -422,7 +425,7 @@ std::string surveyCsv(const std::vector<SurveyComparison>& areas) {
         };
         line("lawnmower", c.lawnmower, ratiosTo(c.lawnmower, c));
         for (const auto& r : c.planners)
-            line(plannerName(r.kind), r.m, ratiosTo(r.m, c));
+            line(plannerKindName(r.kind), r.m, ratiosTo(r.m, c));
     }
     return out;
 }

@@ -243,6 +243,7 @@ bool acceptable(const EvalArea& a, const geo::LocalFrame& frame) {
 Result<GeneratedArea> generateOne(const AreaGeneratorOptions& o, std::size_t index, const geo::LocalFrame& frame) {
     Rng rng(areaSeed(o.seed, index));
     const AreaFamily family = o.families[index % o.families.size()];
+    int shortfalls = 0;
     for (int attempt = 0; attempt < 20; ++attempt) {
         Outline out = outline(family, rng);
         const double rotation = rng.chance(1.0 / 3.0) ? 0.0 : rng.uniform(0.0, 180.0);
@@ -317,9 +318,13 @@ Result<GeneratedArea> generateOne(const AreaGeneratorOptions& o, std::size_t ind
             ga.area.noFly.push_back(toGeo(frame, z.outer));
         if (static_cast<int>(zones.size()) >= o.minZones && acceptable(ga.area, frame))
             return ga;
+        if (static_cast<int>(zones.size()) < o.minZones && ++shortfalls >= 3)
+            break; // the zones do not fit: more outlines will not help
     }
-    return makeError(ErrorCode::Internal, "the area generator found no valid area number " + std::to_string(index + 1) +
-                                              " for seed " + std::to_string(o.seed));
+    return makeError(ErrorCode::InvalidInput,
+                     "area generator: area " + std::to_string(index + 1) + " (seed " + std::to_string(o.seed) +
+                         ") cannot hold " + std::to_string(o.minZones) +
+                         " no-fly zones or more within a quarter of its surface; ask for fewer zones or larger areas");
 }
 
 CPLJSONObject polygonFeature(const geo::GeoPolygon& p) {
@@ -375,6 +380,12 @@ Result<std::vector<GeneratedArea>> generateAreas(const AreaGeneratorOptions& o) 
         return makeError(ErrorCode::InvalidInput, "area generator: give at least one family of outlines");
     if (!(o.marginM > 0) || o.marginM > 50)
         return makeError(ErrorCode::InvalidInput, "area generator: the margin must be more than 0 m and at most 50 m");
+    // The smallest zone drawn (a rectangle of 8 m sides shrunk to 30 %) against a quarter of the
+    // smallest area: beyond that the zones can never fit.
+    if (o.minZones * (2.4 * 2.4) > kMaxZoneShare * o.minAreaM2)
+        return makeError(ErrorCode::InvalidInput, "area generator: " + std::to_string(o.minZones) +
+                                                      " no-fly zones cannot fit in a quarter of the smallest area; "
+                                                      "ask for fewer zones or larger areas");
     auto frame = geo::LocalFrame::create(o.origin);
     if (!frame)
         return frame.error();

@@ -17,6 +17,8 @@ constexpr double kPi = 3.14159265358979323846;
 // and at most this many of the fastest candidates.
 constexpr double kSearchCoverageResolutionM = 1.0;
 constexpr std::size_t kMaxCoverageChecks = 40;
+// Transects across the area (or photos along a transect) beyond which the search would take minutes.
+constexpr double kMaxTransectsAcross = 20000.0;
 
 // One transect along +u: where its line first enters and last leaves the area.
 struct Transect {
@@ -178,6 +180,11 @@ Result<LawnmowerPlan> planLawnmower(const geo::MultiPolygon& area, const Lawnmow
     if (!(geo::area(area) > 0))
         return makeError(ErrorCode::InvalidGeometry, "lawnmower: the area has no surface to photograph");
     const auto rings = ringsOf(area);
+    const geo::Box box = geo::bounds(area);
+    if ((box.max - box.min).norm() / std::min(o.trackSpacingM, o.photoSpacingM) > kMaxTransectsAcross)
+        return makeError(ErrorCode::TooLarge, "lawnmower: the area is too large for the spacings (more than " +
+                                                  std::to_string(static_cast<long long>(kMaxTransectsAcross)) +
+                                                  " transects or photos along one)");
     const double dwellS = std::max(0.0, o.time.photoDwellS);
 
     std::vector<double> angles;

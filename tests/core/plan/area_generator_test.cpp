@@ -153,6 +153,14 @@ TEST(AreaGenerator, BadOptionsAreErrors) {
     o = {};
     o.families.clear();
     EXPECT_FALSE(generateAreas(o).ok());
+    // 200 zones of at least a few metres in a 1,000 m2 site: refused with a message, not a hang.
+    o = {};
+    o.count = 1;
+    o.minAreaM2 = o.maxAreaM2 = 1000.0;
+    o.minZones = o.maxZones = 200;
+    r = generateAreas(o);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.error().message.find("fewer zones or larger areas"), std::string::npos) << r.error().message;
 }
 
 } // namespace

@@ -198,6 +198,10 @@ TEST(Lawnmower, BadInputIsAnError) {
     auto r = planLawnmower(rectangle(100, 100), o);
     ASSERT_FALSE(r.ok());
     EXPECT_NE(r.error().message.find("turnaround"), std::string::npos);
+    // Spacings far too small for the area: refused at once instead of searching for minutes.
+    r = planLawnmower(rectangle(10000, 10000), options(0.1, 0.1));
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().code, ErrorCode::TooLarge);
 }
 
 } // namespace
