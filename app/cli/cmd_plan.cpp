@@ -70,18 +70,6 @@ const char* const kPlanUsage =
 
 namespace {
 
-const char* plannerLabel(mission::PlannerKind k) {
-    switch (k) {
-    case mission::PlannerKind::Stride:
-        return "stride";
-    case mission::PlannerKind::Raster:
-        return "raster";
-    case mission::PlannerKind::Wavefront:
-        return "wavefront";
-    }
-    return "?";
-}
-
 int writeFile(const std::filesystem::path& path, const std::string& text) {
     std::ofstream f(path, std::ios::binary | std::ios::trunc);
     if (!f)
@@ -133,7 +121,7 @@ int runPlan(const std::vector<std::string>& argv) {
         if (std::find(printed.begin(), printed.end(), w) == printed.end())
             std::cerr << "photoflight-cli: warning: " << w << '\n';
 
-    const char* planner = plannerLabel(m.options.planner);
+    const char* planner = mission::plannerKindName(m.options.planner);
     std::vector<std::string> written;
     if (const auto out = args->value("out")) {
         std::error_code ec;

@@ -9,12 +9,20 @@
 #endif
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <map>
 #include <memory>
 
 namespace pf::cli {
+
+std::string chartFileName(const std::string& s) {
+    std::string out;
+    for (char c : s)
+        out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') ? c : '_';
+    return out;
+}
 
 #ifndef PF_CLI_HAS_QT
 
@@ -117,27 +125,23 @@ void drawLegend(QPainter& p, const QPointF& at, const std::vector<plan::PlannerK
     }
 }
 
-std::string safeName(const std::string& s) {
-    std::string out;
-    for (char c : s)
-        out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') ? c : '_';
-    return out;
-}
-
 } // namespace
+
+void ensureHeadlessGui() {
+    if (QGuiApplication::instance())
+        return;
+    if (!std::getenv("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    static int argc = 1;
+    static char arg0[] = "photoflight-cli";
+    static char* argv[] = {arg0, nullptr};
+    // Never deleted: destroying it among the static destructors at exit, after Qt's own, crashes.
+    new QGuiApplication(argc, argv);
+}
 
 int writeEvalCharts(const std::vector<plan::EvalRun>& runs, const std::vector<plan::EvalSummary>& summary,
                     const std::string& dir, std::string* error) {
-    // A headless GUI application for the raster paint engine and fonts; no display is needed.
-    std::unique_ptr<QGuiApplication> app;
-    if (!QGuiApplication::instance()) {
-        if (!std::getenv("QT_QPA_PLATFORM"))
-            qputenv("QT_QPA_PLATFORM", "offscreen");
-        static int argc = 1;
-        static char arg0[] = "photoflight-cli";
-        static char* argv[] = {arg0, nullptr};
-        app = std::make_unique<QGuiApplication>(argc, argv);
-    }
+    ensureHeadlessGui();
     int written = 0;
     std::vector<std::string> areas;
     std::vector<plan::PlannerKind> kinds;
@@ -185,7 +189,7 @@ int writeEvalCharts(const std::vector<plan::EvalRun>& runs, const std::vector<pl
         }
         drawLegend(p, QPointF(875, 50), kinds);
         p.end();
-        if (!save(img, "turns_" + safeName(area) + ".png"))
+        if (!save(img, "turns_" + chartFileName(area) + ".png"))
             return -1;
     }
 

@@ -14,4 +14,10 @@ namespace pf::cli {
 int writeEvalCharts(const std::vector<plan::EvalRun>& runs, const std::vector<plan::EvalSummary>& summary,
                     const std::string& dir, std::string* error);
 
+// Shared by the chart writers: an area name as a file-name part, and (Qt builds only) a headless
+// QGuiApplication for the raster paint engine and fonts (no display needed; it lives until the program
+// ends).
+std::string chartFileName(const std::string& name);
+void ensureHeadlessGui();
+
 } // namespace pf::cli

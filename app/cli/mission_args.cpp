@@ -109,51 +109,10 @@ bool isMissionFile(const std::string& path) {
     return !geoJson;
 }
 
-Result<MissionInput> missionFromArgs(const Args& args, std::size_t positional) {
-    MissionInput in;
+Status applyMissionFlags(const Args& args, MissionInput& in) {
     mission::Mission& m = in.mission;
     std::optional<io::Catalog> catalog;
     Error err;
-
-    // 1. The file: a mission, or an area.
-    if (args.positionals().size() > positional + 1)
-        return makeError(ErrorCode::InvalidInput, "unexpected argument '" + args.positionals()[positional + 1] +
-                                                      "' (one mission or area file only)");
-    if (args.positionals().size() > positional) {
-        in.source = args.positionals()[positional];
-        if (isMissionFile(in.source)) {
-            auto mf = io::readMissionFile(in.source);
-            if (!mf)
-                return mf.error();
-            m = std::move(mf).value();
-            in.fromMissionFile = true;
-        } else {
-            auto area = areaFrom(in.source, "");
-            if (!area)
-                return area.error();
-            m.area = std::move(area).value();
-            m.name = stem(in.source);
-        }
-    }
-    if (auto a = args.value("area")) {
-        auto area = areaFrom(*a, "area");
-        if (!area)
-            return area.error();
-        m.area = std::move(area).value();
-        if (in.source.empty()) {
-            in.source = *a;
-            m.name = stem(*a);
-        }
-    }
-    if (in.source.empty())
-        return makeError(ErrorCode::InvalidInput, "no mission or area file given (see --help)");
-    for (const auto& f : args.values("nofly")) {
-        auto polys = polygonsOf(f, "nofly");
-        if (!polys)
-            return polys.error();
-        for (auto& p : *polys)
-            m.noFlyZones.push_back({p.name, std::move(p.polygon)});
-    }
 
     // 2. Aircraft: replaced by --aircraft, or a default one when the file gave none.
     const auto aircraftFlags = args.values("aircraft");
@@ -300,14 +259,10 @@ Result<MissionInput> missionFromArgs(const Args& args, std::size_t positional) {
 
     // 4. Planner options and points.
     if (auto p = args.value("planner")) {
-        if (*p == "stride")
-            m.options.planner = mission::PlannerKind::Stride;
-        else if (*p == "raster")
-            m.options.planner = mission::PlannerKind::Raster;
-        else if (*p == "wavefront")
-            m.options.planner = mission::PlannerKind::Wavefront;
-        else
-            return flagError("planner", "unknown planner '" + *p + "' (expected stride, raster or wavefront)");
+        const auto k = mission::parsePlannerKind(*p);
+        if (!k)
+            return flagError("planner", "unknown planner '" + *p + "' (expected " + mission::plannerNamesList() + ")");
+        m.options.planner = *k;
     }
     if (auto a = args.value("grid-angle")) {
         if (*a == "auto") {
@@ -338,6 +293,55 @@ Result<MissionInput> missionFromArgs(const Args& args, std::size_t positional) {
             return flagError("max-cells", "must be a whole number of cells (got " + num(**cells) + ")");
         m.options.maxCells = static_cast<std::size_t>(**cells);
     }
+    return {};
+}
+
+Result<MissionInput> missionFromArgs(const Args& args, std::size_t positional) {
+    MissionInput in;
+    mission::Mission& m = in.mission;
+
+    // 1. The file: a mission, or an area.
+    if (args.positionals().size() > positional + 1)
+        return makeError(ErrorCode::InvalidInput, "unexpected argument '" + args.positionals()[positional + 1] +
+                                                      "' (one mission or area file only)");
+    if (args.positionals().size() > positional) {
+        in.source = args.positionals()[positional];
+        if (isMissionFile(in.source)) {
+            auto mf = io::readMissionFile(in.source);
+            if (!mf)
+                return mf.error();
+            m = std::move(mf).value();
+            in.fromMissionFile = true;
+        } else {
+            auto area = areaFrom(in.source, "");
+            if (!area)
+                return area.error();
+            m.area = std::move(area).value();
+            m.name = stem(in.source);
+        }
+    }
+    if (auto a = args.value("area")) {
+        auto area = areaFrom(*a, "area");
+        if (!area)
+            return area.error();
+        m.area = std::move(area).value();
+        if (in.source.empty()) {
+            in.source = *a;
+            m.name = stem(*a);
+        }
+    }
+    if (in.source.empty())
+        return makeError(ErrorCode::InvalidInput, "no mission or area file given (see --help)");
+    for (const auto& f : args.values("nofly")) {
+        auto polys = polygonsOf(f, "nofly");
+        if (!polys)
+            return polys.error();
+        for (auto& p : *polys)
+            m.noFlyZones.push_back({p.name, std::move(p.polygon)});
+    }
+
+    if (auto st = applyMissionFlags(args, in); !st)
+        return st.error();
     return in;
 }
 

@@ -70,6 +70,12 @@ struct MissionInput {
 // Builds the mission from the positional argument at `positional` (if any) and the flags.
 Result<MissionInput> missionFromArgs(const Args& args, std::size_t positional = 0);
 
+// Applies every flag but the file, --area and --nofly to `in.mission`: aircraft, camera, altitude or
+// GSD, overlaps, planner, grid angle, home, safety margin and cell budget (a default aircraft or
+// altitude when the mission has none, listed in in.notes). missionFromArgs() ends with it; commands that
+// build their missions themselves (eval --survey) call it on each of them.
+Status applyMissionFlags(const Args& args, MissionInput& in);
+
 // True if the file looks like a mission file rather than an area file: a JSON object that names the
 // "photoflight-mission" format, or any JSON object that is not GeoJSON (the mission reader then says
 // what is wrong with it).

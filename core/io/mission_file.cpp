@@ -83,15 +83,6 @@ CPLJSONObject jsonRoute(const route::Route& r) {
     return o;
 }
 
-const char* plannerName(mission::PlannerKind k) {
-    switch (k) {
-    case mission::PlannerKind::Stride: return "stride";
-    case mission::PlannerKind::Raster: return "raster";
-    case mission::PlannerKind::Wavefront: return "wavefront";
-    }
-    return "stride";
-}
-
 // ---------------------------------------------------------------- reading
 
 // Reads one JSON document, remembering the first problem as "<source>: <field path>: <what>".
@@ -389,14 +380,10 @@ public:
             return opt;
         const std::string p = "planner";
         const std::string kind = string(o, p, "planner", "stride");
-        if (kind == "stride")
-            opt.planner = mission::PlannerKind::Stride;
-        else if (kind == "raster")
-            opt.planner = mission::PlannerKind::Raster;
-        else if (kind == "wavefront")
-            opt.planner = mission::PlannerKind::Wavefront;
+        if (const auto k = mission::parsePlannerKind(kind))
+            opt.planner = *k;
         else if (!failed())
-            fail("planner.planner", "unknown planner \"" + kind + "\" (expected stride, raster or wavefront)");
+            fail("planner.planner", "unknown planner \"" + kind + "\" (expected " + mission::plannerNamesList() + ")");
 
         CPLJSONObject angle = member(o, "grid_angle_deg");
         if (angle.IsValid()) {
@@ -741,7 +728,7 @@ std::string missionToJson(const mission::Mission& m) {
     }
     root.Add("aircraft", aircraft);
     CPLJSONObject planner;
-    planner.Add("planner", plannerName(m.options.planner));
+    planner.Add("planner", mission::plannerKindName(m.options.planner));
     if (m.options.gridAngleDeg)
         planner.Add("grid_angle_deg", jsonNumber(*m.options.gridAngleDeg));
     else
