@@ -115,23 +115,35 @@ Result<SortiePlan> splitIntoSorties(const std::vector<LocalWaypoint>& survey, co
                                  fmt(opt.enduranceMin, 1) + " min less the " + fmt(100 * opt.reserveFraction) +
                                  " % reserve (" + fmt(plan.budgetS) + " s available, " + fmt(alone) +
                                  " s needed): take off closer or use an aircraft with more endurance.");
-        // The furthest waypoint j such that the sortie [i, j] fits; the survey part alone only grows
-        // with j, so the scan stops once it exceeds the budget.
+        // The furthest waypoint j such that the sortie [i, j] fits. The way back from each j is a safe
+        // path (a search around the zones), so it is computed only for the candidates that could fit:
+        // the time with the straight line home instead is a lower bound (every part of the sortie's time
+        // is counted, the way back at its shortest), the survey part alone only grows with j, and the
+        // candidates are tried from the furthest down, the first that fits being the answer.
         int best = i;
         double bestTime = alone;
         const double outTime = flightTimeS(**out, model);
+        std::vector<int> candidates;
         for (int j = i + 1; j < n; ++j) {
-            const double surveyPart =
-                (legPrefix[static_cast<std::size_t>(j)] - legPrefix[static_cast<std::size_t>(i)]) / model.speedMps;
+            const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
+            const double surveyPart = (legPrefix[uj] - legPrefix[ui]) / model.speedMps;
             if (outTime + surveyPart > plan.budgetS)
                 break;
-            auto back = inPath(j);
+            const double lower = outTime + surveyPart + (pos(j) - home).norm() / model.speedMps +
+                                 (j - 1 > i ? turnPrefix[uj - 1] - turnPrefix[ui] : 0.0) + dwellPrefix[uj + 1] -
+                                 dwellPrefix[ui];
+            if (lower <= plan.budgetS)
+                candidates.push_back(j);
+        }
+        for (auto it = candidates.rbegin(); it != candidates.rend(); ++it) {
+            auto back = inPath(*it);
             if (!back)
                 return back.error();
-            const double t = sortieTime(i, j, **out, **back);
+            const double t = sortieTime(i, *it, **out, **back);
             if (t <= plan.budgetS) {
-                best = j;
+                best = *it;
                 bestTime = t;
+                break;
             }
         }
         Sortie s;
