@@ -3,6 +3,7 @@
 #include "core/io/area_import.h"
 #include "core/io/catalog.h"
 #include "core/io/mission_file.h"
+#include "core/mission/planner_kinds.h"
 
 #include <algorithm>
 #include <cmath>
@@ -300,14 +301,10 @@ Result<MissionInput> missionFromArgs(const Args& args, std::size_t positional) {
 
     // 4. Planner options and points.
     if (auto p = args.value("planner")) {
-        if (*p == "stride")
-            m.options.planner = mission::PlannerKind::Stride;
-        else if (*p == "raster")
-            m.options.planner = mission::PlannerKind::Raster;
-        else if (*p == "wavefront")
-            m.options.planner = mission::PlannerKind::Wavefront;
+        if (auto k = mission::plannerKindFromId(*p))
+            m.options.planner = *k;
         else
-            return flagError("planner", "unknown planner '" + *p + "' (expected stride, raster or wavefront)");
+            return flagError("planner", "unknown planner '" + *p + "' (expected " + mission::plannerKindIdList() + ")");
     }
     if (auto a = args.value("grid-angle")) {
         if (*a == "auto") {

@@ -1,8 +1,10 @@
 // Mission file: versioned JSON (GDAL's CPLJSON) read with field-path errors, written atomically.
 #include "core/io/mission_file.h"
+
 #include "core/io/json_util.h"
 
 #include "core/io/area_import.h"
+#include "core/mission/planner_kinds.h"
 
 #include <cpl_json.h>
 
@@ -83,14 +85,7 @@ CPLJSONObject jsonRoute(const route::Route& r) {
     return o;
 }
 
-const char* plannerName(mission::PlannerKind k) {
-    switch (k) {
-    case mission::PlannerKind::Stride: return "stride";
-    case mission::PlannerKind::Raster: return "raster";
-    case mission::PlannerKind::Wavefront: return "wavefront";
-    }
-    return "stride";
-}
+const char* plannerName(mission::PlannerKind k) { return mission::plannerKindInfo(k).id; }
 
 // ---------------------------------------------------------------- reading
 
@@ -389,14 +384,11 @@ public:
             return opt;
         const std::string p = "planner";
         const std::string kind = string(o, p, "planner", "stride");
-        if (kind == "stride")
-            opt.planner = mission::PlannerKind::Stride;
-        else if (kind == "raster")
-            opt.planner = mission::PlannerKind::Raster;
-        else if (kind == "wavefront")
-            opt.planner = mission::PlannerKind::Wavefront;
+        if (auto k = mission::plannerKindFromId(kind))
+            opt.planner = *k;
         else if (!failed())
-            fail("planner.planner", "unknown planner \"" + kind + "\" (expected stride, raster or wavefront)");
+            fail("planner.planner",
+                 "unknown planner \"" + kind + "\" (expected " + mission::plannerKindIdList() + ")");
 
         CPLJSONObject angle = member(o, "grid_angle_deg");
         if (angle.IsValid()) {
