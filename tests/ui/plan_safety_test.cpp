@@ -357,6 +357,7 @@ TEST(PlanSafety, TheComparisonListsEveryKindAndUseMakesItTheMissionsPlanner) {
     EXPECT_EQ(panel->useButton(mission::PlannerKind::Raster)->text(), QStringLiteral("In use"));
     EXPECT_TRUE(panel->useButton(mission::PlannerKind::Stride)->isEnabled());
     EXPECT_TRUE(w->planController()->isOutdated()); // the plan shown was made with stride
+    EXPECT_FALSE(w->planController()->isComparisonOutdated()); // it compared raster too
     doc->undoStack()->undo();
     EXPECT_EQ(doc->mission().options.planner, mission::PlannerKind::Stride);
     EXPECT_FALSE(w->planController()->isOutdated());
@@ -394,4 +395,31 @@ TEST(PlanSafety, CtrlEExportsWhileASpinBoxHasTheFocus) {
     QTest::keyClick(box, Qt::Key_E, Qt::ControlModifier);
     // Nothing planned yet: the export says so (a window without dialogs shows it in the status bar).
     EXPECT_TRUE(w->statusText().contains(QStringLiteral("Nothing to export yet"))) << w->statusText().toStdString();
+}
+
+// Item 9: after a new plan replaces the routes the waypoint selection does not jump to another
+// waypoint; each kind of zone is numbered on its own; the greyed form of no aircraft is empty.
+TEST(PlanSafety, SelectionNamesAndEmptyFormAfterNew) {
+    auto w = plannedDemo();
+    auto* doc = w->document();
+    w->planLayer()->selectWaypoints(0, {5});
+    ASSERT_EQ(w->planLayer()->selectedWaypoints(), QList<int>{5});
+    setAltitude(doc, 0, 47.0);
+    w->planNow();
+    ASSERT_TRUE(w->planController()->waitForIdle(120000));
+    EXPECT_EQ(w->planLayer()->selectedRoute(), -1);
+    EXPECT_TRUE(w->planLayer()->selectedWaypoints().isEmpty());
+
+    EXPECT_EQ(doc->nextNoFlyZoneName(QStringLiteral("Circle")), QStringLiteral("Circle 1"));
+    mission::NoFlyZone z;
+    z.name = "Circle 1";
+    z.polygon = doc->mission().noFlyZones.at(0).polygon;
+    doc->undoStack()->push(new AddNoFlyZoneCommand(doc, z));
+    EXPECT_EQ(doc->nextNoFlyZoneName(QStringLiteral("Circle")), QStringLiteral("Circle 2"));
+    EXPECT_EQ(doc->nextNoFlyZoneName(QStringLiteral("No-fly zone")), QStringLiteral("No-fly zone 1"));
+
+    w->newMission();
+    EXPECT_FALSE(w->aircraftPanel()->altitudeBox()->isEnabled());
+    EXPECT_TRUE(w->aircraftPanel()->altitudeBox()->text().trimmed().isEmpty() ||
+                w->aircraftPanel()->altitudeBox()->cleanText().isEmpty());
 }

@@ -52,6 +52,11 @@ QDoubleSpinBox* spin(double min, double max, int decimals, double step, const QS
     return s;
 }
 
+// A wrapped label in a form row gets the height of one line unless it is told its height.
+void fitHeight(QLabel* label, int fieldWidth) {
+    label->setMinimumHeight(label->heightForWidth(std::max(120, fieldWidth)));
+}
+
 // A generic 1" 20 MP camera for custom aircraft when the catalog has none.
 sensor::Camera genericCamera() {
     sensor::Camera c;
@@ -232,8 +237,15 @@ bool AircraftPanel::acceptAltitude(double value, bool isGsd) {
             alt = *fromGsd;
         }
     }
-    if (why.isEmpty())
-        for (const auto& e : mission::altitudeErrors(m_doc->mission(), a, alt)) why << QString::fromStdString(e);
+    if (why.isEmpty()) {
+        // The dock shows one aircraft: its name in front of each reason would only repeat the form.
+        const QString who = QStringLiteral("aircraft \"%1\": ").arg(QString::fromStdString(a.name));
+        for (const auto& e : mission::altitudeErrors(m_doc->mission(), a, alt)) {
+            QString line = QString::fromStdString(e);
+            if (line.startsWith(who)) line = line.mid(who.size());
+            why << line;
+        }
+    }
     if (why.isEmpty()) {
         m_altitudeError->hide();
         return true;
@@ -243,6 +255,7 @@ bool AircraftPanel::acceptAltitude(double value, bool isGsd) {
         (isGsd ? tr("%1 cm/px not applied: %2").arg(value, 0, 'f', 2) : tr("%1 m not applied: %2").arg(value, 0, 'f', 1))
             .arg(why.join(QStringLiteral("; "))));
     m_altitudeError->show();
+    fitHeight(m_altitudeError, m_altitude->width());
     refreshForm(/*keepError=*/true);
     return false;
 }
@@ -407,6 +420,7 @@ void AircraftPanel::refreshForm(bool keepError) {
         text = tr("Set an altitude or a GSD.");
     }
     m_footprint->setText(text);
+    fitHeight(m_footprint, m_altitude->width());
     m_updating = false;
 }
 

@@ -10,6 +10,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QUndoStack>
 #include <QVBoxLayout>
@@ -101,28 +102,41 @@ StatisticsPanel::StatisticsPanel(MissionDocument* doc, PlanController* planner, 
     m_compareState = new QLabel;
     m_compareState->setWordWrap(true);
     auto* meaning = new QLabel(
-        tr("Each planner plans this same mission (aircraft, altitudes, grid angle, margins). Figures are "
-           "for the whole mission: photos and km of every aircraft, the time of the longest flight. "
-           "No-fly counts waypoints and legs inside a no-fly margin. Best value in bold green; "
-           "<i>Use</i> makes a planner the mission's (undo with Ctrl+Z)."));
+        tr("Every planner on this same mission; figures for the whole mission (time: the longest flight; "
+           "No-fly: waypoints and legs in a no-fly margin). <i>Use</i> makes it the mission's planner "
+           "(Ctrl+Z undoes)."));
     meaning->setObjectName(QStringLiteral("ComparisonMeaning"));
     meaning->setWordWrap(true);
     meaning->setStyleSheet(QStringLiteral("QLabel { color: palette(dark); }"));
-    // Room for a header and three rows each (two aircraft and the total; the planners).
-    m_stats->setMinimumHeight(26 + 3 * 22 + 4);
-    m_compare->setMinimumHeight(26 + 3 * 22 + 4);
-    auto* lay = new QVBoxLayout(this);
-    lay->setContentsMargins(4, 4, 4, 4);
-    lay->setSpacing(3);
-    lay->addWidget(m_state);
-    lay->addWidget(m_stats, 3);
-    lay->addWidget(m_planTime);
+    // Room for a header and two rows each.
+    m_stats->setMinimumHeight(26 + 2 * 22 + 4);
+    m_compare->setMinimumHeight(26 + 2 * 22 + 4);
+    // Two pages, so that neither the figures nor the comparison are squeezed in a short dock.
+    auto* planPage = new QWidget;
+    auto* pl = new QVBoxLayout(planPage);
+    pl->setContentsMargins(2, 2, 2, 2);
+    pl->setSpacing(3);
+    pl->addWidget(m_state);
+    pl->addWidget(m_stats, 1);
+    pl->addWidget(m_planTime);
+    auto* comparePage = new QWidget;
+    auto* cl = new QVBoxLayout(comparePage);
+    cl->setContentsMargins(2, 2, 2, 2);
+    cl->setSpacing(3);
     auto* row = new QHBoxLayout;
     row->addWidget(m_compareButton);
     row->addWidget(m_compareState, 1);
-    lay->addLayout(row);
-    lay->addWidget(m_compare, 2);
-    lay->addWidget(meaning);
+    cl->addLayout(row);
+    cl->addWidget(meaning);
+    cl->addWidget(m_compare, 1);
+    m_pages = new QTabWidget;
+    m_pages->setObjectName(QStringLiteral("StatisticsPages"));
+    m_pages->setDocumentMode(true);
+    m_pages->addTab(planPage, tr("Plan"));
+    m_pages->addTab(comparePage, tr("Compare planners"));
+    auto* lay = new QVBoxLayout(this);
+    lay->setContentsMargins(2, 2, 2, 2);
+    lay->addWidget(m_pages);
     connect(m_compareButton, &QPushButton::clicked, m_planner, &PlanController::compare);
     connect(m_planner, &PlanController::planChanged, this, &StatisticsPanel::refreshStatistics);
     connect(m_planner, &PlanController::busyChanged, this, &StatisticsPanel::refreshState);
@@ -155,6 +169,7 @@ void StatisticsPanel::refreshState() {
     }
     m_state->setText(text);
     m_state->setHidden(text.isEmpty());
+    m_pages->setTabText(0, text.isEmpty() ? tr("Plan") : tr("Plan (outdated)"));
     // The figures of an outdated plan are greyed like its paths on the map.
     m_stats->setEnabled(text.isEmpty());
 }
@@ -311,13 +326,16 @@ void StatisticsPanel::usePlanner(mission::PlannerKind kind) {
 void StatisticsPanel::refreshComparison() {
     const auto& rows = m_planner->comparison();
     const auto& kinds = mission::plannerKinds();
+    // A comparison started (button, menu) is shown.
+    if (m_planner->isComparing() && rows.empty())
+        m_pages->setCurrentIndex(1);
     m_compareButton->setEnabled(!m_planner->isComparing());
     m_compareState->setText(m_planner->isComparing()
                                 ? tr("running… (%1 of %2 done)").arg(rows.size()).arg(kinds.size())
                             : rows.empty() ? tr("not run yet")
                             : m_planner->isComparisonOutdated()
                                 ? tr("<b>outdated</b>: the mission changed since; compare again")
-                                : QString());
+                                : tr("best value in bold green"));
     // One row per planner kind, from the one table of kinds: a new kind appears by itself.
     m_compare->setRowCount(int(kinds.size()));
     auto value = [](const PlannerComparisonRow& row, int col) -> double {

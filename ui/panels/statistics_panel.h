@@ -8,6 +8,7 @@
 
 class QLabel;
 class QPushButton;
+class QTabWidget;
 class QTableWidget;
 
 namespace pf::ui {
@@ -25,6 +26,8 @@ public:
     // "Outdated: …" while the plan shown is not the mission's; empty when it is current.
     QString stateText() const;
     QLabel* planTimeLabel() const { return m_planTime; }
+    // "Plan" and "Compare planners".
+    QTabWidget* pages() const { return m_pages; }
     // The comparison's "Use" button of a planner kind (nullptr if it has no row).
     QPushButton* useButton(mission::PlannerKind kind) const;
     // Makes `kind` the mission's planner (one undo step), as the "Use" buttons do.
@@ -40,6 +43,7 @@ private:
 
     MissionDocument* m_doc;
     PlanController* m_planner;
+    QTabWidget* m_pages;
     QLabel* m_state;
     QTableWidget* m_stats;
     QLabel* m_planTime;

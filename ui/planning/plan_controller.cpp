@@ -192,7 +192,12 @@ bool PlanController::isOutdated() const {
 }
 
 bool PlanController::isComparisonOutdated() const {
-    return m_compareInput && !samePlanInput(*m_compareInput, m_doc->mission());
+    if (!m_compareInput)
+        return false;
+    // The comparison tries every planner: choosing one of them does not make it outdated.
+    mission::Mission now = m_doc->mission();
+    now.options.planner = m_compareInput->options.planner;
+    return !samePlanInput(*m_compareInput, now);
 }
 
 void PlanController::acceptPendingPlan() {
