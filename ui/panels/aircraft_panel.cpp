@@ -89,6 +89,9 @@ AircraftPanel::AircraftPanel(MissionDocument* doc, io::Catalog catalog, QWidget*
     m_list = new QListWidget;
     m_list->setMaximumHeight(110);
     m_list->setIconSize(QSize(14, 14));
+    // A long camera name is shortened in the middle, never cut by a scroll bar; the tip has it all.
+    m_list->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_list->setTextElideMode(Qt::ElideMiddle);
     layout->addWidget(m_list);
 
     auto* buttons = new QHBoxLayout;
@@ -332,6 +335,7 @@ void AircraftPanel::refreshList() {
         auto* item = new QListWidgetItem(swatch(QString::fromStdString(a.colour)),
                                          QStringLiteral("%1  —  %2").arg(QString::fromStdString(a.name),
                                                                          QString::fromStdString(a.camera.name)));
+        item->setToolTip(item->text());
         m_list->addItem(item);
     }
     const int n = m_list->count();
@@ -375,6 +379,7 @@ void AircraftPanel::refreshForm(bool keepError) {
         camIndex = m_camera->count() - 1;
     }
     m_camera->setCurrentIndex(camIndex);
+    m_camera->setToolTip(m_camera->currentText());
 
     const auto alt = effectiveAltitude(a);
     std::optional<double> gsd = a.gsdCm;
