@@ -15,6 +15,9 @@
 #include "ui/map/mission_layer.h"
 #include "ui/map/tile_layer.h"
 #include "ui/mission_document.h"
+#include "ui/mission_files.h"
+#include "ui/panels/problems_panel.h"
+#include "core/mission/planner_kinds.h"
 #include "ui/panels/aircraft_panel.h"
 #include "ui/panels/mission_panel.h"
 #include "ui/tools/draw_circle_tool.h"
@@ -49,6 +52,9 @@
 #include <QFileInfo>
 #include <QGraphicsScene>
 #include <QInputDialog>
+#include <QKeyEvent>
+#include <QLineEdit>
+#include <QAbstractSpinBox>
 #include <QLabel>
 #include <QPushButton>
 #include <QMenuBar>
@@ -71,10 +77,6 @@ namespace {
 
 constexpr int kMaxRecent = 8;
 
-QString missionFilter() {
-    return QCoreApplication::translate("MainWindow", "Photoflight missions (*.json *.pfmission);;All files (*)");
-}
-
 QString importFilter() {
     return QCoreApplication::translate("MainWindow",
                                        "Areas (*.geojson *.json *.kml *.shp *.gpkg *.gml);;All files (*)");
@@ -86,7 +88,7 @@ double polygonAreaM2(const geo::GeoPolygon& p) {
 }
 
 QString formatLonLat(const geo::LonLat& p) {
-    return QStringLiteral("%1° %2  %3° %4")
+    return QStringLiteral("%1° %2, %3° %4")
         .arg(std::abs(p.lat), 0, 'f', 6)
         .arg(p.lat >= 0 ? QLatin1Char('N') : QLatin1Char('S'))
         .arg(std::abs(p.lon), 0, 'f', 6)
@@ -155,7 +157,9 @@ MainWindow::MainWindow(QWidget* parent, bool interactive) : QMainWindow(parent),
     connect(m_doc, &MissionDocument::filePathChanged, this, &MainWindow::updateTitle);
     connect(m_doc, &MissionDocument::changed, this, &MainWindow::updateTitle);
     connect(m_layer, &MissionLayer::problemsChanged, this, [this](const QStringList& problems) {
-        m_problems->setText(problems.isEmpty() ? QString() : QStringLiteral("⚠ ") + problems.first());
+        // Short, so that the tools' hints keep their room; the Problems dock and the tip say it all.
+        m_problems->setText(problems.isEmpty() ? QString()
+                                               : QStringLiteral("⚠ ") + tr("%n shape problem(s)", nullptr, int(problems.size())));
         m_problems->setToolTip(problems.join(QLatin1Char('\n')));
         m_problems->setVisible(!problems.isEmpty());
     });
@@ -169,6 +173,23 @@ MainWindow::MainWindow(QWidget* parent, bool interactive) : QMainWindow(parent),
     updateTitle();
     onViewChanged();
     resize(1400, 900);
+    qApp->installEventFilter(this);
+}
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+    // A line edit (and so every spin box) claims Ctrl+E as "end of line" through a shortcut override,
+    // which would silence Plan > Export while the focus is in the Aircraft dock. The window's action
+    // wins; End still moves to the end of the line.
+    if (event->type() == QEvent::ShortcutOverride) {
+        auto* w = qobject_cast<QWidget*>(watched);
+        auto* key = static_cast<QKeyEvent*>(event);
+        if (w && w->window() == this && (qobject_cast<QLineEdit*>(w) || qobject_cast<QAbstractSpinBox*>(w)) &&
+            QKeySequence(int(key->modifiers()) | key->key()) == QKeySequence(Qt::CTRL | Qt::Key_E)) {
+            event->ignore();
+            return true;
+        }
+    }
+    return QMainWindow::eventFilter(watched, event);
 }
 
 MainWindow::~MainWindow() {
@@ -202,7 +223,7 @@ void MainWindow::buildActions() {
     newAct->setShortcut(QKeySequence::New);
     auto* openAct = file->addAction(icon("open"), tr("&Open mission…"), this, [this] {
         if (!maybeSave()) return;
-        const QString path = QFileDialog::getOpenFileName(this, tr("Open mission"), QString(), missionFilter());
+        const QString path = askMissionOpenPath(this, tr("Open mission"));
         if (!path.isEmpty()) openMission(path);
     });
     openAct->setShortcut(QKeySequence::Open);
@@ -214,12 +235,12 @@ void MainWindow::buildActions() {
     file->addSeparator();
     auto* saveAct = file->addAction(icon("save"), tr("&Save"), this, [this] {
         QString path = m_doc->filePath();
-        if (path.isEmpty()) path = QFileDialog::getSaveFileName(this, tr("Save mission"), QString(), missionFilter());
+        if (path.isEmpty()) path = askMissionSavePath(this, tr("Save mission"), QString());
         if (!path.isEmpty()) saveMission(path);
     });
     saveAct->setShortcut(QKeySequence::Save);
     auto* saveAsAct = file->addAction(tr("Save &as…"), this, [this] {
-        const QString path = QFileDialog::getSaveFileName(this, tr("Save mission as"), m_doc->filePath(), missionFilter());
+        const QString path = askMissionSavePath(this, tr("Save mission as"), m_doc->filePath());
         if (!path.isEmpty()) saveMission(path);
     });
     saveAsAct->setShortcut(QKeySequence::SaveAs);
@@ -489,7 +510,9 @@ bool MainWindow::openDemoMission(QString* error) {
     return true;
 }
 
-bool MainWindow::saveMission(const QString& path, QString* error) {
+bool MainWindow::saveMission(const QString& chosen, QString* error) {
+    // Every mission file gets its extension, so that File > Open shows it again.
+    const QString path = withMissionExtension(chosen);
     QString why;
     if (!m_doc->save(path, &why)) {
         if (error) *error = why;
@@ -532,12 +555,14 @@ void MainWindow::rebuildRecentMenu() {
 bool MainWindow::maybeSave() {
     if (!m_doc->isDirty() || !m_interactive) return true;
     const auto answer = QMessageBox::question(this, tr("Unsaved changes"),
-                                              tr("Save the changes to %1?").arg(m_doc->displayName()),
+                                              m_doc->filePath().isEmpty()
+                                                  ? tr("Save the changes to %1 (not saved yet)?").arg(m_doc->displayName())
+                                                  : tr("Save the changes to %1?").arg(QFileInfo(m_doc->filePath()).fileName()),
                                               QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
     if (answer == QMessageBox::Cancel) return false;
     if (answer == QMessageBox::Discard) return true;
     QString path = m_doc->filePath();
-    if (path.isEmpty()) path = QFileDialog::getSaveFileName(this, tr("Save mission"), QString(), missionFilter());
+    if (path.isEmpty()) path = askMissionSavePath(this, tr("Save mission"), QString());
     return !path.isEmpty() && saveMission(path);
 }
 
@@ -687,11 +712,6 @@ bool MainWindow::waitForMap(int timeoutMs) {
 
 // ---------------------------------------------------------------- planning, viewing, editing
 
-namespace {
-enum ProblemRole { KindRole = Qt::UserRole, IndexRole, WaypointRole };
-enum ProblemKind { NoTarget, AreaTarget, NoFlyTarget, WaypointTarget };
-} // namespace
-
 void MainWindow::buildPlanning() {
     auto icon = [](const char* name) { return QIcon(QStringLiteral(":/icons/%1.svg").arg(QLatin1String(name))); };
 
@@ -729,8 +749,26 @@ void MainWindow::buildPlanning() {
     m_plannerBox = new QComboBox;
     m_plannerBox->setObjectName(QStringLiteral("PlannerBox"));
     m_plannerBox->setToolTip(tr("Coverage planner"));
-    for (auto k : {mission::PlannerKind::Stride, mission::PlannerKind::Raster, mission::PlannerKind::Wavefront})
-        m_plannerBox->addItem(plannerName(k), int(k));
+    for (const auto& k : mission::plannerKinds()) {
+        m_plannerBox->addItem(plannerName(k.kind), int(k.kind));
+        m_plannerBox->setItemData(m_plannerBox->count() - 1, QString::fromLatin1(k.summary), Qt::ToolTipRole);
+    }
+    // Keep inside area, one click away: waypoints stay inside the area (as far as each photo still
+    // sees the ground it is responsible for).
+    m_keepInsideAct = new QAction(icon("keep_inside"), tr("Keep inside area"), this);
+    m_keepInsideAct->setObjectName(QStringLiteral("KeepInsideAction"));
+    m_keepInsideAct->setCheckable(true);
+    m_keepInsideAct->setToolTip(
+        tr("Keep inside area: off, lanes end where the photos cover the boundary, so waypoints may lie "
+           "outside the area; on, waypoints stay within it"));
+    connect(m_keepInsideAct, &QAction::triggered, this, [this](bool on) {
+        auto o = m_doc->mission().options;
+        if (o.keepInsideArea == on) return;
+        o.keepInsideArea = on;
+        m_doc->undoStack()->push(new SetPlannerOptionsCommand(
+            m_doc, o, on ? tr("Keep waypoints inside the area") : tr("Let lanes end beyond the area")));
+    });
+    planMenu->insertAction(compareAct, m_keepInsideAct);
     m_angleBox = new QDoubleSpinBox;
     m_angleBox->setObjectName(QStringLiteral("GridAngleBox"));
     m_angleBox->setToolTip(tr("Grid angle in degrees from east; Auto tries many angles and keeps the fastest plan"));
@@ -766,6 +804,7 @@ void MainWindow::buildPlanning() {
     bar->addAction(m_cancelAct);
     bar->addWidget(m_plannerBox);
     bar->addWidget(m_angleBox);
+    bar->addAction(m_keepInsideAct);
     bar->addAction(exportAct);
 
     // Busy indicator and the notice of a plan waiting for the user.
@@ -790,7 +829,9 @@ void MainWindow::buildPlanning() {
     m_notice->hide();
     statusBar()->insertPermanentWidget(0, m_notice);
     connect(replace, &QPushButton::clicked, this, &MainWindow::replaceEditedPaths);
-    connect(keep, &QPushButton::clicked, m_planner, &PlanController::discardPendingPlan);
+    keep->setToolTip(tr("Keep the paths you edited; the other aircraft get the new plan"));
+    replace->setToolTip(tr("The new plan replaces every path, the edited ones too"));
+    connect(keep, &QPushButton::clicked, m_planner, &PlanController::keepEditsWithPendingPlan);
     connect(m_planner, &PlanController::pendingPlanChanged, m_notice, &QWidget::setVisible);
     connect(m_planner, &PlanController::busyChanged, this, [this](bool busy) {
         m_busy->setVisible(busy);
@@ -813,9 +854,7 @@ void MainWindow::buildPlanning() {
 
     auto* problemsDock = new QDockWidget(tr("Problems"), this);
     problemsDock->setObjectName(QStringLiteral("ProblemsDock"));
-    m_problemList = new QListWidget(problemsDock);
-    m_problemList->setObjectName(QStringLiteral("ProblemsList"));
-    m_problemList->setWordWrap(true);
+    m_problemList = new ProblemsPanel(m_doc, m_layer, m_planner, m_planLayer, problemsDock);
     problemsDock->setWidget(m_problemList);
     addDockWidget(Qt::BottomDockWidgetArea, problemsDock);
     // Below the map, left to right: waypoints, statistics, problems.
@@ -823,23 +862,17 @@ void MainWindow::buildPlanning() {
     splitDockWidget(statsDock, problemsDock, Qt::Horizontal);
     resizeDocks({wpDock, statsDock, problemsDock}, {500, 640, 400}, Qt::Horizontal);
     resizeDocks({wpDock}, {250}, Qt::Vertical);
-    connect(m_problemList, &QListWidget::itemClicked, this, [this](QListWidgetItem* item) {
-        switch (item->data(KindRole).toInt()) {
-        case AreaTarget: m_layer->select(ShapeRef::area()); break;
-        case NoFlyTarget: m_layer->select(ShapeRef::noFly(item->data(IndexRole).toInt())); break;
-        case WaypointTarget: {
-            const int r = item->data(IndexRole).toInt(), w = item->data(WaypointRole).toInt();
-            m_planLayer->selectWaypoints(r, {w});
-            if (r >= 0 && r < int(m_doc->routes().size()) && w < int(m_doc->routes()[std::size_t(r)].route.waypoints.size()))
-                m_view->centreOn(m_doc->routes()[std::size_t(r)].route.waypoints[std::size_t(w)].position);
-            break;
-        }
-        default: break;
-        }
+    connect(m_problemList, &ProblemsPanel::areaActivated, this, [this] { m_layer->select(ShapeRef::area()); });
+    connect(m_problemList, &ProblemsPanel::noFlyZoneActivated, this, [this](int i) { m_layer->select(ShapeRef::noFly(i)); });
+    connect(m_problemList, &ProblemsPanel::waypointActivated, this, [this](int r, int w) {
+        m_planLayer->selectWaypoints(r, {w});
+        if (r >= 0 && r < int(m_doc->routes().size()) && w >= 0 &&
+            w < int(m_doc->routes()[std::size_t(r)].route.waypoints.size()))
+            m_view->centreOn(m_doc->routes()[std::size_t(r)].route.waypoints[std::size_t(w)].position);
     });
-    connect(m_layer, &MissionLayer::problemsChanged, this, &MainWindow::refreshProblems);
-    connect(m_planner, &PlanController::planChanged, this, &MainWindow::refreshProblems);
-    connect(m_planLayer, &PlanLayer::routeProblemsChanged, this, &MainWindow::refreshProblems);
+    connect(m_problemList, &ProblemsPanel::countChanged, problemsDock, [problemsDock](int n) {
+        problemsDock->setWindowTitle(n ? tr("Problems (%1)").arg(n) : tr("Problems"));
+    });
 
     // Layers in the View menu.
     m_viewMenu->addSeparator();
@@ -866,6 +899,7 @@ void MainWindow::syncPlannerControls() {
     const auto& o = m_doc->mission().options;
     const QSignalBlocker b1(m_plannerBox), b2(m_angleBox);
     m_plannerBox->setCurrentIndex(m_plannerBox->findData(int(o.planner)));
+    m_keepInsideAct->setChecked(o.keepInsideArea);
     m_angleBox->setValue(o.gridAngleDeg ? *o.gridAngleDeg : -1.0);
 }
 
@@ -885,62 +919,6 @@ void MainWindow::planNow() {
 }
 
 void MainWindow::replaceEditedPaths() { m_planner->acceptPendingPlan(); }
-
-void MainWindow::refreshProblems() {
-    m_problemList->clear();
-    const auto& m = m_doc->mission();
-    // Which shape a message names: a no-fly zone by its name, else the area.
-    auto add = [this, &m](const QString& text, const QString& source) {
-        auto* item = new QListWidgetItem(text, m_problemList);
-        item->setData(KindRole, NoTarget);
-        for (std::size_t i = 0; i < m.noFlyZones.size(); ++i) {
-            const QString name = QString::fromStdString(m.noFlyZones[i].name);
-            if (!name.isEmpty() && text.contains(name)) {
-                item->setData(KindRole, NoFlyTarget);
-                item->setData(IndexRole, int(i));
-            }
-        }
-        if (item->data(KindRole).toInt() == NoTarget && text.contains(tr("area"), Qt::CaseInsensitive))
-            item->setData(KindRole, AreaTarget);
-        item->setToolTip(source);
-        return item;
-    };
-    for (const QString& p : m_layer->problems()) add(p, tr("mission shapes"))->setIcon(style()->standardIcon(QStyle::SP_MessageBoxWarning));
-    if (!m_planner->lastError().isEmpty())
-        add(m_planner->lastError(), tr("planner"))->setIcon(style()->standardIcon(QStyle::SP_MessageBoxCritical));
-    if (const auto& plan = m_planner->plan()) {
-        for (const auto& w : plan->warnings)
-            add(QString::fromStdString(w), tr("planner"))->setIcon(style()->standardIcon(QStyle::SP_MessageBoxInformation));
-        if (plan->noFlyViolations > 0)
-            add(tr("%n waypoint(s) or leg(s) of the plan closer to a no-fly zone than the safety margin", nullptr,
-                   plan->noFlyViolations),
-                tr("coverage check"))
-                ->setIcon(style()->standardIcon(QStyle::SP_MessageBoxCritical));
-        if (!plan->uncovered.empty())
-            add(tr("%1 m² of the area in %n patch(es) is seen by no photo (hatched red on the map)", nullptr,
-                   int(plan->uncovered.size()))
-                    .arg(plan->uncoveredAreaM2, 0, 'f', 0),
-                tr("coverage check"))
-                ->setIcon(style()->standardIcon(QStyle::SP_MessageBoxWarning));
-    }
-    const auto& issues = m_planLayer->issues();
-    for (std::size_t r = 0; r < issues.size() && r < m_doc->routes().size(); ++r) {
-        const QString name = QString::fromStdString(m_doc->routes()[r].route.aircraft);
-        auto flag = [&](std::size_t w, const QString& why) {
-            auto* item = new QListWidgetItem(style()->standardIcon(QStyle::SP_MessageBoxCritical),
-                                             tr("%1, waypoint %2: %3").arg(name).arg(w + 1).arg(why), m_problemList);
-            item->setData(KindRole, WaypointTarget);
-            item->setData(IndexRole, int(r));
-            item->setData(WaypointRole, int(w));
-        };
-        for (std::size_t w = 0; w < issues[r].waypoint.size(); ++w)
-            if (!issues[r].waypoint[w].isEmpty()) flag(w, issues[r].waypoint[w]);
-        for (std::size_t w = 0; w < issues[r].leg.size(); ++w)
-            if (!issues[r].leg[w].isEmpty()) flag(w, issues[r].leg[w]);
-    }
-    if (auto* dock = findChild<QDockWidget*>(QStringLiteral("ProblemsDock")))
-        dock->setWindowTitle(m_problemList->count() ? tr("Problems (%1)").arg(m_problemList->count()) : tr("Problems"));
-}
 
 int MainWindow::openWaypointFile(const QString& path, int assignTo, QString* error) {
     auto imported = io::importWaypoints(path.toStdString());
@@ -1021,9 +999,12 @@ void MainWindow::showExportDialog() {
     const QString folder = settings.value(QStringLiteral("export/folder"),
                                           QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation))
                                .toString();
-    ExportDialog dialog(m_doc, folder, this);
+    ExportDialog dialog(m_doc, m_planner, folder, this);
     dialog.exec();
     settings.setValue(QStringLiteral("export/folder"), dialog.request().folder);
+    // Back to the map, so that the window's shortcuts (Ctrl+Z, Ctrl+E, …) work again at once.
+    activateWindow();
+    m_view->setFocus(Qt::OtherFocusReason);
 }
 
 } // namespace pf::ui

@@ -31,6 +31,7 @@ class MissionLayer;
 class MissionPanel;
 class PlanController;
 class PlanLayer;
+class ProblemsPanel;
 class StatisticsPanel;
 class WaypointPanel;
 class TileLayer;
@@ -56,7 +57,7 @@ public:
     PlanLayer* planLayer() const { return m_planLayer; }
     WaypointPanel* waypointPanel() const { return m_waypoints; }
     StatisticsPanel* statisticsPanel() const { return m_statistics; }
-    QListWidget* problemsList() const { return m_problemList; }
+    ProblemsPanel* problemsList() const { return m_problemList; }
     // The bar saying a new plan waits because routes were edited by hand.
     bool planNoticeVisible() const;
     AbstractTool* tool(ToolId id) const;
@@ -96,6 +97,8 @@ public:
 
 protected:
     void closeEvent(QCloseEvent* e) override;
+    // Keeps the window's own shortcuts (Ctrl+E export) working while a text field has the focus.
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     void buildActions();
@@ -108,7 +111,6 @@ private:
     void openDropped(const QStringList& paths);
     void onViewChanged();
     void buildPlanning();
-    void refreshProblems();
     void syncPlannerControls();
 
     bool m_interactive;
@@ -137,13 +139,14 @@ private:
     PlanLayer* m_planLayer = nullptr;
     WaypointPanel* m_waypoints = nullptr;
     StatisticsPanel* m_statistics = nullptr;
-    QListWidget* m_problemList = nullptr;
+    ProblemsPanel* m_problemList = nullptr;
     QComboBox* m_plannerBox = nullptr;
     QDoubleSpinBox* m_angleBox = nullptr;
     QProgressBar* m_busy = nullptr;
     QAction* m_planAct = nullptr;
     QAction* m_cancelAct = nullptr;
     QAction* m_autoAct = nullptr;
+    QAction* m_keepInsideAct = nullptr;
     QWidget* m_notice = nullptr;
     QLabel* m_noticeText = nullptr;
 };

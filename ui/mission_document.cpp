@@ -6,6 +6,8 @@
 #include <QFileInfo>
 #include <QSaveFile>
 
+#include <algorithm>
+
 namespace pf::ui {
 
 MissionDocument::MissionDocument(QObject* parent) : QObject(parent) {
@@ -174,6 +176,15 @@ void MissionDocument::setOptions(const mission::PlannerOptions& options) {
     emit changed();
 }
 
+QString MissionDocument::nextNoFlyZoneName(const QString& base) const {
+    for (int n = 1;; ++n) {
+        const std::string candidate = QStringLiteral("%1 %2").arg(base).arg(n).toStdString();
+        bool used = false;
+        for (const auto& z : m_mission.noFlyZones) used = used || z.name == candidate;
+        if (!used) return QString::fromStdString(candidate);
+    }
+}
+
 bool MissionDocument::anyRouteEdited() const {
     for (const auto& r : m_routes)
         if (r.edited) return true;
@@ -183,6 +194,26 @@ bool MissionDocument::anyRouteEdited() const {
 void MissionDocument::setPlannedRoutes(std::vector<route::Route> routes) {
     m_routes.clear();
     for (auto& r : routes) m_routes.push_back({std::move(r), false});
+    ++m_routeGeneration;
+    emit routesChanged();
+}
+
+void MissionDocument::mergePlannedRoutes(std::vector<route::Route> routes) {
+    std::vector<PlannedRoute> edited;
+    for (auto& r : m_routes)
+        if (r.edited) edited.push_back(std::move(r));
+    m_routes.clear();
+    for (auto& r : routes) {
+        auto it = std::find_if(edited.begin(), edited.end(),
+                               [&](const PlannedRoute& e) { return e.route.aircraft == r.aircraft; });
+        if (it != edited.end()) {
+            m_routes.push_back(std::move(*it));
+            edited.erase(it);
+        } else {
+            m_routes.push_back({std::move(r), false});
+        }
+    }
+    for (auto& e : edited) m_routes.push_back(std::move(e));
     ++m_routeGeneration;
     emit routesChanged();
 }

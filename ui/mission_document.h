@@ -62,6 +62,9 @@ public:
     void removeAircraft(int index);
     void setAircraft(int index, const mission::AircraftConfig& aircraft);
     void setOptions(const mission::PlannerOptions& options);
+    // "<base> N" with the smallest N no zone is named after: each kind of zone counts on its own
+    // ("Circle 1", "No-fly zone 1").
+    QString nextNoFlyZoneName(const QString& base) const;
 
     // --- the planned (and possibly hand-edited) routes, one per planned aircraft ---
     // mission() never holds them (planning must not see them). Saving writes the routes marked
@@ -78,6 +81,9 @@ public:
     int routeGeneration() const { return m_routeGeneration; }
     // A new plan: replaces every route, clears the edited marks.
     void setPlannedRoutes(std::vector<route::Route> routes);
+    // A new plan that keeps the edits: each aircraft with a route edited by hand keeps it, the others
+    // get the new plan's route; edited routes of aircraft the plan no longer has are kept at the end.
+    void mergePlannedRoutes(std::vector<route::Route> routes);
     // One route (an edit or an import). index == routes().size() appends; nullopt removes the last.
     void setRoute(int index, const std::optional<PlannedRoute>& route);
 

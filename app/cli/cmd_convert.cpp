@@ -4,6 +4,7 @@
 #include "app/cli/commands.h"
 
 #include "core/io/waypoint_formats.h"
+#include "core/mission/route_check.h"
 
 #include <iostream>
 
@@ -31,6 +32,14 @@ const char* const kConvertUsage =
     "                        (MAV_CMD_DO_DIGICAM_CONTROL): the photo command after each photo "
     "waypoint\n"
     "  --hover-speed M/S     the .plan hoverSpeed (default: the route's cruise speed)\n"
+    "  --max-altitude M      the highest waypoint altitude allowed (default 120)\n"
+    "  --safety-margin M     keep-out distance around the file's no-fly zones (default 5)\n"
+    "  --force               write the file even if the route check finds errors\n"
+    "\n"
+    "Route check: before writing, every route is checked: no waypoint or leg (the legs from and back\n"
+    "to home included) within the safety margin of a no-fly zone the file holds (a .plan's geofence\n"
+    "exclusion polygons), no waypoint above --max-altitude or below the minimum safe altitude (2 m).\n"
+    "A route with an error is refused (exit 2, each problem on stderr) unless --force is given.\n"
     "\n"
     "Take-off, capture, return and landing items are regenerated from the waypoints; a .plan's "
     "geofence\n"
@@ -39,7 +48,8 @@ const char* const kConvertUsage =
 
 int runConvert(const std::vector<std::string>& argv) {
     auto args =
-        Args::parse(argv, {{"aircraft"}, {"firmware"}, {"end"}, {"capture"}, {"hover-speed"}});
+        Args::parse(argv, {{"aircraft"}, {"firmware"}, {"end"}, {"capture"}, {"hover-speed"},
+                           {"max-altitude"}, {"safety-margin"}, {"force", false}});
     if (!args)
         return reportError(args.error());
     if (args->positionals().size() != 2)
@@ -76,6 +86,20 @@ int runConvert(const std::vector<std::string>& argv) {
         opt.hoverSpeedMps = **hover;
     }
 
+    mission::RouteLimits limits;
+    limits.maxAltitudeM = 120.0;
+    for (auto [name, slot] : {std::pair{"max-altitude", &*limits.maxAltitudeM},
+                              std::pair{"safety-margin", &limits.safetyMarginM}}) {
+        auto v = args->number(name);
+        if (!v)
+            return reportError(v.error());
+        if (*v) {
+            if (!(**v >= 0))
+                return reportError(std::string("--") + name + ": must be zero or a positive number of metres");
+            *slot = **v;
+        }
+    }
+
     auto outFormat = io::formatFromPath(out);
     if (!outFormat)
         return reportError(outFormat.error());
@@ -97,6 +121,20 @@ int runConvert(const std::vector<std::string>& argv) {
                                "' (the file has: " + known + ")");
         imported->routes = keep;
     }
+    limits.zones = imported->noFlyZones;
+    std::size_t problems = 0;
+    for (std::size_t i = 0; i < imported->routes.size(); ++i) {
+        const auto& r = imported->routes[i];
+        limits.home = r.home ? r.home : imported->home;
+        const std::string label = r.aircraft.empty() ? "route " + std::to_string(i + 1) : r.aircraft;
+        for (const auto& line : mission::checkRoute(r, limits).messages(in + ": " + label)) {
+            std::cerr << "photoflight-cli: " << (args->has("force") ? "warning: " : "error: ") << line << '\n';
+            ++problems;
+        }
+    }
+    if (problems > 0 && !args->has("force"))
+        return reportError(std::to_string(problems) + " problem(s) in the route check (listed above): " + out +
+                           " not written; --force writes it anyway");
     const io::ExportContext ctx = io::contextFromImport(*imported);
     const auto& info = io::formatInfo(*outFormat);
     Status written;

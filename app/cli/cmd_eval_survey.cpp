@@ -6,6 +6,7 @@
 #include "app/cli/survey_charts.h"
 
 #include "core/mission/survey_comparison.h"
+#include "core/mission/planner_kinds.h"
 #include "core/mission/validation.h"
 #include "core/plan/area_generator.h"
 
@@ -216,13 +217,15 @@ int runEvalSurvey(const std::vector<std::string>& argv) {
     if (areas.empty())
         return reportError("eval --survey: no area given (area files, or --generate N)");
 
-    std::vector<mission::PlannerKind> kinds = mission::plannerKinds();
+    std::vector<mission::PlannerKind> kinds;
+    for (const auto& info : mission::plannerKinds())
+        kinds.push_back(info.kind);
     if (auto list = args->value("planners")) {
         kinds.clear();
         for (const auto& name : splitList(*list)) {
-            const auto k = mission::parsePlannerKind(name);
+            const auto k = mission::plannerKindFromId(name);
             if (!k)
-                return reportError("--planners: unknown planner '" + name + "' (use " + mission::plannerNamesList() +
+                return reportError("--planners: unknown planner '" + name + "' (use " + mission::plannerKindIdList() +
                                    ")");
             kinds.push_back(*k);
         }
@@ -260,7 +263,7 @@ int runEvalSurvey(const std::vector<std::string>& argv) {
         std::cerr << "[" << i + 1 << "/" << areas.size() << "] " << area.name << ": lawnmower "
                   << fixed(c->lawnmower.timeS, 0) << " s";
         for (const auto& r : c->planners)
-            std::cerr << ", " << mission::plannerKindName(r.kind) << " "
+            std::cerr << ", " << mission::plannerKindInfo(r.kind).id << " "
                       << (r.m.ok ? fixed(mission::ratiosTo(r.m, *c).time, 2) + "x" : std::string("failed"));
         std::cerr << '\n';
         results.push_back(std::move(c).value());

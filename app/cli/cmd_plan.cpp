@@ -5,6 +5,8 @@
 
 #include "core/io/waypoint_formats.h"
 #include "core/mission/plan_mission.h"
+#include "core/mission/planner_kinds.h"
+#include "core/mission/route_check.h"
 #include "core/mission/validation.h"
 
 #include <algorithm>
@@ -45,6 +47,7 @@ const char* const kPlanUsage =
     "\n"
     "Options:\n"
     "  --out DIR                    output directory (created if missing)\n"
+    "  --force                      write routes the route check finds errors in (see below)\n"
     "  --format LIST                comma-separated waypoint formats to write (needs --out):\n"
     "                                 plan       QGroundControl .plan\n"
     "                                 waypoints  QGC WPL 110 .waypoints (Mission Planner)\n"
@@ -64,6 +67,11 @@ const char* const kPlanUsage =
     "--grid-angle auto tries 0, 5, ..., 175 degrees and the directions of the longest edges of each\n"
     "aircraft's part and keeps the plan with the smallest estimated time T = length / speed + turn\n"
     "angles / turn rate.\n"
+    "\n"
+    "Route check: every planned route is checked as the desktop application checks it before export:\n"
+    "no waypoint or leg (home legs included) within a no-fly zone's safety margin, no waypoint above\n"
+    "the aircraft's maximum altitude or below the minimum safe altitude (2 m). A route with an error\n"
+    "is refused (exit 2, each problem on stderr, nothing written) unless --force is given.\n"
     "\n"
     "Exit codes: 0 planned, 2 bad input (message on stderr), 1 internal error.\n"
     "Example: photoflight-cli plan resources/demo/demo_mission.json --format plan,kml --out plan/\n";
@@ -87,6 +95,7 @@ int runPlan(const std::vector<std::string>& argv) {
     auto specs = missionOptionSpecs();
     specs.push_back({"out"});
     specs.push_back({"format"});
+    specs.push_back({"force", false});
     auto args = Args::parse(argv, specs);
     if (!args)
         return reportError(args.error());
@@ -121,7 +130,20 @@ int runPlan(const std::vector<std::string>& argv) {
         if (std::find(printed.begin(), printed.end(), w) == printed.end())
             std::cerr << "photoflight-cli: warning: " << w << '\n';
 
-    const char* planner = mission::plannerKindName(m.options.planner);
+    // The check every exported route passes (as in the desktop application): a route with an error is
+    // refused unless the user insists.
+    std::vector<route::Route> planned;
+    for (const auto& a : plan->aircraft)
+        planned.push_back(a.route);
+    const auto routeProblems = mission::routeErrors(m, planned);
+    for (const auto& p : routeProblems)
+        std::cerr << "photoflight-cli: " << (args->has("force") ? "warning: " : "error: ") << p << '\n';
+    if (!routeProblems.empty() && !args->has("force"))
+        return reportError(std::to_string(routeProblems.size()) +
+                           " problem(s) in the planned routes (listed above): nothing written; --force writes "
+                           "them anyway");
+
+    const char* planner = mission::plannerKindInfo(m.options.planner).id;
     std::vector<std::string> written;
     if (const auto out = args->value("out")) {
         std::error_code ec;

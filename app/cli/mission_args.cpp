@@ -3,6 +3,7 @@
 #include "core/io/area_import.h"
 #include "core/io/catalog.h"
 #include "core/io/mission_file.h"
+#include "core/mission/planner_kinds.h"
 
 #include <algorithm>
 #include <cmath>
@@ -259,10 +260,10 @@ Status applyMissionFlags(const Args& args, MissionInput& in) {
 
     // 4. Planner options and points.
     if (auto p = args.value("planner")) {
-        const auto k = mission::parsePlannerKind(*p);
-        if (!k)
-            return flagError("planner", "unknown planner '" + *p + "' (expected " + mission::plannerNamesList() + ")");
-        m.options.planner = *k;
+        if (auto k = mission::plannerKindFromId(*p))
+            m.options.planner = *k;
+        else
+            return flagError("planner", "unknown planner '" + *p + "' (expected " + mission::plannerKindIdList() + ")");
     }
     if (auto a = args.value("grid-angle")) {
         if (*a == "auto") {

@@ -2,6 +2,8 @@
 
 #include "app/cli/eval_charts.h"
 
+#include "core/mission/planner_kinds.h"
+
 #ifdef PF_CLI_HAS_QT
 #include <QColor>
 #include <QFont>
@@ -190,7 +192,7 @@ int writeSurveyCharts(const std::vector<mission::SurveyComparison>& areas, const
                 drawPlan(p, c, v, panel, L, QColor(90, 90, 90), l1, l2);
             } else {
                 const auto& r = c.planners[k];
-                const char* name = mission::plannerKindName(r.kind);
+                const char* name = mission::plannerKindInfo(r.kind).id;
                 if (!r.m.ok) {
                     drawPlan(p, c, v, panel, r.m, plannerColour(k), std::string(name) + ": no plan", r.m.error);
                     continue;

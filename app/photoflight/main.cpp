@@ -1,5 +1,6 @@
 // photoflight: the desktop application. Wiring only: command line, main window, screenshot mode.
 #include "ui/main_window.h"
+#include "ui/panels/statistics_panel.h"
 #include "ui/planning/plan_controller.h"
 
 #include <QApplication>
@@ -7,6 +8,7 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QImage>
+#include <QTabWidget>
 #include <QTimer>
 
 #include <cstdio>
@@ -83,6 +85,7 @@ int main(int argc, char** argv) {
             w.planController()->compare();
             if (!w.planController()->waitForIdle(180000))
                 std::fprintf(stderr, "photoflight: the planner comparison did not finish in time\n");
+            w.statisticsPanel()->pages()->setCurrentIndex(0); // the plan's own figures
         }
         w.zoomToMission();
         if (!w.waitForMap(20000)) std::fprintf(stderr, "photoflight: some map tiles did not load in time\n");

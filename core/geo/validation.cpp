@@ -24,6 +24,13 @@ std::string fmt(const char* f, double a, double b) {
     return buf;
 }
 
+// Latitude first with its hemisphere, as the desktop application's cursor readout shows a point:
+// "49.011000° N, 8.331000° E" cannot be read the wrong way round.
+std::string latLonText(const LonLat& p) {
+    return fmt(p.lat >= 0 ? "%.6f° N, " : "%.6f° S, ", std::abs(p.lat), 0.0) +
+           fmt(p.lon >= 0 ? "%.6f° E" : "%.6f° W", std::abs(p.lon), 0.0);
+}
+
 std::string ringName(int hole, const std::string& what) {
     return hole < 0 ? what : "hole " + std::to_string(hole + 1) + " of " + what;
 }
@@ -208,7 +215,7 @@ bool checkRing(const GeoRing& raw, int hole, const std::string& what, const Loca
         if (findCrossing(flat, &e1, &e2, &at)) {
             const LonLat g{at.x() / k, at.y()};
             out.push_back({Severity::Error, name + " intersects itself: edges " + edgeName(r, e1) + " and " +
-                                                edgeName(r, e2) + " cross near " + fmt("%.6f, %.6f", g.lon, g.lat)});
+                                                edgeName(r, e2) + " cross near " + latLonText(g)});
         } else {
             out.push_back({Severity::Error, name + " intersects itself"});
         }

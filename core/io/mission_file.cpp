@@ -1,8 +1,10 @@
 // Mission file: versioned JSON (GDAL's CPLJSON) read with field-path errors, written atomically.
 #include "core/io/mission_file.h"
+
 #include "core/io/json_util.h"
 
 #include "core/io/area_import.h"
+#include "core/mission/planner_kinds.h"
 
 #include <cpl_json.h>
 
@@ -82,6 +84,8 @@ CPLJSONObject jsonRoute(const route::Route& r) {
     o.Add("waypoints", wps);
     return o;
 }
+
+const char* plannerName(mission::PlannerKind k) { return mission::plannerKindInfo(k).id; }
 
 // ---------------------------------------------------------------- reading
 
@@ -380,10 +384,11 @@ public:
             return opt;
         const std::string p = "planner";
         const std::string kind = string(o, p, "planner", "stride");
-        if (const auto k = mission::parsePlannerKind(kind))
+        if (auto k = mission::plannerKindFromId(kind))
             opt.planner = *k;
         else if (!failed())
-            fail("planner.planner", "unknown planner \"" + kind + "\" (expected " + mission::plannerNamesList() + ")");
+            fail("planner.planner",
+                 "unknown planner \"" + kind + "\" (expected " + mission::plannerKindIdList() + ")");
 
         CPLJSONObject angle = member(o, "grid_angle_deg");
         if (angle.IsValid()) {
@@ -728,7 +733,7 @@ std::string missionToJson(const mission::Mission& m) {
     }
     root.Add("aircraft", aircraft);
     CPLJSONObject planner;
-    planner.Add("planner", mission::plannerKindName(m.options.planner));
+    planner.Add("planner", plannerName(m.options.planner));
     if (m.options.gridAngleDeg)
         planner.Add("grid_angle_deg", jsonNumber(*m.options.gridAngleDeg));
     else

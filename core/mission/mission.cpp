@@ -24,40 +24,6 @@ plan::FlightTimeModel flightModel(const AircraftConfig& a) {
     return m;
 }
 
-const std::vector<PlannerKind>& plannerKinds() {
-    static const std::vector<PlannerKind> kinds{PlannerKind::Stride, PlannerKind::Raster, PlannerKind::Wavefront};
-    return kinds;
-}
-
-const char* plannerKindName(PlannerKind kind) {
-    switch (kind) {
-    case PlannerKind::Stride:
-        return "stride";
-    case PlannerKind::Raster:
-        return "raster";
-    case PlannerKind::Wavefront:
-        return "wavefront";
-    }
-    return "stride";
-}
-
-std::optional<PlannerKind> parsePlannerKind(const std::string& name) {
-    for (PlannerKind k : plannerKinds())
-        if (name == plannerKindName(k))
-            return k;
-    return std::nullopt;
-}
-
-std::string plannerNamesList() {
-    const auto& kinds = plannerKinds();
-    std::string out;
-    for (std::size_t i = 0; i < kinds.size(); ++i) {
-        if (i > 0)
-            out += i + 1 == kinds.size() ? " or " : ", ";
-        out += plannerKindName(kinds[i]);
-    }
-    return out;
-}
 
 bool operator==(const AircraftConfig& a, const AircraftConfig& b) {
     return a.name == b.name && a.model == b.model && a.camera == b.camera && a.altitudeM == b.altitudeM &&

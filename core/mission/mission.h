@@ -50,14 +50,7 @@ plan::FlightTimeModel flightModel(const AircraftConfig& a);
 
 enum class PlannerKind { Stride, Raster, Wavefront };
 
-// The one list of planner kinds and their names ("stride", "raster", "wavefront"): the mission file, the
-// command line and the comparisons take them from here, so a new kind appears everywhere at once.
-// (Not "plannerName": argument-dependent lookup would make it clash with the GUI's own plannerName.)
-const std::vector<PlannerKind>& plannerKinds();
-const char* plannerKindName(PlannerKind kind);
-std::optional<PlannerKind> parsePlannerKind(const std::string& name);
-// The names for a message: "stride, raster or wavefront".
-std::string plannerNamesList();
+// Names, labels and the list of kinds: core/mission/planner_kinds.h.
 
 struct PlannerOptions {
     PlannerKind planner = PlannerKind::Stride;

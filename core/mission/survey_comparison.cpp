@@ -1,4 +1,5 @@
 #include "core/mission/survey_comparison.h"
+#include "core/mission/planner_kinds.h"
 
 #include "core/geo/local_frame.h"
 #include "core/geo/polygon_ops.h"
@@ -321,7 +322,7 @@ std::string surveyTable(const std::vector<SurveyComparison>& areas) {
                pad(std::to_string(c.crossings.photosInZones) + "/" + std::to_string(c.crossings.legsCrossing), 6) +
                "\n";
         for (const auto& r : c.planners) {
-            const char* name = plannerKindName(r.kind);
+            const char* name = plannerKindInfo(r.kind).id;
             if (!r.m.ok) {
                 out += pad("", 26, true) + pad("", 6) + pad(name, 11, true) + "no plan: " + r.m.error + "\n";
                 continue;
@@ -352,7 +353,7 @@ std::string surveyTable(const std::vector<SurveyComparison>& areas) {
         out += std::string("\nMedian over ") + title + ", planner / lawnmower:\n";
         out += pad("", 44, true);
         for (const auto& s : sum)
-            out += pad(plannerKindName(s.kind), 11);
+            out += pad(plannerKindInfo(s.kind).id, 11);
         out += "\n";
         auto row = [&](const char* label, auto get, const char* f) {
             out += pad(label, 44, true);
@@ -425,7 +426,7 @@ std::string surveyCsv(const std::vector<SurveyComparison>& areas) {
         };
         line("lawnmower", c.lawnmower, ratiosTo(c.lawnmower, c));
         for (const auto& r : c.planners)
-            line(plannerKindName(r.kind), r.m, ratiosTo(r.m, c));
+            line(plannerKindInfo(r.kind).id, r.m, ratiosTo(r.m, c));
     }
     return out;
 }

@@ -51,7 +51,90 @@ std::string count(double n) {
 void error(std::vector<Problem>& out, std::string msg) { out.push_back({Severity::Error, std::move(msg)}); }
 void warning(std::vector<Problem>& out, std::string msg) { out.push_back({Severity::Warning, std::move(msg)}); }
 
+// The altitude's own limits: a number at or above the minimum safe altitude, at most the aircraft's
+// maximum, and photos at least kMinFootprintM on the ground.
+std::vector<std::string> altitudeLimitErrors(const std::string& who, const AircraftConfig& a, double alt,
+                                             bool fromGsd) {
+    std::vector<std::string> out;
+    const std::string given = fromGsd ? " (from the wanted GSD)" : "";
+    if (!std::isfinite(alt) || alt <= 0) {
+        out.push_back(who + ": the flight altitude must be greater than 0 m (got " + num("%g", alt) +
+                      " m): the altitude is measured above the take-off point, so 0 m is on the ground; the "
+                      "lowest allowed is " + num("%g", kMinSafeAltitudeM) + " m");
+        return out;
+    }
+    if (alt < kMinSafeAltitudeM) {
+        out.push_back(who + ": the flight altitude of " + num("%.1f", alt) + " m" + given +
+                      " is below the minimum safe altitude of " + num("%.1f", kMinSafeAltitudeM) + " m");
+        return out;
+    }
+    if (alt > a.maxAltitudeM) {
+        out.push_back(who + ": the flight altitude of " + num("%.1f", alt) + " m is above its maximum of " +
+                      num("%.1f", a.maxAltitudeM) + " m" + given);
+        return out;
+    }
+    if (auto fp = sensor::effectiveFootprint(a.camera, alt, a.overlap); fp && fp->real.shortSideM < kMinFootprintM) {
+        // The footprint grows in proportion to the altitude.
+        const double needed = std::ceil(alt * kMinFootprintM / fp->real.shortSideM * 10.0) / 10.0;
+        out.push_back(who + ": at " + num("%.1f", alt) + " m" + given + " a photo covers only " +
+                      num("%.1f", fp->real.longSideM) + " x " + num("%.1f", fp->real.shortSideM) +
+                      " m, below the smallest footprint of " + num("%g", kMinFootprintM) +
+                      " m (planning and flying would take far too long): fly at " + num("%.1f", needed) +
+                      " m or higher");
+    }
+    return out;
+}
+
+// The grid of cells of `cellSizeM` over `admissible` against the cell budget: the error says how many
+// cells and which altitude and cell size would fit; empty when it fits.
+std::string cellBudgetError(const std::string& who, const AircraftConfig& a, double alt, double cellSizeM,
+                            const geo::MultiPolygon& admissible, double angleDeg, std::size_t maxCells,
+                            grid::Grid::Size* sizeOut = nullptr) {
+    const auto size = grid::Grid::sizeFor(admissible, cellSizeM, angleDeg);
+    if (sizeOut)
+        *sizeOut = size;
+    if (size.cells() <= static_cast<double>(maxCells))
+        return {};
+    const double fit = grid::Grid::cellSizeToFit(admissible, cellSizeM, angleDeg, maxCells);
+    // The footprint, and with it the cell, grows in proportion to the altitude.
+    const double fitAlt = std::ceil(alt * fit / cellSizeM * 10.0) / 10.0;
+    std::string msg = who + ": the area is too large for the cell budget: at " + num("%.1f", alt) + " m (cell size " +
+                      num("%.2f", cellSizeM) + " m) its grid would need " + count(static_cast<double>(size.cols)) +
+                      " x " + count(static_cast<double>(size.rows)) + " = " + count(size.cells()) +
+                      " cells, more than the budget of " + count(static_cast<double>(maxCells)) +
+                      "; an altitude of at least " + num("%.1f", fitAlt) + " m (cell size " + num("%.2f", fit) +
+                      " m) would fit";
+    if (fitAlt > a.maxAltitudeM)
+        msg += ", but that is above its maximum altitude of " + num("%.1f", a.maxAltitudeM) +
+               " m: raise the cell budget or split the area";
+    return msg;
+}
+
 } // namespace
+
+std::vector<std::string> altitudeErrors(const Mission& m, const AircraftConfig& a, double altitudeM) {
+    std::string who = a.name.empty() ? "the aircraft" : "aircraft \"" + a.name + "\"";
+    for (std::size_t i = 0; i < m.aircraft.size(); ++i)
+        if (m.aircraft[i].name == a.name)
+            who = aircraftName(a, i);
+    auto out = altitudeLimitErrors(who, a, altitudeM, false);
+    if (!out.empty() || m.options.maxCells == 0)
+        return out;
+    auto eff = sensor::effectiveFootprint(a.camera, altitudeM, a.overlap);
+    auto geom = localGeometry(m);
+    if (!eff || !geom)
+        return out; // the camera or the shapes are reported where they are edited
+    const geo::MultiPolygon admissible =
+        geom->noFly.empty() ? geo::MultiPolygon{geom->area}
+                            : geo::difference(geom->area, geo::MultiPolygon(geom->noFly.begin(), geom->noFly.end()));
+    if (geo::area(admissible) <= 0.0)
+        return out;
+    if (auto budget = cellBudgetError(who, a, altitudeM, sensor::cellSizeFor(*eff), admissible,
+                                      m.options.gridAngleDeg.value_or(0.0), m.options.maxCells);
+        !budget.empty())
+        out.push_back(budget);
+    return out;
+}
 
 std::string ValidationReport::errorSummary() const {
     std::string s;
@@ -231,12 +314,8 @@ ValidationReport validateMission(const Mission& m) {
             ok = false;
         }
         if ((a.altitudeM || a.gsdCm) && ok) {
-            if (!std::isfinite(f.altitudeM) || f.altitudeM <= 0) {
-                error(out, who + ": the flight altitude must be greater than 0 m (got " + num("%g", f.altitudeM) + " m)");
-                ok = false;
-            } else if (f.altitudeM > a.maxAltitudeM) {
-                error(out, who + ": the flight altitude of " + num("%.1f", f.altitudeM) + " m is above its maximum of " +
-                               num("%.1f", a.maxAltitudeM) + " m" + (a.altitudeM ? "" : " (from the wanted GSD)"));
+            for (auto& e : altitudeLimitErrors(who, a, f.altitudeM, !a.altitudeM)) {
+                error(out, std::move(e));
                 ok = false;
             }
         }
@@ -259,23 +338,13 @@ ValidationReport validateMission(const Mission& m) {
         }
         f.gridAngleDeg = o.gridAngleDeg.value_or(0.0);
         if (ok && geom && r.admissibleAreaM2 > 0 && o.maxCells > 0 && std::isfinite(f.gridAngleDeg)) {
-            const auto size = grid::Grid::sizeFor(admissible, f.cellSizeM, f.gridAngleDeg);
+            grid::Grid::Size size;
+            const std::string budget = cellBudgetError(who, a, f.altitudeM, f.cellSizeM, admissible, f.gridAngleDeg,
+                                                       o.maxCells, &size);
             f.cols = size.cols;
             f.rows = size.rows;
-            if (size.cells() > static_cast<double>(o.maxCells)) {
-                const double fit = grid::Grid::cellSizeToFit(admissible, f.cellSizeM, f.gridAngleDeg, o.maxCells);
-                // The footprint, and with it the cell, grows in proportion to the altitude.
-                const double fitAlt = std::ceil(f.altitudeM * fit / f.cellSizeM * 10.0) / 10.0;
-                std::string msg = who + ": the area is too large for the cell budget: at " + num("%.1f", f.altitudeM) +
-                                  " m (cell size " + num("%.2f", f.cellSizeM) + " m) its grid would need " +
-                                  count(static_cast<double>(size.cols)) + " x " + count(static_cast<double>(size.rows)) +
-                                  " = " + count(size.cells()) + " cells, more than the budget of " +
-                                  count(static_cast<double>(o.maxCells)) + "; an altitude of at least " +
-                                  num("%.1f", fitAlt) + " m (cell size " + num("%.2f", fit) + " m) would fit";
-                if (fitAlt > a.maxAltitudeM)
-                    msg += ", but that is above its maximum altitude of " + num("%.1f", a.maxAltitudeM) +
-                           " m: raise the cell budget or split the area";
-                error(out, msg);
+            if (!budget.empty()) {
+                error(out, budget);
             } else if (zonesOk) {
                 grid::GridOptions gopt{f.cellSizeM, f.gridAngleDeg, std::max(0.0, o.safetyMarginM), o.maxCells};
                 auto g = grid::Grid::build(geom->area, geom->noFly, gopt);

@@ -5,6 +5,7 @@
 #include "core/geo/validation.h"
 #include "core/grid/grid.h"
 #include "core/mission/mission.h"
+#include "core/mission/route_check.h"
 #include "core/result.h"
 #include "core/sensor/camera.h"
 
@@ -40,10 +41,23 @@ struct ValidationReport {
     std::string errorSummary() const;
 };
 
+// The smallest photo footprint a mission may fly (m, the real footprint's short side on the ground):
+// smaller photos need so many cells that planning takes minutes and the flight hours, and no survey
+// needs them (a 60 x 45 degree camera at 5 m covers 5.8 x 4.1 m; it may fly down to 3.7 m).
+constexpr double kMinFootprintM = 3.0;
+
+// The errors of flying aircraft `a` of mission `m` at `altitudeM` (the value typed, or derived from
+// the wanted GSD): not a number or below the minimum safe altitude (kMinSafeAltitudeM; 0 and below
+// say that the aircraft would fly on the ground), above the aircraft's maximum, a photo footprint
+// below kMinFootprintM, or a grid over the admissible area beyond the cell budget. Each message
+// names the aircraft, the value and the limit. Empty when the altitude can be flown. The aircraft
+// panel checks the value typed with it; validateMission reports the same errors.
+std::vector<std::string> altitudeErrors(const Mission& m, const AircraftConfig& a, double altitudeM);
+
 // Checks the whole mission: the area and every no-fly zone as polygons, zones outside the area
 // (warning: ignored) or covering all of it (error), the home point, the planner options, and per
-// aircraft the camera, altitude (> 0 and <= the aircraft's maximum) or GSD (> 0), overlaps in [0, 1)
-// and the cell budget (an error that says how many cells and which altitude and cell size would fit).
+// aircraft the camera, altitude (altitudeErrors: minimum safe altitude, maximum, footprint) or GSD
+// (> 0), overlaps in [0, 1) and the cell budget (an error that says how many cells and which altitude and cell size would fit).
 // Never fails: every finding is in the report.
 ValidationReport validateMission(const Mission& m);
 

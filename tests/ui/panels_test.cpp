@@ -24,7 +24,7 @@ TEST(AircraftPanel, AltitudeAndGsdDriveEachOther) {
     ASSERT_EQ(doc->mission().aircraft.size(), 1u);
     const sensor::Camera cam = doc->mission().aircraft[0].camera;
 
-    for (double alt : {30.0, 55.5, 100.0, 240.0}) {
+    for (double alt : {30.0, 55.5, 100.0, 115.0}) {
         panel->altitudeBox()->setValue(alt);
         const auto& a = doc->mission().aircraft[0];
         ASSERT_TRUE(a.altitudeM.has_value());

@@ -6,6 +6,7 @@
 #include "ui/commands/move_waypoint_command.h"
 #include "ui/map/plan_layer.h"
 #include "ui/mission_document.h"
+#include "ui/panels/problems_panel.h"
 #include "ui/panels/statistics_panel.h"
 #include "ui/panels/waypoint_panel.h"
 #include "ui/panels/waypoint_table_model.h"
@@ -344,8 +345,8 @@ TEST(Planning, ComparisonFillsThreeRows) {
         EXPECT_TRUE(row.ok) << row.error.toStdString();
         EXPECT_GT(row.totals.photos, 0);
     }
-    // Every metric column has its best value highlighted.
-    for (int c = 1; c < table->columnCount(); ++c) {
+    // Every metric column has its best value highlighted (the last column holds the Use buttons).
+    for (int c = 1; c < StatisticsPanel::CUse; ++c) {
         int bold = 0;
         for (int r = 0; r < 3; ++r)
             bold += table->item(r, c)->font().bold() ? 1 : 0;
@@ -453,7 +454,9 @@ TEST(Planning, ShortEnduranceShowsSortiesAndTheStatisticsCountThem) {
     auto* doc = w->document();
     for (int i = 0; i < int(doc->mission().aircraft.size()); ++i) {
         auto a = doc->mission().aircraft[std::size_t(i)];
-        a.enduranceMin = 3.0;
+        // Short enough for several batteries, long enough for the farthest photo and back with the stop
+        // at each turn (at 3 min the Falcon 8 could not reach its farthest photo and return).
+        a.enduranceMin = 4.0;
         doc->undoStack()->push(new EditAircraftCommand(doc, i, a, QStringLiteral("endurance")));
     }
     w->planNow();

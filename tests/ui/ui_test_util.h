@@ -6,9 +6,12 @@
 #include "ui/main_window.h"
 #include "ui/map/map_view.h"
 
+#include <QAbstractButton>
 #include <QApplication>
+#include <QMessageBox>
 #include <QMouseEvent>
 #include <QTest>
+#include <QTimer>
 
 #include <cmath>
 #include <memory>
@@ -51,6 +54,37 @@ inline void drag(MapView* view, const geo::LonLat& from, const geo::LonLat& to) 
 inline double metresBetween(const geo::LonLat& a, const geo::LonLat& b) {
     const double k = 111319.49;
     return std::hypot((a.lon - b.lon) * k * std::cos(a.lat * 3.14159265358979 / 180.0), (a.lat - b.lat) * k);
+}
+
+// What a message box said, once answered.
+struct DialogAnswer {
+    QString text;
+    QString informative;
+    bool answered = false;
+};
+
+// Answers the next modal message box by clicking the button labelled `button` (mnemonics ignored),
+// as a user would; call it before the action that opens the box.
+inline std::shared_ptr<DialogAnswer> answerNextMessageBox(const QString& button) {
+    auto out = std::make_shared<DialogAnswer>();
+    auto* timer = new QTimer;
+    timer->setInterval(20);
+    QObject::connect(timer, &QTimer::timeout, [timer, out, button] {
+        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        if (!box) return;
+        for (auto* b : box->buttons()) {
+            if (b->text().remove(QLatin1Char('&')) != button) continue;
+            out->text = box->text();
+            out->informative = box->informativeText();
+            out->answered = true;
+            timer->stop();
+            timer->deleteLater();
+            b->click();
+            return;
+        }
+    });
+    timer->start();
+    return out;
 }
 
 } // namespace pf::ui::test

@@ -1,6 +1,8 @@
 #include "ui/dialogs/export_dialog.h"
 
+#include "core/mission/route_check.h"
 #include "ui/mission_document.h"
+#include "ui/planning/plan_controller.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -9,7 +11,9 @@
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QToolButton>
@@ -17,9 +21,15 @@
 
 namespace pf::ui {
 
-ExportDialog::ExportDialog(MissionDocument* doc, const QString& folder, QWidget* parent)
-    : QDialog(parent), m_doc(doc) {
+ExportDialog::ExportDialog(MissionDocument* doc, PlanController* planner, const QString& folder,
+                           QWidget* parent)
+    : QDialog(parent), m_doc(doc), m_planner(planner) {
     setWindowTitle(tr("Export waypoints"));
+    m_banner = new QLabel;
+    m_banner->setObjectName(QStringLiteral("ExportBanner"));
+    m_banner->setWordWrap(true);
+    m_banner->setStyleSheet(QStringLiteral("QLabel { color: #6b3a00; background: #ffe8b0; padding: 4px 8px; "
+                                           "border-radius: 3px; }"));
     auto* formats = new QGroupBox(tr("Formats"));
     auto* fl = new QVBoxLayout(formats);
     for (const auto& info : io::waypointFormats()) {
@@ -32,13 +42,9 @@ ExportDialog::ExportDialog(MissionDocument* doc, const QString& folder, QWidget*
     }
     auto* aircraft = new QGroupBox(tr("Aircraft"));
     auto* al = new QVBoxLayout(aircraft);
-    for (const auto& r : doc->routes()) {
-        auto* box = new QCheckBox(QString::fromStdString(r.route.aircraft) +
-                                  (r.edited ? tr(" (edited)") : QString()));
-        box->setChecked(true);
-        al->addWidget(box);
-        m_routes.push_back(box);
-    }
+    m_routeLayout = new QVBoxLayout;
+    al->addLayout(m_routeLayout);
+    rebuildRouteBoxes();
     m_perAircraft = new QCheckBox(tr("One file per aircraft"));
     m_perAircraft->setChecked(true);
     m_combined =
@@ -77,19 +83,31 @@ ExportDialog::ExportDialog(MissionDocument* doc, const QString& folder, QWidget*
     m_report->setPlaceholderText(tr("The files written are listed here."));
     m_report->setMaximumHeight(110);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close);
-    auto* exportButton = buttons->addButton(tr("Export"), QDialogButtonBox::ActionRole);
-    exportButton->setDefault(true);
-    connect(exportButton, &QPushButton::clicked, this, [this] { runExport(); });
+    m_exportButton = buttons->addButton(tr("Export"), QDialogButtonBox::ActionRole);
+    m_exportButton->setDefault(true);
+    connect(m_exportButton, &QPushButton::clicked, this, [this] { runExport(); });
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
 
     auto* top = new QHBoxLayout;
     top->addWidget(formats);
     top->addWidget(aircraft);
     auto* lay = new QVBoxLayout(this);
+    lay->addWidget(m_banner);
     lay->addLayout(top);
     lay->addLayout(form);
     lay->addWidget(m_report);
     lay->addWidget(buttons);
+
+    connect(m_planner, &PlanController::planChanged, this, &ExportDialog::onPlanStateChanged);
+    connect(m_planner, &PlanController::pendingPlanChanged, this, &ExportDialog::onPlanStateChanged);
+    // Queued: a finished plan clears "busy" just before it is applied.
+    connect(m_planner, &PlanController::busyChanged, this, &ExportDialog::onPlanStateChanged, Qt::QueuedConnection);
+    connect(m_doc, &MissionDocument::changed, this, &ExportDialog::refreshBanner);
+    connect(m_doc, &MissionDocument::routesChanged, this, [this] {
+        rebuildRouteBoxes();
+        refreshBanner();
+    });
+    refreshBanner();
 }
 
 ExportRequest ExportDialog::request() const {
@@ -113,11 +131,28 @@ ExportRequest ExportDialog::request() const {
 }
 
 QStringList ExportDialog::runExport() {
+    if (!confirmCurrentPlan())
+        return {};
     std::vector<route::Route> routes;
     for (const auto& r : m_doc->routes())
         routes.push_back(r.route);
+    ExportRequest req = request();
     QString error;
-    const QStringList written = exportRoutes(m_doc->mission(), routes, request(), &error);
+    QStringList problems;
+    QStringList written = exportRoutes(m_doc->mission(), routes, req, &error, &problems);
+    if (!problems.isEmpty()) {
+        if (!confirmRouteErrors(problems)) {
+            report({}, error);
+            return {};
+        }
+        req.allowRouteErrors = true;
+        written = exportRoutes(m_doc->mission(), routes, req, &error);
+    }
+    report(written, error);
+    return written;
+}
+
+void ExportDialog::report(const QStringList& written, const QString& error) {
     QString text;
     if (!written.isEmpty())
         text = tr("Wrote %n file(s):", nullptr, written.size()) + QLatin1Char('\n') +
@@ -125,7 +160,137 @@ QStringList ExportDialog::runExport() {
     if (!error.isEmpty())
         text += (text.isEmpty() ? QString() : QStringLiteral("\n")) + tr("Error: %1").arg(error);
     m_report->setPlainText(text);
-    return written;
+    emit exported(written);
+}
+
+void ExportDialog::rebuildRouteBoxes() {
+    QList<bool> was;
+    for (auto* box : m_routes) {
+        was << box->isChecked();
+        delete box;
+    }
+    m_routes.clear();
+    for (std::size_t i = 0; i < m_doc->routes().size(); ++i) {
+        const auto& r = m_doc->routes()[i];
+        auto* box = new QCheckBox(QString::fromStdString(r.route.aircraft) + (r.edited ? tr(" (edited)") : QString()));
+        box->setChecked(int(i) < was.size() ? was[int(i)] : true);
+        m_routeLayout->addWidget(box);
+        m_routes.push_back(box);
+    }
+}
+
+// ---------------------------------------------------------------- confirmed before writing
+
+QString ExportDialog::bannerText() const {
+    return m_banner->isHidden() ? QString() : m_banner->text();
+}
+
+void ExportDialog::refreshBanner() {
+    QStringList lines;
+    if (m_planner->isOutdated()) {
+        QString line = tr("<b>Outdated plan</b>: the mission changed after these routes were planned.");
+        if (m_waiting)
+            line += QLatin1Char(' ') + tr("Waiting for the new plan; the export starts when it is ready.");
+        else if (m_planner->isBusy())
+            line += QLatin1Char(' ') + tr("A new plan is being made.");
+        lines << line;
+    }
+    std::vector<route::Route> routes;
+    for (const auto& r : m_doc->routes())
+        routes.push_back(r.route);
+    const auto problems = mission::routeErrors(m_doc->mission(), routes);
+    if (!problems.empty())
+        lines << tr("<b>%n route problem(s)</b> (no-fly margins, altitudes): listed before anything is "
+                    "written.", nullptr, int(problems.size()));
+    m_banner->setText(lines.join(QStringLiteral("<br>")));
+    m_banner->setHidden(lines.isEmpty());
+    m_exportButton->setEnabled(!m_waiting);
+    m_exportButton->setText(m_waiting ? tr("Waiting for the plan…") : tr("Export"));
+}
+
+void ExportDialog::onPlanStateChanged() {
+    refreshBanner();
+    if (!m_waiting || m_planner->isBusy())
+        return;
+    if (!m_planner->isOutdated()) {
+        m_waiting = false;
+        refreshBanner();
+        runExport();
+        return;
+    }
+    if (m_planner->hasPendingPlan()) {
+        m_waiting = false;
+        refreshBanner();
+        runExport(); // asks how to merge the waiting plan with the edits
+        return;
+    }
+    // Not busy, still outdated, nothing pending: the new plan failed or was cancelled.
+    m_waiting = false;
+    refreshBanner();
+    report({}, m_planner->lastError().isEmpty()
+                   ? tr("Not exported: planning was cancelled, and the routes are outdated.")
+                   : tr("Not exported: the new plan could not be made: %1").arg(m_planner->lastError()));
+}
+
+bool ExportDialog::confirmCurrentPlan() {
+    if (!m_planner->isOutdated())
+        return true;
+    if (m_planner->hasPendingPlan()) {
+        QMessageBox box(QMessageBox::Question, tr("Export waypoints"),
+                        tr("The mission changed and its new plan is ready, but some routes were edited by "
+                           "hand. Export with your edited routes kept (the other aircraft get the new "
+                           "plan), or replace them by the new plan?"),
+                        QMessageBox::Cancel, this);
+        auto* keep = box.addButton(tr("Keep edits"), QMessageBox::AcceptRole);
+        auto* replace = box.addButton(tr("Replace edited paths"), QMessageBox::AcceptRole);
+        box.setDefaultButton(keep);
+        box.exec();
+        if (box.clickedButton() == static_cast<QAbstractButton*>(keep))
+            m_planner->keepEditsWithPendingPlan();
+        else if (box.clickedButton() == static_cast<QAbstractButton*>(replace))
+            m_planner->acceptPendingPlan();
+        else
+            return false;
+        return !m_planner->isOutdated();
+    }
+    QMessageBox box(QMessageBox::Warning, tr("Export waypoints"),
+                    tr("These routes are outdated: the mission changed after they were planned, so the "
+                       "files would not fly what the mission now says."),
+                    QMessageBox::Cancel, this);
+    box.setInformativeText(tr("Wait for the new plan (the export starts by itself when it is ready), or "
+                              "export the outdated routes?"));
+    auto* wait = box.addButton(tr("Wait for the new plan"), QMessageBox::AcceptRole);
+    auto* anyway = box.addButton(tr("Export outdated routes"), QMessageBox::DestructiveRole);
+    box.setDefaultButton(wait);
+    box.exec();
+    if (box.clickedButton() == static_cast<QAbstractButton*>(anyway))
+        return true;
+    if (box.clickedButton() == static_cast<QAbstractButton*>(wait)) {
+        m_waiting = true;
+        if (!m_planner->isBusy())
+            m_planner->planNow();
+        refreshBanner();
+        onPlanStateChanged(); // a plan may already be there (e.g. the mission has nothing to plan)
+    }
+    return false;
+}
+
+bool ExportDialog::confirmRouteErrors(const QStringList& problems) {
+    QMessageBox box(QMessageBox::Critical, tr("Export waypoints"),
+                    tr("The route check found %n problem(s). An aircraft flying these routes would enter a "
+                       "no-fly zone's safety margin or fly at an altitude out of its limits:",
+                       nullptr, problems.size()),
+                    QMessageBox::Cancel, this);
+    const int shown = std::min(12, int(problems.size()));
+    QString list = problems.mid(0, shown).join(QLatin1Char('\n'));
+    if (shown < problems.size())
+        list += QLatin1Char('\n') + tr("… and %n more (Show Details)", nullptr, int(problems.size()) - shown);
+    box.setInformativeText(list);
+    box.setDetailedText(problems.join(QLatin1Char('\n')));
+    auto* anyway = box.addButton(tr("Export anyway"), QMessageBox::DestructiveRole);
+    box.setDefaultButton(QMessageBox::Cancel);
+    box.exec();
+    return box.clickedButton() == static_cast<QAbstractButton*>(anyway);
 }
 
 } // namespace pf::ui

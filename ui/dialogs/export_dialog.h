@@ -10,25 +10,54 @@
 
 class QCheckBox;
 class QComboBox;
+class QLabel;
 class QLineEdit;
 class QPlainTextEdit;
+class QPushButton;
+class QVBoxLayout;
 
 namespace pf::ui {
 
 class MissionDocument;
+class PlanController;
 
 class ExportDialog : public QDialog {
     Q_OBJECT
 public:
-    ExportDialog(MissionDocument* doc, const QString& folder, QWidget* parent = nullptr);
+    ExportDialog(MissionDocument* doc, PlanController* planner, const QString& folder,
+                 QWidget* parent = nullptr);
 
     // What the controls ask for.
     ExportRequest request() const;
     // Writes the files and lists them (or the error) in the dialog; returns the paths written.
+    // Never writes silently what the user would not expect: an outdated plan asks first (default:
+    // wait for the new plan, then export), routes with errors are listed and need a confirmation.
     QStringList runExport();
+    // Waiting for the new plan before exporting.
+    bool isWaiting() const { return m_waiting; }
+    // The banner above the controls ("Outdated plan: …", route problems); empty when hidden.
+    QString bannerText() const;
+    QPushButton* exportButton() const { return m_exportButton; }
+
+signals:
+    // After an export that ran (the files written, or the error), e.g. one that waited for a plan.
+    void exported(const QStringList& written);
 
 private:
+    // ---- what is confirmed before writing (plan state, route check)
+    bool confirmCurrentPlan();
+    bool confirmRouteErrors(const QStringList& problems);
+    void onPlanStateChanged();
+    void refreshBanner();
+    void rebuildRouteBoxes();
+    void report(const QStringList& written, const QString& error);
+
     MissionDocument* m_doc;
+    PlanController* m_planner;
+    QLabel* m_banner;
+    QVBoxLayout* m_routeLayout;
+    QPushButton* m_exportButton;
+    bool m_waiting = false;
     std::map<io::WaypointFormat, QCheckBox*> m_formats;
     std::vector<QCheckBox*> m_routes;
     QCheckBox* m_perAircraft;

@@ -6,6 +6,7 @@
 #include "ui/shape_validation.h"
 
 #include <QGraphicsScene>
+#include <QGraphicsView>
 #include <QPainter>
 #include <QStyleOptionGraphicsItem>
 
@@ -88,27 +89,112 @@ double groundArea(const geo::GeoPolygon& poly) {
 
 // ---------------------------------------------------------------- ShapeItem
 
+namespace {
+
+// A shape's name drawn at a constant screen size above the flight paths (z 45; routes are at 30).
+class ShapeLabelItem : public QGraphicsItem {
+public:
+    // `slot`: the owner's pointer to this label, cleared when the scene deletes the label first.
+    explicit ShapeLabelItem(QGraphicsItem** slot) : m_slot(slot) {
+        setFlag(ItemIgnoresTransformations);
+        setZValue(45);
+        setAcceptedMouseButtons(Qt::NoButton);
+    }
+    void set(const QString& text, const QColor& colour, double shapeWidthScene) {
+        prepareGeometryChange();
+        m_text = text;
+        m_colour = colour;
+        m_shapeWidth = shapeWidthScene;
+        QFont f;
+        f.setPointSizeF(8.5);
+        f.setBold(true);
+        m_font = f;
+        m_box = QRectF(QFontMetricsF(f).boundingRect(m_text)).adjusted(-5, -2, 5, 2);
+        m_box.moveCenter(QPointF(0, 0));
+        setVisible(!m_text.isEmpty());
+    }
+    ~ShapeLabelItem() override {
+        if (m_slot) *m_slot = nullptr;
+    }
+    void release() { m_slot = nullptr; }
+    QRectF boundingRect() const override { return m_box; }
+    void paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget* widget) override {
+        // Only where the label fits its shape on screen.
+        auto* view = widget ? qobject_cast<QGraphicsView*>(widget->parentWidget()) : nullptr;
+        if (view && m_box.width() > m_shapeWidth * view->transform().m11() * 1.5) return;
+        p->setRenderHint(QPainter::Antialiasing);
+        p->setPen(Qt::NoPen);
+        p->setBrush(QColor(255, 255, 255, 210));
+        p->drawRoundedRect(m_box, 3, 3);
+        p->setFont(m_font);
+        p->setPen(m_colour);
+        p->drawText(m_box, Qt::AlignCenter, m_text);
+    }
+
+private:
+    QString m_text;
+    QColor m_colour;
+    QFont m_font;
+    QRectF m_box;
+    double m_shapeWidth = 0;
+    QGraphicsItem** m_slot;
+};
+
+} // namespace
+
 ShapeItem::ShapeItem(ShapeStyle style, QGraphicsItem* parent) : QGraphicsItem(parent), m_style(style) {
     setZValue(style == ShapeStyle::Area ? 10 : style == ShapeStyle::NoFly ? 20 : 50);
+    m_labelItem = new ShapeLabelItem(&m_labelItem);
+    m_labelItem->setVisible(false);
+}
+
+ShapeItem::~ShapeItem() {
+    if (!m_labelItem) return;
+    static_cast<ShapeLabelItem*>(m_labelItem)->release();
+    delete m_labelItem;
+}
+
+QVariant ShapeItem::itemChange(GraphicsItemChange change, const QVariant& value) {
+    if (!m_labelItem) return QGraphicsItem::itemChange(change, value);
+    if (change == ItemSceneHasChanged) {
+        if (m_labelItem->scene()) m_labelItem->scene()->removeItem(m_labelItem);
+        if (scene()) scene()->addItem(m_labelItem);
+    }
+    if (change == ItemVisibleHasChanged) m_labelItem->setVisible(isVisible() && !m_label.isEmpty());
+    return QGraphicsItem::itemChange(change, value);
+}
+
+void ShapeItem::placeLabel() {
+    if (!m_labelItem) return;
+    QRectF r;
+    for (const auto& ring : m_rings) r = r.united(ring.boundingRect());
+    const Palette pal = paletteFor(m_style, !m_problem.isEmpty());
+    static_cast<ShapeLabelItem*>(m_labelItem)->set(m_rings.isEmpty() ? QString() : m_label, pal.stroke.darker(130), r.width());
+    m_labelItem->setPos(m_labelAnchor ? *m_labelAnchor : r.center());
+    m_labelItem->setVisible(isVisible() && !m_label.isEmpty() && !m_rings.isEmpty());
 }
 
 void ShapeItem::setRings(const QVector<QPolygonF>& rings) {
     prepareGeometryChange();
     m_rings = rings;
+    placeLabel();
 }
 
 void ShapeItem::setProblem(const QString& problem) {
     m_problem = problem;
+    placeLabel();
     update();
 }
 
 void ShapeItem::setLabel(const QString& label) {
     m_label = label;
+    placeLabel();
     update();
 }
 
 void ShapeItem::setLabelAnchor(std::optional<QPointF> anchor) {
     m_labelAnchor = anchor;
+    placeLabel();
     update();
 }
 
@@ -191,22 +277,6 @@ void ShapeItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidge
                 const double h = sel ? kHandlePx + 3 : kHandlePx;
                 painter->drawRect(QRectF(c.x() - h / 2, c.y() - h / 2, h, h));
             }
-        }
-    }
-    if (!m_label.isEmpty()) {
-        const QPointF c = m_labelAnchor ? toDevice.map(*m_labelAnchor) : devicePath.boundingRect().center();
-        QFont f = painter->font();
-        f.setPointSizeF(8.5);
-        f.setBold(true);
-        painter->setFont(f);
-        const QRectF box = QRectF(painter->fontMetrics().boundingRect(m_label)).adjusted(-5, -2, 5, 2);
-        const QRectF r = box.translated(c - box.center());
-        if (r.width() < devicePath.boundingRect().width() * 1.5) {
-            painter->setPen(Qt::NoPen);
-            painter->setBrush(QColor(255, 255, 255, 210));
-            painter->drawRoundedRect(r, 3, 3);
-            painter->setPen(pal.stroke.darker(130));
-            painter->drawText(r, Qt::AlignCenter, m_label);
         }
     }
     painter->restore();

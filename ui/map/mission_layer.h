@@ -23,6 +23,7 @@ enum class ShapeStyle { Area, NoFly, Preview };
 class ShapeItem : public QGraphicsItem {
 public:
     ShapeItem(ShapeStyle style, QGraphicsItem* parent = nullptr);
+    ~ShapeItem() override;
     void setRings(const QVector<QPolygonF>& rings); // scene coords; ring 0 outer
     const QVector<QPolygonF>& rings() const { return m_rings; }
     void setProblem(const QString& problem); // non-empty: drawn in the warning style
@@ -37,10 +38,17 @@ public:
     QRectF boundingRect() const override;
     QPainterPath shape() const override;
     void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
+    // The label is an item of its own above the flight paths, so that no path hides it.
+    QGraphicsItem* labelItem() const { return m_labelItem; }
+
+protected:
+    QVariant itemChange(GraphicsItemChange change, const QVariant& value) override;
 
 private:
     QPainterPath path() const;
+    void placeLabel();
     ShapeStyle m_style;
+    QGraphicsItem* m_labelItem = nullptr;
     QVector<QPolygonF> m_rings;
     QString m_problem;
     QString m_label;

@@ -16,6 +16,7 @@ namespace pf::ui {
 
 namespace {
 
+constexpr qreal kOutdatedOpacity = 0.35;
 constexpr qreal kZPartition = 12, kZGrid = 13, kZFootprints = 14, kZUncovered = 16, kZRoutes = 30;
 
 QColor colourFromHex(const std::string& hex, int fallbackIndex) {
@@ -237,6 +238,10 @@ PlanLayer::PlanLayer(MissionDocument* doc, PlanController* planner, QGraphicsSce
     connect(m_doc, &MissionDocument::changed, this, &PlanLayer::rebuildRoutes);
 }
 
+bool PlanLayer::isOutdated() const {
+    return m_planner->isOutdated();
+}
+
 PlanLayer::~PlanLayer() = default; // the scene owns and deletes the items
 
 void PlanLayer::clearItems(std::vector<QGraphicsItem*>& items) {
@@ -339,13 +344,22 @@ void PlanLayer::rebuildRoutes() {
         m_scene->addItem(item);
         m_routes.push_back(item);
     }
+    // A new set of routes (a plan, a reset): indices of the old selection name other waypoints now.
+    if (m_generation != m_doc->routeGeneration()) {
+        m_generation = m_doc->routeGeneration();
+        if (m_selRoute >= 0) {
+            m_selRoute = -1;
+            m_selWaypoints.clear();
+            emit waypointSelectionChanged();
+        }
+    }
     m_issues.clear();
     m_problems.clear();
     clearItems(m_footprints);
     m_footprintCount = 0;
     const auto& plan = m_planner->plan();
-    QPainterPath footprints;
     for (std::size_t r = 0; r < routes.size(); ++r) {
+        QPainterPath footprints;
         const auto& pr = routes[r];
         RouteItem::Data d;
         d.colour = colourOf(int(r));
@@ -365,6 +379,11 @@ void PlanLayer::rebuildRoutes() {
                     for (const auto& s : ap.sorties)
                         d.sortieStarts << s.firstWaypoint;
         RouteIssues issues = validateRoute(m, pr.route);
+        const QString who = QString::fromStdString(pr.route.aircraft);
+        if (!issues.fromHome.isEmpty())
+            m_problems << tr("%1, take-off: %2").arg(who, issues.fromHome);
+        if (!issues.toHome.isEmpty())
+            m_problems << tr("%1, landing: %2").arg(who, issues.toHome);
         for (std::size_t i = 0; i < issues.waypoint.size(); ++i) {
             d.badPoint << !issues.waypoint[i].isEmpty();
             if (!issues.waypoint[i].isEmpty())
@@ -410,12 +429,16 @@ void PlanLayer::rebuildRoutes() {
                 }
             }
         }
-    }
-    if (!footprints.isEmpty()) {
-        auto* f = new PathItem(footprints, QPen(QColor(20, 60, 160, 120), 0.7),
-                               QColor(60, 120, 255, 18), kZFootprints);
-        m_scene->addItem(f);
-        m_footprints.push_back(f);
+        if (!footprints.isEmpty()) {
+            // In the route's colour, so that overlapping aircraft can be told apart.
+            const QColor c = colourOf(int(r));
+            QColor edge = c.darker(120), fill = c;
+            edge.setAlpha(150);
+            fill.setAlpha(22);
+            auto* f = new PathItem(footprints, QPen(edge, 0.7), fill, kZFootprints);
+            m_scene->addItem(f);
+            m_footprints.push_back(f);
+        }
     }
     if (m_selRoute >= int(routes.size())) {
         m_selRoute = -1;
@@ -427,6 +450,13 @@ void PlanLayer::rebuildRoutes() {
 }
 
 void PlanLayer::applyVisibility() {
+    // An outdated plan is drawn faded: it is not what the mission asks for any more.
+    const qreal opacity = isOutdated() ? kOutdatedOpacity : 1.0;
+    for (auto* list : {&m_partition, &m_grid, &m_footprints, &m_uncovered})
+        for (auto* i : *list)
+            i->setOpacity(opacity);
+    for (auto* r : m_routes)
+        r->setOpacity(opacity);
     for (auto* i : m_partition)
         i->setVisible(isVisible(Part::Partition));
     for (auto* i : m_grid)

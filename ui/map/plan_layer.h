@@ -113,6 +113,8 @@ public:
     QStringList routeProblems() const { return m_problems; }
     const std::vector<RouteIssues>& issues() const { return m_issues; }
     QColor colourOf(int route) const;
+    // The plan drawn is outdated (the mission changed since): every item is drawn faded.
+    bool isOutdated() const;
 
 signals:
     void waypointSelectionChanged();
@@ -136,6 +138,7 @@ private:
     QStringList m_problems;
     int m_footprintCount = 0;
     int m_selRoute = -1;
+    int m_generation = -1; // the document's route generation the selection belongs to
     QList<int> m_selWaypoints;
     double m_mpp = 1.0;
     bool m_show[7] = {true, true, false, true, false, true, true};

@@ -1,5 +1,6 @@
 #include "ui/panels/aircraft_panel.h"
 
+#include "core/mission/validation.h"
 #include "core/sensor/camera.h"
 #include "ui/commands/add_aircraft_command.h"
 #include "ui/commands/edit_aircraft_command.h"
@@ -51,6 +52,11 @@ QDoubleSpinBox* spin(double min, double max, int decimals, double step, const QS
     return s;
 }
 
+// A wrapped label in a form row gets the height of one line unless it is told its height.
+void fitHeight(QLabel* label, int fieldWidth) {
+    label->setMinimumHeight(label->heightForWidth(std::max(120, fieldWidth)));
+}
+
 // A generic 1" 20 MP camera for custom aircraft when the catalog has none.
 sensor::Camera genericCamera() {
     sensor::Camera c;
@@ -83,6 +89,9 @@ AircraftPanel::AircraftPanel(MissionDocument* doc, io::Catalog catalog, QWidget*
     m_list = new QListWidget;
     m_list->setMaximumHeight(110);
     m_list->setIconSize(QSize(14, 14));
+    // A long camera name is shortened in the middle, never cut by a scroll bar; the tip has it all.
+    m_list->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_list->setTextElideMode(Qt::ElideMiddle);
     layout->addWidget(m_list);
 
     auto* buttons = new QHBoxLayout;
@@ -114,10 +123,22 @@ AircraftPanel::AircraftPanel(MissionDocument* doc, io::Catalog catalog, QWidget*
     m_model->setStyleSheet(QStringLiteral("color: palette(mid);"));
     m_camera = new QComboBox;
     for (const auto& cam : m_catalog.cameras) m_camera->addItem(QString::fromStdString(cam.name));
-    m_altitude = spin(1.0, 5000.0, 1, 5.0, tr(" m"));
-    m_gsd = spin(0.01, 500.0, 2, 0.1, tr(" cm/px"));
+    // Wide ranges: a value out of the aircraft's limits is refused with the reason (below the field)
+    // instead of being clamped or reverted without a word.
+    m_altitude = spin(0.0, 99999.0, 1, 5.0, tr(" m"));
+    m_altitude->setObjectName(QStringLiteral("AltitudeBox"));
+    m_gsd = spin(0.0, 9999.0, 2, 0.1, tr(" cm/px"));
+    m_gsd->setObjectName(QStringLiteral("GsdBox"));
+    m_altitudeError = new QLabel;
+    m_altitudeError->setObjectName(QStringLiteral("AltitudeError"));
+    m_altitudeError->setWordWrap(true);
+    m_altitudeError->setStyleSheet(QStringLiteral("QLabel { color: #b00020; font-weight: bold; }"));
+    m_altitudeError->hide();
     m_footprint = new QLabel;
     m_footprint->setWordWrap(true);
+    m_footprint->setMinimumWidth(120);
+    m_camera->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_camera->setMinimumContentsLength(12);
     m_front = spin(0.0, 95.0, 0, 5.0, tr(" %"));
     m_side = spin(0.0, 95.0, 0, 5.0, tr(" %"));
     m_speed = spin(0.5, 60.0, 1, 0.5, tr(" m/s"));
@@ -128,6 +149,7 @@ AircraftPanel::AircraftPanel(MissionDocument* doc, io::Catalog catalog, QWidget*
     form->addRow(tr("Camera"), m_camera);
     form->addRow(tr("Altitude"), m_altitude);
     form->addRow(tr("GSD"), m_gsd);
+    form->addRow(QString(), m_altitudeError);
     form->addRow(tr("Footprint"), m_footprint);
     form->addRow(tr("Front overlap"), m_front);
     form->addRow(tr("Side overlap"), m_side);
@@ -158,12 +180,14 @@ AircraftPanel::AircraftPanel(MissionDocument* doc, io::Catalog catalog, QWidget*
     });
     // Altitude and GSD drive each other: whichever the user edits becomes the one stored.
     connect(m_altitude, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        if (!acceptAltitude(v, false)) return;
         editCurrent(tr("altitude"), [&](mission::AircraftConfig& a) {
             a.altitudeM = v;
             a.gsdCm.reset();
         });
     });
     connect(m_gsd, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        if (!acceptAltitude(v, true)) return;
         editCurrent(tr("GSD"), [&](mission::AircraftConfig& a) {
             a.gsdCm = v;
             a.altitudeM.reset();
@@ -197,6 +221,47 @@ AircraftPanel::AircraftPanel(MissionDocument* doc, io::Catalog catalog, QWidget*
 }
 
 int AircraftPanel::current() const { return m_list->currentRow(); }
+
+QString AircraftPanel::altitudeError() const { return m_altitudeError->isHidden() ? QString() : m_altitudeError->text(); }
+
+bool AircraftPanel::acceptAltitude(double value, bool isGsd) {
+    if (m_updating) return false;
+    const int i = current();
+    if (i < 0 || std::size_t(i) >= m_doc->mission().aircraft.size()) return false;
+    const mission::AircraftConfig& a = m_doc->mission().aircraft[std::size_t(i)];
+    QStringList why;
+    double alt = value;
+    if (isGsd) {
+        if (!(value > 0)) {
+            why << tr("the ground sample distance must be greater than 0 cm/px");
+        } else if (auto fromGsd = sensor::altitudeForGsd(a.camera, value); !fromGsd) {
+            why << QString::fromStdString(fromGsd.error().message);
+        } else {
+            alt = *fromGsd;
+        }
+    }
+    if (why.isEmpty()) {
+        // The dock shows one aircraft: its name in front of each reason would only repeat the form.
+        const QString who = QStringLiteral("aircraft \"%1\": ").arg(QString::fromStdString(a.name));
+        for (const auto& e : mission::altitudeErrors(m_doc->mission(), a, alt)) {
+            QString line = QString::fromStdString(e);
+            if (line.startsWith(who)) line = line.mid(who.size());
+            why << line;
+        }
+    }
+    if (why.isEmpty()) {
+        m_altitudeError->hide();
+        return true;
+    }
+    // Refused: the stored value comes back into the box, the reason stays in view.
+    m_altitudeError->setText(
+        (isGsd ? tr("%1 cm/px not applied: %2").arg(value, 0, 'f', 2) : tr("%1 m not applied: %2").arg(value, 0, 'f', 1))
+            .arg(why.join(QStringLiteral("; "))));
+    m_altitudeError->show();
+    fitHeight(m_altitudeError, m_altitude->width());
+    refreshForm(/*keepError=*/true);
+    return false;
+}
 
 void AircraftPanel::setCurrent(int index) { m_list->setCurrentRow(index); }
 
@@ -270,6 +335,7 @@ void AircraftPanel::refreshList() {
         auto* item = new QListWidgetItem(swatch(QString::fromStdString(a.colour)),
                                          QStringLiteral("%1  —  %2").arg(QString::fromStdString(a.name),
                                                                          QString::fromStdString(a.camera.name)));
+        item->setToolTip(item->text());
         m_list->addItem(item);
     }
     const int n = m_list->count();
@@ -278,12 +344,25 @@ void AircraftPanel::refreshList() {
     m_updating = was;
 }
 
-void AircraftPanel::refreshForm() {
+void AircraftPanel::refreshForm(bool keepError) {
     const int i = current();
     const bool has = i >= 0 && std::size_t(i) < m_doc->mission().aircraft.size();
     m_form->setEnabled(has);
     m_removeButton->setEnabled(has);
+    if (!keepError) m_altitudeError->hide();
     if (!has) {
+        // No aircraft: the greyed form shows nothing of one that is gone.
+        const QList<QDoubleSpinBox*> boxes{m_altitude, m_gsd, m_front, m_side, m_speed, m_endurance};
+        for (auto* b : boxes) {
+            const QSignalBlocker block(b);
+            b->clear();
+        }
+        const QSignalBlocker block(m_camera);
+        m_name->clear();
+        m_model->clear();
+        m_camera->setCurrentIndex(-1);
+        m_colour->setText(QString());
+        m_colour->setIcon(QIcon());
         m_footprint->setText(tr("Add an aircraft to choose its camera and altitude."));
         return;
     }
@@ -300,6 +379,7 @@ void AircraftPanel::refreshForm() {
         camIndex = m_camera->count() - 1;
     }
     m_camera->setCurrentIndex(camIndex);
+    m_camera->setToolTip(m_camera->currentText());
 
     const auto alt = effectiveAltitude(a);
     std::optional<double> gsd = a.gsdCm;
@@ -309,7 +389,11 @@ void AircraftPanel::refreshForm() {
     }
     if (alt) m_altitude->setValue(*alt);
     if (gsd) m_gsd->setValue(*gsd);
-    m_altitude->setMaximum(std::max(5000.0, a.maxAltitudeM));
+    m_altitude->setToolTip(tr("Flight altitude above take-off: %1 to %2 m for this aircraft, photos at least %3 m "
+                              "on the ground")
+                               .arg(mission::kMinSafeAltitudeM, 0, 'f', 0)
+                               .arg(a.maxAltitudeM, 0, 'f', 0)
+                               .arg(mission::kMinFootprintM, 0, 'f', 0));
     m_front->setValue(a.overlap.front * 100.0);
     m_side->setValue(a.overlap.side * 100.0);
     m_speed->setValue(a.cruiseSpeedMps);
@@ -330,12 +414,18 @@ void AircraftPanel::refreshForm() {
         } else {
             text = QString::fromStdString(fp.error().message);
         }
-        if (*alt > a.maxAltitudeM)
-            text += tr("\nAbove this aircraft's maximum altitude (%1 m).").arg(a.maxAltitudeM, 0, 'f', 0);
+        // A value from a mission file can be out of limits too: say so in red, it will not be planned.
+        QStringList errors;
+        for (const auto& e : mission::altitudeErrors(m_doc->mission(), a, *alt)) errors << QString::fromStdString(e).toHtmlEscaped();
+        text = text.toHtmlEscaped().replace(QLatin1Char('\n'), QStringLiteral("<br>"));
+        if (!errors.isEmpty())
+            text += QStringLiteral("<br><span style='color:#b00020; font-weight:bold'>%1</span>")
+                        .arg(tr("Not plannable: %1").arg(errors.join(QStringLiteral("; "))));
     } else {
         text = tr("Set an altitude or a GSD.");
     }
     m_footprint->setText(text);
+    fitHeight(m_footprint, m_altitude->width());
     m_updating = false;
 }
 

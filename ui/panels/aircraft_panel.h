@@ -42,11 +42,16 @@ public:
     QDoubleSpinBox* speedBox() const { return m_speed; }
     QDoubleSpinBox* enduranceBox() const { return m_endurance; }
     QLabel* footprintLabel() const { return m_footprint; }
+    // Why the last altitude or GSD typed was refused; empty when none was.
+    QString altitudeError() const;
     void setColour(const QColor& colour);
 
 private:
     void refreshList();
-    void refreshForm();
+    void refreshForm(bool keepError = false);
+    // Checks a typed altitude (or GSD) against the aircraft's limits (mission::altitudeErrors); a
+    // refused value shows its reason and the box gets the stored value back.
+    bool acceptAltitude(double value, bool isGsd);
     void editCurrent(const QString& field, const std::function<void(mission::AircraftConfig&)>& change);
     QString nextName(const QString& base) const;
     QString nextColour() const;
@@ -65,6 +70,7 @@ private:
     QDoubleSpinBox* m_altitude;
     QDoubleSpinBox* m_gsd;
     QLabel* m_footprint;
+    QLabel* m_altitudeError;
     QDoubleSpinBox* m_front;
     QDoubleSpinBox* m_side;
     QDoubleSpinBox* m_speed;

@@ -1,6 +1,8 @@
 #include "ui/panels/statistics_panel.h"
 
 #include "core/geo/local_frame.h"
+#include "core/mission/planner_kinds.h"
+#include "ui/commands/set_planner_options_command.h"
 #include "ui/mission_document.h"
 #include "ui/planning/plan_controller.h"
 
@@ -8,15 +10,20 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
+#include <QTabWidget>
 #include <QTableWidget>
+#include <QUndoStack>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
 namespace pf::ui {
 
 namespace {
+
+const QString kDash = QStringLiteral("–");
 
 QString minutes(double seconds) {
     const int s = int(std::lround(seconds));
@@ -36,15 +43,24 @@ QTableWidget* makeTable(const QStringList& headers) {
     t->setHorizontalHeaderLabels(headers);
     t->verticalHeader()->hide();
     t->verticalHeader()->setDefaultSectionSize(22);
-    // Columns share the width: a horizontal scroll bar would hide the last row in a short dock.
-    t->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
-    t->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
-    t->horizontalHeader()->setMinimumSectionSize(40);
-    t->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    // The figures always show in full; the name column takes the rest and elides a long name.
+    t->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    t->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    t->horizontalHeader()->setMinimumSectionSize(36);
+    t->setTextElideMode(Qt::ElideRight);
     t->setVerticalScrollBarPolicy(Qt::ScrollBarAsNeeded);
     t->setEditTriggers(QAbstractItemView::NoEditTriggers);
     t->setSelectionMode(QAbstractItemView::NoSelection);
     return t;
+}
+
+QLabel* banner() {
+    auto* l = new QLabel;
+    l->setWordWrap(true);
+    l->setStyleSheet(QStringLiteral("QLabel { color: #6b3a00; background: #ffe8b0; padding: 2px 6px; "
+                                    "border-radius: 3px; font-weight: bold; }"));
+    l->hide();
+    return l;
 }
 
 } // namespace
@@ -52,72 +68,132 @@ QTableWidget* makeTable(const QStringList& headers) {
 StatisticsPanel::StatisticsPanel(MissionDocument* doc, PlanController* planner, QWidget* parent)
     : QWidget(parent), m_doc(doc), m_planner(planner) {
     setObjectName(QStringLiteral("StatisticsPanel"));
+    m_state = banner();
+    m_state->setObjectName(QStringLiteral("PlanStateLabel"));
     m_stats = makeTable({tr("Aircraft"), tr("Photos"), tr("km"), tr("Time"), tr("Turns"),
                          tr("Sorties"), tr("Cover %"), tr("Plan ms")});
     m_compare = makeTable({tr("Planner"), tr("Photos"), tr("km"), tr("Time"), tr("Turns"),
-                           tr("Cover %"), tr("Plan ms")});
+                           tr("Cover %"), tr("No-fly"), tr("Plan ms"), QString()});
     const QStringList tips = {QString(),
                               tr("Photos taken"),
                               tr("Distance flown, home to home"),
-                              tr("Flight time (min:s), transit and every sortie included"),
+                              tr("Flight time (min:s), transit and every sortie included; in total the "
+                                 "longest aircraft's, as they fly at the same time"),
                               tr("Turns"),
-                              tr("Sorties: batteries needed")};
+                              tr("Sorties: batteries needed"),
+                              tr("Cells of its part photographed; in total the share of the area seen by "
+                                 "the real footprints of all photos (the independent coverage check)"),
+                              tr("Time to plan this aircraft's own part (its grid, path and photos); the "
+                                 "total adds them up. Sharing the area between the aircraft comes on top "
+                                 "(see below the table)")};
     for (int c = 1; c < tips.size(); ++c)
         m_stats->horizontalHeaderItem(c)->setToolTip(tips[c]);
+    m_compare->horizontalHeaderItem(CNoFly)->setToolTip(
+        tr("No-fly crossings: waypoints and legs (from and back to home included) inside a no-fly "
+           "zone or its safety margin. Export asks before writing such routes."));
+    m_compare->horizontalHeaderItem(CPlanMs)->setToolTip(tr("Time to plan the whole mission with this planner"));
+    m_planTime = new QLabel;
+    m_planTime->setObjectName(QStringLiteral("PlanTimeLabel"));
+    m_planTime->setWordWrap(true);
+    m_planTime->setStyleSheet(QStringLiteral("QLabel { color: palette(dark); }"));
     m_compareButton =
         new QPushButton(QIcon(QStringLiteral(":/icons/compare.svg")), tr("Compare planners"));
-    m_compareButton->setToolTip(
-        tr("Plan the current mission with stride, raster and wavefront and compare them"));
+    m_compareButton->setToolTip(tr("Plan the current mission with every planner and compare them"));
     m_compareState = new QLabel;
-    // Room for a header and three rows each (two aircraft and the total; the three planners).
-    m_stats->setMinimumHeight(26 + 3 * 22 + 4);
-    m_compare->setMinimumHeight(26 + 3 * 22 + 4);
-    auto* lay = new QVBoxLayout(this);
-    lay->setContentsMargins(4, 4, 4, 4);
-    lay->setSpacing(3);
-    lay->addWidget(m_stats, 3);
+    m_compareState->setWordWrap(true);
+    auto* meaning = new QLabel(
+        tr("Every planner on this same mission; figures for the whole mission (time: the longest flight; "
+           "No-fly: waypoints and legs in a no-fly margin). <i>Use</i> makes it the mission's planner "
+           "(Ctrl+Z undoes)."));
+    meaning->setObjectName(QStringLiteral("ComparisonMeaning"));
+    meaning->setWordWrap(true);
+    meaning->setStyleSheet(QStringLiteral("QLabel { color: palette(dark); }"));
+    // Room for a header and two rows each.
+    m_stats->setMinimumHeight(26 + 2 * 22 + 4);
+    m_compare->setMinimumHeight(26 + 2 * 22 + 4);
+    // Two pages, so that neither the figures nor the comparison are squeezed in a short dock.
+    auto* planPage = new QWidget;
+    auto* pl = new QVBoxLayout(planPage);
+    pl->setContentsMargins(2, 2, 2, 2);
+    pl->setSpacing(3);
+    pl->addWidget(m_state);
+    pl->addWidget(m_stats, 1);
+    pl->addWidget(m_planTime);
+    auto* comparePage = new QWidget;
+    auto* cl = new QVBoxLayout(comparePage);
+    cl->setContentsMargins(2, 2, 2, 2);
+    cl->setSpacing(3);
     auto* row = new QHBoxLayout;
     row->addWidget(m_compareButton);
     row->addWidget(m_compareState, 1);
-    lay->addLayout(row);
-    lay->addWidget(m_compare, 2);
+    cl->addLayout(row);
+    cl->addWidget(meaning);
+    cl->addWidget(m_compare, 1);
+    m_pages = new QTabWidget;
+    m_pages->setObjectName(QStringLiteral("StatisticsPages"));
+    m_pages->setDocumentMode(true);
+    m_pages->addTab(planPage, tr("Plan"));
+    m_pages->addTab(comparePage, tr("Compare planners"));
+    auto* lay = new QVBoxLayout(this);
+    lay->setContentsMargins(2, 2, 2, 2);
+    lay->addWidget(m_pages);
     connect(m_compareButton, &QPushButton::clicked, m_planner, &PlanController::compare);
     connect(m_planner, &PlanController::planChanged, this, &StatisticsPanel::refreshStatistics);
+    connect(m_planner, &PlanController::busyChanged, this, &StatisticsPanel::refreshState);
+    connect(m_planner, &PlanController::pendingPlanChanged, this, &StatisticsPanel::refreshState);
     connect(m_doc, &MissionDocument::routesChanged, this, &StatisticsPanel::refreshStatistics);
+    connect(m_doc, &MissionDocument::changed, this, &StatisticsPanel::refreshState);
+    connect(m_doc, &MissionDocument::changed, this, &StatisticsPanel::refreshComparison);
     connect(m_planner, &PlanController::comparisonChanged, this,
             &StatisticsPanel::refreshComparison);
     refreshStatistics();
     refreshComparison();
 }
 
+QString StatisticsPanel::stateText() const {
+    return m_state->isHidden() ? QString() : m_state->text();
+}
+
+void StatisticsPanel::refreshState() {
+    QString text;
+    if (m_planner->isOutdated()) {
+        const QString why = tr("Outdated: the mission changed after this plan was made.");
+        if (m_planner->hasPendingPlan())
+            text = why + QLatin1Char(' ') + tr("A new plan waits: replace or keep the edited paths (status bar).");
+        else if (m_planner->isBusy())
+            text = why + QLatin1Char(' ') + tr("Planning the new one…");
+        else if (!m_planner->lastError().isEmpty())
+            text = why + QLatin1Char(' ') + tr("The new one could not be made (see Problems).");
+        else
+            text = why + QLatin1Char(' ') + tr("Press F5 to plan it.");
+    }
+    m_state->setText(text);
+    m_state->setHidden(text.isEmpty());
+    m_pages->setTabText(0, text.isEmpty() ? tr("Plan") : tr("Plan (outdated)"));
+    // The figures of an outdated plan are greyed like its paths on the map.
+    m_stats->setEnabled(text.isEmpty());
+}
+
 void StatisticsPanel::refreshStatistics() {
+    refreshState();
     m_stats->setRowCount(0);
+    m_planTime->clear();
     const auto& plan = m_planner->plan();
     if (!plan)
         return;
     const auto& mission = m_doc->mission();
-    int batteriesTotal = 0;
-    int photosDelta = 0;
-    double distanceDelta = 0.0;
+    int batteriesTotal = 0, photosTotal = 0, turnsTotal = 0;
+    double distanceTotal = 0.0, longestS = 0.0, planMsTotal = 0.0;
     for (const auto& ap : plan->aircraft) {
         const int r = m_stats->rowCount();
         m_stats->insertRow(r);
-        // Batteries: flights of the usable endurance (the reserve kept) this aircraft's time needs.
-        // The plan's sorties when the core cut the flight into them; else an estimate.
-        const double timeS = ap.timeS > 0 ? ap.timeS : ap.metrics.estimatedTimeS;
-        const double distanceM =
-            ap.flightDistanceM > 0 ? ap.flightDistanceM : ap.metrics.pathLengthM;
-        int batteries = std::max<int>(1, int(ap.sorties.size()));
         QColor colour(Qt::gray);
-        for (const auto& a : mission.aircraft) {
-            if (a.name != ap.aircraft)
-                continue;
-            const double usableS = a.enduranceMin * 60.0 * (1.0 - mission.options.batteryReserve);
-            if (ap.sorties.empty() && usableS > 0)
-                batteries = std::max(1, int(std::ceil(timeS / usableS)));
-            colour = QColor(QString::fromStdString(a.colour));
-        }
-        batteriesTotal += batteries;
+        const mission::AircraftConfig* config = nullptr;
+        for (const auto& a : mission.aircraft)
+            if (a.name == ap.aircraft) {
+                config = &a;
+                colour = QColor(QString::fromStdString(a.colour));
+            }
         bool edited = false;
         const route::Route* flown = nullptr;
         for (const auto& pr : m_doc->routes())
@@ -125,6 +201,33 @@ void StatisticsPanel::refreshStatistics() {
                 edited = pr.edited;
                 flown = &pr.route;
             }
+        auto* name = cell(QString::fromStdString(ap.aircraft) + (edited ? tr(" (edited)") : QString()),
+                          Qt::AlignLeft | Qt::AlignVCenter);
+        name->setToolTip(edited ? tr("%1: photos, distance and time measured on the route edited by hand")
+                                      .arg(QString::fromStdString(ap.aircraft))
+                                : QString::fromStdString(ap.aircraft));
+        QPixmap swatch(12, 12);
+        swatch.fill(colour);
+        name->setIcon(QIcon(swatch));
+        m_stats->setItem(r, Aircraft, name);
+        const int waypoints = flown ? int(flown->waypoints.size()) : int(ap.route.waypoints.size());
+        if (waypoints == 0) {
+            // Nothing is flown: no figure would mean anything.
+            for (int c = Photos; c < StatColumns; ++c)
+                m_stats->setItem(r, c, cell(kDash));
+            name->setToolTip(tr("%1 has no waypoint to fly").arg(QString::fromStdString(ap.aircraft)));
+            continue;
+        }
+        // Batteries: flights of the usable endurance (the reserve kept) this aircraft's time needs.
+        // The plan's sorties when the core cut the flight into them; else an estimate.
+        const double timeS = ap.timeS > 0 ? ap.timeS : ap.metrics.estimatedTimeS;
+        const double distanceM = ap.flightDistanceM > 0 ? ap.flightDistanceM : ap.metrics.pathLengthM;
+        int batteries = std::max<int>(1, int(ap.sorties.size()));
+        if (config) {
+            const double usableS = config->enduranceMin * 60.0 * (1.0 - mission.options.batteryReserve);
+            if (ap.sorties.empty() && usableS > 0)
+                batteries = std::max(1, int(std::ceil(timeS / usableS)));
+        }
         int photos = ap.metrics.photos;
         double shownDistanceM = distanceM, shownTimeS = timeS;
         if (edited && flown && plan->frame) {
@@ -147,28 +250,21 @@ void StatisticsPanel::refreshStatistics() {
             const double speed = flown->cruiseSpeedMps > 0 ? flown->cruiseSpeedMps : 10.0;
             shownTimeS = std::max(0.0, timeS + (length - distanceM) / speed);
             shownDistanceM = length;
-            photosDelta += photos - ap.metrics.photos;
-            distanceDelta += length - distanceM;
         }
-        auto* name =
-            cell(QString::fromStdString(ap.aircraft) + (edited ? tr(" (edited)") : QString()),
-                 Qt::AlignLeft | Qt::AlignVCenter);
-        QPixmap swatch(12, 12);
-        swatch.fill(colour);
-        name->setIcon(QIcon(swatch));
-        m_stats->setItem(r, 0, name);
-        m_stats->setItem(r, 1, cell(QString::number(photos)));
-        m_stats->setItem(r, 2, cell(QString::number(shownDistanceM / 1000.0, 'f', 2)));
-        m_stats->setItem(r, 3, cell(minutes(shownTimeS)));
-        if (edited)
-            m_stats->item(r, 0)->setToolTip(
-                tr("Photos, distance and time measured on the edited route"));
-        m_stats->setItem(r, 4, cell(QString::number(ap.metrics.turns)));
-        m_stats->setItem(r, 5, cell(QString::number(batteries)));
-        const double cov =
-            ap.metrics.visitable > 0 ? 100.0 * ap.metrics.cells / ap.metrics.visitable : 0.0;
-        m_stats->setItem(r, 6, cell(QString::number(cov, 'f', 1)));
-        m_stats->setItem(r, 7, cell(QString::number(ap.metrics.planningMs, 'f', 0)));
+        batteriesTotal += batteries;
+        photosTotal += photos;
+        turnsTotal += ap.metrics.turns;
+        distanceTotal += shownDistanceM;
+        longestS = std::max(longestS, shownTimeS);
+        planMsTotal += ap.metrics.planningMs;
+        m_stats->setItem(r, Photos, cell(QString::number(photos)));
+        m_stats->setItem(r, Km, cell(QString::number(shownDistanceM / 1000.0, 'f', 2)));
+        m_stats->setItem(r, Time, cell(minutes(shownTimeS)));
+        m_stats->setItem(r, Turns, cell(QString::number(ap.metrics.turns)));
+        m_stats->setItem(r, Sorties, cell(QString::number(batteries)));
+        const double cov = ap.metrics.visitable > 0 ? 100.0 * ap.metrics.cells / ap.metrics.visitable : 0.0;
+        m_stats->setItem(r, Cover, cell(QString::number(cov, 'f', 1)));
+        m_stats->setItem(r, PlanMs, cell(QString::number(ap.metrics.planningMs, 'f', 0)));
     }
     const auto& t = plan->totals;
     const int r = m_stats->rowCount();
@@ -179,77 +275,125 @@ void StatisticsPanel::refreshStatistics() {
     const double cov = plan->coverageRatio > 0 ? 100.0 * plan->coverageRatio
                        : t.visitable > 0       ? 100.0 * t.cells / t.visitable
                                                : 0.0;
-    double distance = 0;
-    for (const auto& ap : plan->aircraft)
-        distance += ap.flightDistanceM > 0 ? ap.flightDistanceM : ap.metrics.pathLengthM;
-    const double makespan = plan->makespanS > 0 ? plan->makespanS : t.estimatedTimeS;
+    const bool anything = photosTotal > 0 || distanceTotal > 0;
     const QStringList values = {tr("Total"),
-                                QString::number(t.photos + photosDelta),
-                                QString::number((distance + distanceDelta) / 1000.0, 'f', 2),
-                                minutes(makespan),
-                                QString::number(t.turns),
-                                QString::number(batteriesTotal),
-                                QString::number(cov, 'f', 1),
-                                QString::number(m_planner->lastWallMs(), 'f', 0)};
+                                anything ? QString::number(photosTotal) : kDash,
+                                anything ? QString::number(distanceTotal / 1000.0, 'f', 2) : kDash,
+                                anything ? minutes(longestS) : kDash,
+                                anything ? QString::number(turnsTotal) : kDash,
+                                anything ? QString::number(batteriesTotal) : kDash,
+                                anything ? QString::number(cov, 'f', 1) : kDash,
+                                QString::number(planMsTotal, 'f', 0)};
     for (int c = 0; c < values.size(); ++c) {
         auto* item = cell(values[c], c == 0 ? Qt::AlignLeft | Qt::AlignVCenter
                                             : Qt::AlignRight | Qt::AlignVCenter);
         item->setFont(bold);
         m_stats->setItem(r, c, item);
     }
-    m_stats->item(r, 3)->setToolTip(tr("The longest aircraft's flight: they fly at the same time"));
-    m_stats->item(r, 6)->setToolTip(
-        tr("Share of the area seen by the real footprints of all photos"));
+    m_stats->item(r, Time)->setToolTip(tr("The longest aircraft's flight: they fly at the same time"));
+    m_stats->item(r, Cover)->setToolTip(tr("Share of the area seen by the real footprints of all photos"));
+    const double wallS = m_planner->lastWallMs() / 1000.0;
+    const double ownS = planMsTotal / 1000.0;
+    m_planTime->setText(
+        plan->aircraft.size() > 1
+            ? tr("Planned in %1 s: %2 s for the aircraft's own parts (Plan ms), %3 s to share the area "
+                 "between them and check the coverage.")
+                  .arg(wallS, 0, 'f', 2)
+                  .arg(ownS, 0, 'f', 2)
+                  .arg(std::max(0.0, wallS - ownS), 0, 'f', 2)
+            : tr("Planned in %1 s: %2 s for the aircraft's plan (Plan ms), %3 s to check the coverage.")
+                  .arg(wallS, 0, 'f', 2)
+                  .arg(ownS, 0, 'f', 2)
+                  .arg(std::max(0.0, wallS - ownS), 0, 'f', 2));
+}
+
+QPushButton* StatisticsPanel::useButton(mission::PlannerKind kind) const {
+    const auto& kinds = mission::plannerKinds();
+    for (std::size_t i = 0; i < kinds.size() && int(i) < m_compare->rowCount(); ++i)
+        if (kinds[i].kind == kind)
+            return qobject_cast<QPushButton*>(m_compare->cellWidget(int(i), CUse));
+    return nullptr;
+}
+
+void StatisticsPanel::usePlanner(mission::PlannerKind kind) {
+    auto o = m_doc->mission().options;
+    if (o.planner == kind)
+        return;
+    o.planner = kind;
+    m_doc->undoStack()->push(new SetPlannerOptionsCommand(m_doc, o, tr("Planner %1").arg(plannerName(kind))));
 }
 
 void StatisticsPanel::refreshComparison() {
     const auto& rows = m_planner->comparison();
+    const auto& kinds = mission::plannerKinds();
+    // A comparison started (button, menu) is shown.
+    if (m_planner->isComparing() && rows.empty())
+        m_pages->setCurrentIndex(1);
     m_compareButton->setEnabled(!m_planner->isComparing());
     m_compareState->setText(m_planner->isComparing()
-                                ? tr("running… (%1 of 3 done)").arg(rows.size())
+                                ? tr("running… (%1 of %2 done)").arg(rows.size()).arg(kinds.size())
                             : rows.empty() ? tr("not run yet")
-                                           : tr("best value in bold green"));
-    m_compare->setRowCount(int(rows.size()));
-    // Per column: the best value (fewest photos, shortest distance and time, fewest turns, most
-    // coverage, fastest planning).
+                            : m_planner->isComparisonOutdated()
+                                ? tr("<b>outdated</b>: the mission changed since; compare again")
+                                : tr("best value in bold green"));
+    // One row per planner kind, from the one table of kinds: a new kind appears by itself.
+    m_compare->setRowCount(int(kinds.size()));
     auto value = [](const PlannerComparisonRow& row, int col) -> double {
         switch (col) {
-        case 1:
-            return row.totals.photos;
-        case 2:
-            return row.totals.pathLengthM;
-        case 3:
-            return row.totals.estimatedTimeS;
-        case 4:
-            return row.totals.turns;
-        case 5:
-            return -row.coveragePercent;
-        case 6:
-            return row.wallMs;
+        case CPhotos: return row.totals.photos;
+        case CKm: return row.totals.pathLengthM;
+        case CTime: return row.totals.estimatedTimeS;
+        case CTurns: return row.totals.turns;
+        case CCover: return -row.coveragePercent;
+        case CNoFly: return row.noFlyCrossings;
+        case CPlanMs: return row.wallMs;
         }
         return 0;
     };
-    for (int r = 0; r < int(rows.size()); ++r) {
-        const auto& row = rows[std::size_t(r)];
-        m_compare->setItem(r, 0, cell(plannerName(row.planner), Qt::AlignLeft | Qt::AlignVCenter));
-        if (!row.ok) {
-            m_compare->setItem(r, 1, cell(row.error, Qt::AlignLeft | Qt::AlignVCenter));
-            for (int c = 2; c < 7; ++c)
+    const auto current = m_doc->mission().options.planner;
+    for (int r = 0; r < int(kinds.size()); ++r) {
+        const auto& info = kinds[std::size_t(r)];
+        auto* name = cell(plannerName(info.kind), Qt::AlignLeft | Qt::AlignVCenter);
+        name->setToolTip(QString::fromLatin1(info.summary));
+        m_compare->setItem(r, Planner, name);
+        auto* use = qobject_cast<QPushButton*>(m_compare->cellWidget(r, CUse));
+        if (!use) {
+            use = new QPushButton;
+            use->setObjectName(QStringLiteral("Use_%1").arg(QString::fromLatin1(info.id)));
+            const auto kind = info.kind;
+            connect(use, &QPushButton::clicked, this, [this, kind] { usePlanner(kind); });
+            m_compare->setCellWidget(r, CUse, use);
+        }
+        const bool inUse = info.kind == current;
+        use->setText(inUse ? tr("In use") : tr("Use"));
+        use->setEnabled(!inUse);
+        use->setToolTip(inUse ? tr("The mission's planner") : tr("Plan the mission with %1").arg(plannerName(info.kind)));
+        const PlannerComparisonRow* row = nullptr;
+        for (const auto& x : rows)
+            if (x.planner == info.kind)
+                row = &x;
+        if (!row || !row->ok) {
+            const QString text = row ? row->error : m_planner->isComparing() ? tr("…") : QString();
+            auto* msg = cell(text, Qt::AlignLeft | Qt::AlignVCenter);
+            msg->setToolTip(text);
+            m_compare->setItem(r, CPhotos, msg);
+            for (int c = CKm; c < CUse; ++c)
                 m_compare->setItem(r, c, cell(QString()));
             continue;
         }
-        const auto& t = row.totals;
+        const auto& t = row->totals;
         const QStringList values = {QString::number(t.photos),
                                     QString::number(t.pathLengthM / 1000.0, 'f', 2),
                                     minutes(t.estimatedTimeS),
                                     QString::number(t.turns),
-                                    QString::number(row.coveragePercent, 'f', 1),
-                                    QString::number(row.wallMs, 'f', 0)};
-        for (int c = 1; c <= 6; ++c) {
-            auto* item = cell(values[c - 1]);
+                                    QString::number(row->coveragePercent, 'f', 1),
+                                    QString::number(row->noFlyCrossings),
+                                    QString::number(row->wallMs, 'f', 0)};
+        for (int c = CPhotos; c < CUse; ++c) {
+            auto* item = cell(values[c - CPhotos]);
             bool best = true;
             for (const auto& other : rows)
-                if (other.ok && value(other, c) < value(row, c) - 1e-9)
+                if (other.ok && value(other, c) < value(*row, c) - 1e-9)
                     best = false;
             if (best && rows.size() > 1) {
                 QFont f = item->font();
@@ -257,6 +401,10 @@ void StatisticsPanel::refreshComparison() {
                 item->setFont(f);
                 item->setForeground(QColor(20, 120, 40));
                 item->setBackground(QColor(220, 245, 220));
+            }
+            if (c == CNoFly && row->noFlyCrossings > 0) {
+                item->setForeground(QColor(190, 20, 20));
+                item->setToolTip(tr("%n waypoint(s) or leg(s) inside a no-fly margin", nullptr, row->noFlyCrossings));
             }
             m_compare->setItem(r, c, item);
         }

@@ -1,11 +1,14 @@
-// StatisticsPanel: the plan's figures per aircraft and in total, and the side-by-side comparison of
-// the stride, raster and wavefront planners on the current mission.
+// StatisticsPanel: the plan's figures per aircraft and in total (marked when the plan is outdated),
+// and the side-by-side comparison of every planner kind on the current mission, with "Use".
 #pragma once
+
+#include "core/mission/mission.h"
 
 #include <QWidget>
 
 class QLabel;
 class QPushButton;
+class QTabWidget;
 class QTableWidget;
 
 namespace pf::ui {
@@ -20,14 +23,30 @@ public:
 
     QTableWidget* statistics() const { return m_stats; }
     QTableWidget* comparison() const { return m_compare; }
+    // "Outdated: …" while the plan shown is not the mission's; empty when it is current.
+    QString stateText() const;
+    QLabel* planTimeLabel() const { return m_planTime; }
+    // "Plan" and "Compare planners".
+    QTabWidget* pages() const { return m_pages; }
+    // The comparison's "Use" button of a planner kind (nullptr if it has no row).
+    QPushButton* useButton(mission::PlannerKind kind) const;
+    // Makes `kind` the mission's planner (one undo step), as the "Use" buttons do.
+    void usePlanner(mission::PlannerKind kind);
+
+    enum StatColumn { Aircraft, Photos, Km, Time, Turns, Sorties, Cover, PlanMs, StatColumns };
+    enum CompareColumn { Planner, CPhotos, CKm, CTime, CTurns, CCover, CNoFly, CPlanMs, CUse, CompareColumns };
 
 private:
     void refreshStatistics();
+    void refreshState();
     void refreshComparison();
 
     MissionDocument* m_doc;
     PlanController* m_planner;
+    QTabWidget* m_pages;
+    QLabel* m_state;
     QTableWidget* m_stats;
+    QLabel* m_planTime;
     QTableWidget* m_compare;
     QPushButton* m_compareButton;
     QLabel* m_compareState;

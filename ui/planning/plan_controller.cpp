@@ -1,5 +1,8 @@
 #include "ui/planning/plan_controller.h"
 
+#include "core/mission/planner_kinds.h"
+#include "core/mission/route_check.h"
+#include "core/mission/validation.h"
 #include "ui/mission_document.h"
 
 #include <QCoreApplication>
@@ -13,19 +16,23 @@
 namespace pf::ui {
 
 QString plannerName(mission::PlannerKind kind) {
-    switch (kind) {
-    case mission::PlannerKind::Stride:
-        return QCoreApplication::translate("Planner", "Stride");
-    case mission::PlannerKind::Raster:
-        return QCoreApplication::translate("Planner", "Raster");
-    case mission::PlannerKind::Wavefront:
-        return QCoreApplication::translate("Planner", "Wavefront");
-    }
-    return {};
+    return QCoreApplication::translate("Planner", mission::plannerKindInfo(kind).label);
+}
+
+bool samePlanInput(const mission::Mission& a, const mission::Mission& b) {
+    auto strip = [](mission::Mission m) {
+        m.name.clear();
+        m.editedRoutes.clear();
+        for (auto& ac : m.aircraft)
+            ac.colour.clear();
+        return m;
+    };
+    return strip(a) == strip(b);
 }
 
 struct PlanController::Outcome {
     int generation = 0;
+    mission::Mission input;
     std::optional<mission::MissionPlan> plan;
     QString error;
     double wallMs = 0.0;
@@ -46,7 +53,10 @@ PlanController::PlanController(MissionDocument* doc, QObject* parent)
         ++m_compareGeneration;
         m_comparing = 0;
         m_plan.reset();
+        m_planInput.reset();
         m_pending.reset();
+        m_pendingInput.reset();
+        m_compareInput.reset();
         m_comparison.clear();
         m_error.clear();
         setBusy(false);
@@ -109,8 +119,20 @@ void PlanController::start(bool userAsked, bool replaceEdited) {
     watcher->setFuture(QtConcurrent::run([generation, m = std::move(m)] {
         auto out = std::make_shared<Outcome>();
         out->generation = generation;
+        out->input = m;
         QElapsedTimer t;
         t.start();
+        // The checks the command line makes before planning: an altitude above the maximum, a
+        // footprint below the minimum or a grid beyond the cell budget is never planned.
+        const auto report = mission::validateMission(m);
+        if (report.hasErrors()) {
+            QStringList lines;
+            for (const auto& p : report.problems)
+                if (p.severity == geo::Severity::Error)
+                    lines << QString::fromStdString(p.message);
+            out->error = lines.join(QLatin1Char('\n'));
+            return std::shared_ptr<const Outcome>(std::move(out));
+        }
         auto r = mission::planMission(m);
         out->wallMs = double(t.nsecsElapsed()) / 1e6;
         if (r)
@@ -128,7 +150,7 @@ void PlanController::finished(const std::shared_ptr<const Outcome>& outcome) {
     m_wallMs = outcome->wallMs;
     if (!outcome->plan) {
         m_error = outcome->error;
-        emit message(tr("Planning failed: %1").arg(m_error));
+        emit message(tr("Not planned: %1").arg(m_error.section(QLatin1Char('\n'), 0, 0)));
         emit planChanged();
         return;
     }
@@ -136,55 +158,81 @@ void PlanController::finished(const std::shared_ptr<const Outcome>& outcome) {
     if (m_doc->anyRouteEdited() && outcome->generation != m_replaceGeneration) {
         // Hand edits are never discarded silently: the plan waits for the user's word.
         m_pending = *outcome->plan;
+        m_pendingInput = outcome->input;
         m_pendingMs = outcome->wallMs;
         emit pendingPlanChanged(true);
         emit message(tr("A new plan is ready; your edited paths are kept until you replace them."));
         return;
     }
-    apply(*outcome->plan, outcome->wallMs);
+    apply(*outcome->plan, outcome->input, outcome->wallMs);
 }
 
-void PlanController::apply(mission::MissionPlan plan, double wallMs) {
+void PlanController::apply(mission::MissionPlan plan, mission::Mission input, double wallMs, bool keepEdits) {
     if (m_pending) {
         m_pending.reset();
+        m_pendingInput.reset();
         emit pendingPlanChanged(false);
     }
     std::vector<route::Route> routes;
     for (const auto& a : plan.aircraft)
         routes.push_back(a.route);
     m_plan = std::move(plan);
+    m_planInput = std::move(input);
     m_wallMs = wallMs;
-    m_doc->setPlannedRoutes(std::move(routes));
+    if (keepEdits)
+        m_doc->mergePlannedRoutes(std::move(routes));
+    else
+        m_doc->setPlannedRoutes(std::move(routes));
     emit planChanged();
     emit message(tr("Planned in %1 s.").arg(wallMs / 1000.0, 0, 'f', 2));
+}
+
+bool PlanController::isOutdated() const {
+    return m_plan && m_planInput && !samePlanInput(*m_planInput, m_doc->mission());
+}
+
+bool PlanController::isComparisonOutdated() const {
+    if (!m_compareInput)
+        return false;
+    // The comparison tries every planner: choosing one of them does not make it outdated.
+    mission::Mission now = m_doc->mission();
+    now.options.planner = m_compareInput->options.planner;
+    return !samePlanInput(*m_compareInput, now);
 }
 
 void PlanController::acceptPendingPlan() {
     if (!m_pending)
         return;
     auto p = std::move(*m_pending);
-    m_pending.reset();
-    emit pendingPlanChanged(false);
-    apply(std::move(p), m_pendingMs);
+    auto input = std::move(*m_pendingInput);
+    apply(std::move(p), std::move(input), m_pendingMs);
+}
+
+void PlanController::keepEditsWithPendingPlan() {
+    if (!m_pending)
+        return;
+    auto p = std::move(*m_pending);
+    auto input = std::move(*m_pendingInput);
+    apply(std::move(p), std::move(input), m_pendingMs, /*keepEdits=*/true);
 }
 
 void PlanController::discardPendingPlan() {
     if (!m_pending)
         return;
     m_pending.reset();
+    m_pendingInput.reset();
     emit pendingPlanChanged(false);
 }
 
 void PlanController::compare() {
     const int generation = ++m_compareGeneration;
     const mission::Mission base = m_doc->mission();
-    const mission::PlannerKind kinds[] = {mission::PlannerKind::Stride,
-                                          mission::PlannerKind::Raster,
-                                          mission::PlannerKind::Wavefront};
+    m_compareInput = base;
     m_comparison.clear();
     m_comparing = 0;
     emit comparisonChanged();
-    for (auto kind : kinds) {
+    for (const auto& info : mission::plannerKinds()) {
+        const auto kind = info.kind;
         mission::Mission m = base;
         m.options.planner = kind;
         ++m_comparing;
@@ -195,8 +243,16 @@ void PlanController::compare() {
                 return;
             --m_comparing;
             m_comparison.push_back(watcher->result());
+            // In the order of the table of planner kinds.
+            auto order = [](mission::PlannerKind k) {
+                const auto& kinds = mission::plannerKinds();
+                for (std::size_t i = 0; i < kinds.size(); ++i)
+                    if (kinds[i].kind == k)
+                        return i;
+                return kinds.size();
+            };
             std::sort(m_comparison.begin(), m_comparison.end(),
-                      [](const auto& a, const auto& b) { return int(a.planner) < int(b.planner); });
+                      [&](const auto& a, const auto& b) { return order(a.planner) < order(b.planner); });
             emit comparisonChanged();
         });
         watcher->setFuture(QtConcurrent::run([kind, m = std::move(m)] {
@@ -204,6 +260,11 @@ void PlanController::compare() {
             row.planner = kind;
             QElapsedTimer t;
             t.start();
+            const auto report = mission::validateMission(m);
+            if (report.hasErrors()) {
+                row.error = QString::fromStdString(report.errorSummary());
+                return row;
+            }
             auto r = mission::planMission(m);
             row.wallMs = double(t.nsecsElapsed()) / 1e6;
             if (!r) {
@@ -220,8 +281,10 @@ void PlanController::compare() {
             if (r->makespanS > 0)
                 row.totals.estimatedTimeS = r->makespanS;
             double flown = 0;
-            for (const auto& ap : r->aircraft)
+            for (const auto& ap : r->aircraft) {
                 flown += ap.flightDistanceM;
+                row.noFlyCrossings += mission::checkRoute(ap.route, mission::routeLimits(m, ap.route)).noFly;
+            }
             if (flown > 0)
                 row.totals.pathLengthM = flown; // home to home, as the statistics show it
             return row;

@@ -25,7 +25,12 @@ struct PlannerComparisonRow {
     mission::PlanTotals totals;
     double coveragePercent = 0.0;
     double wallMs = 0.0;
+    int noFlyCrossings = 0; // waypoints and legs of its routes within a no-fly margin (the route check)
 };
+
+// Whether two missions give the same plan: everything planning reads (the name and the path
+// colours do not count).
+bool samePlanInput(const mission::Mission& a, const mission::Mission& b);
 
 QString plannerName(mission::PlannerKind kind);
 
@@ -51,16 +56,28 @@ public:
 
     // The last plan applied to the document (its routes may since have been edited).
     const std::optional<mission::MissionPlan>& plan() const { return m_plan; }
-    // The last planning error, in the core's words; empty after a success.
+    // True when there is a plan and the mission has changed since it was computed: what the map,
+    // the statistics and the export show is then not what the mission asks for. It stays so until a
+    // plan of the current mission is applied (a cancelled or failed plan leaves it outdated).
+    bool isOutdated() const;
+    // Whether the comparison was run on another mission than the current one.
+    bool isComparisonOutdated() const;
+    // The last planning error, in the core's words; empty after a success. A mission that fails
+    // validation gives one line per error.
     QString lastError() const { return m_error; }
     double lastWallMs() const { return m_wallMs; }
 
     // A plan that finished while routes were edited by hand waits here until the user decides.
     bool hasPendingPlan() const { return m_pending.has_value(); }
+    // Replace edited paths: the pending plan replaces every route.
     void acceptPendingPlan();
+    // Keep edits: the pending plan is applied, but the routes edited by hand stay in place of the
+    // new plan's routes of their aircraft, so every route shown is the one that will be exported.
+    void keepEditsWithPendingPlan();
+    // Drops the pending plan (the plan shown stays, outdated).
     void discardPendingPlan();
 
-    // Runs stride, raster and wavefront on the current mission in the background.
+    // Runs every planner kind (mission::plannerKinds()) on the current mission in the background.
     void compare();
     bool isComparing() const { return m_comparing > 0; }
     const std::vector<PlannerComparisonRow>& comparison() const { return m_comparison; }
@@ -80,7 +97,7 @@ private:
     struct Outcome;
     void start(bool userAsked, bool replaceEdited = false);
     void finished(const std::shared_ptr<const Outcome>& outcome);
-    void apply(mission::MissionPlan plan, double wallMs);
+    void apply(mission::MissionPlan plan, mission::Mission input, double wallMs, bool keepEdits = false);
     void setBusy(bool on);
 
     MissionDocument* m_doc;
@@ -92,7 +109,10 @@ private:
     int m_compareGeneration = 0;
     int m_comparing = 0;
     std::optional<mission::MissionPlan> m_plan;
+    std::optional<mission::Mission> m_planInput; // what m_plan was computed from
     std::optional<mission::MissionPlan> m_pending;
+    std::optional<mission::Mission> m_pendingInput;
+    std::optional<mission::Mission> m_compareInput;
     double m_pendingMs = 0.0;
     QString m_error;
     double m_wallMs = 0.0;

@@ -1,5 +1,7 @@
 #include "ui/planning/route_export.h"
 
+#include "core/mission/route_check.h"
+
 #include <QCoreApplication>
 #include <QDir>
 
@@ -8,7 +10,9 @@
 namespace pf::ui {
 
 QStringList exportRoutes(const mission::Mission& mission, const std::vector<route::Route>& routes,
-                         const ExportRequest& request, QString* error) {
+                         const ExportRequest& request, QString* error, QStringList* routeProblems) {
+    if (routeProblems)
+        routeProblems->clear();
     QStringList written;
     std::vector<route::Route> chosen;
     if (request.routes.empty()) {
@@ -28,6 +32,18 @@ QStringList exportRoutes(const mission::Mission& mission, const std::vector<rout
             "Export", "Nothing to export: no route is planned or chosen."));
     if (request.formats.empty())
         return fail(QCoreApplication::translate("Export", "Choose at least one format."));
+    if (!request.allowRouteErrors) {
+        const auto problems = mission::routeErrors(mission, chosen);
+        if (!problems.empty()) {
+            if (routeProblems)
+                for (const auto& p : problems)
+                    routeProblems->append(QString::fromStdString(p));
+            return fail(QCoreApplication::translate(
+                            "Export", "Not exported: the route check found %n problem(s) (a waypoint or "
+                                      "leg in a no-fly margin, or an altitude out of limits).",
+                            nullptr, int(problems.size())));
+        }
+    }
     QDir dir(request.folder);
     if (request.folder.isEmpty() || (!dir.exists() && !dir.mkpath(QStringLiteral("."))))
         return fail(QCoreApplication::translate("Export", "The folder %1 cannot be created.")

@@ -21,11 +21,16 @@ struct ExportRequest {
     bool perAircraft = true; // one file per aircraft and format: "<stem>-<aircraft>.<ext>"
     bool combined = true;    // plus "<stem>.<ext>" with every route, where the format allows it
     io::ExportOptions options;
+    // Routes the route check finds errors in (mission::checkRoute) are written only when the user
+    // has confirmed them.
+    bool allowRouteErrors = false;
 };
 
 // Writes the files; returns the paths written. On the first failure stops, and `error` names the
-// file and the problem.
+// file and the problem. Chosen routes with errors are refused (nothing written) unless
+// request.allowRouteErrors: `error` then says so and `routeProblems` lists every problem.
 QStringList exportRoutes(const mission::Mission& mission, const std::vector<route::Route>& routes,
-                         const ExportRequest& request, QString* error);
+                         const ExportRequest& request, QString* error,
+                         QStringList* routeProblems = nullptr);
 
 } // namespace pf::ui

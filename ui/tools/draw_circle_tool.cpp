@@ -67,7 +67,7 @@ void DrawCircleTool::mouseReleased(QMouseEvent* e, const QPointF& p) {
         return;
     }
     mission::NoFlyZone zone;
-    zone.name = tr("Circle %1").arg(m_doc->mission().noFlyZones.size() + 1).toStdString();
+    zone.name = m_doc->nextNoFlyZoneName(tr("Circle")).toStdString();
     zone.polygon.outer = circle(c, r);
     m_doc->undoStack()->push(new AddNoFlyZoneCommand(m_doc, zone));
     m_layer->select(ShapeRef::noFly(int(m_doc->mission().noFlyZones.size()) - 1));

@@ -29,10 +29,10 @@ DrawPolygonTool::~DrawPolygonTool() = default;
 
 QString DrawPolygonTool::hint() const {
     return m_target == Target::Area
-               ? tr("Click to add the area's vertices; double-click, Enter or click the first vertex to finish; "
-                    "Backspace removes the last vertex; Esc cancels.")
-               : tr("Click to add the no-fly zone's vertices; double-click, Enter or click the first vertex to "
-                    "finish; Backspace removes the last vertex; Esc cancels.");
+               ? tr("Click the area's corners. Finish: double-click, Enter or the first corner. "
+                    "Backspace: last corner off. Esc: cancel.")
+               : tr("Click the zone's corners. Finish: double-click, Enter or the first corner. "
+                    "Backspace: last corner off. Esc: cancel.");
 }
 
 void DrawPolygonTool::deactivate(MapView* view) {
@@ -130,7 +130,7 @@ bool DrawPolygonTool::finish() {
         m_layer->select(ShapeRef::area());
     } else {
         mission::NoFlyZone zone;
-        zone.name = tr("No-fly zone %1").arg(m_doc->mission().noFlyZones.size() + 1).toStdString();
+        zone.name = m_doc->nextNoFlyZoneName(tr("No-fly zone")).toStdString();
         zone.polygon = poly;
         m_doc->undoStack()->push(new AddNoFlyZoneCommand(m_doc, zone));
         m_layer->select(ShapeRef::noFly(int(m_doc->mission().noFlyZones.size()) - 1));
@@ -142,8 +142,11 @@ bool DrawPolygonTool::finish() {
 }
 
 void DrawPolygonTool::cancel() {
+    const bool drawing = !m_points.isEmpty();
     m_points.clear();
     m_preview.reset();
+    // The drawing's message (e.g. why the ring is invalid) goes with it.
+    if (drawing) emit statusMessage(hint());
 }
 
 } // namespace pf::ui

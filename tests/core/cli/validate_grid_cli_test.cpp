@@ -39,11 +39,11 @@ TEST(CliValidate, AreaFileWithFlags) {
 
 TEST(CliValidate, BadPolygonsNameTheProblemAndWhere) {
     expectBadInput("validate " + data("bad/area_self_intersecting.json"),
-                   "the area intersects itself: edges 1-2 and 3-4 cross near 8.331000, 49.011000");
+                   "the area intersects itself: edges 1-2 and 3-4 cross near 49.011000° N, 8.331000° E");
     expectBadInput("validate " + data("bad/area_bow_tie.geojson"),
-                   "the area intersects itself: edges 1-2 and 3-4 cross near 8.331000, 49.011000");
+                   "the area intersects itself: edges 1-2 and 3-4 cross near 49.011000° N, 8.331000° E");
     expectBadInput("validate " + data("bad/nofly_self_intersecting.json"),
-                   "no-fly zone \"Yard\" intersects itself: edges 1-2 and 3-4 cross near 8.329500, 49.011750");
+                   "no-fly zone \"Yard\" intersects itself: edges 1-2 and 3-4 cross near 49.011750° N, 8.329500° E");
     expectBadInput("validate " + data("bad/area_two_vertices.json"),
                    "the area has 2 distinct vertices; a polygon needs at least 3");
     expectBadInput("validate " + data("bad/area_collinear.json"), "the area has zero area: all its vertices lie on one line");

@@ -120,7 +120,10 @@ TEST(MissionValidation, BadPolygonsAreNamed) {
 TEST(MissionValidation, AltitudeOutOfRange) {
     Mission m = demo();
     m.aircraft[0].altitudeM = 0.0;
-    EXPECT_EQ(theError(m), "aircraft \"Test copter\": the flight altitude must be greater than 0 m (got 0 m)");
+    // 0 m says why it cannot be flown and what the lowest altitude is.
+    EXPECT_EQ(theError(m), "aircraft \"Test copter\": the flight altitude must be greater than 0 m (got 0 m): the "
+                           "altitude is measured above the take-off point, so 0 m is on the ground; the lowest "
+                           "allowed is 2 m");
     m.aircraft[0].altitudeM = 150.0;
     EXPECT_EQ(theError(m), "aircraft \"Test copter\": the flight altitude of 150.0 m is above its maximum of 120.0 m");
     m.aircraft[0].altitudeM.reset();
@@ -195,4 +198,41 @@ TEST(MissionValidation, GridOptionsFollowTheAircraft) {
     m.options.gridAngleDeg = 30.0;
     EXPECT_EQ(gridOptionsFor(m, 0)->angleDeg, 30.0);
     EXPECT_FALSE(gridOptionsFor(m, 3).ok());
+}
+
+TEST(MissionValidation, AltitudeLimitsAreErrorsWithTheReason) {
+    Mission m = demo();
+    AircraftConfig& a = m.aircraft[0];
+    // A 60 x 45 degree camera: 5 m is allowed (big sites are planned that low), 1 m is not.
+    a.camera.hfovDeg = 60.0;
+    a.camera.vfovDeg = 45.0;
+    m.options.maxCells = 100'000'000; // the footprint, not the budget, is what this part checks
+    EXPECT_TRUE(altitudeErrors(m, a, 5.0).empty()) << altitudeErrors(m, a, 5.0).front();
+    auto low = altitudeErrors(m, a, 1.0);
+    ASSERT_EQ(low.size(), 1u);
+    EXPECT_EQ(low[0], "aircraft \"Test copter\": the flight altitude of 1.0 m is below the minimum safe altitude of 2.0 m");
+    auto small = altitudeErrors(m, a, 3.0);
+    ASSERT_EQ(small.size(), 1u);
+    EXPECT_EQ(small[0], "aircraft \"Test copter\": at 3.0 m a photo covers only 3.5 x 2.5 m, below the smallest "
+                        "footprint of 3 m (planning and flying would take far too long): fly at 3.7 m or higher")
+        << small[0];
+    EXPECT_TRUE(altitudeErrors(m, a, 3.7).empty());
+    a.camera.vfovDeg = 30.0; // narrower: 5 m is too low for it
+    ASSERT_EQ(altitudeErrors(m, a, 5.0).size(), 1u);
+    EXPECT_NE(altitudeErrors(m, a, 5.0).at(0).find("below the smallest footprint"), std::string::npos);
+    a.camera.vfovDeg = 45.0;
+    auto high = altitudeErrors(m, a, 5000.0);
+    ASSERT_EQ(high.size(), 1u);
+    EXPECT_EQ(high[0], "aircraft \"Test copter\": the flight altitude of 5000.0 m is above its maximum of 120.0 m");
+    auto zero = altitudeErrors(m, a, 0.0);
+    ASSERT_EQ(zero.size(), 1u);
+    EXPECT_NE(zero[0].find("so 0 m is on the ground"), std::string::npos);
+    // The cell budget, where the value is typed too.
+    m.options.maxCells = 1000;
+    auto budget = altitudeErrors(m, a, 10.0);
+    ASSERT_EQ(budget.size(), 1u);
+    EXPECT_NE(budget[0].find("too large for the cell budget"), std::string::npos) << budget[0];
+    // validateMission reports the same.
+    a.altitudeM = 1.0;
+    EXPECT_EQ(theError(m), low[0]);
 }

@@ -1,0 +1,179 @@
+#include "core/mission/route_check.h"
+
+#include "core/geo/local_frame.h"
+#include "core/geo/no_fly_field.h"
+#include "core/geo/polygon_ops.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace pf::mission {
+
+namespace {
+
+std::string num(double v, int decimals = 1) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    return buf;
+}
+
+void add(std::string& slot, const std::string& why) { slot += (slot.empty() ? "" : "; ") + why; }
+
+// A frame for the check: centred on the area when there is one, else on the route itself.
+Result<geo::LocalFrame> frameFor(const route::Route& route, const RouteLimits& limits) {
+    if (limits.area.outer.size() >= 3)
+        return geo::LocalFrame::forArea(limits.area);
+    geo::GeoPolygon box;
+    for (const auto& w : route.waypoints)
+        box.outer.push_back(w.position);
+    if (limits.home)
+        box.outer.push_back(*limits.home);
+    if (box.outer.empty())
+        return makeError(ErrorCode::InvalidInput, "the route has no waypoint");
+    return geo::LocalFrame::forArea(box);
+}
+
+} // namespace
+
+int RouteCheck::count() const {
+    int n = (fromHome.empty() ? 0 : 1) + (toHome.empty() ? 0 : 1);
+    for (const auto& s : waypoint)
+        n += s.empty() ? 0 : 1;
+    for (const auto& s : leg)
+        n += s.empty() ? 0 : 1;
+    return n;
+}
+
+std::vector<std::string> RouteCheck::messages(const std::string& routeLabel) const {
+    std::vector<std::string> out;
+    if (!fromHome.empty())
+        out.push_back(routeLabel + ", take-off: " + fromHome);
+    for (std::size_t i = 0; i < waypoint.size(); ++i) {
+        if (!waypoint[i].empty())
+            out.push_back(routeLabel + ", waypoint " + std::to_string(i + 1) + ": " + waypoint[i]);
+        if (i < leg.size() && !leg[i].empty())
+            out.push_back(routeLabel + ", waypoint " + std::to_string(i + 1) + ": " + leg[i]);
+    }
+    if (!toHome.empty())
+        out.push_back(routeLabel + ", landing: " + toHome);
+    return out;
+}
+
+RouteCheck checkRoute(const route::Route& route, const RouteLimits& limits) {
+    RouteCheck out;
+    const std::size_t n = route.waypoints.size();
+    out.waypoint.resize(n);
+    out.leg.resize(n > 0 ? n - 1 : 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double alt = route.waypoints[i].altitudeM;
+        if (!std::isfinite(alt) || alt < limits.minAltitudeM)
+            add(out.waypoint[i], "altitude " + num(alt) + " m is below the minimum safe altitude of " +
+                                     num(limits.minAltitudeM) + " m");
+        else if (limits.maxAltitudeM && alt > *limits.maxAltitudeM)
+            add(out.waypoint[i], "altitude " + num(alt) + " m is above the aircraft's maximum of " +
+                                     num(*limits.maxAltitudeM) + " m");
+    }
+    if (n == 0)
+        return out;
+    auto frame = frameFor(route, limits);
+    if (!frame)
+        return out;
+    std::vector<geo::Vec2> local(n);
+    for (std::size_t i = 0; i < n; ++i)
+        local[i] = frame->toLocal(route.waypoints[i].position);
+
+    // One field per zone, so that a message names the zone.
+    const double margin = limits.safetyMarginM;
+    std::vector<geo::NoFlyField> fields;
+    for (const auto& z : limits.zones)
+        fields.emplace_back(std::vector<geo::Polygon>{frame->toLocal(z.polygon)}, margin);
+    auto zoneName = [&](std::size_t z) {
+        return limits.zones[z].name.empty() ? "no-fly zone " + std::to_string(z + 1)
+                                            : "no-fly zone " + limits.zones[z].name;
+    };
+    auto pointProblem = [&](const geo::Vec2& p) -> std::string {
+        for (std::size_t z = 0; z < fields.size(); ++z) {
+            const double c = fields[z].clearance(p);
+            if (c <= 0.0)
+                return "inside " + zoneName(z);
+            if (!fields[z].isSafeClearance(c))
+                return num(c) + " m from " + zoneName(z) + " (margin " + num(margin) + " m)";
+        }
+        return {};
+    };
+    auto legProblem = [&](const geo::Vec2& a, const geo::Vec2& b, const std::string& what) -> std::string {
+        for (std::size_t z = 0; z < fields.size(); ++z) {
+            const double c = fields[z].clearance(a, b);
+            if (c <= 0.0)
+                return what + " crosses " + zoneName(z);
+            if (!fields[z].isSafeClearance(c))
+                return what + " passes " + num(c) + " m from " + zoneName(z) + " (margin " + num(margin) + " m)";
+        }
+        return {};
+    };
+    for (std::size_t i = 0; i < n; ++i)
+        if (auto why = pointProblem(local[i]); !why.empty()) {
+            add(out.waypoint[i], why);
+            ++out.noFly;
+        }
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+        out.leg[i] = legProblem(local[i], local[i + 1], "the leg to waypoint " + std::to_string(i + 2));
+        out.noFly += out.leg[i].empty() ? 0 : 1;
+    }
+    if (limits.home) {
+        out.fromHome = legProblem(frame->toLocal(*limits.home), local.front(), "the leg from home to waypoint 1");
+        out.noFly += out.fromHome.empty() ? 0 : 1;
+    }
+    if (const auto& land = limits.landing ? limits.landing : limits.home) {
+        out.toHome = legProblem(local.back(), frame->toLocal(*land),
+                                "the leg from waypoint " + std::to_string(n) + " back home");
+        out.noFly += out.toHome.empty() ? 0 : 1;
+    }
+
+    if (limits.area.outer.size() >= 3) {
+        const geo::Polygon area = frame->toLocal(limits.area);
+        for (std::size_t i = 0; i < n; ++i) {
+            if (geo::contains(area, local[i]))
+                continue;
+            ++out.outsideArea;
+            const double d = geo::distanceTo(area, local[i]);
+            if (d > out.farthestOutsideM) {
+                out.farthestOutsideM = d;
+                out.farthestOutside = int(i);
+            }
+        }
+    }
+    return out;
+}
+
+RouteLimits routeLimits(const Mission& m, const route::Route& route) {
+    RouteLimits l;
+    l.zones = m.noFlyZones;
+    l.safetyMarginM = m.options.safetyMarginM;
+    l.area = m.area;
+    l.home = route.home;
+    for (const auto& a : m.aircraft)
+        if (a.name == route.aircraft) {
+            l.maxAltitudeM = a.maxAltitudeM;
+            if (!l.home)
+                l.home = a.home;
+        }
+    if (!l.home)
+        l.home = m.home;
+    l.landing = m.landing;
+    return l;
+}
+
+std::vector<std::string> routeErrors(const Mission& m, const std::vector<route::Route>& routes) {
+    std::vector<std::string> out;
+    for (std::size_t i = 0; i < routes.size(); ++i) {
+        const auto& r = routes[i];
+        const auto lines = checkRoute(r, routeLimits(m, r)).messages(r.aircraft.empty() ? "route " + std::to_string(i + 1)
+                                                                                          : r.aircraft);
+        out.insert(out.end(), lines.begin(), lines.end());
+    }
+    return out;
+}
+
+} // namespace pf::mission

@@ -1,0 +1,59 @@
+// The check of a route before it is flown or exported: waypoints and legs out of every no-fly
+// zone's safety margin, altitudes between the minimum safe altitude and the aircraft's maximum.
+#pragma once
+
+#include "core/mission/mission.h"
+#include "core/route/waypoint.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace pf::mission {
+
+// The lowest altitude above take-off a waypoint may have (m). Below it an aircraft flies at head
+// height, inside ground effect and below most obstacles; a survey never needs it (5 m is allowed).
+constexpr double kMinSafeAltitudeM = 2.0;
+
+// What a route is checked against.
+struct RouteLimits {
+    std::vector<NoFlyZone> zones;
+    double safetyMarginM = 5.0;
+    std::optional<double> maxAltitudeM; // the aircraft's ceiling; unset: unknown, not checked
+    double minAltitudeM = kMinSafeAltitudeM;
+    geo::GeoPolygon area;                // optional: waypoints outside it are counted (a note)
+    std::optional<geo::LonLat> home;     // take-off: the leg to the first waypoint is checked
+    std::optional<geo::LonLat> landing;  // the leg from the last waypoint; home when unset
+};
+
+// The errors found, in words, per waypoint and per leg ("" where fine), and the notes.
+struct RouteCheck {
+    std::vector<std::string> waypoint; // per waypoint
+    std::vector<std::string> leg;      // per leg i: waypoint i -> i + 1
+    std::string fromHome;              // take-off -> first waypoint
+    std::string toHome;                // last waypoint -> landing
+    int noFly = 0;                     // waypoints and legs (home legs included) within a margin
+    // Note, not an error: waypoints outside the area (lanes end where the photos cover the
+    // boundary, which may lie beyond it), and the farthest one.
+    int outsideArea = 0;
+    int farthestOutside = -1;
+    double farthestOutsideM = 0.0;
+
+    int count() const; // number of errors
+    bool ok() const { return count() == 0; }
+    // Every error as one line naming the route and the waypoint (counted from 1, as the Waypoints
+    // table and the exported files count): "Falcon 8, waypoint 12: inside no-fly zone Warehouse".
+    std::vector<std::string> messages(const std::string& routeLabel) const;
+};
+
+RouteCheck checkRoute(const route::Route& route, const RouteLimits& limits);
+
+// The limits of a route of mission `m`: its no-fly zones and margin, its area, the ceiling of the
+// aircraft the route is named after (none when no aircraft has that name), the route's home (else
+// the aircraft's, else the mission's) and the mission's landing point.
+RouteLimits routeLimits(const Mission& m, const route::Route& route);
+
+// Checks every route against its limits in `m`; the lines of RouteCheck::messages, route after route.
+std::vector<std::string> routeErrors(const Mission& m, const std::vector<route::Route>& routes);
+
+} // namespace pf::mission

@@ -1,0 +1,41 @@
+// ProblemsPanel: the Problems dock's list: invalid shapes, planning errors, the planner's notes, the
+// coverage check and every route check problem, each with the map object it is about.
+#pragma once
+
+#include <QListWidget>
+
+namespace pf::ui {
+
+class MissionDocument;
+class MissionLayer;
+class PlanController;
+class PlanLayer;
+
+class ProblemsPanel : public QListWidget {
+    Q_OBJECT
+public:
+    ProblemsPanel(MissionDocument* doc, MissionLayer* shapes, PlanController* planner, PlanLayer* plan,
+                  QWidget* parent = nullptr);
+
+    enum class Severity { Error, Warning, Info };
+    // The items' severities, in list order (for tests).
+    Severity severityOf(int row) const;
+    void refresh();
+
+signals:
+    void areaActivated();
+    void noFlyZoneActivated(int zone);
+    void waypointActivated(int route, int waypoint);
+    // The number of items changed (for the dock's title).
+    void countChanged(int count);
+
+private:
+    QListWidgetItem* add(const QString& text, const QString& source, Severity severity);
+
+    MissionDocument* m_doc;
+    MissionLayer* m_shapes;
+    PlanController* m_planner;
+    PlanLayer* m_plan;
+};
+
+} // namespace pf::ui
