@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace pf::io {
@@ -19,23 +20,28 @@ CPLJSONArray numbers(std::initializer_list<double> values) {
     return a;
 }
 
-// A JSON null for an array (CPLJSONArray has no AddNull): the value of a member set to null.
-CPLJSONObject nullValue() {
-    CPLJSONObject holder;
-    holder.AddNull("null");
-    return holder.GetObj("null");
-}
-
-// Params as QGroundControl writes them: a NaN ("not used") is null.
+// Params as QGroundControl writes them: a NaN ("not used") is null. CPLJSONArray cannot add a
+// null, so an array holding nulls is parsed from text (numbers with 17 digits read back exactly).
 CPLJSONArray params(const std::array<double, 7>& values) {
+    bool allFinite = true;
+    for (double v : values)
+        allFinite = allFinite && std::isfinite(v);
     CPLJSONArray a;
-    for (double v : values) {
-        if (std::isfinite(v))
+    if (allFinite) {
+        for (double v : values)
             a.Add(v);
-        else
-            a.Add(nullValue());
+        return a;
     }
-    return a;
+    std::string text = "[";
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        char buf[40];
+        std::snprintf(buf, sizeof buf, "%.17g", values[i]);
+        text += (i ? "," : "") + (std::isfinite(values[i]) ? std::string(buf) : std::string("null"));
+    }
+    CPLJSONDocument doc;
+    if (!doc.LoadMemory(text + "]"))
+        return a;
+    return doc.GetRoot().ToArray();
 }
 
 class ItemWriter {
