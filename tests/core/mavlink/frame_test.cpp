@@ -132,3 +132,36 @@ TEST(MavlinkFrame, MissionResultsAreWords) {
     EXPECT_NE(missionResultText(4).find("no space"), std::string::npos);
     EXPECT_NE(missionResultText(13).find("sequence"), std::string::npos);
 }
+
+#include "core/mavlink/connection_spec.h"
+
+TEST(ConnectionSpec, ParsesEachTransportAndNamesMistakes) {
+    auto u = parseConnectionSpec("udp:127.0.0.1:14550");
+    ASSERT_TRUE(u.ok());
+    EXPECT_EQ(u->kind, ConnectionSpec::Kind::UdpClient);
+    EXPECT_EQ(u->port, 14550);
+    auto s = parseConnectionSpec("udp::14550");
+    ASSERT_TRUE(s.ok());
+    EXPECT_EQ(s->kind, ConnectionSpec::Kind::UdpServer);
+    EXPECT_EQ(parseConnectionSpec("udpin:14551")->port, 14551);
+    EXPECT_EQ(parseConnectionSpec("udp:0.0.0.0:14550")->kind, ConnectionSpec::Kind::UdpServer);
+    auto t = parseConnectionSpec("tcp:localhost:5760");
+    ASSERT_TRUE(t.ok());
+    EXPECT_EQ(t->kind, ConnectionSpec::Kind::Tcp);
+    EXPECT_EQ(t->host, "localhost");
+    auto ser = parseConnectionSpec("serial:/dev/ttyUSB0:115200");
+    ASSERT_TRUE(ser.ok());
+    EXPECT_EQ(ser->device, "/dev/ttyUSB0");
+    EXPECT_EQ(ser->baud, 115200);
+    EXPECT_EQ(parseConnectionSpec("serial:/dev/ttyACM0")->baud, 57600);
+    EXPECT_EQ(ser->text(), "serial:/dev/ttyUSB0:115200");
+    auto noPort = parseConnectionSpec("udp:10.0.0.1");
+    ASSERT_FALSE(noPort.ok());
+    EXPECT_NE(noPort.error().message.find("port"), std::string::npos) << noPort.error().message;
+    auto badPort = parseConnectionSpec("tcp:host:99999");
+    ASSERT_FALSE(badPort.ok());
+    EXPECT_NE(badPort.error().message.find("99999"), std::string::npos);
+    EXPECT_FALSE(parseConnectionSpec("bluetooth:x").ok());
+    EXPECT_FALSE(parseConnectionSpec("serial:/dev/ttyUSB0:fast").ok());
+    EXPECT_FALSE(parseConnectionSpec("14550").ok());
+}
