@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config
-  qtbase5-dev qtpositioning5-dev libqt5svg5-dev
+  qtbase5-dev qtpositioning5-dev libqt5svg5-dev libqt5serialport5-dev
   libgdal-dev gdal-bin libproj-dev libgeos-dev libeigen3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth
