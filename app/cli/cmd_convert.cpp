@@ -2,6 +2,7 @@
 // extensions.
 #include "app/cli/args.h"
 #include "app/cli/commands.h"
+#include "app/cli/export_args.h"
 
 #include "core/io/waypoint_formats.h"
 
@@ -25,12 +26,7 @@ const char* const kConvertUsage =
     "  --aircraft NAME       convert only the route of this aircraft (needed when IN holds "
     "several\n"
     "                        routes and OUT is a .plan, .waypoints or .csv)\n"
-    "  --firmware NAME       ardupilot (default) or px4: the firmwareType of a .plan\n"
-    "  --end ACTION          rtl (default) or land: what the vehicle does after the last waypoint\n"
-    "  --capture COMMAND     image (MAV_CMD_IMAGE_START_CAPTURE, default) or digicam\n"
-    "                        (MAV_CMD_DO_DIGICAM_CONTROL): the photo command after each photo "
-    "waypoint\n"
-    "  --hover-speed M/S     the .plan hoverSpeed (default: the route's cruise speed)\n"
+    PF_CLI_EXPORT_OPTIONS_HELP
     "\n"
     "Take-off, capture, return and landing items are regenerated from the waypoints; a .plan's "
     "geofence\n"
@@ -38,8 +34,9 @@ const char* const kConvertUsage =
     "Exit codes: 0 written, 2 bad input (the message names the file and the line or JSON key).\n";
 
 int runConvert(const std::vector<std::string>& argv) {
-    auto args =
-        Args::parse(argv, {{"aircraft"}, {"firmware"}, {"end"}, {"capture"}, {"hover-speed"}});
+    auto specs = exportOptionSpecs();
+    specs.push_back({"aircraft"});
+    auto args = Args::parse(argv, specs);
     if (!args)
         return reportError(args.error());
     if (args->positionals().size() != 2)
@@ -48,33 +45,10 @@ int runConvert(const std::vector<std::string>& argv) {
     const std::string& in = args->positionals()[0];
     const std::string& out = args->positionals()[1];
 
-    io::ExportOptions opt;
-    if (auto f = args->value("firmware")) {
-        if (*f == "px4")
-            opt.firmware = io::QgcFirmware::PX4;
-        else if (*f != "ardupilot")
-            return reportError("--firmware: expected ardupilot or px4 but got '" + *f + "'");
-    }
-    if (auto e = args->value("end")) {
-        if (*e == "land")
-            opt.end = io::MissionEnd::Land;
-        else if (*e != "rtl")
-            return reportError("--end: expected rtl or land but got '" + *e + "'");
-    }
-    if (auto c = args->value("capture")) {
-        if (*c == "digicam")
-            opt.capture = io::CaptureCommand::DigicamControl;
-        else if (*c != "image")
-            return reportError("--capture: expected image or digicam but got '" + *c + "'");
-    }
-    auto hover = args->number("hover-speed");
-    if (!hover)
-        return reportError(hover.error());
-    if (*hover) {
-        if (!(**hover > 0))
-            return reportError("--hover-speed: the speed must be positive");
-        opt.hoverSpeedMps = **hover;
-    }
+    auto options = exportOptionsFromArgs(*args);
+    if (!options)
+        return reportError(options.error());
+    const io::ExportOptions& opt = *options;
 
     auto outFormat = io::formatFromPath(out);
     if (!outFormat)

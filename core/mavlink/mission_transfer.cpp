@@ -213,7 +213,7 @@ void MissionTransfer::onAck(std::uint8_t result, std::int64_t now) {
                     " items");
     if (m_opt.verify)
         return beginDownload(now);
-    m_summary.push_back(std::to_string(list.size()) + " " + what + " items");
+    m_summary.push_back(what + " " + std::to_string(list.size()) + (list.size() == 1 ? " item" : " items"));
     nextType(now);
 }
 
@@ -314,7 +314,7 @@ void MissionTransfer::compareDownload(std::int64_t now) {
             return fail(where + "altitude " + fmt(a.z, 2) + " m sent, " + fmt(b.z, 2) +
                         " m read back");
     }
-    m_summary.push_back(std::to_string(sent.size()) + " " + what + " items");
+    m_summary.push_back(what + " " + std::to_string(sent.size()) + (sent.size() == 1 ? " item" : " items"));
     nextType(now);
 }
 

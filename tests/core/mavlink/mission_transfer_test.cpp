@@ -159,7 +159,7 @@ TEST(MissionTransfer, UploadsEveryPlanTypeAndVerifiesTheReadBack) {
     ASSERT_TRUE(t.vehicle());
     EXPECT_EQ(t.vehicle()->systemId, 1);
     EXPECT_EQ(t.vehicle()->autopilot, 3);
-    EXPECT_NE(t.message().find("12 mission items"), std::string::npos) << t.message();
+    EXPECT_NE(t.message().find("mission 12 items"), std::string::npos) << t.message();
 }
 
 TEST(MissionTransfer, ALostRequestIsRecoveredByResendingTheLastItem) {
