@@ -46,13 +46,9 @@ Result<std::string> qgcWplText(const ExportContext& ctx, std::size_t routeIndex,
     // The home line is what Mission Planner writes: current = 1, frame 0 (altitude above sea level).
     line(out, 0, 1, homeItem(ctx, routeIndex, options));
     int n = 1;
-    for (const auto& it : *items) {
-        // Commands without a position are written in frame 3 as Mission Planner does.
-        MissionItem w = it;
-        if (!w.hasPosition())
-            w.frame = mav::kFrameGlobalRelativeAlt;
-        line(out, n++, 0, w);
-    }
+    // Exactly the items an upload sends: commands without a position in frame 2 (MAV_FRAME_MISSION).
+    for (const auto& it : *items)
+        line(out, n++, 0, it);
     return out;
 }
 

@@ -9,7 +9,7 @@
 //   node sim_vehicle.mjs [--udp PORT | --udp-out HOST:PORT | --tcp PORT] [--sysid N]
 //        [--autopilot ardupilot|px4] [--home LAT,LON] [--drop-request SEQ] [--nack SEQ:CODE]
 //        [--nack-type mission|fence|rally] [--old-requests] [--silent] [--seconds N]
-//        [--report FILE] [--vehicle-timeout MS]
+//        [--report FILE] [--vehicle-timeout MS] [--delay MS]
 //
 // --udp 0 / --tcp 0 pick a free port. Once listening it prints "READY <port>" on stdout.
 // --drop-request SEQ  the first request for mission item SEQ is never sent (a lost message)
@@ -17,6 +17,7 @@
 // --home LAT,LON      ArduPilot style: mission item 0 reads back as this home position
 // --report FILE       the plans held, as JSON, rewritten after every accepted upload
 // --vehicle-timeout MS  how long the vehicle waits for an item before it asks again (3000)
+// --delay MS          every message leaves the vehicle MS later (a slow link)
 //
 // Quirks of node-mavlink 2.3.0 worked around here: its MAVLink 1 serializer writes the MAVLink 2
 // extension fields (so only MAVLink 2 is sent); an all-zero MAVLink 2 payload is cut to 0 bytes where
@@ -56,6 +57,7 @@ function parseArgs(argv) {
       case '--seconds': o.seconds = Number(next()); break;
       case '--report': o.report = next(); break;
       case '--vehicle-timeout': o.vehicleTimeout = Number(next()); break;
+      case '--delay': o.delay = Number(next()); break;
       default: throw new Error(`unknown option ${a}`);
     }
   }
@@ -85,7 +87,10 @@ function frame(msg) {
 }
 
 function send(msg) {
-  if (!opt.silent) output(frame(msg));
+  if (opt.silent) return;
+  const buf = frame(msg);
+  if (opt.delay > 0) setTimeout(() => output(buf), opt.delay); // a slow radio link; order is kept
+  else output(buf);
 }
 
 const stats = { requests: 0, resentRequests: 0, repeatedItems: 0, nacks: 0, downloads: 0, gcs: null };

@@ -4,6 +4,8 @@
 #include <QNetworkDatagram>
 #include <QUdpSocket>
 
+#include <algorithm>
+
 namespace pf::ui {
 
 UdpLink::UdpLink(mavlink::ConnectionSpec spec, QObject* parent)
@@ -35,17 +37,15 @@ bool UdpLink::open(QString* error) {
             *error = tr("%1: %2").arg(describe(), m_socket->errorString());
         return false;
     }
-    if (!server) {
-        m_peer = host;
-        m_peerPort = quint16(s.port);
-    }
+    if (!server)
+        m_peers.push_back({host, quint16(s.port)});
     return true;
 }
 
 void UdpLink::write(const QByteArray& bytes) {
-    if (m_peerPort == 0)
-        return; // a server answers once the vehicle has spoken
-    m_socket->writeDatagram(bytes, m_peer, m_peerPort);
+    // A server has no one to send to until a vehicle has spoken.
+    for (const auto& p : m_peers)
+        m_socket->writeDatagram(bytes, p.address, p.port);
 }
 
 void UdpLink::readPending() {
@@ -53,8 +53,11 @@ void UdpLink::readPending() {
     while (m_socket->hasPendingDatagrams()) {
         const QNetworkDatagram d = m_socket->receiveDatagram();
         if (server) {
-            m_peer = d.senderAddress();
-            m_peerPort = quint16(d.senderPort());
+            const auto known = std::find_if(m_peers.begin(), m_peers.end(), [&](const Peer& p) {
+                return p.address == d.senderAddress() && p.port == quint16(d.senderPort());
+            });
+            if (known == m_peers.end() && m_peers.size() < 32)
+                m_peers.push_back({d.senderAddress(), quint16(d.senderPort())});
         }
         emit received(d.data());
     }
