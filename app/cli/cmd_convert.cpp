@@ -74,8 +74,14 @@ int runConvert(const std::vector<std::string>& argv) {
     const io::ExportContext ctx = io::contextFromImport(*imported);
     const auto& info = io::formatInfo(*outFormat);
     Status written;
+    std::vector<std::string> files{out};
     if (ctx.routes.size() == 1) {
-        written = io::exportRoute(ctx, 0, *outFormat, out, opt);
+        auto r = io::exportRouteFiles(ctx, 0, *outFormat, out, opt);
+        if (!r)
+            return reportError(r.error());
+        for (const auto& n : r->notes)
+            std::cerr << "photoflight-cli: note: " << n << '\n';
+        files = r->files;
     } else if (info.combined) {
         written = io::exportCombined(ctx, *outFormat, out, opt);
     } else {
@@ -91,7 +97,10 @@ int runConvert(const std::vector<std::string>& argv) {
     std::size_t n = 0;
     for (const auto& r : ctx.routes)
         n += r.waypoints.size();
-    std::cout << "wrote " << out << ": " << ctx.routes.size()
+    std::string names;
+    for (const auto& f : files)
+        names += (names.empty() ? "" : ", ") + f;
+    std::cout << "wrote " << names << ": " << ctx.routes.size()
               << (ctx.routes.size() == 1 ? " route, " : " routes, ") << n << " waypoints\n";
     return kExitOk;
 }

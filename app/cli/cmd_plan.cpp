@@ -162,9 +162,12 @@ int runPlan(const std::vector<std::string>& argv) {
                 routes.push_back(a.route);
             const io::ExportContext ctx = io::makeExportContext(m, routes);
             for (const auto fmt : formats) {
-                auto files = io::exportAll(ctx, fmt, dir.string(), "mission", *exportOptions);
+                std::vector<std::string> notes;
+                auto files = io::exportAll(ctx, fmt, dir.string(), "mission", *exportOptions, &notes);
                 if (!files)
                     return reportError(files.error());
+                for (const auto& n : notes)
+                    std::cerr << "photoflight-cli: note: " << n << '\n';
                 written.insert(written.end(), files->begin(), files->end());
                 // Each battery as a flight of its own, for ground stations that fly one at a time.
                 for (std::size_t i = 0; i < plan->aircraft.size(); ++i) {

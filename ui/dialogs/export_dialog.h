@@ -10,6 +10,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QDoubleSpinBox;
 class QLineEdit;
 class QPlainTextEdit;
 
@@ -37,6 +38,10 @@ private:
     QLineEdit* m_stem;
     QComboBox* m_firmware;
     QComboBox* m_end;
+    // MAVLink mission options (.plan, .waypoints): gimbal command, camera trigger, home elevation.
+    QComboBox* m_gimbal;
+    QComboBox* m_trigger;
+    QDoubleSpinBox* m_homeElevation;
     QPlainTextEdit* m_report;
 };
 

@@ -24,8 +24,9 @@ struct ExportRequest {
 };
 
 // Writes the files; returns the paths written. On the first failure stops, and `error` names the
-// file and the problem.
+// file and the problem. `notes` receives what the user should know (merged waypoints, a Litchi
+// route split into several missions).
 QStringList exportRoutes(const mission::Mission& mission, const std::vector<route::Route>& routes,
-                         const ExportRequest& request, QString* error);
+                         const ExportRequest& request, QString* error, QStringList* notes = nullptr);
 
 } // namespace pf::ui

@@ -201,3 +201,174 @@ TEST(MissionItems, FenceAndRallyItems) {
     EXPECT_EQ(rally[0].command, mav::kRallyPoint);
     EXPECT_DOUBLE_EQ(rally[0].params[5], ctx.mission.home->lon);
 }
+
+#include "core/io/litchi_csv.h"
+#include "core/io/waypoint_formats.h"
+
+#include <fstream>
+
+TEST(LitchiSplit, RoutesOver99WaypointsComeAsNumberedMissionsThatJoinUp) {
+    route::Route r = laneRoute(5.0, 10.0); // 28 photos and 6 turns
+    route::Route big = r;
+    for (int k = 0; k < 6; ++k) // 238 waypoints, all at least 5 m apart
+        for (auto w : r.waypoints) {
+            w.position.lat += 0.0012 * (k + 1);
+            big.waypoints.push_back(w);
+        }
+    ASSERT_EQ(big.waypoints.size(), 238u);
+    ExportContext ctx = makeExportContext(test::demoMission(), {big});
+    const std::string dir = test::scratchDir("litchi_split");
+    auto report = exportRouteFiles(ctx, 0, WaypointFormat::LitchiCsv, dir + "/m-Falcon_8.csv");
+    ASSERT_TRUE(report.ok()) << report.error().message;
+    ASSERT_EQ(report->files.size(), 3u); // 99 + 98 + 41 new waypoints
+    EXPECT_EQ(report->files[0], dir + "/m-Falcon_8-part1.csv");
+    ASSERT_EQ(report->notes.size(), 1u);
+    EXPECT_NE(report->notes[0].find("at most 99"), std::string::npos) << report->notes[0];
+    EXPECT_NE(report->notes[0].find("3 missions"), std::string::npos) << report->notes[0];
+    std::size_t photos = 0;
+    std::vector<route::Waypoint> joined;
+    for (std::size_t f = 0; f < report->files.size(); ++f) {
+        auto part = readLitchiCsv(report->files[f]);
+        ASSERT_TRUE(part.ok()) << part.error().message;
+        const auto& w = part->routes[0].waypoints;
+        EXPECT_LE(w.size(), 99u);
+        if (f > 0) { // starts where the previous ended, without a second photo there
+            EXPECT_EQ(w.front().position, joined.back().position);
+        }
+        for (std::size_t i = f > 0 ? 1 : 0; i < w.size(); ++i)
+            joined.push_back(w[i]);
+        for (const auto& x : w)
+            photos += x.kind == route::WaypointKind::Photo;
+    }
+    EXPECT_EQ(joined.size(), big.waypoints.size());
+    EXPECT_EQ(photos, photosOf(big).size());
+}
+
+TEST(LitchiSplit, WaypointsCloserThanDjisMinimumAreMerged) {
+    route::Route r = laneRoute(20.0, 45.0);
+    route::Waypoint near = r.waypoints[2];
+    near.kind = route::WaypointKind::Turn;
+    near.position = geo::geodesicDirect(near.position, 0, 0.4); // DJI refuses < 0.6 m
+    r.waypoints.insert(r.waypoints.begin() + 3, near);
+    ExportContext ctx = makeExportContext(test::demoMission(), {r});
+    const std::string dir = test::scratchDir("litchi_merge");
+    auto report = exportRouteFiles(ctx, 0, WaypointFormat::LitchiCsv, dir + "/m.csv");
+    ASSERT_TRUE(report.ok());
+    ASSERT_EQ(report->files.size(), 1u);
+    ASSERT_EQ(report->notes.size(), 1u);
+    EXPECT_NE(report->notes[0].find("1 waypoint closer than 0.6 m"), std::string::npos) << report->notes[0];
+    auto back = readLitchiCsv(dir + "/m.csv");
+    ASSERT_TRUE(back.ok());
+    EXPECT_EQ(back->routes[0].waypoints.size(), r.waypoints.size() - 1);
+    for (std::size_t i = 1; i < back->routes[0].waypoints.size(); ++i)
+        EXPECT_GE(geo::geodesicDistance(back->routes[0].waypoints[i - 1].position,
+                                        back->routes[0].waypoints[i].position),
+                  0.6);
+    // The .plan keeps it (0.4 m is above its 0.1 m minimum).
+    auto plan = exportRouteFiles(ctx, 0, WaypointFormat::QgcPlan, dir + "/m.plan");
+    ASSERT_TRUE(plan.ok());
+    EXPECT_TRUE(plan->notes.empty());
+}
+
+#include "core/io/gpx.h"
+#include "core/io/kml_export.h"
+#include "core/io/waypoint_geojson.h"
+
+#include <gdal_priv.h>
+#include <ogrsf_frmts.h>
+
+namespace {
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+double signedArea(const CPLJSONArray& ring) {
+    double a = 0;
+    for (int i = 0; i + 1 < ring.Size(); ++i) {
+        const CPLJSONArray p = ring[i].ToArray(), q = ring[i + 1].ToArray();
+        a += p[0].ToDouble() * q[1].ToDouble() - q[0].ToDouble() * p[1].ToDouble();
+    }
+    return a / 2;
+}
+
+} // namespace
+
+TEST(ExportsAsFlown, KmlDrawsTheFlightAtItsHeightAboveTheGround) {
+    std::mt19937 rng(61);
+    ExportContext ctx = makeExportContext(test::demoMission(), {test::randomRoute(rng, "A")});
+    const std::string dir = test::scratchDir("kml_alt");
+    ASSERT_TRUE(writeKml(ctx, {0}, dir + "/a.kml").ok());
+    const std::string kml = slurp(dir + "/a.kml");
+    EXPECT_NE(kml.find("<altitudeMode>relativeToGround</altitudeMode>"), std::string::npos);
+    EXPECT_NE(kml.find("<extrude>1</extrude>"), std::string::npos);
+    // The path's third coordinates are the waypoint heights.
+    GDALAllRegister();
+    GDALDataset* ds = static_cast<GDALDataset*>(GDALOpenEx((dir + "/a.kml").c_str(), GDAL_OF_VECTOR, nullptr, nullptr, nullptr));
+    ASSERT_NE(ds, nullptr);
+    bool sawPath = false;
+    for (auto* layer : ds->GetLayers())
+        for (auto& f : *layer) {
+            const OGRGeometry* g = f->GetGeometryRef();
+            if (!g || wkbFlatten(g->getGeometryType()) != wkbLineString ||
+                std::string(f->GetFieldAsString("name")).find(" path") == std::string::npos)
+                continue;
+            const auto* line = g->toLineString();
+            ASSERT_EQ(line->getNumPoints(), int(ctx.routes[0].waypoints.size()));
+            for (int i = 0; i < line->getNumPoints(); ++i)
+                EXPECT_NEAR(line->getZ(i), ctx.routes[0].waypoints[std::size_t(i)].altitudeM, 1e-6);
+            sawPath = true;
+        }
+    GDALClose(ds);
+    EXPECT_TRUE(sawPath);
+}
+
+TEST(ExportsAsFlown, GpxSaysWhatItsElevationsAre) {
+    std::mt19937 rng(62);
+    ExportContext ctx = makeExportContext(test::demoMission(), {test::randomRoute(rng, "A"), test::randomRoute(rng, "B")});
+    const std::string dir = test::scratchDir("gpx_meta");
+    ASSERT_TRUE(writeGpx(ctx, {0, 1}, dir + "/a.gpx").ok());
+    const std::string gpx = slurp(dir + "/a.gpx");
+    const auto meta = gpx.find("<metadata>");
+    ASSERT_NE(meta, std::string::npos);
+    EXPECT_EQ(gpx.find("<metadata>", meta + 1), std::string::npos); // one metadata element
+    EXPECT_LT(meta, gpx.find("<wpt"));
+    EXPECT_NE(gpx.find(std::string("<desc>") + kGpxElevationNote + "</desc>"), std::string::npos);
+    EXPECT_NE(gpx.find("<name>Rheinhafen training ground</name>"), std::string::npos);
+    EXPECT_LT(gpx.find("<desc>"), gpx.find("<bounds")); // GPX 1.1 order: name, desc, ..., bounds
+    auto back = readGpx(dir + "/a.gpx");
+    ASSERT_TRUE(back.ok()) << back.error().message;
+    EXPECT_EQ(back->routes.size(), 2u);
+}
+
+TEST(ExportsAsFlown, GeoJsonFollowsRfc7946) {
+    std::mt19937 rng(63);
+    mission::Mission m = test::demoMission();
+    std::reverse(m.area.outer.begin(), m.area.outer.end()); // clockwise in the mission
+    geo::GeoRing hole = {{8.3300, 49.0126}, {8.3302, 49.0126}, {8.3302, 49.0128}, {8.3300, 49.0128}};
+    m.area.holes.push_back(hole); // counter-clockwise in the mission
+    ExportContext ctx = makeExportContext(m, {test::randomRoute(rng, "A")});
+    const std::string dir = test::scratchDir("geojson_rfc");
+    ASSERT_TRUE(writeWaypointGeoJson(ctx, {0}, dir + "/a.geojson").ok());
+    CPLJSONDocument doc;
+    ASSERT_TRUE(doc.Load(dir + "/a.geojson"));
+    EXPECT_FALSE(doc.GetRoot().GetObj("crs").IsValid());
+    const CPLJSONArray features = doc.GetRoot().GetArray("features");
+    int polygons = 0;
+    for (int i = 0; i < features.Size(); ++i) {
+        const CPLJSONObject g = features[i].GetObj("geometry");
+        if (g.GetString("type") != "Polygon")
+            continue;
+        const CPLJSONArray rings = g.GetArray("coordinates");
+        EXPECT_GT(signedArea(rings[0].ToArray()), 0) << "outer ring of feature " << i;
+        for (int h = 1; h < rings.Size(); ++h)
+            EXPECT_LT(signedArea(rings[h].ToArray()), 0) << "hole of feature " << i;
+        ++polygons;
+    }
+    EXPECT_EQ(polygons, 3);
+    // Positions still read back exactly.
+    auto back = readWaypointGeoJson(dir + "/a.geojson");
+    ASSERT_TRUE(back.ok());
+    EXPECT_EQ(back->routes[0].waypoints[3].position, ctx.routes[0].waypoints[3].position);
+}
