@@ -193,6 +193,9 @@ Result<route::Waypoint> readPoint(OGRFeature& f, const std::string& path, std::s
         return makeError(ErrorCode::ParseError,
                          path + ": " + what + " has no <ele> (altitude above take-off)");
     w.altitudeM = f.GetFieldAsDouble(ele);
+    if (const std::string why = detail::waypointPositionProblem(w.position.lon, w.position.lat, w.altitudeM);
+        !why.empty())
+        return makeError(ErrorCode::ParseError, path + ": " + what + ": " + why);
     const int hdg = f.GetFieldIndex("ogr_heading");
     hasHeading = hdg >= 0 && f.IsFieldSetAndNotNull(hdg);
     if (hasHeading) {

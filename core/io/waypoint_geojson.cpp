@@ -187,6 +187,10 @@ Result<ImportedWaypoints> readWaypointGeoJson(const std::string& path) {
         } else {
             return makeError(ErrorCode::ParseError, where + ": missing property \"altitude_m\"");
         }
+        if (const std::string why =
+                detail::waypointPositionProblem(pw.w.position.lon, pw.w.position.lat, pw.w.altitudeM);
+            !why.empty())
+            return makeError(ErrorCode::ParseError, where + ": " + why);
         const int hdg = f->GetFieldIndex("heading_deg");
         if (hdg >= 0 && f->IsFieldSetAndNotNull(hdg)) {
             auto v = detail::parseNumber(f->GetFieldAsString(hdg));

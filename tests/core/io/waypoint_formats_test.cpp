@@ -339,3 +339,17 @@ TEST(Kml, DrawsTheSmoothedTrajectoryOutsideTheBufferedZones) {
     ASSERT_TRUE(exportRoute(ctx, 0, WaypointFormat::Kml, dir + "/t.kml").ok());
     EXPECT_NE(slurp(dir + "/t.kml").find("Falcon 8 #1 trajectory"), std::string::npos);
 }
+
+// A Litchi CSV saved by a spreadsheet in a decimal-comma locale: ';' between fields, ',' in numbers.
+TEST(LitchiCsv, ReadsASpreadsheetsSemicolonsAndDecimalCommas) {
+    auto r = readLitchiCsv(std::string(PF_TEST_DATA_DIR) + "/formats/litchi_spreadsheet.csv");
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    const auto& w = r->routes.at(0).waypoints;
+    ASSERT_EQ(w.size(), 2u);
+    EXPECT_DOUBLE_EQ(w[0].position.lat, 49.0108);
+    EXPECT_DOUBLE_EQ(w[0].position.lon, 8.3272);
+    EXPECT_DOUBLE_EQ(w[1].position.lat, 49.0109);
+    EXPECT_DOUBLE_EQ(w[0].altitudeM, 40.0);
+    EXPECT_EQ(w[0].kind, route::WaypointKind::Photo);
+    EXPECT_EQ(w[1].kind, route::WaypointKind::Transit);
+}
