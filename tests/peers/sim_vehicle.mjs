@@ -51,7 +51,7 @@ function parseArgs(argv) {
       case '--home': o.home = next().split(',').map(Number); break;
       case '--drop-request': o.dropRequest = Number(next()); break;
       case '--nack': { const [s, c] = next().split(':').map(Number); o.nackSeq = s; o.nackCode = c; break; }
-      case '--nack-type': o.nackType = Number(Object.keys(TYPES).find((k) => TYPES[k] === next())); break;
+      case '--nack-type': { const t = next(); o.nackType = Number(Object.keys(TYPES).find((k) => TYPES[k] === t)); break; }
       case '--old-requests': o.oldRequests = true; break;
       case '--silent': o.silent = true; break;
       case '--seconds': o.seconds = Number(next()); break;
