@@ -9,8 +9,8 @@
 #include <vector>
 
 #define PF_CLI_EXPORT_OPTIONS_HELP \
-    "  --firmware NAME       ardupilot (default) or px4: the .plan's firmwareType; an upload to\n" \
-    "                        ArduPilot sends the home as mission item 0\n" \
+    "  --firmware NAME       ardupilot (default) or px4: the .plan's firmwareType (an upload\n" \
+    "                        follows the vehicle's heartbeat: ArduPilot gets the home as item 0)\n" \
     "  --end ACTION          rtl (default) or land: what the vehicle does after the last waypoint\n" \
     "  --capture COMMAND     image (MAV_CMD_IMAGE_START_CAPTURE, default) or digicam\n" \
     "                        (MAV_CMD_DO_DIGICAM_CONTROL): the photo command after a photo waypoint\n" \

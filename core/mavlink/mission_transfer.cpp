@@ -118,6 +118,12 @@ void MissionTransfer::receiveFrame(const Frame& f, std::int64_t now) {
         if (m_opt.targetComponent && f.componentId != m_opt.targetComponent)
             return;
         m_vehicle = VehicleIdentity{f.systemId, f.componentId, hb->type, hb->autopilot};
+        constexpr std::uint8_t kArduPilot = 3; // MAV_AUTOPILOT_ARDUPILOTMEGA
+        if (m_plan.home && hb->autopilot == kArduPilot) {
+            m_plan.mission.insert(m_plan.mission.begin(), *m_plan.home);
+            m_homeIsItemZero = true;
+            m_progress.total += m_opt.verify ? 2 : 1;
+        }
         m_progress.phase = TransferPhase::Uploading;
         m_typeIndex = 0;
         beginType(now);
@@ -298,7 +304,7 @@ void MissionTransfer::compareDownload(std::int64_t now) {
         if (a.frame != b.frame)
             return fail(where + "frame " + std::to_string(a.frame) + " sent, " +
                         std::to_string(b.frame) + " read back");
-        const bool home = m_opt.homeIsItemZero && i == 0 && m_progress.type == MissionType::Mission;
+        const bool home = m_homeIsItemZero && i == 0 && m_progress.type == MissionType::Mission;
         if (home)
             continue;
         for (std::size_t p = 0; p < 4; ++p)

@@ -17,8 +17,11 @@
 namespace pf::mavlink {
 
 // What goes to one vehicle: the items of each plan type in order (seq, targets and type are filled in
-// by the transfer).
+// by the transfer). ArduPilot keeps the home position as mission item 0: `home` is sent first when
+// the vehicle's heartbeat says ArduPilot, and its position is not compared on read-back (the vehicle
+// replaces it with its own home).
 struct VehiclePlan {
+    std::optional<MissionItemInt> home;
     std::vector<MissionItemInt> mission;
     std::vector<MissionItemInt> fence;
     std::vector<MissionItemInt> rally;
@@ -33,9 +36,6 @@ struct TransferOptions {
     std::int64_t replyTimeoutMs = 1500; // per request, as the protocol's reference implementations
     int retries = 5;                    // resends after a timeout before giving up
     std::int64_t heartbeatIntervalMs = 1000; // our own GCS heartbeat
-    // ArduPilot keeps the home position as mission item 0 and replaces what was sent: its position
-    // is not compared on read-back.
-    bool homeIsItemZero = false;
     bool verify = true; // download and compare after the upload
 };
 
@@ -121,6 +121,7 @@ private:
     std::size_t m_expectedCount = 0;
     std::vector<MissionItemInt> m_downloaded;
     std::vector<bool> m_downloadedAsFloat;
+    bool m_homeIsItemZero = false; // ArduPilot: plan.home went first
     bool m_sentFloat = false; // this plan type went up as float MISSION_ITEMs
 };
 

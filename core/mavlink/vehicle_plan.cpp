@@ -43,19 +43,12 @@ Result<VehiclePlan> vehiclePlanFor(const io::ExportContext& ctx, std::size_t rou
     if (!items)
         return items.error();
     VehiclePlan plan;
-    if (options.firmware == io::QgcFirmware::ArduPilot)
-        plan.mission.push_back(wireItem(io::homeItem(ctx, routeIndex, options)));
+    plan.home = wireItem(io::homeItem(ctx, routeIndex, options));
     for (const auto& it : wire(*items))
         plan.mission.push_back(it);
     plan.fence = wire(io::fenceItems(ctx));
     plan.rally = wire(io::rallyItems(ctx, routeIndex));
     return plan;
-}
-
-TransferOptions transferOptionsFor(io::QgcFirmware firmware) {
-    TransferOptions o;
-    o.homeIsItemZero = firmware == io::QgcFirmware::ArduPilot;
-    return o;
 }
 
 } // namespace pf::mavlink

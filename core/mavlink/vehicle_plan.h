@@ -11,12 +11,10 @@
 
 namespace pf::mavlink {
 
-// ArduPilot keeps the home as mission item 0 (as the .waypoints file does): it is sent first and
-// its position is not compared on read-back; PX4 gets the items without it.
+// The home item is kept apart: an ArduPilot vehicle (told by its heartbeat) gets it as mission
+// item 0, as the .waypoints file holds it; PX4 gets the items without it. options.firmware does
+// not matter here.
 Result<VehiclePlan> vehiclePlanFor(const io::ExportContext& ctx, std::size_t routeIndex,
                                    const io::ExportOptions& options = {});
-
-// Transfer options that match the firmware (home as item 0 for ArduPilot).
-TransferOptions transferOptionsFor(io::QgcFirmware firmware);
 
 } // namespace pf::mavlink

@@ -93,7 +93,12 @@ function send(msg) {
   else output(buf);
 }
 
-const stats = { requests: 0, resentRequests: 0, repeatedItems: 0, nacks: 0, downloads: 0, gcs: null };
+// firstCountAt / lastRequestAt: when (ms since the epoch) the ground station began uploading and last
+// asked for an item, to see that two vehicles were served at the same time.
+const stats = {
+  requests: 0, resentRequests: 0, repeatedItems: 0, nacks: 0, downloads: 0, gcs: null,
+  firstCountAt: 0, lastRequestAt: 0,
+};
 const plans = { 0: [], 1: [], 2: [] };
 let upload = null; // { type, count, items, peer, timer, tries }
 
@@ -197,6 +202,7 @@ function onPacket(packet) {
       break;
     case common.MissionCount: {
       if (!forMe(data)) break;
+      if (!stats.firstCountAt) stats.firstCountAt = Date.now();
       if (upload) clearTimeout(upload.timer);
       upload = { type: data.missionType, count: data.count, items: [], peer, tries: 0 };
       if (data.count === 0) {
@@ -261,6 +267,7 @@ function onPacket(packet) {
     case common.MissionRequestInt:
     case common.MissionRequest:
       if (!forMe(data) || upload) break;
+      stats.lastRequestAt = Date.now();
       sendItem(data.missionType, data.seq, peer, clazz === common.MissionRequestInt);
       break;
     default:

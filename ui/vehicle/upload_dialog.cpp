@@ -21,6 +21,8 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace pf::ui {
 
 namespace {
@@ -91,11 +93,12 @@ UploadDialog::UploadDialog(MissionDocument* doc, QWidget* parent)
         ++row;
     }
     m_table->resizeColumnsToContents();
+    m_table->setColumnWidth(0, std::max(m_table->columnWidth(0), 150));
+    m_table->setColumnWidth(1, 230);
+    m_table->setColumnWidth(2, 80);
+    m_table->setColumnWidth(3, 130);
     m_table->horizontalHeader()->setSectionResizeMode(4, QHeaderView::Stretch);
 
-    m_firmware = new QComboBox;
-    m_firmware->addItem(tr("ArduPilot (home is item 0)"), int(io::QgcFirmware::ArduPilot));
-    m_firmware->addItem(tr("PX4"), int(io::QgcFirmware::PX4));
     m_gimbal = new QComboBox;
     m_gimbal->addItem(tr("Straight down: DO_MOUNT_CONTROL"), int(io::GimbalCommand::MountControl));
     m_gimbal->addItem(tr("Straight down: DO_GIMBAL_MANAGER_PITCHYAW"),
@@ -108,13 +111,13 @@ UploadDialog::UploadDialog(MissionDocument* doc, QWidget* parent)
     m_end = new QComboBox;
     m_end->addItem(tr("Return to launch"), int(io::MissionEnd::ReturnToLaunch));
     m_end->addItem(tr("Land at the landing point"), int(io::MissionEnd::Land));
-    m_firmware->setCurrentIndex(settings.value(QStringLiteral("vehicle/firmware"), 0).toInt());
     m_gimbal->setCurrentIndex(settings.value(QStringLiteral("vehicle/gimbal"), 0).toInt());
     m_trigger->setCurrentIndex(settings.value(QStringLiteral("vehicle/trigger"), 0).toInt());
     m_end->setCurrentIndex(settings.value(QStringLiteral("vehicle/end"), 0).toInt());
     auto* options = new QGroupBox(tr("Mission"));
     auto* form = new QFormLayout(options);
-    form->addRow(tr("Firmware:"), m_firmware);
+    auto* firmware = new QLabel(tr("From each vehicle's heartbeat (ArduPilot gets the home as item 0)"));
+    form->addRow(tr("Firmware:"), firmware);
     form->addRow(tr("Camera:"), m_gimbal);
     form->addRow(tr("Photos:"), m_trigger);
     form->addRow(tr("After the last waypoint:"), m_end);
@@ -151,7 +154,7 @@ UploadDialog::UploadDialog(MissionDocument* doc, QWidget* parent)
     lay->addWidget(options);
     lay->addWidget(m_status);
     lay->addWidget(buttons);
-    resize(960, 420);
+    resize(1120, 460);
 }
 
 void UploadDialog::setConnection(int row, const QString& connection, int systemId) {
@@ -162,7 +165,6 @@ void UploadDialog::setConnection(int row, const QString& connection, int systemI
 
 io::ExportOptions UploadDialog::exportOptions() const {
     io::ExportOptions o;
-    o.firmware = io::QgcFirmware(m_firmware->currentData().toInt());
     o.gimbal = io::GimbalCommand(m_gimbal->currentData().toInt());
     o.trigger = io::CameraTrigger(m_trigger->currentData().toInt());
     o.end = io::MissionEnd(m_end->currentData().toInt());
@@ -181,7 +183,6 @@ void UploadDialog::saveSettings() const {
         settings.setValue(settingsKey(QStringLiteral("connection"), name), m_rows[i].connection->currentText());
         settings.setValue(settingsKey(QStringLiteral("sysid"), name), m_rows[i].systemId->value());
     }
-    settings.setValue(QStringLiteral("vehicle/firmware"), m_firmware->currentIndex());
     settings.setValue(QStringLiteral("vehicle/gimbal"), m_gimbal->currentIndex());
     settings.setValue(QStringLiteral("vehicle/trigger"), m_trigger->currentIndex());
     settings.setValue(QStringLiteral("vehicle/end"), m_end->currentIndex());

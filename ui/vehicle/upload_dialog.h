@@ -54,7 +54,6 @@ private:
     QTableWidget* m_table;
     std::vector<Row> m_rows;
     std::vector<int> m_jobRow; // job index -> table row
-    QComboBox* m_firmware;
     QComboBox* m_gimbal;
     QComboBox* m_trigger;
     QComboBox* m_end;

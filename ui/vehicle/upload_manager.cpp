@@ -21,7 +21,6 @@ Result<UploadJob> makeUploadJob(const io::ExportContext& ctx, std::size_t routeI
     job.connection = connection;
     job.systemId = systemId;
     job.plan = std::move(*plan);
-    job.options = mavlink::transferOptionsFor(exportOptions.firmware);
     job.options.targetSystem = static_cast<std::uint8_t>(systemId);
     return job;
 }

@@ -236,6 +236,33 @@ TEST(MissionTransfer, ADifferentReadBackIsAFailureNamingTheItem) {
     EXPECT_NE(t.message().find("altitude"), std::string::npos) << t.message();
 }
 
+TEST(MissionTransfer, AnArduPilotGetsTheHomeAsItemZeroAndMayReplaceIt) {
+    ScriptedVehicle v; // its heartbeat says ArduPilot (3)
+    VehiclePlan plan = samplePlan(4);
+    MissionItemInt home;
+    home.command = 16;
+    home.x = 480000000; // far from where the vehicle will say its home is
+    home.y = 80000000;
+    plan.home = home;
+    MissionTransfer t(plan, {});
+    std::int64_t now = 0;
+    t.start(now);
+    v.heartbeat();
+    while (!t.finished() && now < 60000) {
+        v.receive(t.takeOutgoing());
+        if (!v.stored[MissionType::Mission].empty())
+            v.stored[MissionType::Mission][0].x = 490107000; // the vehicle's own home
+        t.receive(v.out, now);
+        v.out.clear();
+        now += 10;
+        t.tick(now);
+    }
+    ASSERT_TRUE(t.succeeded()) << t.message();
+    EXPECT_EQ(v.stored[MissionType::Mission].size(), 5u);
+    EXPECT_EQ(v.stored[MissionType::Mission][1].command, 16);
+    EXPECT_EQ(t.progress().done, t.progress().total);
+}
+
 TEST(MissionTransfer, OnlyTheBoundSystemIdIsTalkedTo) {
     ScriptedVehicle other;
     other.sysid = 9;

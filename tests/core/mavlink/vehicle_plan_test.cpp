@@ -9,20 +9,22 @@
 
 using namespace pf;
 
-TEST(VehiclePlan, ArduPilotGetsTheWaypointsFileItemsWithHomeFirst) {
+TEST(VehiclePlan, TheItemsAreTheWaypointsFileLinesWithTheHomeApart) {
     std::mt19937 rng(51);
     io::ExportContext ctx = io::makeExportContext(test::demoMission(), {test::randomRoute(rng, "A")});
     io::ExportOptions opt;
     opt.trigger = io::CameraTrigger::Distance;
     auto plan = mavlink::vehiclePlanFor(ctx, 0, opt);
     ASSERT_TRUE(plan.ok());
-    // Every line of the .waypoints file is one uploaded item, in the same order.
+    // Every line of the .waypoints file is one uploaded item, in the same order (line 0: home).
     const std::string wpl = *io::qgcWplText(ctx, 0, opt);
     const auto lines = std::count(wpl.begin(), wpl.end(), '\n') - 1;
-    ASSERT_EQ(static_cast<long>(plan->mission.size()), lines);
+    ASSERT_TRUE(plan->home.has_value());
+    ASSERT_EQ(static_cast<long>(plan->mission.size()) + 1, lines);
     const auto items = *io::missionItems(ctx, 0, opt);
+    ASSERT_EQ(items.size(), plan->mission.size());
     for (std::size_t i = 0; i < items.size(); ++i) {
-        const auto& w = plan->mission[i + 1];
+        const auto& w = plan->mission[i];
         EXPECT_EQ(w.command, items[i].command);
         if (items[i].hasPosition()) {
             EXPECT_EQ(w.x, std::lround(items[i].params[4] * 1e7));
@@ -30,18 +32,12 @@ TEST(VehiclePlan, ArduPilotGetsTheWaypointsFileItemsWithHomeFirst) {
             EXPECT_FLOAT_EQ(w.z, static_cast<float>(items[i].params[6]));
         }
     }
-    EXPECT_EQ(plan->mission[0].frame, 0); // home, above sea level
+    EXPECT_EQ(plan->home->frame, 0); // home, above sea level
+    EXPECT_EQ(plan->home->x, std::lround(ctx.mission.home->lat * 1e7));
+    EXPECT_EQ(plan->mission[0].command, io::mav::kNavTakeoff);
     EXPECT_EQ(plan->fence.size(), 20u);
     EXPECT_EQ(plan->fence[0].command, 5002);
     EXPECT_EQ(plan->rally.size(), 1u);
-    EXPECT_TRUE(mavlink::transferOptionsFor(io::QgcFirmware::ArduPilot).homeIsItemZero);
-
-    opt.firmware = io::QgcFirmware::PX4;
-    auto px4 = mavlink::vehiclePlanFor(ctx, 0, opt);
-    ASSERT_TRUE(px4.ok());
-    EXPECT_EQ(px4->mission.size(), items.size());
-    EXPECT_EQ(px4->mission[0].command, io::mav::kNavTakeoff);
-    EXPECT_FALSE(mavlink::transferOptionsFor(io::QgcFirmware::PX4).homeIsItemZero);
 }
 
 TEST(VehiclePlan, AnEmptyRouteIsRefusedWithItsName) {
