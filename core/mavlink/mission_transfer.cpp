@@ -86,8 +86,10 @@ void MissionTransfer::tick(std::int64_t now) {
             fail("no heartbeat from " +
                  (m_opt.targetSystem ? "the vehicle with system id " + std::to_string(m_opt.targetSystem)
                                      : std::string("any vehicle")) +
-                 " within " + fmt(m_opt.heartbeatTimeoutMs / 1000.0, 1) +
-                 " s: check that it is powered, connected and on this port (and baud rate)");
+                 (m_opt.linkDescription.empty() ? std::string() : " on " + m_opt.linkDescription) +
+                 " within " + fmt(m_opt.heartbeatTimeoutMs / 1000.0, 1) + " s: " +
+                 (m_opt.serialLink ? "check that it is powered, the cable or radio, the port and the baud rate"
+                                   : "check that it is powered, connected and talking to this address and port"));
         return;
     }
     if (now >= m_deadline)

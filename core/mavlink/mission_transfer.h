@@ -37,6 +37,10 @@ struct TransferOptions {
     int retries = 5;                    // resends after a timeout before giving up
     std::int64_t heartbeatIntervalMs = 1000; // our own GCS heartbeat
     bool verify = true; // download and compare after the upload
+    // For messages: where the vehicle is expected ("UDP 127.0.0.1:14550"), and whether it is a serial
+    // link (then the baud rate is worth checking).
+    std::string linkDescription;
+    bool serialLink = false;
 };
 
 enum class TransferPhase { NotStarted, WaitingForVehicle, Uploading, Verifying, Succeeded, Failed };

@@ -160,7 +160,10 @@ TEST(PeerUpload, NoVehicleIsAClearTimeout) {
     const CliRun r = cli("upload " + quoted(kDemo) + " --aircraft 'Falcon 8' --timeout 2 --to udp:127.0.0.1:" +
                       std::to_string(silent.port()));
     EXPECT_EQ(r.code, 2) << r.output;
-    EXPECT_NE(r.output.find("no heartbeat from any vehicle within 2.0 s"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("no heartbeat from any vehicle on UDP 127.0.0.1:" + std::to_string(silent.port()) +
+                            " within 2.0 s"),
+              std::string::npos)
+        << r.output;
     EXPECT_LT(r.seconds, 15.0);
     // A connection that cannot be opened is named.
     const CliRun tcp = cli("upload " + quoted(kDemo) + " --aircraft 'Falcon 8' --to tcp:127.0.0.1:1");

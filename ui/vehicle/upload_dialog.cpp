@@ -27,6 +27,19 @@ namespace pf::ui {
 
 namespace {
 
+constexpr int kRowHeight = 62;
+
+// A cell widget at its natural height, centred in the (taller) row.
+QWidget* centred(QWidget* w) {
+    auto* box = new QWidget;
+    auto* l = new QVBoxLayout(box);
+    l->setContentsMargins(2, 0, 2, 0);
+    l->addStretch();
+    l->addWidget(w);
+    l->addStretch();
+    return box;
+}
+
 QString settingsKey(const QString& what, const QString& aircraft) {
     QString a = aircraft;
     a.replace(QLatin1Char('/'), QLatin1Char('_'));
@@ -84,14 +97,18 @@ UploadDialog::UploadDialog(MissionDocument* doc, QWidget* parent)
         w.answer = new QLabel(tr("Not sent"));
         w.answer->setWordWrap(true);
         w.answer->setTextInteractionFlags(Qt::TextSelectableByMouse);
-        m_table->setCellWidget(row, 0, w.use);
-        m_table->setCellWidget(row, 1, w.connection);
-        m_table->setCellWidget(row, 2, w.systemId);
-        m_table->setCellWidget(row, 3, w.progress);
+        m_table->setCellWidget(row, 0, centred(w.use));
+        m_table->setCellWidget(row, 1, centred(w.connection));
+        m_table->setCellWidget(row, 2, centred(w.systemId));
+        m_table->setCellWidget(row, 3, centred(w.progress));
         m_table->setCellWidget(row, 4, w.answer);
+        m_table->setRowHeight(row, kRowHeight);
         m_rows.push_back(w);
         ++row;
     }
+    // Room for every row (three lines of answer each) up to a screenful; then it scrolls.
+    m_table->setMinimumHeight(m_table->horizontalHeader()->sizeHint().height() + 6 +
+                              kRowHeight * std::min(row, 6));
     m_table->resizeColumnsToContents();
     m_table->setColumnWidth(0, std::max(m_table->columnWidth(0), 150));
     m_table->setColumnWidth(1, 230);
@@ -154,7 +171,7 @@ UploadDialog::UploadDialog(MissionDocument* doc, QWidget* parent)
     lay->addWidget(options);
     lay->addWidget(m_status);
     lay->addWidget(buttons);
-    resize(1120, 460);
+    resize(1120, 520);
 }
 
 void UploadDialog::setConnection(int row, const QString& connection, int systemId) {
@@ -250,7 +267,6 @@ void UploadDialog::refreshRow(int job) {
     r.answer->setStyleSheet(u->isFinished() ? (u->succeeded() ? QStringLiteral("color: #1b7a1b")
                                                               : QStringLiteral("color: #b00020"))
                                             : QString());
-    m_table->resizeRowsToContents();
 }
 
 } // namespace pf::ui

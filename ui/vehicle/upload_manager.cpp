@@ -22,6 +22,8 @@ Result<UploadJob> makeUploadJob(const io::ExportContext& ctx, std::size_t routeI
     job.systemId = systemId;
     job.plan = std::move(*plan);
     job.options.targetSystem = static_cast<std::uint8_t>(systemId);
+    job.options.linkDescription = connection.describe();
+    job.options.serialLink = connection.kind == mavlink::ConnectionSpec::Kind::Serial;
     return job;
 }
 
