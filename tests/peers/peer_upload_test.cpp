@@ -176,9 +176,9 @@ TEST(PeerUpload, TwoVehiclesOnOneLinkAreUploadedInParallelBySystemId) {
     const int port = freeUdpPort();
     const std::string gcs = "127.0.0.1:" + std::to_string(port);
     // Both vehicles stream to the ground station's port, as autopilots do to 14550; each answers
-    // only what is addressed to its system id, slowly (10 ms per message).
-    Peer a({"--udp-out", gcs, "--sysid", "1", "--seconds", "90", "--delay", "10", "--report", dir + "/a.json"});
-    Peer b({"--udp-out", gcs, "--sysid", "2", "--seconds", "90", "--delay", "10", "--report", dir + "/b.json",
+    // only what is addressed to its system id, slowly (4 ms per message).
+    Peer a({"--udp-out", gcs, "--sysid", "1", "--seconds", "90", "--delay", "4", "--report", dir + "/a.json"});
+    Peer b({"--udp-out", gcs, "--sysid", "2", "--seconds", "90", "--delay", "4", "--report", dir + "/b.json",
             "--autopilot", "px4"});
     ASSERT_GT(a.port(), 0);
     ASSERT_GT(b.port(), 0);
