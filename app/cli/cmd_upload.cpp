@@ -49,6 +49,8 @@ const char* const kUploadUsage =
     "  --system-id N         the vehicle's MAVLink system id, 1-255 (repeatable, one per --aircraft;\n"
     "                        default 0: the first autopilot heard, only for one aircraft per connection)\n"
     "  --timeout S           how long to wait for the vehicle's heartbeat (default 5 s)\n"
+    "  --sortie N            of a mission file: send only battery N's flight (home to home) of each\n"
+    "                        aircraft that needs several batteries\n"
     PF_CLI_EXPORT_OPTIONS_HELP
     "\n"
     "Several vehicles: --aircraft \"Falcon 8\" --to udp::14550 --aircraft \"DJI Phantom 4 Pro\" --to udp::14551,\n"
@@ -92,7 +94,8 @@ std::optional<int> parseSystemId(const std::string& s) {
     return n;
 }
 
-Result<Input> loadInput(const std::string& path) {
+// `sortie` (1-based, 0: all) applies to the aircraft named in `only` (every aircraft if empty).
+Result<Input> loadInput(const std::string& path, int sortie, const std::vector<std::string>& only) {
     Input in;
     if (!isMissionFile(path)) {
         auto imported = io::importWaypoints(path);
@@ -110,6 +113,20 @@ Result<Input> loadInput(const std::string& path) {
     std::vector<route::Route> routes;
     for (const auto& a : plan->aircraft) {
         route::Route r = a.route;
+        const auto sorties = a.sortieRoutes.size();
+        const bool chosen = only.empty() || std::find(only.begin(), only.end(), a.aircraft) != only.end();
+        if (chosen && sortie > 0) {
+            if (static_cast<std::size_t>(sortie) > std::max<std::size_t>(sorties, 1))
+                return makeError(ErrorCode::InvalidInput, "--sortie " + std::to_string(sortie) + ": " + a.aircraft +
+                                                              " flies " + std::to_string(std::max<std::size_t>(sorties, 1)) +
+                                                              " sortie(s)");
+            if (sorties > 1)
+                r = a.sortieRoutes[static_cast<std::size_t>(sortie - 1)];
+        } else if (chosen && sorties > 1) {
+            in.notes.push_back(a.aircraft + " needs " + std::to_string(sorties) +
+                               " batteries: this upload flies every sortie in one mission; send one battery's "
+                               "flight at a time with --sortie N");
+        }
         for (const auto& e : m->editedRoutes)
             if (e.aircraft == r.aircraft) {
                 r = e;
@@ -129,6 +146,7 @@ int runUpload(const std::vector<std::string>& argv) {
     specs.push_back({"aircraft", true, true});
     specs.push_back({"system-id", true, true});
     specs.push_back({"timeout"});
+    specs.push_back({"sortie"});
     auto args = Args::parse(argv, specs);
     if (!args)
         return reportError(args.error());
@@ -161,8 +179,13 @@ int runUpload(const std::vector<std::string>& argv) {
         sysids.push_back(*n);
     }
 
+    auto sortie = args->number("sortie");
+    if (!sortie)
+        return reportError(sortie.error());
+    if (*sortie && !(**sortie >= 1 && **sortie <= 1000 && **sortie == static_cast<int>(**sortie)))
+        return reportError("--sortie: expected a sortie number from 1");
     const std::string& path = args->positionals()[0];
-    auto input = loadInput(path);
+    auto input = loadInput(path, *sortie ? static_cast<int>(**sortie) : 0, args->values("aircraft"));
     if (!input)
         return reportError(input.error());
     for (const auto& n : input->notes)

@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -216,4 +217,32 @@ TEST(PeerUpload, TwoVehiclesOnTwoConnections) {
     ASSERT_EQ(r.code, 0) << r.output;
     EXPECT_GT(report(dir + "/a.json").GetArray("mission").Size(), 10);
     EXPECT_GT(report(dir + "/b.json").GetArray("mission").Size(), 10);
+}
+
+TEST(PeerUpload, OneBatterysFlightAtATime) {
+    const std::string dir = scratch("sortie");
+    // The demo with a Falcon 8 that flies 4 minutes: several batteries.
+    std::ifstream in(kDemo);
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    const auto at = text.find("\"endurance_min\": 20.0");
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, 21, "\"endurance_min\": 4.0");
+    const std::string mission = dir + "/short.json";
+    std::ofstream(mission) << text;
+    Peer vehicle({"--udp", "0", "--seconds", "60", "--report", dir + "/vehicle.json"});
+    ASSERT_GT(vehicle.port(), 0);
+    const std::string to = " --aircraft 'Falcon 8' --to udp:127.0.0.1:" + std::to_string(vehicle.port());
+    const CliRun all = cli("upload " + quoted(mission) + to);
+    ASSERT_EQ(all.code, 0) << all.output;
+    EXPECT_NE(all.output.find("Falcon 8 needs"), std::string::npos) << all.output;
+    EXPECT_NE(all.output.find("with --sortie N"), std::string::npos) << all.output;
+    const int whole = report(dir + "/vehicle.json").GetArray("mission").Size();
+    const CliRun second = cli("upload " + quoted(mission) + to + " --sortie 2");
+    ASSERT_EQ(second.code, 0) << second.output;
+    const int part = report(dir + "/vehicle.json").GetArray("mission").Size();
+    EXPECT_LT(part, whole);
+    EXPECT_GT(part, 10);
+    const CliRun tooMany = cli("upload " + quoted(mission) + to + " --sortie 99");
+    EXPECT_EQ(tooMany.code, 2);
+    EXPECT_NE(tooMany.output.find("--sortie 99: Falcon 8 flies"), std::string::npos) << tooMany.output;
 }
