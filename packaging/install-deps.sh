@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config
-  qtbase5-dev qtpositioning5-dev libqt5svg5-dev
+  qtbase5-dev qtpositioning5-dev libqt5svg5-dev libqt5serialport5-dev
   libgdal-dev gdal-bin libproj-dev libgeos-dev libeigen3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth
@@ -13,6 +13,8 @@ packages=(
   # validators, dpkg-shlibdeps for the package's dependencies, and the X tools the kill-recovery
   # test uses to see and answer the application's recovery question on a virtual screen.
   clang libclang-rt-14-dev desktop-file-utils appstream dpkg-dev xdotool x11-utils
+  # The simulated MAVLink vehicle of the upload tests (tests/peers/, node-mavlink from npm).
+  nodejs
 )
 
 missing=()
@@ -21,6 +23,11 @@ for p in "${packages[@]}"; do
     missing+=("$p")
   fi
 done
+
+# npm comes as its own Debian package, or inside a nodejs build that already bundles it.
+if ! command -v npm >/dev/null 2>&1; then
+  missing+=(npm)
+fi
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all ${#packages[@]} packages already installed"

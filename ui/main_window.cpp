@@ -29,6 +29,7 @@
 #include "ui/commands/replace_route_command.h"
 #include "ui/commands/set_planner_options_command.h"
 #include "ui/dialogs/export_dialog.h"
+#include "ui/vehicle/upload_dialog.h"
 #include "ui/map/plan_layer.h"
 #include "ui/panels/statistics_panel.h"
 #include "ui/panels/waypoint_panel.h"
@@ -347,6 +348,17 @@ void MainWindow::buildActions() {
     });
     centreMe->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
     gs->addAction(tr("&Stop"), m_ground, &GroundStation::stop);
+    // Vehicles: the mission upload over MAVLink (ui/vehicle).
+    gs->addSeparator();
+    auto* uploadAct = gs->addAction(icon("export"), tr("Connect and &Upload…"), this, [this] {
+        if (m_doc->routes().empty()) {
+            showError(tr("Connect and Upload"), tr("Nothing to upload yet: plan the mission first (F5)."));
+            return;
+        }
+        UploadDialog dialog(m_doc, this);
+        dialog.exec();
+    });
+    uploadAct->setObjectName(QStringLiteral("ConnectAndUploadAction"));
 
     // Help
     QMenu* help = menuBar()->addMenu(tr("&Help"));

@@ -2,6 +2,7 @@
 // extensions.
 #include "app/cli/args.h"
 #include "app/cli/commands.h"
+#include "app/cli/export_args.h"
 
 #include "core/io/waypoint_formats.h"
 #include "core/mission/route_check.h"
@@ -26,12 +27,7 @@ const char* const kConvertUsage =
     "  --aircraft NAME       convert only the route of this aircraft (needed when IN holds "
     "several\n"
     "                        routes and OUT is a .plan, .waypoints or .csv)\n"
-    "  --firmware NAME       ardupilot (default) or px4: the firmwareType of a .plan\n"
-    "  --end ACTION          rtl (default) or land: what the vehicle does after the last waypoint\n"
-    "  --capture COMMAND     image (MAV_CMD_IMAGE_START_CAPTURE, default) or digicam\n"
-    "                        (MAV_CMD_DO_DIGICAM_CONTROL): the photo command after each photo "
-    "waypoint\n"
-    "  --hover-speed M/S     the .plan hoverSpeed (default: the route's cruise speed)\n"
+    PF_CLI_EXPORT_OPTIONS_HELP
     "  --max-altitude M      the highest waypoint altitude allowed (default 120)\n"
     "  --safety-margin M     keep-out distance around the file's no-fly zones (default 5)\n"
     "  --force               write the file even if the route check finds errors\n"
@@ -47,9 +43,12 @@ const char* const kConvertUsage =
     "Exit codes: 0 written, 2 bad input (the message names the file and the line or JSON key).\n";
 
 int runConvert(const std::vector<std::string>& argv) {
-    auto args =
-        Args::parse(argv, {{"aircraft"}, {"firmware"}, {"end"}, {"capture"}, {"hover-speed"},
-                           {"max-altitude"}, {"safety-margin"}, {"force", false}});
+    auto specs = exportOptionSpecs();
+    specs.push_back({"aircraft"});
+    specs.push_back({"max-altitude"});
+    specs.push_back({"safety-margin"});
+    specs.push_back({"force", false});
+    auto args = Args::parse(argv, specs);
     if (!args)
         return reportError(args.error());
     if (args->positionals().size() != 2)
@@ -58,33 +57,10 @@ int runConvert(const std::vector<std::string>& argv) {
     const std::string& in = args->positionals()[0];
     const std::string& out = args->positionals()[1];
 
-    io::ExportOptions opt;
-    if (auto f = args->value("firmware")) {
-        if (*f == "px4")
-            opt.firmware = io::QgcFirmware::PX4;
-        else if (*f != "ardupilot")
-            return reportError("--firmware: expected ardupilot or px4 but got '" + *f + "'");
-    }
-    if (auto e = args->value("end")) {
-        if (*e == "land")
-            opt.end = io::MissionEnd::Land;
-        else if (*e != "rtl")
-            return reportError("--end: expected rtl or land but got '" + *e + "'");
-    }
-    if (auto c = args->value("capture")) {
-        if (*c == "digicam")
-            opt.capture = io::CaptureCommand::DigicamControl;
-        else if (*c != "image")
-            return reportError("--capture: expected image or digicam but got '" + *c + "'");
-    }
-    auto hover = args->number("hover-speed");
-    if (!hover)
-        return reportError(hover.error());
-    if (*hover) {
-        if (!(**hover > 0))
-            return reportError("--hover-speed: the speed must be positive");
-        opt.hoverSpeedMps = **hover;
-    }
+    auto options = exportOptionsFromArgs(*args);
+    if (!options)
+        return reportError(options.error());
+    const io::ExportOptions& opt = *options;
 
     mission::RouteLimits limits;
     limits.maxAltitudeM = 120.0;
@@ -138,8 +114,14 @@ int runConvert(const std::vector<std::string>& argv) {
     const io::ExportContext ctx = io::contextFromImport(*imported);
     const auto& info = io::formatInfo(*outFormat);
     Status written;
+    std::vector<std::string> files{out};
     if (ctx.routes.size() == 1) {
-        written = io::exportRoute(ctx, 0, *outFormat, out, opt);
+        auto r = io::exportRouteFiles(ctx, 0, *outFormat, out, opt);
+        if (!r)
+            return reportError(r.error());
+        for (const auto& n : r->notes)
+            std::cerr << "photoflight-cli: note: " << n << '\n';
+        files = r->files;
     } else if (info.combined) {
         written = io::exportCombined(ctx, *outFormat, out, opt);
     } else {
@@ -155,7 +137,10 @@ int runConvert(const std::vector<std::string>& argv) {
     std::size_t n = 0;
     for (const auto& r : ctx.routes)
         n += r.waypoints.size();
-    std::cout << "wrote " << out << ": " << ctx.routes.size()
+    std::string names;
+    for (const auto& f : files)
+        names += (names.empty() ? "" : ", ") + f;
+    std::cout << "wrote " << names << ": " << ctx.routes.size()
               << (ctx.routes.size() == 1 ? " route, " : " routes, ") << n << " waypoints\n";
     return kExitOk;
 }

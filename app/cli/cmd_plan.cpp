@@ -1,6 +1,7 @@
 // photoflight-cli plan: plans the mission and writes plan.geojson and metrics.json.
 #include "app/cli/args.h"
 #include "app/cli/commands.h"
+#include "app/cli/export_args.h"
 #include "app/cli/mission_args.h"
 
 #include "core/io/waypoint_formats.h"
@@ -56,6 +57,8 @@ const char* const kPlanUsage =
     "                                 geojson    GeoJSON waypoints\n"
     "                                 csv        Litchi mission hub CSV\n"
     PF_CLI_MISSION_OPTIONS_HELP
+    "Options of the waypoint files (--format plan, waypoints):\n"
+    PF_CLI_EXPORT_OPTIONS_HELP
     "\n"
     "Several aircraft: repeat --aircraft NAME[:ALT_M] (catalog names, see: photoflight-cli catalog), e.g.\n"
     "  --aircraft \"Falcon 8:40\" --aircraft \"DJI Phantom 4 Pro:45\". Each aircraft flies from its own\n"
@@ -96,9 +99,14 @@ int runPlan(const std::vector<std::string>& argv) {
     specs.push_back({"out"});
     specs.push_back({"format"});
     specs.push_back({"force", false});
+    for (auto& s : exportOptionSpecs())
+        specs.push_back(s);
     auto args = Args::parse(argv, specs);
     if (!args)
         return reportError(args.error());
+    auto exportOptions = exportOptionsFromArgs(*args);
+    if (!exportOptions)
+        return reportError(exportOptions.error());
     std::vector<io::WaypointFormat> formats;
     if (const auto f = args->value("format")) {
         auto list = io::formatListFromString(*f);
@@ -164,9 +172,12 @@ int runPlan(const std::vector<std::string>& argv) {
                 routes.push_back(a.route);
             const io::ExportContext ctx = io::makeExportContext(m, routes);
             for (const auto fmt : formats) {
-                auto files = io::exportAll(ctx, fmt, dir.string(), "mission");
+                std::vector<std::string> notes;
+                auto files = io::exportAll(ctx, fmt, dir.string(), "mission", *exportOptions, &notes);
                 if (!files)
                     return reportError(files.error());
+                for (const auto& n : notes)
+                    std::cerr << "photoflight-cli: note: " << n << '\n';
                 written.insert(written.end(), files->begin(), files->end());
                 // Each battery as a flight of its own, for ground stations that fly one at a time.
                 for (std::size_t i = 0; i < plan->aircraft.size(); ++i) {
@@ -179,7 +190,7 @@ int runPlan(const std::vector<std::string>& argv) {
                         const std::string ext = io::formatInfo(fmt).extension;
                         name = name.substr(0, name.size() - ext.size()) + "-sortie" + std::to_string(s + 1) + ext;
                         const std::string path = (dir / ("mission-" + name)).string();
-                        if (auto st = io::exportRoute(sctx, s, fmt, path); !st)
+                        if (auto st = io::exportRoute(sctx, s, fmt, path, *exportOptions); !st)
                             return reportError(st.error());
                         written.push_back(path);
                     }

@@ -20,6 +20,7 @@ const Command kCommands[] = {
     {"catalog", "list the cameras and aircraft of the catalog", pf::cli::kCatalogUsage, pf::cli::runCatalog},
     {"convert", "convert a waypoint file between formats (by file extension)", pf::cli::kConvertUsage,
      pf::cli::runConvert},
+    {"upload", "send missions to vehicles over MAVLink and read them back", pf::cli::kUploadUsage, pf::cli::runUpload},
 };
 
 void printHelp(std::ostream& os) {

@@ -214,10 +214,11 @@ Status applyMissionFlags(const Args& args, MissionInput& in) {
         }
     }
 
-    auto altitude = numberIn(args, "altitude", 0, true, 1e6, false, "greater than 0 m");
+    // No upper bound here: validation names the aircraft's maximum altitude an altitude exceeds.
+    auto altitude = numberIn(args, "altitude", 0, true, HUGE_VAL, false, "greater than 0 m");
     if (!altitude)
         return altitude.error();
-    auto gsd = numberIn(args, "gsd", 0, true, 1e6, false, "greater than 0 cm/px");
+    auto gsd = numberIn(args, "gsd", 0, true, HUGE_VAL, false, "greater than 0 cm/px");
     if (!gsd)
         return gsd.error();
     if (altitude->has_value() && gsd->has_value())

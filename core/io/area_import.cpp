@@ -15,6 +15,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <mutex>
 
@@ -165,6 +166,12 @@ Result<std::vector<ImportedPolygon>> importPolygons(const std::string& path) {
         return makeError(ErrorCode::IoError, path + ": cannot import: the file does not exist");
     if (VSI_ISDIR(st.st_mode))
         return makeError(ErrorCode::IoError, path + ": cannot import: this is a folder, not a file");
+    if (st.st_size == 0)
+        return makeError(ErrorCode::ParseError, path + ": cannot read the file: it is empty (0 bytes)");
+    if (VSILFILE* f = VSIFOpenL(path.c_str(), "rb"))
+        VSIFCloseL(f);
+    else
+        return makeError(ErrorCode::IoError, path + ": cannot read the file: " + std::strerror(errno));
 
     const std::string ext = extensionOf(path);
     detail::GdalErrorScope errors;
@@ -216,17 +223,26 @@ Result<std::vector<ImportedPolygon>> importPolygons(const std::string& path) {
                                  path + ": layer '" + layer->GetName() + "': cannot convert its coordinate system (" +
                                      (srsName ? srsName : "unnamed") + ") to WGS84 longitude/latitude");
             }
-        } else if (formatLabel != "GeoJSON" && formatLabel != "KML") {
-            // No CRS: GeoJSON and KML are WGS84 by definition; anything else must at least look like it.
+        }
+        // No CRS (GeoJSON and KML without one are WGS84 by definition, so OGR says WGS84): the
+        // coordinates must at least look like longitude/latitude. Projected metres (UTM) are one
+        // request for the CRS, not a list of out-of-range vertices.
+        if (!layerSrs || layerSrs->IsGeographic()) {
             OGREnvelope env;
             if (layer->GetExtent(&env, TRUE) == OGRERR_NONE && !plausibleLonLat(env)) {
                 char buf[200];
                 std::snprintf(buf, sizeof buf, "x %.0f..%.0f, y %.0f..%.0f", env.MinX, env.MaxX, env.MinY, env.MaxY);
+                const bool wgs84ByDefinition = formatLabel == "GeoJSON" || formatLabel == "KML";
                 return makeError(ErrorCode::InvalidInput,
-                                 path + ": layer '" + layer->GetName() +
-                                     "' has no coordinate reference system and its coordinates (" + buf +
-                                     ") are not longitude/latitude; save the file with its CRS (for a "
-                                     "Shapefile, the .prj file beside it)");
+                                 path + ": layer '" + layer->GetName() + "' has " +
+                                     (layerSrs ? "longitude/latitude as its coordinate reference system but"
+                                               : "no coordinate reference system and") +
+                                     " its coordinates (" + buf + ") are not longitude/latitude; " +
+                                     (wgs84ByDefinition
+                                          ? "a " + formatLabel + " file without a CRS must be in WGS84: "
+                                            "reproject it (e.g. ogr2ogr -t_srs EPSG:4326) or give it its CRS"
+                                          : std::string("save the file with its CRS (for a Shapefile, the .prj "
+                                                        "file beside it)")));
             }
         }
 

@@ -288,7 +288,9 @@ Result<Catalog> loadCatalog(const std::string& path) {
         return makeError(ErrorCode::IoError, path + ": cannot open the catalog: " + std::strerror(errno));
     std::ostringstream ss;
     ss << in.rdbuf();
-    const std::string text = ss.str();
+    std::string text = ss.str();
+    if (text.size() >= 3 && text.compare(0, 3, "\xEF\xBB\xBF") == 0)
+        text.erase(0, 3); // a UTF-8 byte-order mark, as Windows editors write
     CPLJSONDocument doc;
     {
         detail::GdalErrorScope errors;

@@ -27,11 +27,28 @@ enum class CaptureCommand {
     DigicamControl,    // MAV_CMD_DO_DIGICAM_CONTROL (203): a camera triggered by the autopilot
 };
 
+// The MAVLink command that points the camera straight down at the start of the mission.
+enum class GimbalCommand {
+    MountControl,          // MAV_CMD_DO_MOUNT_CONTROL (205): pitch -90, mount mode MAVLink targeting
+    GimbalManagerPitchYaw, // MAV_CMD_DO_GIMBAL_MANAGER_PITCHYAW (1000): gimbal protocol v2
+    None,                  // the camera is fixed or pointed by hand
+};
+// How photos are taken along a lane in MAVLink missions (.plan, .waypoints, upload).
+enum class CameraTrigger {
+    PerPhoto, // a waypoint and a capture command for every photo
+    Distance, // MAV_CMD_DO_SET_CAM_TRIGG_DIST: only the lane ends, the camera fires every d metres
+};
+
 struct ExportOptions {
     QgcFirmware firmware = QgcFirmware::ArduPilot;
     MissionEnd end = MissionEnd::ReturnToLaunch;
     CaptureCommand capture = CaptureCommand::ImageStartCapture;
+    GimbalCommand gimbal = GimbalCommand::MountControl;
+    CameraTrigger trigger = CameraTrigger::PerPhoto;
     std::optional<double> hoverSpeedMps; // .plan hoverSpeed; the route's cruise speed when unset
+    // Ground elevation of the home point above mean sea level, for the .plan's planned home and the
+    // .waypoints home line (both AMSL); 0 when unknown (a connected vehicle replaces it with its own).
+    std::optional<double> homeElevationM;
 };
 
 // Everything an export can draw on. `routes[i]` is flown by the aircraft of the mission whose name

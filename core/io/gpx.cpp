@@ -20,6 +20,20 @@ using detail::DatasetPtr;
 
 using detail::FeaturePtr;
 
+std::string xmlEscape(const std::string& in) {
+    std::string out;
+    for (char c : in) {
+        switch (c) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += "&quot;"; break;
+        default: out += c;
+        }
+    }
+    return out;
+}
+
 std::string pointName(const std::string& label, std::size_t i) {
     char buf[32];
     std::snprintf(buf, sizeof buf, " %03zu", i + 1);
@@ -111,7 +125,28 @@ Status writeGpx(const ExportContext& ctx, const std::vector<std::size_t>& routeI
         }
         ++routeFid;
     }
-    return detail::closeDataset(*ds, path);
+    if (auto st = detail::closeDataset(*ds, path); !st)
+        return st;
+    // GPX's <ele> is normally metres above sea level; say in the metadata what these are. OGR's
+    // GPX driver writes no <metadata>, so it is put in as the first child of <gpx>, as GPX 1.1
+    // requires.
+    auto text = detail::readTextFile(path);
+    if (!text)
+        return text.error();
+    const std::string meta = "<name>" +
+                             xmlEscape(ctx.mission.name.empty() ? "Photoflight mission" : ctx.mission.name) +
+                             "</name><desc>" + std::string(kGpxElevationNote) + "</desc>";
+    const auto open = text->find("<gpx");
+    const auto gpxEnd = open == std::string::npos ? open : text->find('>', open);
+    if (gpxEnd == std::string::npos)
+        return makeError(ErrorCode::IoError, "cannot write " + path + ": GDAL wrote no <gpx> element");
+    // GDAL may have written <metadata><bounds/></metadata>: name and desc come first in it.
+    const auto m = text->find("<metadata>", gpxEnd);
+    if (m != std::string::npos && text->find("<wpt", gpxEnd) > m)
+        text->insert(m + 10, meta);
+    else
+        text->insert(gpxEnd + 1, "\n<metadata>" + meta + "</metadata>");
+    return detail::writeTextFile(path, *text);
 }
 
 namespace {
@@ -158,6 +193,9 @@ Result<route::Waypoint> readPoint(OGRFeature& f, const std::string& path, std::s
         return makeError(ErrorCode::ParseError,
                          path + ": " + what + " has no <ele> (altitude above take-off)");
     w.altitudeM = f.GetFieldAsDouble(ele);
+    if (const std::string why = detail::waypointPositionProblem(w.position.lon, w.position.lat, w.altitudeM);
+        !why.empty())
+        return makeError(ErrorCode::ParseError, path + ": " + what + ": " + why);
     const int hdg = f.GetFieldIndex("ogr_heading");
     hasHeading = hdg >= 0 && f.IsFieldSetAndNotNull(hdg);
     if (hasHeading) {

@@ -11,6 +11,11 @@
 
 namespace pf::io {
 
+// The altitude reference written into every GPX file's <metadata><desc>.
+constexpr const char* kGpxElevationNote =
+    "Altitude reference: every ele is the flight height in metres above the take-off (home) point, "
+    "not above mean sea level.";
+
 // Writes the given routes of ctx (one route: a per-aircraft file; all: the combined file).
 Status writeGpx(const ExportContext& ctx, const std::vector<std::size_t>& routeIndices,
                 const std::string& path);

@@ -34,7 +34,8 @@ bool isColour(const std::string& c) {
 
 class KmlWriter {
 public:
-    KmlWriter(GDALDataset* ds, std::string path) : m_ds(ds), m_path(std::move(path)) {
+    KmlWriter(GDALDataset* ds, std::string path, bool libkml)
+        : m_ds(ds), m_path(std::move(path)), m_libkml(libkml) {
         m_srs.SetWellKnownGeogCS("WGS84");
         m_srs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
     }
@@ -50,13 +51,26 @@ public:
             if (m_layer->CreateField(&def) != OGRERR_NONE)
                 return fail(f);
         }
+        // LIBKML turns these fields into <altitudeMode> and <extrude> of each placemark.
+        if (m_libkml) {
+            OGRFieldDefn mode("altitudeMode", OFTString);
+            OGRFieldDefn extrude("extrude", OFTInteger);
+            if (m_layer->CreateField(&mode) != OGRERR_NONE || m_layer->CreateField(&extrude) != OGRERR_NONE)
+                return fail("altitude fields");
+        }
         return {};
     }
 
+    // A placemark; `inAir` ones are drawn at their altitude above the ground (the heights are
+    // above take-off, which is the ground at home), `extrude` ones with a curtain down to it.
     Status add(const OGRGeometry& g, const std::string& name, const std::string& description,
-               const std::string& style) {
+               const std::string& style, bool inAir = false, bool extrude = false) {
         FeaturePtr f(OGRFeature::CreateFeature(m_layer->GetLayerDefn()));
         f->SetGeometry(&g);
+        if (m_libkml) {
+            f->SetField("altitudeMode", inAir ? "relativeToGround" : "clampToGround");
+            f->SetField("extrude", extrude ? 1 : 0);
+        }
         if (!name.empty())
             f->SetField("name", name.c_str());
         if (!description.empty())
@@ -74,9 +88,24 @@ private:
     }
     GDALDataset* m_ds;
     std::string m_path;
+    bool m_libkml;
     OGRSpatialReference m_srs;
     OGRLayer* m_layer = nullptr;
 };
+
+// The trajectory has no heights of its own: each sample flies at the height of the nearest waypoint.
+double nearestAltitude(const route::Route& r, geo::LonLat p) {
+    double best = 1e300, alt = r.waypoints.empty() ? 0.0 : r.waypoints.front().altitudeM;
+    const double k = std::cos(p.lat * kPi / 180.0);
+    for (const auto& w : r.waypoints) {
+        const double dx = (w.position.lon - p.lon) * k, dy = w.position.lat - p.lat;
+        if (dx * dx + dy * dy < best) {
+            best = dx * dx + dy * dy;
+            alt = w.altitudeM;
+        }
+    }
+    return alt;
+}
 
 std::string describe(const route::Waypoint& w) {
     return std::string(detail::kindName(w.kind)) + ", altitude " +
@@ -105,12 +134,15 @@ Status writeKml(const ExportContext& ctx, const std::vector<std::size_t>& routeI
                              "there is no route " + std::to_string(i + 1) + " to export");
     GDALAllRegister();
     const bool libkml = GetGDALDriverManager()->GetDriverByName("LIBKML") != nullptr;
+    // The plain KML driver has one altitude mode for the whole file: relative to the ground, so
+    // the flight is in the air and the ground shapes (height 0) stay on the ground.
     auto ds = libkml ? detail::createVectorDataset("LIBKML", path)
-                     : detail::createVectorDataset(
-                           "KML", path, {"NameField=name", "DescriptionField=description"});
+                     : detail::createVectorDataset("KML", path,
+                                                   {"NameField=name", "DescriptionField=description",
+                                                    "AltitudeMode=relativeToGround"});
     if (!ds)
         return ds.error();
-    KmlWriter w(ds->get(), path);
+    KmlWriter w(ds->get(), path, libkml);
 
     // OGR style strings: the KML drivers turn them into <Style> elements with these colours.
     const std::string areaStyle = "PEN(c:#1e90ff,w:3px);BRUSH(fc:#1e90ff30)";
@@ -144,16 +176,17 @@ Status writeKml(const ExportContext& ctx, const std::vector<std::size_t>& routeI
             return st;
         OGRLineString line;
         for (const auto& wp : r.waypoints)
-            line.addPoint(wp.position.lon, wp.position.lat);
-        if (auto st = w.add(line, label + " path", "waypoint path", "PEN(c:" + colour + ",w:2px)");
+            line.addPoint(wp.position.lon, wp.position.lat, wp.altitudeM);
+        if (auto st = w.add(line, label + " path", "waypoint path, heights above take-off",
+                            "PEN(c:" + colour + ",w:2px)", true, true);
             !st)
             return st;
         if (ri < ctx.trajectories.size() && ctx.trajectories[ri].size() >= 2) {
             OGRLineString traj;
             for (const auto& p : ctx.trajectories[ri])
-                traj.addPoint(p.lon, p.lat);
+                traj.addPoint(p.lon, p.lat, nearestAltitude(r, p));
             if (auto st = w.add(traj, label + " trajectory", "smoothed flight trajectory",
-                                "PEN(c:" + colour + ",w:1px,p:\"4px 4px\")");
+                                "PEN(c:" + colour + ",w:1px,p:\"4px 4px\")", true, false);
                 !st)
                 return st;
         }
@@ -166,8 +199,9 @@ Status writeKml(const ExportContext& ctx, const std::vector<std::size_t>& routeI
             ++photo;
             char name[32];
             std::snprintf(name, sizeof name, "Photo %zu", photo);
-            OGRPoint p(wp.position.lon, wp.position.lat);
-            if (auto st = w.add(p, name, describe(wp), "SYMBOL(c:" + colour + ",s:0.6)"); !st)
+            OGRPoint p(wp.position.lon, wp.position.lat, wp.altitudeM);
+            if (auto st = w.add(p, name, describe(wp), "SYMBOL(c:" + colour + ",s:0.6)", true, false);
+                !st)
                 return st;
             if (fp) {
                 geo::GeoPolygon poly{footprintCorners(wp.position, wp.headingDeg, *fp), {}};

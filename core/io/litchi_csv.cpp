@@ -74,7 +74,13 @@ Result<ImportedWaypoints> parseLitchiCsv(const std::string& text, const std::str
         ++first;
     if (first == lines.size())
         return makeError(ErrorCode::ParseError, source + ": the file is empty");
-    auto header = detail::splitChar(lines[first], ',');
+    // A spreadsheet in a locale with decimal commas saves "49,0108;8,3272;...": semicolons between
+    // the fields, commas in the numbers.
+    const std::string_view headerLine = lines[first];
+    const char sep = headerLine.find(',') == std::string_view::npos && headerLine.find(';') != std::string_view::npos
+                         ? ';'
+                         : ',';
+    auto header = detail::splitChar(lines[first], sep);
     std::map<std::string, std::size_t> col;
     for (std::size_t i = 0; i < header.size(); ++i) {
         std::string name(detail::trim(header[i]));
@@ -96,15 +102,18 @@ Result<ImportedWaypoints> parseLitchiCsv(const std::string& text, const std::str
         const std::size_t lineNo = li + 1;
         if (detail::trim(lines[li]).empty())
             continue;
-        const auto fields = detail::splitChar(lines[li], ',');
+        const auto fields = detail::splitChar(lines[li], sep);
         if (fields.size() != header.size())
             return lineError(source, lineNo,
                              "expected " + std::to_string(header.size()) +
-                                 " comma-separated fields but found " +
+                                 (sep == ';' ? " semicolon" : " comma") + "-separated fields but found " +
                                  std::to_string(fields.size()));
         auto number = [&](const std::string& name) -> Result<double> {
             const std::string_view f = fields[col.at(name)];
-            auto v = detail::parseNumber(f);
+            std::string decimal(f);
+            if (sep == ';')
+                std::replace(decimal.begin(), decimal.end(), ',', '.');
+            auto v = detail::parseNumber(decimal);
             if (!v)
                 return lineError(source, lineNo,
                                  "column " + name + ": \"" + std::string(detail::trim(f)) +

@@ -22,7 +22,8 @@ Result<std::string> litchiCsvText(const ExportContext& ctx, std::size_t routeInd
 Status writeLitchiCsv(const ExportContext& ctx, std::size_t routeIndex, const std::string& path);
 
 // Needs the latitude, longitude, altitude(m) and heading(deg) columns; a row with an action of type
-// 1 is a photo waypoint. Errors name the file, the line and the column.
+// 1 is a photo waypoint. A file saved by a spreadsheet with ';' between the fields and decimal
+// commas is read too. Errors name the file, the line and the column.
 Result<ImportedWaypoints> parseLitchiCsv(const std::string& text, const std::string& source);
 Result<ImportedWaypoints> readLitchiCsv(const std::string& path);
 

@@ -754,8 +754,11 @@ std::string missionToJson(const mission::Mission& m) {
     return root.Format(CPLJSONObject::PrettyFormat::Pretty) + "\n";
 }
 
-Result<mission::Mission> parseMissionJson(const std::string& text, const std::string& sourceName) {
+Result<mission::Mission> parseMissionJson(const std::string& rawText, const std::string& sourceName) {
     initGdal();
+    // Editors on Windows save UTF-8 with a byte-order mark; JSON readers must accept it (RFC 8259).
+    const bool bom = rawText.size() >= 3 && rawText.compare(0, 3, "\xEF\xBB\xBF") == 0;
+    const std::string text = bom ? rawText.substr(3) : rawText;
     CPLJSONDocument doc;
     {
         detail::GdalErrorScope errors;

@@ -2,7 +2,9 @@
 
 #include "core/io/waypoint_format_util.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace pf::io {
@@ -18,40 +20,53 @@ CPLJSONArray numbers(std::initializer_list<double> values) {
     return a;
 }
 
+// Params as QGroundControl writes them: a NaN ("not used") is null. CPLJSONArray cannot add a
+// null, so an array holding nulls is parsed from text (numbers with 17 digits read back exactly).
+CPLJSONArray params(const std::array<double, 7>& values) {
+    bool allFinite = true;
+    for (double v : values)
+        allFinite = allFinite && std::isfinite(v);
+    CPLJSONArray a;
+    if (allFinite) {
+        for (double v : values)
+            a.Add(v);
+        return a;
+    }
+    std::string text = "[";
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        char buf[40];
+        std::snprintf(buf, sizeof buf, "%.17g", values[i]);
+        text += (i ? "," : "") + (std::isfinite(values[i]) ? std::string(buf) : std::string("null"));
+    }
+    CPLJSONDocument doc;
+    if (!doc.LoadMemory(text + "]"))
+        return a;
+    return doc.GetRoot().ToArray();
+}
+
 class ItemWriter {
 public:
     explicit ItemWriter(CPLJSONArray& items) : m_items(items) {}
 
-    // A command at a position: the three altitude keys are written together (QGroundControl
-    // rejects an item with only some of them).
-    void navigation(int command, double p1, double p2, double p3, double yaw, geo::LonLat at,
-                    double altitudeM) {
-        CPLJSONObject item = base(command, mav::kFrameGlobalRelativeAlt);
-        item.Add("params", numbers({p1, p2, p3, yaw, at.lat, at.lon, altitudeM}));
-        item.Add("Altitude", altitudeM);
-        item.Add("AltitudeMode", 1); // relative to home
-        item.AddNull("AMSLAltAboveTerrain");
-        m_items.Add(item);
-    }
-
-    // A command without a position: no altitude keys at all.
-    void action(int command, std::initializer_list<double> params) {
-        CPLJSONObject item = base(command, mav::kFrameMission);
-        item.Add("params", numbers(params));
+    void add(const MissionItem& it) {
+        CPLJSONObject item;
+        item.Add("type", "SimpleItem");
+        item.Add("command", it.command);
+        item.Add("frame", it.frame);
+        item.Add("autoContinue", true);
+        item.Add("doJumpId", ++m_jumpId);
+        item.Add("params", params(it.params));
+        if (it.hasPosition()) {
+            // The three altitude keys are written together (QGroundControl rejects an item with
+            // only some of them); a command without a position has none of them.
+            item.Add("Altitude", it.params[6]);
+            item.Add("AltitudeMode", 1); // relative to home
+            item.AddNull("AMSLAltAboveTerrain");
+        }
         m_items.Add(item);
     }
 
 private:
-    CPLJSONObject base(int command, int frame) {
-        CPLJSONObject item;
-        item.Add("type", "SimpleItem");
-        item.Add("command", command);
-        item.Add("frame", frame);
-        item.Add("autoContinue", true);
-        item.Add("doJumpId", ++m_jumpId);
-        return item;
-    }
-
     CPLJSONArray& m_items;
     int m_jumpId = 0;
 };
@@ -60,15 +75,11 @@ private:
 
 Result<std::string> qgcPlanJson(const ExportContext& ctx, std::size_t routeIndex,
                                 const ExportOptions& options) {
-    if (routeIndex >= ctx.routes.size())
-        return makeError(ErrorCode::InvalidInput,
-                         "there is no route " + std::to_string(routeIndex + 1) + " to export");
+    auto missionItemList = missionItems(ctx, routeIndex, options);
+    if (!missionItemList)
+        return missionItemList.error();
     const route::Route& r = ctx.routes[routeIndex];
-    const std::string label = ctx.routeLabel(routeIndex);
-    if (r.waypoints.empty())
-        return makeError(ErrorCode::InvalidInput, label + ": the route has no waypoints to export");
-    const geo::LonLat home = ctx.homeFor(routeIndex).value_or(r.waypoints.front().position);
-    const geo::LonLat landing = ctx.landingFor(routeIndex).value_or(home);
+    const MissionItem home = homeItem(ctx, routeIndex, options);
 
     CPLJSONObject root;
     root.Add("fileType", "Plan");
@@ -81,26 +92,12 @@ Result<std::string> qgcPlanJson(const ExportContext& ctx, std::size_t routeIndex
     mission.Add("vehicleType", 2); // MAV_TYPE_QUADROTOR: every catalog aircraft is a multirotor
     mission.Add("cruiseSpeed", r.cruiseSpeedMps);
     mission.Add("hoverSpeed", options.hoverSpeedMps.value_or(r.cruiseSpeedMps));
-    mission.Add("plannedHomePosition", numbers({home.lat, home.lon, 0.0}));
+    mission.Add("plannedHomePosition", numbers({home.params[4], home.params[5], home.params[6]}));
 
     CPLJSONArray items;
     ItemWriter w(items);
-    const route::Waypoint& first = r.waypoints.front();
-    w.navigation(mav::kNavTakeoff, 0, 0, 0, first.headingDeg, home, first.altitudeM);
-    for (const auto& wp : r.waypoints) {
-        w.navigation(mav::kNavWaypoint, 0, 0, 0, detail::normaliseHeading(wp.headingDeg),
-                     wp.position, wp.altitudeM);
-        if (wp.kind != route::WaypointKind::Photo)
-            continue;
-        if (options.capture == CaptureCommand::ImageStartCapture)
-            w.action(mav::kImageStartCapture, {0, 0, 1, 0, 0, 0, 0}); // all cameras, one image
-        else
-            w.action(mav::kDoDigicamControl, {0, 0, 0, 0, 1, 0, 0}); // param 5 = 1: shoot
-    }
-    if (options.end == MissionEnd::ReturnToLaunch)
-        w.action(mav::kNavReturnToLaunch, {0, 0, 0, 0, 0, 0, 0});
-    else
-        w.navigation(mav::kNavLand, 0, 0, 0, r.waypoints.back().headingDeg, landing, 0.0);
+    for (const auto& it : *missionItemList)
+        w.add(it);
     mission.Add("items", items);
     root.Add("mission", mission);
 
@@ -124,7 +121,8 @@ Result<std::string> qgcPlanJson(const ExportContext& ctx, std::size_t routeIndex
     CPLJSONObject rally;
     rally.Add("version", 2);
     CPLJSONArray points;
-    points.Add(numbers({home.lat, home.lon, 0.0}));
+    for (const auto& p : rallyItems(ctx, routeIndex))
+        points.Add(numbers({p.params[4], p.params[5], p.params[6]}));
     rally.Add("points", points);
     root.Add("rallyPoints", rally);
 
@@ -229,10 +227,8 @@ public:
         const double homeAlt = std::isfinite((*home)[2]) ? (*home)[2] : 0.0;
         if (std::isfinite((*home)[0]) && std::isfinite((*home)[1]))
             out.home = geo::LonLat{(*home)[1], (*home)[0]};
-        route::Route r;
-        r.home = out.home;
-        r.cruiseSpeedMps = mission->GetDouble("cruiseSpeed", r.cruiseSpeedMps);
-        std::vector<bool> photo;
+        std::vector<MissionItem> parsed;
+        bool speedItem = false;
         const CPLJSONArray items = itemsV->ToArray();
         for (int i = 0; i < items.Size(); ++i) {
             const std::string key = "mission.items[" + std::to_string(i) + "]";
@@ -259,41 +255,35 @@ public:
             auto paramsV = member(item, key, "params", T::Array, "an array");
             if (!paramsV)
                 return paramsV.error();
-            auto params = numberArray(*paramsV, key + ".params", 7, 7);
-            if (!params)
-                return params.error();
-            const int command = cmd->ToInteger();
-            if (command == mav::kImageStartCapture || command == mav::kDoDigicamControl) {
-                if (!photo.empty())
-                    photo.back() = true;
-                continue;
+            auto p = numberArray(*paramsV, key + ".params", 7, 7);
+            if (!p)
+                return p.error();
+            MissionItem mi;
+            mi.command = cmd->ToInteger();
+            mi.frame = frame->ToInteger();
+            std::copy(p->begin(), p->end(), mi.params.begin());
+            speedItem = speedItem || mi.command == mav::kDoChangeSpeed;
+            if (mi.command == mav::kNavWaypoint) {
+                const auto& q = mi.params;
+                if (!std::isfinite(q[4]) || !std::isfinite(q[5]) || !std::isfinite(q[6]))
+                    return keyError(key + ".params",
+                                    "the waypoint has no position (latitude, longitude, altitude)");
+                if (std::abs(q[4]) > 90 || std::abs(q[5]) > 180)
+                    return keyError(key + ".params", "latitude or longitude out of range");
+                if (mi.frame == mav::kFrameGlobal)
+                    mi.params[6] -= homeAlt;
+                else if (mi.frame != mav::kFrameGlobalRelativeAlt && mi.frame != 6 /* relative int */)
+                    return keyError(key + ".frame",
+                                    "frame " + std::to_string(mi.frame) +
+                                        " is not supported (use 3, altitude relative to home)");
+                mi.frame = mav::kFrameGlobalRelativeAlt;
             }
-            if (command != mav::kNavWaypoint)
-                continue; // take-off, return, land and settings are regenerated on export
-            const auto& p = *params;
-            if (!std::isfinite(p[4]) || !std::isfinite(p[5]) || !std::isfinite(p[6]))
-                return keyError(key + ".params",
-                                "the waypoint has no position (latitude, longitude, altitude)");
-            if (std::abs(p[4]) > 90 || std::abs(p[5]) > 180)
-                return keyError(key + ".params", "latitude or longitude out of range");
-            double alt = p[6];
-            if (frame->ToInteger() == mav::kFrameGlobal)
-                alt -= homeAlt;
-            else if (frame->ToInteger() != mav::kFrameGlobalRelativeAlt &&
-                     frame->ToInteger() != 6 /* relative int */)
-                return keyError(key + ".frame",
-                                "frame " + std::to_string(frame->ToInteger()) +
-                                    " is not supported (use 3, altitude relative to home)");
-            route::Waypoint wp;
-            wp.position = {p[5], p[4]};
-            wp.altitudeM = alt;
-            wp.headingDeg = std::isfinite(p[3])
-                                ? detail::normaliseHeading(p[3])
-                                : (r.waypoints.empty() ? 0.0 : r.waypoints.back().headingDeg);
-            r.waypoints.push_back(wp);
-            photo.push_back(false);
+            parsed.push_back(mi);
         }
-        detail::inferNonPhotoKinds(r.waypoints, photo);
+        route::Route r = routeFromItems(parsed);
+        r.home = out.home;
+        if (!speedItem)
+            r.cruiseSpeedMps = mission->GetDouble("cruiseSpeed", r.cruiseSpeedMps);
         out.routes.push_back(std::move(r));
 
         const CPLJSONObject fence = root.GetObj("geoFence");

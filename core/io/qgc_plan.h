@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/io/export_context.h"
+#include "core/io/mission_items.h"
 #include "core/result.h"
 
 #include <cstddef>
@@ -11,22 +12,11 @@
 
 namespace pf::io {
 
-// MAVLink commands and frames used in .plan and .waypoints files.
-namespace mav {
-constexpr int kNavWaypoint = 16;
-constexpr int kNavReturnToLaunch = 20;
-constexpr int kNavLand = 21;
-constexpr int kNavTakeoff = 22;
-constexpr int kDoDigicamControl = 203;
-constexpr int kImageStartCapture = 2000;
-constexpr int kFrameGlobal = 0;            // altitude above mean sea level
-constexpr int kFrameMission = 2;           // command without a position
-constexpr int kFrameGlobalRelativeAlt = 3; // altitude above home
-} // namespace mav
 
-// The .plan document for route `routeIndex`: take-off at the home, one waypoint per route waypoint
-// (yaw = heading), an image capture command after every photo waypoint, return-to-launch or land at
-// the end; every no-fly zone as an exclusion polygon of the geofence; the home as rally point.
+// The .plan document for route `routeIndex`: the items of missionItems() (take-off, speed, gimbal,
+// waypoints with capture commands or distance triggering, return or land), every no-fly zone as an
+// exclusion polygon of the geofence, the home as rally point at the route's highest altitude, and
+// the planned home at ExportOptions::homeElevationM (AMSL, 0 when unknown).
 Result<std::string> qgcPlanJson(const ExportContext& ctx, std::size_t routeIndex,
                                 const ExportOptions& options = {});
 Status writeQgcPlan(const ExportContext& ctx, std::size_t routeIndex, const std::string& path,

@@ -1,10 +1,11 @@
 #include "core/io/qgc_wpl.h"
 
-#include "core/io/qgc_plan.h"
+#include "core/io/mission_items.h"
 #include "core/io/waypoint_format_util.h"
 
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace pf::io {
 
@@ -12,12 +13,23 @@ namespace {
 
 using detail::formatNumber;
 
-void line(std::string& out, int index, int current, int frame, int command,
-          const std::array<double, 7>& p) {
-    out += std::to_string(index) + '\t' + std::to_string(current) + '\t' + std::to_string(frame) +
-           '\t' + std::to_string(command);
+bool isNaNText(std::string_view f) {
+    f = detail::trim(f);
+    return f.size() == 3 && (f[0] == 'n' || f[0] == 'N') && (f[1] == 'a' || f[1] == 'A') &&
+           (f[2] == 'n' || f[2] == 'N');
+}
+
+// Params 1-4 may be NaN ("not used"): written "NaN", which Mission Planner and pymavlink read.
+std::string param(double v, int decimals) {
+    return std::isfinite(v) ? formatNumber(v, decimals) : std::string("NaN");
+}
+
+void line(std::string& out, int index, int current, const MissionItem& it) {
+    const auto& p = it.params;
+    out += std::to_string(index) + '\t' + std::to_string(current) + '\t' +
+           std::to_string(it.frame) + '\t' + std::to_string(it.command);
     for (int i = 0; i < 4; ++i)
-        out += '\t' + formatNumber(p[i], 6);
+        out += '\t' + param(p[i], 6);
     out +=
         '\t' + formatNumber(p[4], 9) + '\t' + formatNumber(p[5], 9) + '\t' + formatNumber(p[6], 4);
     out += "\t1\n";
@@ -27,41 +39,16 @@ void line(std::string& out, int index, int current, int frame, int command,
 
 Result<std::string> qgcWplText(const ExportContext& ctx, std::size_t routeIndex,
                                const ExportOptions& options) {
-    if (routeIndex >= ctx.routes.size())
-        return makeError(ErrorCode::InvalidInput,
-                         "there is no route " + std::to_string(routeIndex + 1) + " to export");
-    const route::Route& r = ctx.routes[routeIndex];
-    if (r.waypoints.empty())
-        return makeError(ErrorCode::InvalidInput,
-                         ctx.routeLabel(routeIndex) + ": the route has no waypoints to export");
-    const geo::LonLat home = ctx.homeFor(routeIndex).value_or(r.waypoints.front().position);
-    const geo::LonLat landing = ctx.landingFor(routeIndex).value_or(home);
-    const int rel = mav::kFrameGlobalRelativeAlt;
-
+    auto items = missionItems(ctx, routeIndex, options);
+    if (!items)
+        return items.error();
     std::string out = "QGC WPL 110\n";
-    int n = 0;
-    // The home line is what Mission Planner writes: current = 1, frame 0 (its altitude is AMSL; 0
-    // here because the ground elevation is not known).
-    line(out, n++, 1, mav::kFrameGlobal, mav::kNavWaypoint, {0, 0, 0, 0, home.lat, home.lon, 0});
-    const auto& first = r.waypoints.front();
-    line(out, n++, 0, rel, mav::kNavTakeoff,
-         {0, 0, 0, first.headingDeg, home.lat, home.lon, first.altitudeM});
-    for (const auto& w : r.waypoints) {
-        line(out, n++, 0, rel, mav::kNavWaypoint,
-             {0, 0, 0, detail::normaliseHeading(w.headingDeg), w.position.lat, w.position.lon,
-              w.altitudeM});
-        if (w.kind != route::WaypointKind::Photo)
-            continue;
-        if (options.capture == CaptureCommand::ImageStartCapture)
-            line(out, n++, 0, rel, mav::kImageStartCapture, {0, 0, 1, 0, 0, 0, 0});
-        else
-            line(out, n++, 0, rel, mav::kDoDigicamControl, {0, 0, 0, 0, 1, 0, 0});
-    }
-    if (options.end == MissionEnd::ReturnToLaunch)
-        line(out, n++, 0, rel, mav::kNavReturnToLaunch, {0, 0, 0, 0, 0, 0, 0});
-    else
-        line(out, n++, 0, rel, mav::kNavLand,
-             {0, 0, 0, r.waypoints.back().headingDeg, landing.lat, landing.lon, 0});
+    // The home line is what Mission Planner writes: current = 1, frame 0 (altitude above sea level).
+    line(out, 0, 1, homeItem(ctx, routeIndex, options));
+    int n = 1;
+    // Exactly the items an upload sends: commands without a position in frame 2 (MAV_FRAME_MISSION).
+    for (const auto& it : *items)
+        line(out, n++, 0, it);
     return out;
 }
 
@@ -95,8 +82,7 @@ Result<ImportedWaypoints> parseQgcWpl(const std::string& text, const std::string
         "index",  "current", "frame",    "command",   "param1",   "param2",
         "param3", "param4",  "latitude", "longitude", "altitude", "autocontinue"};
     ImportedWaypoints out;
-    route::Route r;
-    std::vector<bool> photo;
+    std::vector<MissionItem> items;
     double homeAlt = 0.0;
     bool sawHome = false;
     for (std::size_t li = firstLine + 1; li < lines.size(); ++li) {
@@ -111,6 +97,8 @@ Result<ImportedWaypoints> parseQgcWpl(const std::string& text, const std::string
         std::array<double, 12> v{};
         for (std::size_t f = 0; f < 12; ++f) {
             auto num = detail::parseNumber(fields[f]);
+            if (!num && f >= 4 && f <= 7 && isNaNText(fields[f]))
+                num = std::numeric_limits<double>::quiet_NaN(); // an unused param
             if (!num)
                 return lineError(source, lineNo,
                                  std::string(kFieldNames[f]) + " \"" + std::string(fields[f]) +
@@ -141,30 +129,24 @@ Result<ImportedWaypoints> parseQgcWpl(const std::string& text, const std::string
                 continue;
             }
         }
-        if (command == mav::kImageStartCapture || command == mav::kDoDigicamControl) {
-            if (!photo.empty())
-                photo.back() = true;
-            continue;
+        MissionItem it;
+        it.command = command;
+        it.frame = frame;
+        it.params = {v[4], v[5], v[6], v[7], lat, lon, alt};
+        if (command == mav::kNavWaypoint) {
+            if (std::abs(lat) > 90 || std::abs(lon) > 180)
+                return lineError(source, lineNo, "latitude or longitude out of range");
+            if (frame == mav::kFrameGlobal)
+                it.params[6] = alt - homeAlt;
+            else if (frame != mav::kFrameGlobalRelativeAlt && frame != 6)
+                return lineError(source, lineNo,
+                                 "frame " + std::to_string(frame) +
+                                     " is not supported (use 3, altitude relative to home)");
+            it.frame = mav::kFrameGlobalRelativeAlt;
         }
-        if (command != mav::kNavWaypoint)
-            continue; // take-off, return and landing are regenerated on export
-        if (std::abs(lat) > 90 || std::abs(lon) > 180)
-            return lineError(source, lineNo, "latitude or longitude out of range");
-        route::Waypoint w;
-        w.position = {lon, lat};
-        if (frame == mav::kFrameGlobal)
-            w.altitudeM = alt - homeAlt;
-        else if (frame == mav::kFrameGlobalRelativeAlt || frame == 6)
-            w.altitudeM = alt;
-        else
-            return lineError(source, lineNo,
-                             "frame " + std::to_string(frame) +
-                                 " is not supported (use 3, altitude relative to home)");
-        w.headingDeg = detail::normaliseHeading(v[7]);
-        r.waypoints.push_back(w);
-        photo.push_back(false);
+        items.push_back(it);
     }
-    detail::inferNonPhotoKinds(r.waypoints, photo);
+    route::Route r = routeFromItems(items);
     r.home = out.home;
     out.routes.push_back(std::move(r));
     return out;

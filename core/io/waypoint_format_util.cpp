@@ -157,7 +157,9 @@ Error lineError(const std::string& source, std::size_t line, const std::string& 
                      source + ": line " + std::to_string(line) + ": " + what);
 }
 
-Result<CPLJSONObject> parseJson(const std::string& text, const std::string& source) {
+Result<CPLJSONObject> parseJson(const std::string& rawText, const std::string& source) {
+    const bool bom = rawText.size() >= 3 && rawText.compare(0, 3, "\xEF\xBB\xBF") == 0;
+    const std::string text = bom ? rawText.substr(3) : rawText;
     if (trim(text).empty())
         return makeError(ErrorCode::ParseError, source + ": the file is empty");
     CPLJSONDocument doc;
@@ -241,6 +243,20 @@ void inferNonPhotoKinds(std::vector<route::Waypoint>& waypoints, const std::vect
         else
             waypoints[i].kind = route::WaypointKind::Turn;
     }
+}
+
+std::string waypointPositionProblem(double lon, double lat, double alt) {
+    if (!std::isfinite(lat))
+        return "the latitude is not a number";
+    if (!std::isfinite(lon))
+        return "the longitude is not a number";
+    if (std::abs(lat) > 90)
+        return "latitude " + formatNumber(lat, 7) + " is out of range (-90 to 90)";
+    if (std::abs(lon) > 180)
+        return "longitude " + formatNumber(lon, 7) + " is out of range (-180 to 180)";
+    if (!std::isfinite(alt))
+        return "the altitude is not a number";
+    return {};
 }
 
 double normaliseHeading(double deg) {

@@ -53,6 +53,10 @@ void inferNonPhotoKinds(std::vector<route::Waypoint>& waypoints, const std::vect
 
 double normaliseHeading(double deg); // into [0, 360)
 
+// Why a waypoint read from a file cannot be flown ("latitude 91 is out of range", "the longitude is
+// not a number"), or empty when its position and altitude are usable.
+std::string waypointPositionProblem(double lon, double lat, double altitudeM);
+
 // The file extension of a path, lower case, with the dot (".plan"), or "".
 std::string extensionOf(const std::string& path);
 // The file name of a path, for messages.

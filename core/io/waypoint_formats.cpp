@@ -5,6 +5,7 @@
 #include "core/io/litchi_csv.h"
 #include "core/io/qgc_plan.h"
 #include "core/io/qgc_wpl.h"
+#include "core/io/trigger_lanes.h"
 #include "core/io/waypoint_format_util.h"
 #include "core/io/waypoint_geojson.h"
 
@@ -17,13 +18,14 @@ namespace pf::io {
 const std::vector<WaypointFormatInfo>& waypointFormats() {
     static const std::vector<WaypointFormatInfo> kFormats{
         {WaypointFormat::QgcPlan, "plan", ".plan", "QGroundControl mission (.plan JSON)", true,
-         false},
+         false, 0.1, 0},
         {WaypointFormat::QgcWpl, "waypoints", ".waypoints",
-         "QGC WPL 110 waypoint list (Mission Planner)", true, false},
-        {WaypointFormat::Kml, "kml", ".kml", "KML for Google Earth (export only)", false, true},
-        {WaypointFormat::Gpx, "gpx", ".gpx", "GPX 1.1 waypoints and routes", true, true},
-        {WaypointFormat::GeoJson, "geojson", ".geojson", "GeoJSON features", true, true},
-        {WaypointFormat::LitchiCsv, "csv", ".csv", "Litchi mission hub CSV", true, false},
+         "QGC WPL 110 waypoint list (Mission Planner)", true, false, 0.1, 0},
+        {WaypointFormat::Kml, "kml", ".kml", "KML for Google Earth (export only)", false, true, 0.1,
+         0},
+        {WaypointFormat::Gpx, "gpx", ".gpx", "GPX 1.1 waypoints and routes", true, true, 0.1, 0},
+        {WaypointFormat::GeoJson, "geojson", ".geojson", "GeoJSON features", true, true, 0.1, 0},
+        {WaypointFormat::LitchiCsv, "csv", ".csv", "Litchi mission hub CSV", true, false, 0.6, 99},
     };
     return kFormats;
 }
@@ -93,8 +95,29 @@ Result<std::vector<WaypointFormat>> formatListFromString(const std::string& comm
     return out;
 }
 
-Status exportRoute(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat format,
-                   const std::string& path, const ExportOptions& options) {
+namespace {
+
+// ctx with the given routes' waypoints merged where closer than the format's minimum.
+ExportContext mergedContext(const ExportContext& ctx, const std::vector<std::size_t>& routes,
+                            WaypointFormat format, std::vector<std::string>* notes) {
+    ExportContext out = ctx;
+    const double minM = formatInfo(format).minSpacingM;
+    for (std::size_t i : routes) {
+        if (i >= out.routes.size())
+            continue;
+        std::size_t merged = 0;
+        out.routes[i].waypoints = mergeCloseWaypoints(out.routes[i].waypoints, minM, &merged);
+        if (merged && notes)
+            notes->push_back(ctx.routeLabel(i) + ": " + std::to_string(merged) + " waypoint" +
+                             (merged == 1 ? "" : "s") + " closer than " +
+                             detail::formatNumber(minM, 1) + " m to the previous one merged into it (" +
+                             formatInfo(format).description + ")");
+    }
+    return out;
+}
+
+Status writeOne(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat format,
+                const std::string& path, const ExportOptions& options) {
     switch (format) {
     case WaypointFormat::QgcPlan:
         return writeQgcPlan(ctx, routeIndex, path, options);
@@ -112,10 +135,67 @@ Status exportRoute(const ExportContext& ctx, std::size_t routeIndex, WaypointFor
     return makeError(ErrorCode::Internal, "unknown waypoint format");
 }
 
-Status exportCombined(const ExportContext& ctx, WaypointFormat format, const std::string& path,
+std::string partPath(const std::string& path, std::size_t part) {
+    const std::string ext = detail::extensionOf(path);
+    return path.substr(0, path.size() - ext.size()) + "-part" + std::to_string(part) + ext;
+}
+
+} // namespace
+
+Result<ExportReport> exportRouteFiles(const ExportContext& ctx, std::size_t routeIndex,
+                                      WaypointFormat format, const std::string& path,
+                                      const ExportOptions& options) {
+    if (routeIndex >= ctx.routes.size())
+        return makeError(ErrorCode::InvalidInput,
+                         "there is no route " + std::to_string(routeIndex + 1) + " to export");
+    ExportReport report;
+    ExportContext m = mergedContext(ctx, {routeIndex}, format, &report.notes);
+    const std::size_t limit = formatInfo(format).maxWaypoints;
+    const auto& all = m.routes[routeIndex].waypoints;
+    if (limit < 2 || all.size() <= limit) {
+        if (auto st = writeOne(m, routeIndex, format, path, options); !st)
+            return st.error();
+        report.files.push_back(path);
+        return report;
+    }
+    // Consecutive parts share one waypoint: each mission starts where the previous one ended
+    // (the shared waypoint takes its photo only in the first of them).
+    const std::vector<route::Waypoint> waypoints = all;
+    std::size_t part = 0;
+    for (std::size_t start = 0; start + 1 < waypoints.size(); start += limit - 1) {
+        const std::size_t end = std::min(waypoints.size(), start + limit);
+        auto& r = m.routes[routeIndex];
+        r.waypoints.assign(waypoints.begin() + static_cast<long>(start),
+                           waypoints.begin() + static_cast<long>(end));
+        if (start > 0 && r.waypoints.front().kind == route::WaypointKind::Photo)
+            r.waypoints.front().kind = route::WaypointKind::Turn;
+        const std::string p = partPath(path, ++part);
+        if (auto st = writeOne(m, routeIndex, format, p, options); !st)
+            return st.error();
+        report.files.push_back(p);
+    }
+    report.notes.push_back(ctx.routeLabel(routeIndex) + ": " + formatInfo(format).description +
+                           " takes at most " + std::to_string(limit) + " waypoints; the " +
+                           std::to_string(waypoints.size()) + " waypoints are written as " +
+                           std::to_string(part) + " missions (" + detail::baseName(report.files.front()) +
+                           " to " + detail::baseName(report.files.back()) +
+                           ") to fly one after the other, each starting where the previous one ended");
+    return report;
+}
+
+Status exportRoute(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat format,
+                   const std::string& path, const ExportOptions& options) {
+    auto r = exportRouteFiles(ctx, routeIndex, format, path, options);
+    if (!r)
+        return r.error();
+    return {};
+}
+
+Status exportCombined(const ExportContext& original, WaypointFormat format, const std::string& path,
                       const ExportOptions& /*options*/) {
-    std::vector<std::size_t> all(ctx.routes.size());
+    std::vector<std::size_t> all(original.routes.size());
     std::iota(all.begin(), all.end(), std::size_t{0});
+    const ExportContext ctx = mergedContext(original, all, format, nullptr);
     switch (format) {
     case WaypointFormat::Kml:
         return writeKml(ctx, all, path);
@@ -140,14 +220,18 @@ std::string routeFileName(const ExportContext& ctx, std::size_t routeIndex, Wayp
 
 Result<std::vector<std::string>> exportAll(const ExportContext& ctx, WaypointFormat format,
                                            const std::string& dir, const std::string& stem,
-                                           const ExportOptions& options) {
+                                           const ExportOptions& options,
+                                           std::vector<std::string>* notes) {
     std::vector<std::string> written;
     const std::string base = dir.empty() ? std::string() : dir + "/";
     for (std::size_t i = 0; i < ctx.routes.size(); ++i) {
         const std::string path = base + stem + "-" + routeFileName(ctx, i, format);
-        if (auto st = exportRoute(ctx, i, format, path, options); !st)
-            return st.error();
-        written.push_back(path);
+        auto r = exportRouteFiles(ctx, i, format, path, options);
+        if (!r)
+            return r.error();
+        written.insert(written.end(), r->files.begin(), r->files.end());
+        if (notes)
+            notes->insert(notes->end(), r->notes.begin(), r->notes.end());
     }
     if (formatInfo(format).combined && ctx.routes.size() > 1) {
         const std::string path = base + stem + formatInfo(format).extension;

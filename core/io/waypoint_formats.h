@@ -32,6 +32,8 @@ struct WaypointFormatInfo {
     const char* description; // one line for help texts
     bool canImport;          // every format but KML is read back
     bool combined;           // one file can hold every aircraft (KML, GPX, GeoJSON)
+    double minSpacingM;      // closer waypoints are merged: DJI (Litchi) refuses under 0.6 m
+    std::size_t maxWaypoints; // more are split into numbered files (Litchi: 99); 0: no limit
 };
 
 const std::vector<WaypointFormatInfo>& waypointFormats();
@@ -45,7 +47,18 @@ Result<WaypointFormat> formatFromPath(const std::string& path);
 // Parses "plan,kml,gpx"; errors name the unknown entry.
 Result<std::vector<WaypointFormat>> formatListFromString(const std::string& commaSeparated);
 
-// One aircraft's route in one file.
+// What an export wrote, and what the user should know about it.
+struct ExportReport {
+    std::vector<std::string> files;
+    std::vector<std::string> notes; // merged waypoints, a route split into several files
+};
+
+// One aircraft's route in one file; waypoints closer than the format's minimum are merged, and a
+// route over the format's waypoint limit (Litchi: 99) is written as numbered files
+// "<path stem>-part1.csv", "-part2.csv", ... each starting where the previous one ended.
+Result<ExportReport> exportRouteFiles(const ExportContext& ctx, std::size_t routeIndex,
+                                      WaypointFormat format, const std::string& path,
+                                      const ExportOptions& options = {});
 Status exportRoute(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat format,
                    const std::string& path, const ExportOptions& options = {});
 // Every route in one file; Unsupported for the formats that hold one vehicle's mission.
@@ -55,10 +68,11 @@ Status exportCombined(const ExportContext& ctx, WaypointFormat format, const std
 // "<aircraft>.<ext>" with characters unsafe in file names replaced by '_' ("Route N" if unnamed).
 std::string routeFileName(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat format);
 // Writes "<dir>/<stem>-<aircraft>.<ext>" per route, plus "<dir>/<stem>.<ext>" with every route when
-// the format allows; returns the paths written.
+// the format allows; returns the paths written (and the notes in `notes` if given).
 Result<std::vector<std::string>> exportAll(const ExportContext& ctx, WaypointFormat format,
                                            const std::string& dir, const std::string& stem,
-                                           const ExportOptions& options = {});
+                                           const ExportOptions& options = {},
+                                           std::vector<std::string>* notes = nullptr);
 
 // Reads .plan, .waypoints, .gpx, .geojson/.json or .csv (chosen by extension).
 Result<ImportedWaypoints> importWaypoints(const std::string& path);

@@ -40,7 +40,10 @@ Status writeWaypointGeoJson(const ExportContext& ctx, const std::vector<std::siz
     OGRSpatialReference wgs84;
     wgs84.SetWellKnownGeogCS("WGS84");
     wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-    const char* const layerOpts[] = {"WRITE_NAME=NO", nullptr};
+    // RFC 7946: no "crs" member, outer rings counter-clockwise and holes clockwise (OGR rewinds
+    // them); coordinates keep 15 decimals so that reading gives back the same positions.
+    const char* const layerOpts[] = {"WRITE_NAME=NO", "RFC7946=YES", "COORDINATE_PRECISION=15",
+                                     nullptr};
     OGRLayer* layer =
         (*ds)->CreateLayer("waypoints", &wgs84, wkbUnknown, const_cast<char**>(layerOpts));
     if (!layer)
@@ -184,6 +187,10 @@ Result<ImportedWaypoints> readWaypointGeoJson(const std::string& path) {
         } else {
             return makeError(ErrorCode::ParseError, where + ": missing property \"altitude_m\"");
         }
+        if (const std::string why =
+                detail::waypointPositionProblem(pw.w.position.lon, pw.w.position.lat, pw.w.altitudeM);
+            !why.empty())
+            return makeError(ErrorCode::ParseError, where + ": " + why);
         const int hdg = f->GetFieldIndex("heading_deg");
         if (hdg >= 0 && f->IsFieldSetAndNotNull(hdg)) {
             auto v = detail::parseNumber(f->GetFieldAsString(hdg));

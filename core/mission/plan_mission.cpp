@@ -462,6 +462,7 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         if (!safe)
             return makeError(safe.error().code, who + ": " + safe.error().message);
         survey = std::move(*safe);
+        route::dropNearDuplicates(survey);
         for (const auto& w : rep.warnings)
             plan.warnings.push_back(who + ": " + w);
         ap.detours = rep.detours;

@@ -25,7 +25,8 @@ using geo::Severity;
 
 std::string num(const char* f, double v) {
     char buf[64];
-    std::snprintf(buf, sizeof buf, f, v);
+    // Absurd values (1e300 m) in scientific notation rather than three hundred digits.
+    std::snprintf(buf, sizeof buf, std::abs(v) >= 1e9 ? "%g" : f, v);
     return buf;
 }
 
@@ -271,6 +272,15 @@ ValidationReport validateMission(const Mission& m) {
         error(out, "the cell budget must be at least 1 cell");
     if (m.aircraft.empty())
         error(out, "the mission has no aircraft: add at least one");
+    // Names label each aircraft's route and files: a second "Falcon 8" would overwrite the first's.
+    for (std::size_t i = 0; i < m.aircraft.size(); ++i)
+        for (std::size_t k = 0; k < i; ++k)
+            if (m.aircraft[i].name == m.aircraft[k].name) {
+                error(out, "aircraft " + std::to_string(i + 1) + " has the same name as aircraft " +
+                               std::to_string(k + 1) + " (\"" + m.aircraft[i].name +
+                               "\"): give each aircraft its own name, as it names its route and its files");
+                break;
+            }
 
     // Aircraft: settings, footprint, cell size and the grid each would get.
     for (std::size_t i = 0; i < m.aircraft.size(); ++i) {

@@ -328,7 +328,32 @@ std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellP
         cellPhotos.push_back(*extra);
         ++rep.added;
     }
+    dropNearDuplicates(out);
     return out;
+}
+
+void dropNearDuplicates(std::vector<LocalWaypoint>& waypoints) {
+    // A turn or transit point a few millimetres from its neighbour (a lane's end cell centre under the
+    // lane's last photo, say) adds nothing but a zero-length leg that vehicles reject; so does a photo
+    // that repeats the one before it (same heading, less than the gap away: the same picture, shifted
+    // by less than the coverage check's resolution).
+    std::vector<LocalWaypoint> out;
+    out.reserve(waypoints.size());
+    for (std::size_t i = 0; i < waypoints.size(); ++i) {
+        const LocalWaypoint& w = waypoints[i];
+        if (w.kind == WaypointKind::Photo && !out.empty() && out.back().kind == WaypointKind::Photo &&
+            (out.back().pos - w.pos).norm() < kMinWaypointGapM &&
+            std::fabs(std::remainder(out.back().headingDeg - w.headingDeg, 360.0)) < 0.5)
+            continue;
+        if (w.kind != WaypointKind::Photo) {
+            const bool nearPrev = !out.empty() && (out.back().pos - w.pos).norm() < kMinWaypointGapM;
+            const bool nearNext = i + 1 < waypoints.size() && (waypoints[i + 1].pos - w.pos).norm() < kMinWaypointGapM;
+            if (nearPrev || nearNext)
+                continue;
+        }
+        out.push_back(w);
+    }
+    waypoints.swap(out);
 }
 
 void straightenTransits(const grid::Grid& g, std::vector<LocalWaypoint>& waypoints) {
@@ -363,6 +388,7 @@ void straightenTransits(const grid::Grid& g, std::vector<LocalWaypoint>& waypoin
         ++i;
     }
     waypoints.swap(out);
+    dropNearDuplicates(waypoints);
 }
 
 } // namespace pf::route

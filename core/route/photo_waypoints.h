@@ -71,6 +71,11 @@ std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellP
                                           const sensor::EffectiveFootprint& fp, PhotoPlacement* placement = nullptr,
                                           PhotoRule rule = PhotoRule::Lanes);
 
+// Turn and transit waypoints closer than this to a neighbouring waypoint are dropped: they would only
+// add a leg of no length (the 0.1 m most formats merge anyway).
+constexpr double kMinWaypointGapM = 0.1;
+void dropNearDuplicates(std::vector<LocalWaypoint>& waypoints);
+
 // The cell path flies back through photographed cells over grid moves (a dead end's way out, a lead-in
 // to where the photos begin). Between two waypoints with nothing to photograph in between, the
 // aircraft flies straight instead whenever the straight leg keeps out of every no-fly margin and passes

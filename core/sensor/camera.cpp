@@ -95,7 +95,9 @@ Status validate(const Camera& cam) {
     }
 
     if (cam.hfovDeg == 0.0 && cam.vfovDeg == 0.0)
-        return invalid(cam, "needs either a sensor size and focal length or horizontal and vertical fields of view");
+        return invalid(cam, "needs either a sensor size and focal length or horizontal and vertical fields of view "
+                            "(both fields of view are 0 or missing; each must be between 0 and 180 degrees, "
+                            "exclusive)");
     if (cam.hfovDeg <= 0.0 || cam.hfovDeg >= 180.0)
         return invalid(cam, "horizontal field of view must be between 0 and 180 degrees, exclusive (got " +
                                 num(cam.hfovDeg) + " degrees)");

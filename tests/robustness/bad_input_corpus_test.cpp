@@ -153,6 +153,20 @@ const BadInput kCorpus[] = {
     {"huge Litchi action type", "convert fuzz/regressions/litchi_huge_action_type.csv out.gpx",
      "line 3: expected 46 comma-separated fields but found 34"},
     {"garbage as catalog", "catalog --catalog corpus/garbage.bin", "garbage.bin: not valid JSON"},
+    // --- found while checking the exports against their readers (issue 17) ---
+    {"GeoJSON waypoint at latitude 91", "convert corpus/waypoints_lat91.geojson corpus/never_written.plan",
+     "waypoints_lat91.geojson: feature 1 (features[0]): latitude 91 is out of range (-90 to 90)"},
+    {"GPX waypoint with a NaN latitude", "convert corpus/waypoints_nan_lat.gpx corpus/never_written.plan",
+     "waypoints_nan_lat.gpx: line 3: waypoint 1: the latitude is not a number"},
+    {"two aircraft with one name", "plan corpus/same_aircraft_name.json --format plan --out corpus/never_written",
+     "aircraft 2 has the same name as aircraft 1 (\"Test copter\"): give each aircraft its own name"},
+    {"altitude far above the ceiling", "plan cli/good_mission.json --altitude 1e9",
+     "the flight altitude of 1e+09 m is above its maximum of 120.0 m"},
+    {"empty area file", "validate corpus/empty_area.geojson", "empty_area.geojson: cannot read the file: it is empty (0 bytes)"},
+    {"both fields of view zero", "plan corpus/camera_no_fov.json",
+     "(both fields of view are 0 or missing; each must be between 0 and 180 degrees, exclusive)"},
+    {"UTM GeoJSON without a CRS", "validate corpus/utm_no_crs.geojson",
+     "are not longitude/latitude; a GeoJSON file without a CRS must be in WGS84: reproject it"},
 };
 
 class BadInputCorpus : public testing::TestWithParam<BadInput> {};
@@ -201,6 +215,14 @@ TEST(BadInputCorpus, EditedRoutesAreNotedAndNotPlanned) {
     const auto at = r.err.find(note);
     EXPECT_NE(at, std::string::npos) << r.err;
     EXPECT_EQ(r.err.find(note, at + 1), std::string::npos) << "said more than once:\n" << r.err;
+}
+
+// Inputs that were refused with a wrong reason and are read now: a mission saved with a UTF-8
+// byte-order mark.
+TEST(BadInputCorpus, AMissionWithAByteOrderMarkIsRead) {
+    const CliRun r = cli("validate corpus/bom_mission.json");
+    EXPECT_EQ(r.signal, 0) << r.err;
+    EXPECT_EQ(r.code, 0) << r.err;
 }
 
 // Figures the planner cannot use must be refused like the other aircraft figures (a negative cruise

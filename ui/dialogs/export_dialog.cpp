@@ -6,6 +6,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QDialogButtonBox>
 #include <QFileDialog>
 #include <QFormLayout>
@@ -77,6 +78,27 @@ ExportDialog::ExportDialog(MissionDocument* doc, PlanController* planner, const 
     form->addRow(tr("File name start:"), m_stem);
     form->addRow(tr("Firmware (.plan):"), m_firmware);
     form->addRow(tr("After the last waypoint:"), m_end);
+    // MAVLink mission options (.plan and .waypoints; the upload offers the same).
+    m_gimbal = new QComboBox;
+    m_gimbal->setObjectName(QStringLiteral("ExportGimbal"));
+    m_gimbal->addItem(tr("Camera straight down: DO_MOUNT_CONTROL"), int(io::GimbalCommand::MountControl));
+    m_gimbal->addItem(tr("Camera straight down: DO_GIMBAL_MANAGER_PITCHYAW"),
+                      int(io::GimbalCommand::GimbalManagerPitchYaw));
+    m_gimbal->addItem(tr("No gimbal command"), int(io::GimbalCommand::None));
+    m_trigger = new QComboBox;
+    m_trigger->setObjectName(QStringLiteral("ExportTrigger"));
+    m_trigger->addItem(tr("A capture command at every photo"), int(io::CameraTrigger::PerPhoto));
+    m_trigger->addItem(tr("By distance along lanes (DO_SET_CAM_TRIGG_DIST, lane ends only)"),
+                       int(io::CameraTrigger::Distance));
+    m_homeElevation = new QDoubleSpinBox;
+    m_homeElevation->setRange(-501, 9000);
+    m_homeElevation->setDecimals(1);
+    m_homeElevation->setSuffix(tr(" m"));
+    m_homeElevation->setSpecialValueText(tr("unknown (0)"));
+    m_homeElevation->setValue(-501);
+    form->addRow(tr("Gimbal (.plan, .waypoints):"), m_gimbal);
+    form->addRow(tr("Photos (.plan, .waypoints):"), m_trigger);
+    form->addRow(tr("Home elevation above sea level:"), m_homeElevation);
 
     m_report = new QPlainTextEdit;
     m_report->setReadOnly(true);
@@ -127,6 +149,10 @@ ExportRequest ExportDialog::request() const {
     r.combined = m_combined->isChecked();
     r.options.firmware = io::QgcFirmware(m_firmware->currentData().toInt());
     r.options.end = io::MissionEnd(m_end->currentData().toInt());
+    r.options.gimbal = io::GimbalCommand(m_gimbal->currentData().toInt());
+    r.options.trigger = io::CameraTrigger(m_trigger->currentData().toInt());
+    if (m_homeElevation->value() > m_homeElevation->minimum())
+        r.options.homeElevationM = m_homeElevation->value();
     return r;
 }
 
@@ -138,25 +164,27 @@ QStringList ExportDialog::runExport() {
         routes.push_back(r.route);
     ExportRequest req = request();
     QString error;
-    QStringList problems;
-    QStringList written = exportRoutes(m_doc->mission(), routes, req, &error, &problems);
+    QStringList problems, notes;
+    QStringList written = exportRoutes(m_doc->mission(), routes, req, &error, &problems, &notes);
     if (!problems.isEmpty()) {
         if (!confirmRouteErrors(problems)) {
-            report({}, error);
+            report({}, error, {});
             return {};
         }
         req.allowRouteErrors = true;
-        written = exportRoutes(m_doc->mission(), routes, req, &error);
+        written = exportRoutes(m_doc->mission(), routes, req, &error, nullptr, &notes);
     }
-    report(written, error);
+    report(written, error, notes);
     return written;
 }
 
-void ExportDialog::report(const QStringList& written, const QString& error) {
+void ExportDialog::report(const QStringList& written, const QString& error, const QStringList& notes) {
     QString text;
     if (!written.isEmpty())
         text = tr("Wrote %n file(s):", nullptr, written.size()) + QLatin1Char('\n') +
                written.join(QLatin1Char('\n'));
+    for (const QString& n : notes)
+        text += QStringLiteral("\n") + tr("Note: %1").arg(n);
     if (!error.isEmpty())
         text += (text.isEmpty() ? QString() : QStringLiteral("\n")) + tr("Error: %1").arg(error);
     m_report->setPlainText(text);
@@ -229,7 +257,8 @@ void ExportDialog::onPlanStateChanged() {
     refreshBanner();
     report({}, m_planner->lastError().isEmpty()
                    ? tr("Not exported: planning was cancelled, and the routes are outdated.")
-                   : tr("Not exported: the new plan could not be made: %1").arg(m_planner->lastError()));
+                   : tr("Not exported: the new plan could not be made: %1").arg(m_planner->lastError()),
+           {});
 }
 
 bool ExportDialog::confirmCurrentPlan() {

@@ -11,6 +11,7 @@
 class QCheckBox;
 class QComboBox;
 class QLabel;
+class QDoubleSpinBox;
 class QLineEdit;
 class QPlainTextEdit;
 class QPushButton;
@@ -50,7 +51,7 @@ private:
     void onPlanStateChanged();
     void refreshBanner();
     void rebuildRouteBoxes();
-    void report(const QStringList& written, const QString& error);
+    void report(const QStringList& written, const QString& error, const QStringList& notes);
 
     MissionDocument* m_doc;
     PlanController* m_planner;
@@ -66,6 +67,10 @@ private:
     QLineEdit* m_stem;
     QComboBox* m_firmware;
     QComboBox* m_end;
+    // MAVLink mission options (.plan, .waypoints): gimbal command, camera trigger, home elevation.
+    QComboBox* m_gimbal;
+    QComboBox* m_trigger;
+    QDoubleSpinBox* m_homeElevation;
     QPlainTextEdit* m_report;
 };
 

@@ -10,7 +10,8 @@
 namespace pf::ui {
 
 QStringList exportRoutes(const mission::Mission& mission, const std::vector<route::Route>& routes,
-                         const ExportRequest& request, QString* error, QStringList* routeProblems) {
+                         const ExportRequest& request, QString* error, QStringList* routeProblems,
+                         QStringList* notes) {
     if (routeProblems)
         routeProblems->clear();
     QStringList written;
@@ -60,10 +61,14 @@ QStringList exportRoutes(const mission::Mission& mission, const std::vector<rout
                 const QString path =
                     dir.filePath(request.stem + QLatin1Char('-') +
                                  QString::fromStdString(io::routeFileName(ctx, i, fmt)));
-                auto st = io::exportRoute(ctx, i, fmt, path.toStdString(), request.options);
+                auto st = io::exportRouteFiles(ctx, i, fmt, path.toStdString(), request.options);
                 if (!st)
                     return fail(QString::fromStdString(st.error().message));
-                written << path;
+                for (const auto& f : st->files)
+                    written << QString::fromStdString(f);
+                if (notes)
+                    for (const auto& n : st->notes)
+                        *notes << QString::fromStdString(n);
             }
         }
         if (request.combined && info.combined) {

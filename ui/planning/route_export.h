@@ -28,9 +28,10 @@ struct ExportRequest {
 
 // Writes the files; returns the paths written. On the first failure stops, and `error` names the
 // file and the problem. Chosen routes with errors are refused (nothing written) unless
-// request.allowRouteErrors: `error` then says so and `routeProblems` lists every problem.
+// request.allowRouteErrors: `error` then says so and `routeProblems` lists every problem. `notes`
+// receives what the user should know (merged waypoints, a Litchi route split into several missions).
 QStringList exportRoutes(const mission::Mission& mission, const std::vector<route::Route>& routes,
                          const ExportRequest& request, QString* error,
-                         QStringList* routeProblems = nullptr);
+                         QStringList* routeProblems = nullptr, QStringList* notes = nullptr);
 
 } // namespace pf::ui

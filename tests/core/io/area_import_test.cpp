@@ -11,6 +11,7 @@
 #include <thread>
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 using namespace pf;
@@ -209,4 +210,21 @@ TEST(AreaImportErrors, UnsupportedFormats) {
               "unsupported.txt: unsupported or unrecognised format; expected GeoJSON (.geojson), KML (.kml), "
               "Shapefile (.shp), GeoPackage (.gpkg) or GML (.gml)");
     EXPECT_EQ(importPolygons(fixture("unsupported.csv")).error().code, ErrorCode::Unsupported);
+}
+
+// An unreadable file says why it cannot be read (as root every file is readable: skipped there).
+TEST(AreaImport, AnUnreadableFileSaysSo) {
+    if (geteuid() == 0)
+        GTEST_SKIP() << "root reads every file";
+    const std::string path = testing::TempDir() + "pf_unreadable_" + std::to_string(getpid()) + ".geojson";
+    {
+        std::ofstream out(path);
+        out << "{\"type\":\"FeatureCollection\",\"features\":[]}";
+    }
+    ASSERT_EQ(chmod(path.c_str(), 0), 0);
+    auto r = importPolygons(path);
+    std::remove(path.c_str());
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.error().message.find("cannot read the file: Permission denied"), std::string::npos)
+        << r.error().message;
 }

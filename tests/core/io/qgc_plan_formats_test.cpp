@@ -54,7 +54,7 @@ TEST(QgcPlanRules, TheCheckerCatchesEachBrokenRule) {
     EXPECT_FALSE(broken([](CPLJSONObject& r) { r.Delete("rallyPoints"); }).empty());
     EXPECT_FALSE(broken([](CPLJSONObject& r) { r.GetObj("mission").Set("version", 1); }).empty());
     EXPECT_FALSE(broken([](CPLJSONObject& r) {
-                     CPLJSONObject item = r.GetObj("mission").GetArray("items")[1];
+                     CPLJSONObject item = r.GetObj("mission").GetArray("items")[3];
                      item.Delete("AltitudeMode");
                  }).empty());
     EXPECT_FALSE(broken([](CPLJSONObject& r) {
@@ -88,9 +88,14 @@ TEST(QgcPlan, ItemsAreTakeoffWaypointsWithCaptureAndReturn) {
     int photos = 0;
     for (const auto& w : wps)
         photos += w.kind == route::WaypointKind::Photo;
-    ASSERT_EQ(items.Size(), 1 + static_cast<int>(wps.size()) + photos + 1);
+    // Take-off, speed, gimbal, the waypoints with their captures, return.
+    ASSERT_EQ(items.Size(), 3 + static_cast<int>(wps.size()) + photos + 1);
     EXPECT_EQ(items[0].GetInteger("command"), 22);
-    int k = 1;
+    EXPECT_EQ(items[1].GetInteger("command"), 178);
+    EXPECT_DOUBLE_EQ(items[1].GetArray("params")[1].ToDouble(), ctx.routes[0].cruiseSpeedMps);
+    EXPECT_EQ(items[2].GetInteger("command"), 205);
+    EXPECT_DOUBLE_EQ(items[2].GetArray("params")[0].ToDouble(), -90.0);
+    int k = 3;
     for (const auto& w : wps) {
         const CPLJSONObject it = items[k++];
         EXPECT_EQ(it.GetInteger("command"), 16);
@@ -136,8 +141,8 @@ TEST(QgcPlan, Px4LandAndDigicamOptions) {
     EXPECT_EQ(m.GetInteger("firmwareType"), 12);
     EXPECT_DOUBLE_EQ(m.GetDouble("hoverSpeed"), 3.5);
     const CPLJSONArray items = m.GetArray("items");
-    EXPECT_EQ(items[2].GetInteger("command"), 203);
-    EXPECT_DOUBLE_EQ(items[2].GetArray("params")[4].ToDouble(), 1.0);
+    EXPECT_EQ(items[4].GetInteger("command"), 203);
+    EXPECT_DOUBLE_EQ(items[4].GetArray("params")[4].ToDouble(), 1.0);
     const CPLJSONObject land = items[items.Size() - 1];
     EXPECT_EQ(land.GetInteger("command"), 21);
     EXPECT_DOUBLE_EQ(land.GetArray("params")[4].ToDouble(), 49.010741);

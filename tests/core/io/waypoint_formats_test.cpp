@@ -150,7 +150,13 @@ TEST(QgcWpl, WritesTheMissionPlannerLayout) {
         for (char c : line)
             fields += c == '\t';
         EXPECT_EQ(fields, 12) << line;
-        EXPECT_EQ(line.rfind(std::to_string(n++) + "\t0\t3\t", 0), 0u) << line;
+        // Items with a position in frame 3 (above home), commands without one in frame 2
+        // (MAV_FRAME_MISSION), exactly as they are uploaded.
+        const bool command = line.find("\t2000\t") != std::string::npos ||
+                             line.find("\t178\t") != std::string::npos ||
+                             line.find("\t205\t") != std::string::npos ||
+                             line.find("\t20\t0\t") != std::string::npos;
+        EXPECT_EQ(line.rfind(std::to_string(n++) + (command ? "\t0\t2\t" : "\t0\t3\t"), 0), 0u) << line;
         captures += line.find("\t2000\t") != std::string::npos;
     }
     for (const auto& w : ctx.routes[0].waypoints)
@@ -332,4 +338,18 @@ TEST(Kml, DrawsTheSmoothedTrajectoryOutsideTheBufferedZones) {
             << "sample " << i;
     ASSERT_TRUE(exportRoute(ctx, 0, WaypointFormat::Kml, dir + "/t.kml").ok());
     EXPECT_NE(slurp(dir + "/t.kml").find("Falcon 8 #1 trajectory"), std::string::npos);
+}
+
+// A Litchi CSV saved by a spreadsheet in a decimal-comma locale: ';' between fields, ',' in numbers.
+TEST(LitchiCsv, ReadsASpreadsheetsSemicolonsAndDecimalCommas) {
+    auto r = readLitchiCsv(std::string(PF_TEST_DATA_DIR) + "/formats/litchi_spreadsheet.csv");
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    const auto& w = r->routes.at(0).waypoints;
+    ASSERT_EQ(w.size(), 2u);
+    EXPECT_DOUBLE_EQ(w[0].position.lat, 49.0108);
+    EXPECT_DOUBLE_EQ(w[0].position.lon, 8.3272);
+    EXPECT_DOUBLE_EQ(w[1].position.lat, 49.0109);
+    EXPECT_DOUBLE_EQ(w[0].altitudeM, 40.0);
+    EXPECT_EQ(w[0].kind, route::WaypointKind::Photo);
+    EXPECT_EQ(w[1].kind, route::WaypointKind::Transit);
 }

@@ -355,9 +355,13 @@ TEST(PlanCli, WritesEveryFormatPerAircraft) {
                               dir.string(),
                           &err);
     ASSERT_EQ(rc, 0) << err;
-    for (const char* name : {"Falcon_8", "Phantom_4_Pro"})
-        for (const char* ext : {".plan", ".waypoints", ".kml", ".gpx", ".geojson", ".csv"})
+    for (const char* name : {"Falcon_8", "Phantom_4_Pro"}) {
+        for (const char* ext : {".plan", ".waypoints", ".kml", ".gpx", ".geojson"})
             EXPECT_TRUE(std::filesystem::exists(dir / (std::string("mission-") + name + ext))) << name << ext;
+        // Litchi takes at most 99 waypoints: the demo's routes are longer and come in parts.
+        EXPECT_TRUE(std::filesystem::exists(dir / (std::string("mission-") + name + "-part1.csv"))) << name;
+        EXPECT_TRUE(std::filesystem::exists(dir / (std::string("mission-") + name + "-part2.csv"))) << name;
+    }
     for (const char* ext : {".kml", ".gpx", ".geojson"})
         EXPECT_TRUE(std::filesystem::exists(dir / (std::string("mission") + ext))) << ext;
     EXPECT_FALSE(std::filesystem::exists(dir / "mission.plan"));

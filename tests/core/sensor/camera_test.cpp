@@ -214,7 +214,8 @@ TEST(CameraErrors, NoDefinitionAtAll) {
     c.imageWidthPx = 100;
     c.imageHeightPx = 100;
     EXPECT_EQ(messageOf(validate(c)),
-              "camera: needs either a sensor size and focal length or horizontal and vertical fields of view");
+              "camera: needs either a sensor size and focal length or horizontal and vertical fields of view "
+              "(both fields of view are 0 or missing; each must be between 0 and 180 degrees, exclusive)");
 }
 
 TEST(CameraErrors, ZeroSensorSizeIsNotSilentlyIgnored) {

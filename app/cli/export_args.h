@@ -1,0 +1,32 @@
+// The options that shape MAVLink missions and waypoint files, shared by plan, convert and upload:
+// --firmware, --end, --capture, --gimbal, --trigger, --hover-speed, --home-elevation.
+#pragma once
+
+#include "app/cli/args.h"
+#include "core/io/export_context.h"
+#include "core/result.h"
+
+#include <vector>
+
+#define PF_CLI_EXPORT_OPTIONS_HELP \
+    "  --firmware NAME       ardupilot (default) or px4: the .plan's firmwareType (an upload\n" \
+    "                        follows the vehicle's heartbeat: ArduPilot gets the home as item 0)\n" \
+    "  --end ACTION          rtl (default) or land: what the vehicle does after the last waypoint\n" \
+    "  --capture COMMAND     image (MAV_CMD_IMAGE_START_CAPTURE, default) or digicam\n" \
+    "                        (MAV_CMD_DO_DIGICAM_CONTROL): the photo command after a photo waypoint\n" \
+    "  --gimbal COMMAND      mount (MAV_CMD_DO_MOUNT_CONTROL, default), manager\n" \
+    "                        (MAV_CMD_DO_GIMBAL_MANAGER_PITCHYAW) or none: camera straight down at the start\n" \
+    "  --trigger MODE        photo (default: a waypoint and a capture per photo) or distance: lanes of\n" \
+    "                        equally spaced photos become their two ends with MAV_CMD_DO_SET_CAM_TRIGG_DIST\n" \
+    "                        (.plan, .waypoints and upload)\n" \
+    "  --hover-speed M/S     the .plan hoverSpeed (default: the route's cruise speed)\n" \
+    "  --home-elevation M    ground elevation of the home above sea level, for the planned home of a\n" \
+    "                        .plan and the home line of a .waypoints (default 0: unknown)\n"
+
+namespace pf::cli {
+
+std::vector<OptionSpec> exportOptionSpecs();
+// Errors name the option and the value.
+Result<io::ExportOptions> exportOptionsFromArgs(const Args& args);
+
+} // namespace pf::cli

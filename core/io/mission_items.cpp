@@ -1,0 +1,237 @@
+#include "core/io/mission_items.h"
+
+#include "core/geo/geodesic.h"
+#include "core/io/trigger_lanes.h"
+#include "core/io/waypoint_format_util.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace pf::io {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kMavlinkMinSpacingM = 0.1;
+
+MissionItem nav(int command, double yaw, geo::LonLat at, double alt, double p1 = 0) {
+    return {command, mav::kFrameGlobalRelativeAlt, {p1, 0, 0, yaw, at.lat, at.lon, alt}};
+}
+
+MissionItem action(int command, std::array<double, 7> params) {
+    return {command, mav::kFrameMission, params};
+}
+
+MissionItem capture(CaptureCommand c) {
+    if (c == CaptureCommand::ImageStartCapture)
+        return action(mav::kImageStartCapture, {0, 0, 1, 0, 0, 0, 0}); // all cameras, one image
+    return action(mav::kDoDigicamControl, {0, 0, 0, 0, 1, 0, 0});     // param 5 = 1: shoot
+}
+
+// Distance triggering: param 1 the distance, param 3 = 1 takes one photo at once.
+MissionItem triggerDistance(double d, bool now) {
+    return action(mav::kDoSetCamTriggDist, {d, 0, now ? 1.0 : 0.0, 0, 0, 0, 0});
+}
+
+} // namespace
+
+double rallyAltitude(const route::Route& r) {
+    double alt = 0;
+    for (const auto& w : r.waypoints)
+        alt = std::max(alt, w.altitudeM);
+    return alt;
+}
+
+Result<std::vector<MissionItem>> missionItems(const ExportContext& ctx, std::size_t routeIndex,
+                                              const ExportOptions& options) {
+    if (routeIndex >= ctx.routes.size())
+        return makeError(ErrorCode::InvalidInput,
+                         "there is no route " + std::to_string(routeIndex + 1) + " to export");
+    const route::Route& r = ctx.routes[routeIndex];
+    if (r.waypoints.empty())
+        return makeError(ErrorCode::InvalidInput,
+                         ctx.routeLabel(routeIndex) + ": the route has no waypoints to export");
+    const std::vector<route::Waypoint> wps = mergeCloseWaypoints(r.waypoints, kMavlinkMinSpacingM);
+    const geo::LonLat home = ctx.homeFor(routeIndex).value_or(wps.front().position);
+    const geo::LonLat landing = ctx.landingFor(routeIndex).value_or(home);
+
+    std::vector<MissionItem> items;
+    const route::Waypoint& first = wps.front();
+    items.push_back(nav(mav::kNavTakeoff, first.headingDeg, home, first.altitudeM));
+    // Ground speed (param 1 = 1) to the planned cruise speed, throttle unchanged (-1).
+    items.push_back(action(mav::kDoChangeSpeed, {1, r.cruiseSpeedMps, -1, 0, 0, 0, 0}));
+    if (options.gimbal == GimbalCommand::MountControl)
+        // Pitch -90 (down), roll 0, yaw 0; param 7 = MAV_MOUNT_MODE_MAVLINK_TARGETING.
+        items.push_back(action(mav::kDoMountControl, {-90, 0, 0, 0, 0, 0, 2}));
+    else if (options.gimbal == GimbalCommand::GimbalManagerPitchYaw)
+        // Pitch -90, yaw 0 (ahead); rates not used; flags 0 (yaw follows the vehicle); primary gimbal.
+        items.push_back(action(mav::kDoGimbalManagerPitchYaw, {-90, 0, kNaN, kNaN, 0, 0, 0}));
+
+    std::vector<TriggerLane> lanes;
+    if (options.trigger == CameraTrigger::Distance)
+        lanes = findTriggerLanes(wps);
+    std::size_t lane = 0;
+    for (std::size_t i = 0; i < wps.size(); ++i) {
+        const auto& w = wps[i];
+        items.push_back(nav(mav::kNavWaypoint, detail::normaliseHeading(w.headingDeg), w.position,
+                            w.altitudeM));
+        if (lane < lanes.size() && lanes[lane].first == i) {
+            // The camera fires here at once and then every spacing; at the lane's last photo the
+            // trigger is switched off with one last photo. A vehicle counts the last waypoint as
+            // reached within its acceptance radius, before it has flown the full spacing, so the
+            // distance trigger does not fire there a second time.
+            items.push_back(triggerDistance(lanes[lane].spacingM, true));
+            const auto& end = wps[lanes[lane].last];
+            items.push_back(nav(mav::kNavWaypoint, detail::normaliseHeading(end.headingDeg),
+                                end.position, end.altitudeM));
+            items.push_back(triggerDistance(0, true));
+            i = lanes[lane].last;
+            ++lane;
+            continue;
+        }
+        if (w.kind == route::WaypointKind::Photo)
+            items.push_back(capture(options.capture));
+    }
+    if (options.end == MissionEnd::ReturnToLaunch)
+        items.push_back(action(mav::kNavReturnToLaunch, {0, 0, 0, 0, 0, 0, 0}));
+    else
+        items.push_back(nav(mav::kNavLand, wps.back().headingDeg, landing, 0.0));
+    return items;
+}
+
+MissionItem homeItem(const ExportContext& ctx, std::size_t routeIndex, const ExportOptions& options) {
+    geo::LonLat home{0, 0};
+    if (auto h = ctx.homeFor(routeIndex))
+        home = *h;
+    else if (routeIndex < ctx.routes.size() && !ctx.routes[routeIndex].waypoints.empty())
+        home = ctx.routes[routeIndex].waypoints.front().position;
+    return {mav::kNavWaypoint, mav::kFrameGlobal,
+            {0, 0, 0, 0, home.lat, home.lon, options.homeElevationM.value_or(0.0)}};
+}
+
+std::vector<MissionItem> fenceItems(const ExportContext& ctx) {
+    std::vector<MissionItem> items;
+    for (const auto& z : ctx.mission.noFlyZones) {
+        const auto n = static_cast<double>(z.polygon.outer.size());
+        for (const auto& v : z.polygon.outer)
+            items.push_back({mav::kFenceVertexExclusion, mav::kFrameGlobal, {n, 0, 0, 0, v.lat, v.lon, 0}});
+    }
+    return items;
+}
+
+std::vector<MissionItem> rallyItems(const ExportContext& ctx, std::size_t routeIndex) {
+    if (routeIndex >= ctx.routes.size() || ctx.routes[routeIndex].waypoints.empty())
+        return {};
+    const geo::LonLat home =
+        ctx.homeFor(routeIndex).value_or(ctx.routes[routeIndex].waypoints.front().position);
+    return {{mav::kRallyPoint, mav::kFrameGlobalRelativeAlt,
+             {0, 0, 0, 0, home.lat, home.lon, rallyAltitude(ctx.routes[routeIndex])}}};
+}
+
+namespace {
+
+// Rebuilds the photos of a distance-triggered stretch: `path` are the waypoints flown with the
+// trigger on (the first takes a photo at once), photos every `d` metres along them, and at the end
+// one more photo when the trigger is switched off with "photo now".
+void expandTriggered(std::vector<route::Waypoint>& out, std::vector<bool>& photo,
+                     const std::vector<route::Waypoint>& path, double d, bool photoAtEnd) {
+    double total = 0;
+    for (std::size_t k = 1; k < path.size(); ++k)
+        total += geo::geodesicDistance(path[k - 1].position, path[k].position);
+    // A photo due within a quarter spacing of the end is the end photo itself.
+    const double limit = photoAtEnd ? total - 0.25 * d : total + 0.01;
+    constexpr double kAtWaypointM = 0.01;
+    out.push_back(path.front());
+    photo.push_back(true);
+    double legStart = 0;
+    double next = d;
+    for (std::size_t k = 1; k < path.size(); ++k) {
+        const auto& a = path[k - 1];
+        const auto& b = path[k];
+        const double len = geo::geodesicDistance(a.position, b.position);
+        const double az = geo::initialBearingDeg(a.position, b.position);
+        while (next < limit && next < legStart + len - kAtWaypointM) {
+            const double s = next - legStart;
+            route::Waypoint w = a;
+            w.position = geo::geodesicDirect(a.position, az, s);
+            w.altitudeM = a.altitudeM + (b.altitudeM - a.altitudeM) * s / len;
+            out.push_back(w);
+            photo.push_back(true);
+            next += d;
+        }
+        legStart += len;
+        const bool last = k + 1 == path.size();
+        bool here = last && photoAtEnd;
+        if (!here && next < limit && std::abs(next - legStart) <= kAtWaypointM) {
+            here = true; // the camera fires just at this waypoint
+            next += d;
+        }
+        out.push_back(b);
+        photo.push_back(here);
+    }
+}
+
+} // namespace
+
+route::Route routeFromItems(const std::vector<MissionItem>& items) {
+    route::Route r;
+    std::vector<route::Waypoint> wps;
+    std::vector<bool> photo;
+    double triggerD = 0;
+    std::vector<route::Waypoint> triggered; // waypoints flown with the trigger on
+    for (const auto& it : items) {
+        const auto& p = it.params;
+        if (it.command == mav::kImageStartCapture || it.command == mav::kDoDigicamControl) {
+            if (triggerD > 0 && !triggered.empty())
+                continue; // the distance trigger takes the photos here
+            if (!photo.empty())
+                photo.back() = true;
+            continue;
+        }
+        if (it.command == mav::kDoChangeSpeed) {
+            if (std::isfinite(p[1]) && p[1] > 0)
+                r.cruiseSpeedMps = p[1];
+            continue;
+        }
+        if (it.command == mav::kDoSetCamTriggDist) {
+            const double d = std::isfinite(p[0]) ? p[0] : 0;
+            const bool now = p[2] == 1.0;
+            if (triggerD > 0 && !triggered.empty()) {
+                expandTriggered(wps, photo, triggered, triggerD, now);
+                triggered.clear();
+            } else if (now && !photo.empty()) {
+                photo.back() = true;
+            }
+            triggerD = d;
+            if (d > 0 && !wps.empty()) {
+                // The lane starts at the last waypoint: it moves into the triggered stretch.
+                triggered.push_back(wps.back());
+                wps.pop_back();
+                photo.pop_back();
+            }
+            continue;
+        }
+        if (it.command != mav::kNavWaypoint)
+            continue; // take-off, gimbal, return and land are made again on export
+        route::Waypoint w;
+        w.position = {p[5], p[4]};
+        w.altitudeM = p[6];
+        w.headingDeg = std::isfinite(p[3])
+                           ? detail::normaliseHeading(p[3])
+                           : (wps.empty() ? 0.0 : wps.back().headingDeg);
+        if (triggerD > 0 && !triggered.empty()) {
+            triggered.push_back(w);
+            continue;
+        }
+        wps.push_back(w);
+        photo.push_back(false);
+    }
+    if (triggerD > 0 && !triggered.empty())
+        expandTriggered(wps, photo, triggered, triggerD, false);
+    detail::inferNonPhotoKinds(wps, photo);
+    r.waypoints = std::move(wps);
+    return r;
+}
+
+} // namespace pf::io

@@ -1,0 +1,68 @@
+// The MAVLink mission items of one route, made in one place for the .plan and .waypoints files and
+// the upload to a vehicle (so a file and an upload can never differ), and read back into a route.
+#pragma once
+
+#include "core/io/export_context.h"
+#include "core/result.h"
+#include "core/route/waypoint.h"
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace pf::io {
+
+// MAVLink commands and frames used in .plan and .waypoints files and uploads.
+namespace mav {
+constexpr int kNavWaypoint = 16;
+constexpr int kNavReturnToLaunch = 20;
+constexpr int kNavLand = 21;
+constexpr int kNavTakeoff = 22;
+constexpr int kDoChangeSpeed = 178;
+constexpr int kDoDigicamControl = 203;
+constexpr int kDoMountControl = 205;
+constexpr int kDoSetCamTriggDist = 206;
+constexpr int kDoGimbalManagerPitchYaw = 1000;
+constexpr int kImageStartCapture = 2000;
+constexpr int kFenceVertexExclusion = 5002; // MAV_CMD_NAV_FENCE_POLYGON_VERTEX_EXCLUSION
+constexpr int kRallyPoint = 5100;           // MAV_CMD_NAV_RALLY_POINT
+constexpr int kFrameGlobal = 0;             // altitude above mean sea level
+constexpr int kFrameMission = 2;            // command without a position
+constexpr int kFrameGlobalRelativeAlt = 3;  // altitude above home
+} // namespace mav
+
+// One item as the formats write it: params 5-7 are latitude, longitude and altitude for items
+// with a position (frame 0 or 3), zero otherwise. A NaN param means "not used" (written as null in
+// a .plan).
+struct MissionItem {
+    int command = mav::kNavWaypoint;
+    int frame = mav::kFrameGlobalRelativeAlt;
+    std::array<double, 7> params{0, 0, 0, 0, 0, 0, 0};
+    bool hasPosition() const { return frame != mav::kFrameMission; }
+};
+
+// The route's mission: take-off at home, speed, gimbal straight down, the waypoints (a capture after
+// each photo, or with CameraTrigger::Distance only the lane ends with the trigger distance), and
+// return to launch or land. Without the home item (see homeItem()). Waypoints closer than 0.1 m
+// are merged first.
+Result<std::vector<MissionItem>> missionItems(const ExportContext& ctx, std::size_t routeIndex,
+                                              const ExportOptions& options = {});
+// The home position as MAVLink item 0 of ArduPilot and Mission Planner: a waypoint in frame 0 at the
+// home's elevation above sea level (ExportOptions::homeElevationM, else 0).
+MissionItem homeItem(const ExportContext& ctx, std::size_t routeIndex,
+                     const ExportOptions& options = {});
+// Every no-fly zone as an exclusion polygon: one vertex item per corner (param 1 = the count).
+std::vector<MissionItem> fenceItems(const ExportContext& ctx);
+// The rally point: the home at the route's highest altitude (relative to home).
+std::vector<MissionItem> rallyItems(const ExportContext& ctx, std::size_t routeIndex);
+// The altitude of the rally point (and of the .plan's rally point): the route's highest waypoint.
+double rallyAltitude(const route::Route& route);
+
+// A mission read back from a file or a vehicle, items without home, altitudes relative to home:
+// the waypoints, photo where a capture command follows or the camera fires by distance along
+// the lanes (the photos of a distance-triggered lane are put back where the camera fires), speed
+// from DO_CHANGE_SPEED. Other items (take-off, gimbal, return, land) are dropped: they are made
+// again on export.
+route::Route routeFromItems(const std::vector<MissionItem>& items);
+
+} // namespace pf::io

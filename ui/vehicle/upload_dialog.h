@@ -1,0 +1,65 @@
+// UploadDialog (Ground station > Connect and Upload): per aircraft a connection and a system id,
+// the export options that shape the mission, then parallel uploads with each vehicle's progress,
+// identity and answer.
+#pragma once
+
+#include "core/io/export_context.h"
+
+#include <QDialog>
+
+#include <vector>
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+class QTableWidget;
+
+namespace pf::ui {
+
+class MissionDocument;
+class UploadManager;
+
+class UploadDialog : public QDialog {
+    Q_OBJECT
+public:
+    explicit UploadDialog(MissionDocument* doc, QWidget* parent = nullptr);
+
+    // The row of an aircraft's route, for tests and scripted use.
+    void setConnection(int row, const QString& connection, int systemId);
+    // Starts the uploads of the ticked rows; false (and the reason shown) when nothing can start.
+    bool startUpload();
+    io::ExportOptions exportOptions() const;
+    bool isRunning() const;
+    QString rowResult(int row) const;
+
+signals:
+    void uploadsFinished(int succeeded, int failed);
+
+private:
+    struct Row {
+        QCheckBox* use;
+        QComboBox* connection;
+        QSpinBox* systemId;
+        QProgressBar* progress;
+        QLabel* answer;
+    };
+    void refreshRow(int job);
+    void saveSettings() const;
+
+    MissionDocument* m_doc;
+    UploadManager* m_manager;
+    QTableWidget* m_table;
+    std::vector<Row> m_rows;
+    std::vector<int> m_jobRow; // job index -> table row
+    QComboBox* m_gimbal;
+    QComboBox* m_trigger;
+    QComboBox* m_end;
+    QLabel* m_status;
+    QPushButton* m_upload;
+    QPushButton* m_cancel;
+};
+
+} // namespace pf::ui
