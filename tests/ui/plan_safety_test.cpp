@@ -20,6 +20,7 @@
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
+#include <QMessageBox>
 #include <QFileInfo>
 #include <QLabel>
 #include <QPushButton>
@@ -30,6 +31,8 @@
 #include <QUndoStack>
 
 #include <gtest/gtest.h>
+
+#include <memory>
 
 using namespace pf;
 using namespace pf::ui;
@@ -295,10 +298,35 @@ TEST(PlanSafety, SavedMissionsGetTheirExtensionAndOpenShowsThem) {
     auto answerFileDialog = [&](const QString& objectName, const QString& fileName) {
         auto* timer = new QTimer(&w);
         timer->setInterval(20);
-        QObject::connect(timer, &QTimer::timeout, [timer, objectName, fileName, folder, &openFilter, &shown] {
-            auto* d = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
-            if (!d || d->objectName() != objectName) return;
-            timer->stop();
+        auto ticks = std::make_shared<int>(0);
+        auto answered = std::make_shared<bool>(false);
+        QObject::connect(timer, &QTimer::timeout,
+                         [timer, ticks, answered, objectName, fileName, folder, &openFilter, &shown] {
+            QWidget* modal = QApplication::activeModalWidget();
+            auto* d = qobject_cast<QFileDialog*>(modal);
+            if (*answered && !modal) {
+                timer->stop();
+                return;
+            }
+            // Never hang the suite: after 10 s, whatever modal window stands in the way is closed (the
+            // test's expectations then fail and say so).
+            if (++*ticks > 500) {
+                ADD_FAILURE() << "the " << objectName.toStdString() << " was not answered within 10 s";
+                if (modal)
+                    modal->close();
+                timer->stop();
+                return;
+            }
+            if (auto* box = qobject_cast<QMessageBox*>(modal)) { // e.g. "replace the file?": yes
+                if (auto* yes = box->button(QMessageBox::Yes))
+                    yes->click();
+                else
+                    box->accept();
+                return;
+            }
+            if (!d || d->objectName() != objectName || *answered)
+                return;
+            *answered = true;
             openFilter = d->selectedNameFilter();
             // "Photoflight missions (*.json)": the patterns in the brackets, as the dialog applies them.
             const QString patterns = openFilter.section(QLatin1Char('('), 1).section(QLatin1Char(')'), 0, 0);
