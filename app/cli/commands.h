@@ -21,6 +21,7 @@ int runPlan(const std::vector<std::string>& args);
 int runEval(const std::vector<std::string>& args);
 int runCatalog(const std::vector<std::string>& args);
 int runConvert(const std::vector<std::string>& args);
+int runMosaic(const std::vector<std::string>& args);
 
 extern const char* const kValidateUsage;
 extern const char* const kGridUsage;
@@ -28,5 +29,6 @@ extern const char* const kPlanUsage;
 extern const char* const kEvalUsage;
 extern const char* const kCatalogUsage;
 extern const char* const kConvertUsage;
+extern const char* const kMosaicUsage;
 
 } // namespace pf::cli

@@ -20,6 +20,7 @@ const Command kCommands[] = {
     {"catalog", "list the cameras and aircraft of the catalog", pf::cli::kCatalogUsage, pf::cli::runCatalog},
     {"convert", "convert a waypoint file between formats (by file extension)", pf::cli::kConvertUsage,
      pf::cli::runConvert},
+    {"mosaic", "stitch the photos of a flight into a georeferenced GeoTIFF", pf::cli::kMosaicUsage, pf::cli::runMosaic},
 };
 
 void printHelp(std::ostream& os) {
