@@ -45,7 +45,7 @@ const char* const kMosaicUsage =
     "  --takeoff-alt M         take-off altitude above sea level, for photos that give only a GPS\n"
     "                          altitude (with --plan it is estimated from the planned altitudes)\n"
     "  --match-tolerance M     a photo further than this from every planned point is reported\n"
-    "                          (default: a quarter of the footprint's short side, at least 5 m)\n"
+    "                          (default: 40 % of the planned photo spacing, at least 3 m)\n"
     "  --max-view-angle DEG    ground seen further than this from the vertical is not used (60)\n"
     "  --dem FILE              terrain model: not supported yet (the mosaic uses flat ground)\n"
     "  --vectors FILE.gpkg     footprints, seams, gaps, camera positions and missing photos (default:\n"

@@ -10,8 +10,8 @@ using Vec3 = Eigen::Vector3d;
 
 // Where the camera was and where it looked. Angles follow the gimbal convention of DJI's XMP (and
 // of most drone cameras): yaw clockwise from grid north is where the top of the image points, pitch
-// -90 looks straight down (0 at the horizon), roll turns the view about the forward axis (positive:
-// the image's right side goes down).
+// -90 looks straight down (0 at the horizon), roll turns the camera about the aircraft's forward
+// axis (positive: its right side goes down, as a right bank, so a camera looking down sees to the left).
 struct CameraPose {
     Vec3 position{0, 0, 0}; // grid metres; z in the vertical datum of the ground model
     double yawDeg = 0.0;

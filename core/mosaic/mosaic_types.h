@@ -22,7 +22,7 @@ struct MosaicOptions {
     std::string cameraName;                // force this catalog camera for every photo
     double gsdM = 0.0;                     // output ground sample distance; 0: the photos' median
     double featherM = 0.0;                 // blend width across seams, ground metres; 0: hard seams
-    double matchToleranceM = 0.0;          // photo to planned point; 0: a quarter of the footprint's short side (>= 5 m)
+    double matchToleranceM = 0.0;          // photo to planned point; 0: 40 % of the planned photo spacing (>= 3 m)
     std::optional<double> takeoffAltitudeM; // above sea level, for photos with only an absolute altitude
     // The ground under the photos in grid coordinates of the output; null: flat at the take-off
     // height. Heights are in the vertical datum of the photos' altitudes above take-off.

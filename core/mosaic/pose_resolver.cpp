@@ -302,14 +302,22 @@ Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas, cons
         }
     }
 
+    // Photos taken on the ground (before take-off, after landing) must not take a planned point.
+    for (auto& w : work)
+        if (!w.excluded && w.meta->relativeAltitudeM && *w.meta->relativeAltitudeM < 2.0)
+            report(PhotoFinding::Kind::NoAltitude, w, true,
+                   fmt("%.1f m", *w.meta->relativeAltitudeM) + " above take-off (XMP relative altitude): taken on the ground");
+
     // Matching to the plan's photo points.
     double tolerance = options.matchToleranceM;
     if (havePlan && !(tolerance > 0)) {
-        double along = 1e300;
-        for (const auto& p : out.planned)
-            if (p.footprintAlongM > 0)
-                along = std::min(along, p.footprintAlongM);
-        tolerance = std::max(5.0, along < 1e299 ? 0.25 * along : 5.0);
+        // Less than half the spacing between consecutive planned photos, so that a photo can only
+        // be near one of them: 40 % of the median step (the along-track spacing), at least 3 m.
+        std::vector<double> steps;
+        for (std::size_t j = 1; j < plannedLocal.size(); ++j)
+            if (out.planned[j].aircraft == out.planned[j - 1].aircraft)
+                steps.push_back((plannedLocal[j] - plannedLocal[j - 1]).norm());
+        tolerance = std::max(3.0, steps.empty() ? 10.0 : 0.4 * median(steps));
     }
     std::vector<int> takenBy(out.planned.size(), -1);
     if (havePlan) {

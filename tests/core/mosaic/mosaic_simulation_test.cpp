@@ -3,6 +3,7 @@
 #include "tests/core/mosaic/mosaic_test_util.h"
 
 #include "core/mosaic/camera_model.h"
+#include "core/mosaic/utm_projection.h"
 
 #include <gdal_priv.h>
 #include <ogrsf_frmts.h>
@@ -23,6 +24,19 @@ using test::demoFlight;
 using test::scratchDir;
 
 constexpr double kAltitude = 100.0; // 480 x 360 photos: 25 cm per pixel, as fine as the demo map
+
+// PF_MOSAIC_TEST_KEEP=DIR keeps a copy of each mosaic and its vectors (the README's pictures are
+// made from them).
+void keepCopy(const std::string& mosaic, const std::string& name) {
+    const char* keep = std::getenv("PF_MOSAIC_TEST_KEEP");
+    if (!keep)
+        return;
+    std::filesystem::create_directories(keep);
+    for (const char* ext : {".tif", ".gpkg"})
+        std::filesystem::copy_file(std::filesystem::path(mosaic).replace_extension(ext),
+                                   std::filesystem::path(keep) / (name + ext),
+                                   std::filesystem::copy_options::overwrite_existing);
+}
 
 struct Built {
     std::vector<testsim::SimulatedPhoto> photos;
@@ -48,22 +62,8 @@ Built buildSimulated(const test::DemoFlight& f, const testsim::SimOptions& sim, 
     if (!r)
         return b;
     b.report = *r;
-    // PF_MOSAIC_TEST_KEEP=DIR keeps a copy of each mosaic (the README's pictures are made from them).
-    if (const char* keep = std::getenv("PF_MOSAIC_TEST_KEEP")) {
-        std::filesystem::create_directories(keep);
-        std::filesystem::copy_file(b.out, std::filesystem::path(keep) / (name + ".tif"),
-                                   std::filesystem::copy_options::overwrite_existing);
-        std::filesystem::copy_file(b.report.vectorPath, std::filesystem::path(keep) / (name + ".gpkg"),
-                                   std::filesystem::copy_options::overwrite_existing);
-    }
-    // PF_MOSAIC_TEST_KEEP=DIR keeps a copy of each mosaic (the README's pictures are made from them).
-    if (const char* keep = std::getenv("PF_MOSAIC_TEST_KEEP")) {
-        std::filesystem::create_directories(keep);
-        std::filesystem::copy_file(b.out, std::filesystem::path(keep) / (name + ".tif"),
-                                   std::filesystem::copy_options::overwrite_existing);
-        std::filesystem::copy_file(b.report.vectorPath, std::filesystem::path(keep) / (name + ".gpkg"),
-                                   std::filesystem::copy_options::overwrite_existing);
-    }
+    keepCopy(b.out, name);
+    keepCopy(b.out, name);
     auto cmp = testsim::compareWithMap(b.out, testsim::demoMapPath(), f.planned.area);
     EXPECT_TRUE(cmp.ok());
     if (cmp)
@@ -210,6 +210,78 @@ TEST(MosaicSimulation, ExactPosesReproduceTheMapAndPoseNoiseGrowsTheErrorAsExpec
     EXPECT_GE(b.cmp.coveredShare, 0.98);
     // Recorded within the tolerance of their planned points (2 m noise), all photos still match.
     EXPECT_TRUE(b.report.missing.empty());
+}
+
+// Heights on a lattice in the mosaic's grid, bilinear in between: how a terrain model plugs in.
+class LatticeGround : public GroundModel {
+public:
+    LatticeGround(double x0, double y0, double step, int nx, int ny, std::vector<double> h)
+        : m_x0(x0), m_y0(y0), m_step(step), m_nx(nx), m_ny(ny), m_h(std::move(h)) {}
+    double heightAt(double x, double y) const override {
+        const double u = std::clamp((x - m_x0) / m_step, 0.0, m_nx - 1.001);
+        const double v = std::clamp((y - m_y0) / m_step, 0.0, m_ny - 1.001);
+        const int i = static_cast<int>(u), j = static_cast<int>(v);
+        const double fu = u - i, fv = v - j;
+        auto at = [&](int a, int b) { return m_h[static_cast<std::size_t>(b) * m_nx + a]; };
+        return (at(i, j) * (1 - fu) + at(i + 1, j) * fu) * (1 - fv) + (at(i, j + 1) * (1 - fu) + at(i + 1, j + 1) * fu) * fv;
+    }
+
+private:
+    double m_x0, m_y0, m_step;
+    int m_nx, m_ny;
+    std::vector<double> m_h;
+};
+
+TEST(MosaicSimulation, TerrainModelPutsPhotosOfASlopeInPlace) {
+    const auto f = demoFlight(kAltitude);
+    PF_REQUIRE_DEMO_MAP(f);
+    // The site on a 15 % slope rising to the north with a 30 m hill in the middle: over flat ground
+    // the photos' edges land metres from where they belong.
+    auto slope = [](double x, double y) { return 0.15 * y + 30.0 * std::exp(-(x * x + y * y) / (2 * 60.0 * 60.0)); };
+    testsim::SimOptions sim;
+    sim.camera.widthPx = 240;
+    sim.camera.heightPx = 180;
+    sim.terrain = slope;
+    const std::string dir = scratchDir("terrain");
+    auto photos = testsim::simulateFlight(*f.ground, f.planned.photos, sim, dir + "/photos");
+    ASSERT_TRUE(photos.ok());
+
+    // The same slope as a ground model in the mosaic's UTM grid.
+    geo::Box box = geo::bounds(f.ground->frame().toLocal(f.planned.area.front()));
+    const geo::LonLat site = f.ground->frame().toGeo(0.5 * (box.min + box.max));
+    auto utm = UtmProjection::forSite(site);
+    ASSERT_TRUE(utm.ok());
+    const geo::Vec2 c = utm->toGrid(site);
+    const double step = 5.0;
+    const int nx = 161, ny = 141;
+    std::vector<double> h;
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            const geo::Vec2 local = f.ground->frame().toLocal(
+                utm->toGeo({c.x() - 400.0 + i * step, c.y() - 350.0 + j * step}));
+            h.push_back(slope(local.x(), local.y()));
+        }
+    auto ground = std::make_shared<LatticeGround>(c.x() - 400.0, c.y() - 350.0, step, nx, ny, h);
+
+    auto build = [&](std::shared_ptr<const GroundModel> g, const std::string& name) {
+        MosaicOptions o = defaultOptions(test::paths(*photos), dir + "/" + name + ".tif");
+        o.plan = f.planned;
+        o.ground = std::move(g);
+        Progress progress;
+        auto r = buildMosaic(o, progress);
+        EXPECT_TRUE(r.ok()) << (r ? "" : r.error().message);
+        keepCopy(dir + "/" + name + ".tif", "slope_" + name);
+        auto cmp = testsim::compareWithMap(dir + "/" + name + ".tif", testsim::demoMapPath(), f.planned.area);
+        EXPECT_TRUE(cmp.ok());
+        return cmp ? *cmp : testsim::Comparison{};
+    };
+    const auto onTerrain = build(ground, "terrain");
+    const auto onFlat = build(nullptr, "flat");
+    std::cout << "15 % slope and a 30 m hill: MAE " << onTerrain.meanAbsError << " levels with the terrain model, " << onFlat.meanAbsError
+              << " on flat ground\n";
+    EXPECT_LT(onTerrain.meanAbsError, 0.03 * 255.0);
+    EXPECT_GE(onTerrain.coveredShare, 0.99);
+    EXPECT_GT(onFlat.meanAbsError, 1.5 * onTerrain.meanAbsError);
 }
 
 } // namespace
