@@ -134,9 +134,27 @@ void printReport(const mosaic::MosaicReport& r) {
         return !f.excluded && (f.kind == Kind::FarFromPlan || f.kind == Kind::Duplicate);
     });
     if (!r.missing.empty()) {
-        std::cout << "Missing: " << r.missing.size() << " planned photo point(s) without a photo:\n";
-        for (const auto& m : r.missing)
-            std::cout << "  " << m.label << " at " << lonLat(m.position) << '\n';
+        std::cout << "Missing: " << r.missing.size() << " planned photo point(s) without a photo";
+        if (r.missing.size() <= 10) {
+            std::cout << ":\n";
+            for (const auto& m : r.missing)
+                std::cout << "  " << m.label << " at " << lonLat(m.position) << '\n';
+        } else {
+            // Runs of consecutive points ("Falcon 8 #13-#40"); every point is in the vectors.
+            std::cout << " (positions in the vectors' missing_photos layer):\n ";
+            std::size_t i = 0;
+            while (i < r.missing.size()) {
+                std::size_t j = i;
+                while (j + 1 < r.missing.size() && r.missing[j + 1].aircraft == r.missing[i].aircraft &&
+                       r.missing[j + 1].seq == r.missing[j].seq + 1)
+                    ++j;
+                std::cout << (i ? ", " : " ") << r.missing[i].label;
+                if (j > i)
+                    std::cout << "-#" << r.missing[j].seq;
+                i = j + 1;
+            }
+            std::cout << '\n';
+        }
     }
     if (r.areaM2 > 0) {
         std::cout << "Coverage of the planned area: " << fmt("%.2f", r.coveredRatio * 100) << " % of "

@@ -59,6 +59,8 @@ struct PhotoFinding {
 // A planned photo point no photo was matched to.
 struct MissingPhoto {
     std::string label; // "Falcon 8 #12"
+    std::string aircraft;
+    int seq = 0;
     geo::LonLat position;
 };
 

@@ -584,7 +584,7 @@ Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas, cons
             if (matchedPerAircraft[p.aircraft] == 0)
                 continue;
             if (takenBy[j] < 0 || work[takenBy[j]].excluded)
-                out.missing.push_back({p.label(), p.position});
+                out.missing.push_back({p.label(), p.aircraft, p.seq, p.position});
         }
         for (const auto& [name, count] : plannedPerAircraft)
             if (matchedPerAircraft[name] == 0)
