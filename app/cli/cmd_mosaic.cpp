@@ -5,6 +5,7 @@
 
 #include "core/io/catalog.h"
 #include "core/mosaic/mosaic_builder.h"
+#include "core/mosaic/mosaic_report.h"
 
 #include <algorithm>
 #include <cctype>
@@ -66,19 +67,6 @@ bool isPhotoFile(const std::filesystem::path& p) {
     return ext == ".jpg" || ext == ".jpeg";
 }
 
-std::string fmt(const char* format, double v) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, format, v);
-    return buf;
-}
-
-std::string lonLat(const geo::LonLat& p) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "%.6f %c %.6f %c", std::abs(p.lat), p.lat >= 0 ? 'N' : 'S', std::abs(p.lon),
-                  p.lon >= 0 ? 'E' : 'W');
-    return buf;
-}
-
 // Progress on stderr: a line per stage, and every 10 % within it.
 class ProgressPrinter {
 public:
@@ -99,84 +87,6 @@ private:
     std::string m_stage;
     int m_tenth = -1;
 };
-
-void printReport(const mosaic::MosaicReport& r) {
-    using Kind = mosaic::PhotoFinding::Kind;
-    int leftOut = 0, unused = 0;
-    for (const auto& f : r.findings) {
-        if (f.excluded)
-            ++leftOut;
-        else if (f.kind == Kind::Unused)
-            ++unused;
-    }
-    std::cout << "mosaic: " << r.photosUsed << " of " << r.photosGiven << " photos used";
-    if (leftOut)
-        std::cout << ", " << leftOut << " left out";
-    if (unused)
-        std::cout << ", " << unused << " not needed";
-    std::cout << "\n  output:  " << r.outputPath << " (" << r.crsName << ", " << fmt("%.1f", r.gsdM * 100)
-              << " cm/px, " << r.widthPx << " x " << r.heightPx << " px)\n"
-              << "  vectors: " << r.vectorPath << " (footprints, seams, gaps, camera_positions, missing_photos)\n";
-
-    auto list = [&](const char* title, auto pick) {
-        bool any = false;
-        for (const auto& f : r.findings) {
-            if (!pick(f))
-                continue;
-            if (!any)
-                std::cout << title << '\n';
-            any = true;
-            std::cout << "  " << (f.file.empty() ? std::string("(set)") : f.file) << ": " << f.message << '\n';
-        }
-    };
-    list("Left out:", [](const mosaic::PhotoFinding& f) { return f.excluded; });
-    list("Not matching the plan:", [](const mosaic::PhotoFinding& f) {
-        return !f.excluded && (f.kind == Kind::FarFromPlan || f.kind == Kind::Duplicate);
-    });
-    if (!r.missing.empty()) {
-        std::cout << "Missing: " << r.missing.size() << " planned photo point(s) without a photo";
-        if (r.missing.size() <= 10) {
-            std::cout << ":\n";
-            for (const auto& m : r.missing)
-                std::cout << "  " << m.label << " at " << lonLat(m.position) << '\n';
-        } else {
-            // Runs of consecutive points ("Falcon 8 #13-#40"); every point is in the vectors.
-            std::cout << " (positions in the vectors' missing_photos layer):\n ";
-            std::size_t i = 0;
-            while (i < r.missing.size()) {
-                std::size_t j = i;
-                while (j + 1 < r.missing.size() && r.missing[j + 1].aircraft == r.missing[i].aircraft &&
-                       r.missing[j + 1].seq == r.missing[j].seq + 1)
-                    ++j;
-                std::cout << (i ? ", " : " ") << r.missing[i].label;
-                if (j > i)
-                    std::cout << "-#" << r.missing[j].seq;
-                i = j + 1;
-            }
-            std::cout << '\n';
-        }
-    }
-    if (r.areaM2 > 0) {
-        std::cout << "Coverage of the planned area: " << fmt("%.2f", r.coveredRatio * 100) << " % of "
-                  << fmt("%.0f", r.areaM2) << " m2";
-        if (r.gaps.empty()) {
-            std::cout << ", no gap\n";
-        } else {
-            std::cout << "; " << r.gaps.size() << " gap(s), " << fmt("%.1f", r.gapAreaM2) << " m2 in total:\n";
-            for (std::size_t i = 0; i < r.gaps.size() && i < 20; ++i)
-                std::cout << "  gap " << i + 1 << ": " << fmt("%.1f", r.gaps[i].areaM2) << " m2 around "
-                          << lonLat(r.gaps[i].centre) << '\n';
-            if (r.gaps.size() > 20)
-                std::cout << "  ... (every gap is in the vectors' gaps layer)\n";
-        }
-    }
-    if (!r.notes.empty()) {
-        std::cout << "Notes:\n";
-        for (const auto& n : r.notes)
-            std::cout << "  " << n << '\n';
-    }
-    std::cout << "done in " << fmt("%.1f", r.seconds) << " s\n";
-}
 
 } // namespace
 
@@ -282,7 +192,7 @@ int runMosaic(const std::vector<std::string>& argv) {
     for (const auto& f : report->findings)
         if (f.excluded)
             std::cerr << "photoflight-cli: warning: " << f.file << ": " << f.message << '\n';
-    printReport(*report);
+    std::cout << mosaic::formatReport(*report);
     return kExitOk;
 }
 
