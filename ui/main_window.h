@@ -29,6 +29,7 @@ class MapView;
 class MissionDocument;
 class MissionLayer;
 class MissionPanel;
+class MosaicController;
 class PlanController;
 class PlanLayer;
 class StatisticsPanel;
@@ -57,6 +58,7 @@ public:
     WaypointPanel* waypointPanel() const { return m_waypoints; }
     StatisticsPanel* statisticsPanel() const { return m_statistics; }
     QListWidget* problemsList() const { return m_problemList; }
+    MosaicController* mosaicController() const { return m_mosaic; }
     // The bar saying a new plan waits because routes were edited by hand.
     bool planNoticeVisible() const;
     AbstractTool* tool(ToolId id) const;
@@ -146,6 +148,7 @@ private:
     QAction* m_autoAct = nullptr;
     QWidget* m_notice = nullptr;
     QLabel* m_noticeText = nullptr;
+    MosaicController* m_mosaic = nullptr;
 };
 
 } // namespace pf::ui

@@ -17,6 +17,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <map>
 #include <mutex>
@@ -183,6 +184,16 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
     report.outputPath = options.outputPath;
     report.vectorPath = vectorPath;
     report.photosGiven = static_cast<int>(options.photos.size());
+    auto lap = std::chrono::steady_clock::now();
+    std::clock_t cpuLap = std::clock();
+    auto timeStage = [&](const char* name) {
+        const auto now = std::chrono::steady_clock::now();
+        const std::clock_t cpu = std::clock();
+        report.stages.push_back({name, std::chrono::duration<double>(now - lap).count(),
+                                 static_cast<double>(cpu - cpuLap) / CLOCKS_PER_SEC});
+        lap = now;
+        cpuLap = cpu;
+    };
 
     // 1. Read every photo's metadata and make sure its image data decodes.
     Stage reading{progress, 0.0, 0.08, "reading photos"};
@@ -231,6 +242,8 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
             msg = msg.substr(name.size() + 2);
         report.findings.push_back({name, PhotoFinding::Kind::Unreadable, true, msg});
     }
+
+    timeStage("reading");
 
     // 2. Poses and cameras.
     auto poses = resolvePoses(readable, options);
@@ -373,6 +386,7 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
                                   (outDir / (stem + ".labels.tmp.tif")).string(), seamStage);
     if (!seams)
         return seams.error().code == ErrorCode::Cancelled ? cancelled() : seams.error();
+    timeStage("seams");
     const auto& windows = (*seams)->windows();
     for (int i = 0; i < n; ++i)
         if (active[i] && windows[i].empty()) {
@@ -461,6 +475,8 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
     if (progress.cancelled())
         return cancelled();
 
+    timeStage("warping");
+
     // 7. The GeoTIFF.
     int used = 0;
     for (int i = 0; i < n; ++i)
@@ -480,6 +496,7 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
     if (Status st = canvas.writeGeoTiff(options.outputPath, options.jpegCompression, metadata, writeStage); !st)
         return st.error().code == ErrorCode::Cancelled ? cancelled() : st.error();
     canvasR->reset();
+    timeStage("writing");
 
     // 8. Seams, coverage of the area, gaps, and the vector layers.
     Stage vectorStage{progress, 0.95, 0.05, "writing footprints and seams"};
@@ -560,6 +577,7 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
     if (Status st = writeMosaicVectors(vectorPath, utm.wkt(), vphotos, gapPolys, missing); !st)
         return st.error();
     vectorStage(1.0);
+    timeStage("vectors");
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return report;
 }

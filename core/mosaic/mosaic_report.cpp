@@ -99,7 +99,11 @@ std::string formatReport(const MosaicReport& r) {
         for (const auto& n : r.notes)
             out << "  " << n << '\n';
     }
-    out << "done in " << fmt("%.1f", r.seconds) << " s\n";
+    out << "done in " << fmt("%.1f", r.seconds) << " s";
+    for (std::size_t i = 0; i < r.stages.size(); ++i)
+        out << (i ? ", " : " (") << r.stages[i].name << ' ' << fmt("%.1f", r.stages[i].seconds)
+            << (i + 1 == r.stages.size() ? ")" : "");
+    out << '\n';
     return out.str();
 }
 

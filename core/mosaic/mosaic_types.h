@@ -109,6 +109,12 @@ struct MosaicReport {
     double gapAreaM2 = 0.0;
     std::vector<GapArea> gaps;
     double seconds = 0.0;
+    struct StageTime {
+        std::string name;  // "reading", "seams", "warping", "writing", "vectors"
+        double seconds = 0.0;
+        double cpuSeconds = 0.0; // all threads of the process
+    };
+    std::vector<StageTime> stages;
 };
 
 } // namespace pf::mosaic

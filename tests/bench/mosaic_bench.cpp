@@ -120,6 +120,10 @@ void runMosaic(benchmark::State& state, const BenchSet& set, const std::string& 
     state.counters["output_MP"] = report.widthPx * static_cast<double>(report.heightPx) / 1e6;
     state.counters["gsd_cm"] = report.gsdM * 100.0;
     state.counters["peak_RSS_MB"] = ru.ru_maxrss / 1024.0;
+    for (const auto& st : report.stages) {
+        state.counters[st.name + "_s"] = st.seconds;
+        state.counters[st.name + "_cpu_s"] = st.cpuSeconds;
+    }
 }
 
 void BM_MosaicSmall(benchmark::State& state) {
