@@ -13,6 +13,7 @@
 #include "core/mosaic/utm_projection.h"
 
 #include <algorithm>
+#include <cctype>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -126,6 +127,12 @@ geo::MultiPolygon simplified(const geo::MultiPolygon& mp, double tolerance) {
     auto ogr = geo::detail::toOgr(mp);
     geo::detail::OgrGeomPtr s(ogr->SimplifyPreserveTopology(tolerance));
     return s ? geo::detail::fromOgr(s.get()) : mp;
+}
+
+bool sameName(const std::string& a, const std::string& b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+           });
 }
 
 std::string summarise(const std::vector<PhotoFinding>& findings) {
@@ -360,9 +367,14 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
     report.southWest = utm.toGeo({grid.originX, grid.originY - grid.height * grid.gsd});
     report.northEast = utm.toGeo({grid.originX + grid.width * grid.gsd, grid.originY});
 
+    // The area coverage is measured against: the plan's, or one aircraft's part of it.
     geo::MultiPolygon areaGrid;
     if (options.plan)
-        for (const auto& poly : options.plan->area) {
+        for (std::size_t ai = 0; ai < options.plan->area.size(); ++ai) {
+            const auto& poly = options.plan->area[ai];
+            if (!options.planAircraft.empty() && ai < options.plan->areaAircraft.size() &&
+                !sameName(options.plan->areaAircraft[ai], options.planAircraft))
+                continue;
             geo::Polygon g;
             for (const auto& p : poly.outer)
                 g.outer.push_back(utm.toGrid(p));
@@ -374,6 +386,8 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
             }
             areaGrid.push_back(g);
         }
+    if (options.plan && !options.planAircraft.empty() && !areaGrid.empty())
+        report.notes.push_back("coverage is measured over the part of the area planned for " + options.planAircraft);
 
     // 5. Seams: which photo sees each pixel most from above.
     const std::string stem = "." + outPath.stem().string();
@@ -517,9 +531,10 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
         std::sort(gapPolys.begin(), gapPolys.end(),
                   [](const geo::Polygon& a, const geo::Polygon& b) { return geo::area(a) > geo::area(b); });
         report.areaM2 = geo::area(areaGrid) / (k * k);
-        report.coveredRatio = (*seams)->areaPixels() > 0
-                                  ? static_cast<double>((*seams)->coveredAreaPixels()) / (*seams)->areaPixels()
-                                  : 0.0;
+        // Against the whole area: parts of it may lie outside the mosaic's grid (no photo there).
+        const double areaPixels = geo::area(areaGrid) / (grid.gsd * grid.gsd);
+        report.coveredRatio =
+            areaPixels > 0 ? std::min(1.0, static_cast<double>((*seams)->coveredAreaPixels()) / areaPixels) : 0.0;
         for (const auto& g : gapPolys) {
             GapArea gap;
             gap.shape.push_back(polygonToGeo(g, utm));

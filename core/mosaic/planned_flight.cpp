@@ -81,12 +81,14 @@ Result<PlannedFlight> readPlannedFlight(const std::string& pathIn) {
                                                             ": photo position or altitude out of range");
             flight.photos.push_back(p);
         } else if (k == "subarea" && g) {
+            const std::string owner = aircraft >= 0 ? f->GetFieldAsString(aircraft) : "";
             for (const auto& poly : geo::detail::fromOgr(g)) {
                 geo::GeoPolygon gp;
                 gp.outer = toGeoRing(poly.outer);
                 for (const auto& h : poly.holes)
                     gp.holes.push_back(toGeoRing(h));
                 flight.area.push_back(gp);
+                flight.areaAircraft.push_back(owner);
             }
         }
     }
@@ -103,6 +105,14 @@ Result<PlannedFlight> readPlannedFlight(const std::string& pathIn) {
         return ia != ib ? ia < ib : a.seq < b.seq;
     });
     return flight;
+}
+
+std::vector<std::string> PlannedFlight::aircraft() const {
+    std::vector<std::string> out;
+    for (const auto& p : photos)
+        if (std::find(out.begin(), out.end(), p.aircraft) == out.end())
+            out.push_back(p.aircraft);
+    return out;
 }
 
 PlannedFlight plannedFlightFromPlan(const mission::MissionPlan& plan) {
@@ -124,8 +134,10 @@ PlannedFlight plannedFlightFromPlan(const mission::MissionPlan& plan) {
             flight.photos.push_back(p);
         }
         if (plan.frame)
-            for (const auto& poly : a.subarea)
+            for (const auto& poly : a.subarea) {
                 flight.area.push_back(plan.frame->toGeo(poly));
+                flight.areaAircraft.push_back(a.aircraft);
+            }
     }
     return flight;
 }

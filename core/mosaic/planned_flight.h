@@ -27,6 +27,9 @@ struct PlannedFlight {
     std::string source;              // the file read, for messages ("plan.geojson", "the current plan")
     std::vector<PlannedPhoto> photos; // per aircraft in flight order, aircraft after aircraft
     std::vector<geo::GeoPolygon> area; // the area to photograph (the aircraft's subareas), WGS84
+    std::vector<std::string> areaAircraft; // for each polygon of `area`, the aircraft it is assigned to
+    // The aircraft of the plan, in order.
+    std::vector<std::string> aircraft() const;
 };
 
 // Reads `path`: a plan.geojson file or a directory holding one. Errors name the file and what is

@@ -68,7 +68,7 @@ struct TileResult {
     PixelWindow window;
     std::vector<std::uint16_t> labels; // interleaved best, second
     std::map<int, PixelWindow> used;   // photo -> pixels of this tile it colours
-    long long covered = 0, area = 0, coveredArea = 0;
+    long long covered = 0, coveredArea = 0;
 };
 
 } // namespace
@@ -127,7 +127,7 @@ Result<std::unique_ptr<SeamMap>> SeamMap::compute(const std::vector<PhotoGeometr
         out->window = tw;
         out->labels.assign(static_cast<std::size_t>(tw.w) * tw.h * 2, 0);
         out->used.clear();
-        out->covered = out->area = out->coveredArea = 0;
+        out->covered = out->coveredArea = 0;
         const geo::Box box{{grid.originX + tw.x0 * grid.gsd, grid.originY - (tw.y0 + tw.h) * grid.gsd},
                            {grid.originX + (tw.x0 + tw.w) * grid.gsd, grid.originY - tw.y0 * grid.gsd}};
         const geo::Vec2 mid = 0.5 * (box.min + box.max);
@@ -203,11 +203,8 @@ Result<std::unique_ptr<SeamMap>> SeamMap::compute(const std::vector<PhotoGeometr
                         }
                     }
                 }
-                if (!areaRows.empty() && inArea[c]) {
-                    ++out->area;
-                    if (kb >= 0)
-                        ++out->coveredArea;
-                }
+                if (kb >= 0 && !areaRows.empty() && inArea[c])
+                    ++out->coveredArea;
             }
         }
         for (std::size_t k = 0; k < cand.size(); ++k)
@@ -237,7 +234,6 @@ Result<std::unique_ptr<SeamMap>> SeamMap::compute(const std::vector<PhotoGeometr
             for (const auto& [photo, w] : tile.used)
                 map->m_windows[photo] = map->m_windows[photo].united(w);
             map->m_covered += tile.covered;
-            map->m_areaPixels += tile.area;
             map->m_coveredArea += tile.coveredArea;
             ++done;
             if (progress && !progress(static_cast<double>(done) / tiles))

@@ -38,7 +38,7 @@ public:
     Result<std::vector<geo::MultiPolygon>> seamPolygons(int photoCount) const;
 
     long long coveredPixels() const { return m_covered; }
-    long long areaPixels() const { return m_areaPixels; }
+    // Pixels of `area` a photo covers.
     long long coveredAreaPixels() const { return m_coveredArea; }
     const OutputGrid& grid() const { return m_grid; }
 
@@ -50,7 +50,6 @@ private:
     std::vector<PixelWindow> m_windows;
     OutputGrid m_grid;
     long long m_covered = 0;
-    long long m_areaPixels = 0;
     long long m_coveredArea = 0;
 };
 

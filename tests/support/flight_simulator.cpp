@@ -294,7 +294,7 @@ Result<std::vector<SimulatedPhoto>> simulateFlight(const GroundImage& ground,
     std::mt19937 rng(o.seed);
     std::normal_distribution<double> pos(0.0, 1.0), ang(0.0, 1.0);
     std::vector<SimulatedPhoto> out;
-    int i = 0;
+    int i = o.firstIndex - 1;
     for (const auto& p : planned) {
         SimulatedPhoto s;
         s.truth.position = p.position;
@@ -311,8 +311,8 @@ Result<std::vector<SimulatedPhoto>> simulateFlight(const GroundImage& ground,
             s.recorded.rollDeg += o.angleNoiseDeg * ang(rng);
         }
         char name[32];
-        std::snprintf(name, sizeof name, "IMG_%04d.JPG", ++i);
-        s.path = (std::filesystem::path(dir) / name).string();
+        std::snprintf(name, sizeof name, "%04d.JPG", ++i);
+        s.path = (std::filesystem::path(dir) / (o.namePrefix + name)).string();
         if (Status st = writePhoto(ground, s.truth, s.recorded, o, i, s.path); !st)
             return st.error();
         out.push_back(s);
@@ -351,6 +351,7 @@ Result<Comparison> compareWithMap(const std::string& mosaicPath, const std::stri
 
     // The area as a raster mask on the same grid.
     std::vector<std::uint8_t> inArea(static_cast<std::size_t>(w) * h, area.empty() ? 1 : 0);
+    double areaPixels = 0.0; // the whole area, also where it lies beyond the mosaic
     if (!area.empty()) {
         std::unique_ptr<void, GdalDatasetCloser> maskDs(GDALCreate(GDALGetDriverByName("MEM"), "", w, h, 1, GDT_Byte, nullptr));
         GDALSetGeoTransform(maskDs.get(), gt);
@@ -374,6 +375,7 @@ Result<Comparison> compareWithMap(const std::string& mosaicPath, const std::stri
             for (const auto& hole : poly.holes)
                 p->addRingDirectly(ring(hole));
             p->transform(ct.get());
+            areaPixels += p->get_Area() / std::abs(gt[1] * gt[5]);
             geoms.push_back(OGRGeometry::ToHandle(p));
         }
         int band = 1;
@@ -418,7 +420,9 @@ Result<Comparison> compareWithMap(const std::string& mosaicPath, const std::stri
     }
     cmp.comparedPixels = coveredPx;
     cmp.meanAbsError = coveredPx ? sum / (3.0 * coveredPx) : 0.0;
-    cmp.coveredShare = areaPx ? static_cast<double>(coveredPx) / areaPx : 0.0;
+    if (area.empty())
+        areaPixels = static_cast<double>(areaPx);
+    cmp.coveredShare = areaPixels > 0 ? std::min(1.0, coveredPx / areaPixels) : 0.0;
     return cmp;
 }
 

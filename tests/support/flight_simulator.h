@@ -70,6 +70,8 @@ struct SimOptions {
     double grainCellM = 0.03;
     Terrain terrain;               // null: flat ground at the take-off height
     int threads = 1;
+    std::string namePrefix = "IMG_"; // photos are named <prefix>0001.JPG, ...
+    int firstIndex = 1;              // number of the first photo (also its EXIF time: 2 s apart)
 };
 
 // Renders the photo a camera at `truth` takes and writes it to `path` with EXIF/XMP saying `recorded`.
@@ -82,7 +84,7 @@ struct SimulatedPhoto {
     SimPose recorded;
 };
 
-// One photo per planned point, named IMG_0001.JPG, ... in `dir`: flown exactly as planned, recorded
+// One photo per planned point, named IMG_0001.JPG, ... (see the options) in `dir`: flown exactly as planned, recorded
 // with the options' noise (seeded, so every run writes the same photos).
 Result<std::vector<SimulatedPhoto>> simulateFlight(const GroundImage& ground,
                                                    const std::vector<mosaic::PlannedPhoto>& planned,

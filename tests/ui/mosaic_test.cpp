@@ -12,6 +12,7 @@
 
 #include <QCheckBox>
 #include <QDir>
+#include <QFileInfo>
 #include <QGraphicsScene>
 #include <QMenuBar>
 #include <QProgressBar>
@@ -89,7 +90,7 @@ TEST(MosaicGui, BuildMosaicFromTheMenuShowsItOverTheMissionWithGaps) {
     EXPECT_TRUE(d->cancelButton()->isEnabled());
     ASSERT_TRUE(d->waitForFinished(120000));
     ASSERT_TRUE(d->lastReport().has_value()) << d->statusText().toStdString() << d->reportText().toStdString();
-    const auto& r = *d->lastReport();
+    const mosaic::MosaicReport r = *d->lastReport(); // a copy: the next build replaces it
     EXPECT_EQ(r.photosUsed, 40);
     EXPECT_EQ(d->progressBar()->value(), 1000);
     EXPECT_TRUE(d->statusText().startsWith(QStringLiteral("Mosaic saved: "))) << d->statusText().toStdString();
@@ -126,6 +127,22 @@ TEST(MosaicGui, BuildMosaicFromTheMenuShowsItOverTheMissionWithGaps) {
     EXPECT_FALSE(layer->gapsVisible());
     panel->seamsBox()->setChecked(true);
     EXPECT_TRUE(layer->seamsVisible());
+
+    // The photos are the Falcon's: matched to its points only, coverage over its part of the area.
+    d->setAircraft(QStringLiteral("Falcon 8"));
+    d->setOutputPath(tmp.filePath(QStringLiteral("falcon.tif")));
+    ASSERT_TRUE(d->start());
+    ASSERT_TRUE(d->waitForFinished(120000));
+    ASSERT_TRUE(d->lastReport().has_value()) << d->statusText().toStdString();
+    const auto& falcon = *d->lastReport();
+    EXPECT_LT(falcon.areaM2, 0.8 * r.areaM2);
+    EXPECT_GT(falcon.coveredRatio, r.coveredRatio) << falcon.areaM2 << " " << r.areaM2 << " " << falcon.gapAreaM2 << " " << r.gapAreaM2;
+    for (const auto& m : falcon.missing)
+        EXPECT_EQ(m.aircraft, "Falcon 8");
+    EXPECT_TRUE(d->reportText().contains(QStringLiteral("measured over the part of the area planned for Falcon 8")))
+        << d->reportText().toStdString();
+    EXPECT_EQ(QFileInfo(QString::fromStdString(layer->report().outputPath)).fileName(), QStringLiteral("falcon.tif"));
+
     mc->removeMosaic();
     EXPECT_FALSE(layer->isShown());
     EXPECT_FALSE(layer->tiles());

@@ -80,14 +80,21 @@ MosaicDialog::MosaicDialog(const io::Catalog& catalog, std::function<std::option
     m_plan->addItem(tr("A plan file (plan.geojson)…"), PlanFile);
     m_planFile = new QLineEdit;
     m_planFile->setPlaceholderText(tr("plan.geojson or the directory photoflight-cli plan --out wrote"));
-    auto* planBrowse = new QPushButton(tr("Browse…"));
+    m_planBrowse = new QPushButton(tr("Browse…"));
     auto* planRow = new QHBoxLayout;
     planRow->addWidget(m_plan);
     planRow->addWidget(m_planFile, 1);
-    planRow->addWidget(planBrowse);
+    planRow->addWidget(m_planBrowse);
+    planRow->addStretch();
     form->addRow(tr("Plan:"), planRow);
     connect(m_plan, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &MosaicDialog::onPlanChoice);
-    connect(planBrowse, &QPushButton::clicked, this, &MosaicDialog::browsePlan);
+    connect(m_planBrowse, &QPushButton::clicked, this, &MosaicDialog::browsePlan);
+    connect(m_planFile, &QLineEdit::editingFinished, this, &MosaicDialog::refreshAircraft);
+    m_aircraft = new QComboBox;
+    m_aircraft->setObjectName(QStringLiteral("aircraft"));
+    m_aircraft->setToolTip(tr("Photos of one aircraft are matched to its photo points only, and the coverage is "
+                              "measured over its part of the area."));
+    form->addRow(tr("Photos of:"), m_aircraft);
 
     m_camera = new QComboBox;
     m_camera->setObjectName(QStringLiteral("camera"));
@@ -216,11 +223,17 @@ QString MosaicDialog::outputPath() const { return m_output->text().trimmed(); }
 void MosaicDialog::useCurrentPlan() { m_plan->setCurrentIndex(m_plan->findData(CurrentPlan)); }
 void MosaicDialog::useNoPlan() { m_plan->setCurrentIndex(m_plan->findData(NoPlan)); }
 void MosaicDialog::usePlanFile(const QString& path) {
-    m_plan->setCurrentIndex(m_plan->findData(PlanFile));
     m_planFile->setText(path);
+    m_plan->setCurrentIndex(m_plan->findData(PlanFile));
+    refreshAircraft();
 }
 void MosaicDialog::setGsdCm(double cm) { m_gsd->setValue(cm); }
 void MosaicDialog::setFeatherM(double m) { m_feather->setValue(m); }
+void MosaicDialog::setAircraft(const QString& name) {
+    const int i = m_aircraft->findData(name);
+    m_aircraft->setCurrentIndex(i < 0 ? 0 : i);
+}
+
 void MosaicDialog::setCamera(const QString& name) {
     const int i = m_camera->findData(name);
     m_camera->setCurrentIndex(i < 0 ? 0 : i);
@@ -229,11 +242,48 @@ void MosaicDialog::setCamera(const QString& name) {
 void MosaicDialog::onPlanChoice() {
     const int choice = m_plan->currentData().toInt();
     m_planFile->setVisible(choice == PlanFile);
+    m_planBrowse->setVisible(choice == PlanFile);
     if (choice == CurrentPlan) {
         const auto plan = m_currentPlan ? m_currentPlan() : std::nullopt;
         m_plan->setItemText(1, plan ? tr("The current plan (%n photo point(s))", nullptr, int(plan->photos.size()))
                                     : tr("The current plan (none yet: plan the mission first)"));
     }
+    refreshAircraft();
+}
+
+std::optional<mosaic::PlannedFlight> MosaicDialog::chosenPlan(QString* why) const {
+    switch (m_plan->currentData().toInt()) {
+    case CurrentPlan: {
+        auto plan = m_currentPlan ? m_currentPlan() : std::nullopt;
+        if (!plan && why)
+            *why = tr("There is no current plan: plan the mission first, or choose a plan file or none.");
+        return plan;
+    }
+    case PlanFile: {
+        auto plan = mosaic::readPlannedFlight(m_planFile->text().trimmed().toStdString());
+        if (!plan) {
+            if (why)
+                *why = QString::fromStdString(plan.error().message);
+            return std::nullopt;
+        }
+        return std::move(plan).value();
+    }
+    default:
+        return std::nullopt;
+    }
+}
+
+void MosaicDialog::refreshAircraft() {
+    const QString keep = m_aircraft->currentData().toString();
+    m_aircraft->clear();
+    m_aircraft->addItem(tr("Every aircraft of the plan"), QString());
+    if (m_plan->currentData().toInt() != NoPlan && (m_plan->currentData().toInt() != PlanFile || !m_planFile->text().isEmpty())) {
+        if (const auto plan = chosenPlan(nullptr))
+            for (const auto& a : plan->aircraft())
+                m_aircraft->addItem(QString::fromStdString(a), QString::fromStdString(a));
+    }
+    setAircraft(keep);
+    m_aircraft->setEnabled(m_aircraft->count() > 1);
 }
 
 void MosaicDialog::browsePhotos() {
@@ -283,23 +333,12 @@ bool MosaicDialog::start() {
         m_output->setText(out);
     }
     o.outputPath = out.toStdString();
-    switch (m_plan->currentData().toInt()) {
-    case CurrentPlan: {
-        auto plan = m_currentPlan ? m_currentPlan() : std::nullopt;
-        if (!plan)
-            return refuse(tr("There is no current plan: plan the mission first, or choose a plan file or none."));
-        o.plan = std::move(plan);
-        break;
-    }
-    case PlanFile: {
-        auto plan = mosaic::readPlannedFlight(m_planFile->text().trimmed().toStdString());
-        if (!plan)
-            return refuse(QString::fromStdString(plan.error().message));
-        o.plan = std::move(plan).value();
-        break;
-    }
-    default:
-        break;
+    if (m_plan->currentData().toInt() != NoPlan) {
+        QString why;
+        o.plan = chosenPlan(&why);
+        if (!o.plan)
+            return refuse(why);
+        o.planAircraft = m_aircraft->currentData().toString().toStdString();
     }
     o.catalog = m_catalog.cameras;
     o.cameraName = m_camera->currentData().toString().toStdString();
@@ -391,7 +430,8 @@ void MosaicDialog::setRunning(bool on) {
     m_running = on;
     m_build->setEnabled(!on);
     m_cancel->setEnabled(on);
-    for (auto* w : std::initializer_list<QWidget*>{m_photoList, m_plan, m_planFile, m_camera, m_gsd, m_feather, m_output})
+    for (auto* w : std::initializer_list<QWidget*>{m_photoList, m_plan, m_planFile, m_planBrowse, m_aircraft, m_camera,
+                                                   m_gsd, m_feather, m_output})
         w->setEnabled(!on);
     emit runningChanged(on);
 }

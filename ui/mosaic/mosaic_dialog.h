@@ -50,6 +50,9 @@ public:
     void setGsdCm(double cm); // 0: automatic
     void setFeatherM(double m);
     void setCamera(const QString& name); // empty: from the photos' EXIF
+    // Match the photos to one aircraft's photo points (and measure coverage over its part of the
+    // area); empty: every aircraft of the plan.
+    void setAircraft(const QString& name);
 
     // Starts building (false with the reason in the status line if the choices are incomplete).
     bool start();
@@ -78,6 +81,9 @@ private:
     void browseOutput();
     void browsePlan();
     void onPlanChoice();
+    // The plan the choices point at (null if none or unreadable; `why` says why).
+    std::optional<mosaic::PlannedFlight> chosenPlan(QString* why) const;
+    void refreshAircraft();
     void onProgress(double fraction, const QString& stage);
     void onFinished();
     void setRunning(bool on);
@@ -89,6 +95,8 @@ private:
     QLabel* m_photoCount;
     QComboBox* m_plan;
     QLineEdit* m_planFile;
+    QPushButton* m_planBrowse;
+    QComboBox* m_aircraft;
     QComboBox* m_camera;
     QDoubleSpinBox* m_gsd;
     QDoubleSpinBox* m_feather;

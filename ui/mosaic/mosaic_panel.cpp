@@ -7,6 +7,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSlider>
 #include <QVBoxLayout>
 
@@ -60,10 +61,15 @@ MosaicPanel::MosaicPanel(MosaicLayer* layer, QWidget* parent) : QDockWidget(tr("
     buttons->addWidget(remove);
     v->addLayout(buttons);
     v->addStretch();
+    // A crowded dock area squeezes the panel: scroll rather than cut the figures off.
+    auto* scroll = new QScrollArea;
+    scroll->setWidget(w);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
     connect(zoom, &QPushButton::clicked, this, &MosaicPanel::zoomRequested);
     connect(report, &QPushButton::clicked, this, &MosaicPanel::reportRequested);
     connect(remove, &QPushButton::clicked, this, &MosaicPanel::removeRequested);
-    setWidget(w);
+    setWidget(scroll);
     refresh();
 }
 

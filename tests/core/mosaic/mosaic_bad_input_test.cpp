@@ -246,6 +246,18 @@ TEST(MosaicBadInput, GapsInTheAreaAreReportedByArea) {
     GDALDatasetUniquePtr v(GDALDataset::Open(r->vectorPath.c_str(), GDAL_OF_VECTOR));
     ASSERT_TRUE(v);
     EXPECT_EQ(v->GetLayerByName("gaps")->GetFeatureCount(), static_cast<GIntBig>(r->gaps.size()));
+
+    // A dozen photos cover a corner: most of the area lies outside the mosaic itself, and still
+    // counts as uncovered.
+    o.photos.resize(12);
+    o.outputPath = dir + "/corner.tif";
+    auto corner = buildMosaic(o, progress);
+    ASSERT_TRUE(corner.ok()) << corner.error().message;
+    auto cornerCmp = testsim::compareWithMap(corner->outputPath, testsim::demoMapPath(), f.planned.area);
+    ASSERT_TRUE(cornerCmp.ok());
+    EXPECT_LT(corner->coveredRatio, 0.5);
+    EXPECT_NEAR(corner->coveredRatio, cornerCmp->coveredShare, 0.01);
+    EXPECT_NEAR(corner->gapAreaM2, (1.0 - corner->coveredRatio) * corner->areaM2, 0.01 * corner->areaM2);
 }
 
 TEST(MosaicBadInput, CancelLeavesNoFileBehind) {
