@@ -11,8 +11,9 @@ namespace pf {
 
 // The one progress and cancellation channel of long core jobs (the mosaic, ...). The job calls
 // report() from whichever thread does the work and checks cancelled() between steps; the CLI prints
-// the reports, the GUI forwards them to a progress bar (queued to its own thread) and calls cancel()
-// from its Cancel button. Reports never go backwards and are serialised, so a callback needs no lock.
+// the reports, the GUI forwards them to a progress bar (queued to its own thread) and calls
+// cancel() from its Cancel button. Reports never go backwards and are serialised, so a callback
+// needs no lock.
 class Progress {
 public:
     using Callback = std::function<void(double fraction, const std::string& stage)>;

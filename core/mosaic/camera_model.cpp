@@ -9,7 +9,9 @@ namespace pf::mosaic {
 
 namespace {
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
-bool swapsAxes(int orientation) { return orientation >= 5 && orientation <= 8; }
+bool swapsAxes(int orientation) {
+    return orientation >= 5 && orientation <= 8;
+}
 } // namespace
 
 CameraModel::CameraModel(const CameraIntrinsics& in, const CameraPose& pose)
@@ -27,7 +29,8 @@ CameraModel::CameraModel(const CameraIntrinsics& in, const CameraPose& pose)
     m_fy = m_cy / std::tan(fovY / 2.0);
 
     // Camera axes (x right, y down, z along the view) for a camera looking north at the horizon,
-    // then the gimbal: pitch about the right axis, roll about the forward axis, yaw about the vertical.
+    // then the gimbal: pitch about the right axis, roll about the forward axis, yaw about the
+    // vertical.
     Eigen::Matrix3d base;
     base.col(0) = Vec3(1, 0, 0);
     base.col(1) = Vec3(0, 0, -1);
@@ -42,28 +45,76 @@ CameraModel::CameraModel(const CameraIntrinsics& in, const CameraPose& pose)
 void CameraModel::displayToStored(double x, double y, double* xs, double* ys) const {
     const double w = m_storedW, h = m_storedH;
     switch (m_orientation) {
-    case 2: *xs = w - x; *ys = y; break;
-    case 3: *xs = w - x; *ys = h - y; break;
-    case 4: *xs = x; *ys = h - y; break;
-    case 5: *xs = y; *ys = x; break;
-    case 6: *xs = y; *ys = h - x; break;
-    case 7: *xs = w - y; *ys = h - x; break;
-    case 8: *xs = w - y; *ys = x; break;
-    default: *xs = x; *ys = y; break;
+    case 2:
+        *xs = w - x;
+        *ys = y;
+        break;
+    case 3:
+        *xs = w - x;
+        *ys = h - y;
+        break;
+    case 4:
+        *xs = x;
+        *ys = h - y;
+        break;
+    case 5:
+        *xs = y;
+        *ys = x;
+        break;
+    case 6:
+        *xs = y;
+        *ys = h - x;
+        break;
+    case 7:
+        *xs = w - y;
+        *ys = h - x;
+        break;
+    case 8:
+        *xs = w - y;
+        *ys = x;
+        break;
+    default:
+        *xs = x;
+        *ys = y;
+        break;
     }
 }
 
 void CameraModel::storedToDisplay(double xs, double ys, double* x, double* y) const {
     const double w = m_storedW, h = m_storedH;
     switch (m_orientation) {
-    case 2: *x = w - xs; *y = ys; break;
-    case 3: *x = w - xs; *y = h - ys; break;
-    case 4: *x = xs; *y = h - ys; break;
-    case 5: *x = ys; *y = xs; break;
-    case 6: *x = h - ys; *y = xs; break;
-    case 7: *x = h - ys; *y = w - xs; break;
-    case 8: *x = ys; *y = w - xs; break;
-    default: *x = xs; *y = ys; break;
+    case 2:
+        *x = w - xs;
+        *y = ys;
+        break;
+    case 3:
+        *x = w - xs;
+        *y = h - ys;
+        break;
+    case 4:
+        *x = xs;
+        *y = h - ys;
+        break;
+    case 5:
+        *x = ys;
+        *y = xs;
+        break;
+    case 6:
+        *x = h - ys;
+        *y = xs;
+        break;
+    case 7:
+        *x = h - ys;
+        *y = w - xs;
+        break;
+    case 8:
+        *x = ys;
+        *y = w - xs;
+        break;
+    default:
+        *x = xs;
+        *y = ys;
+        break;
     }
 }
 

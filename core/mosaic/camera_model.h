@@ -1,5 +1,5 @@
-// CameraModel: a pinhole camera at a pose (position and gimbal angles) mapping ground points to photo
-// pixels and pixels to viewing rays, in a metric grid frame (x east, y north, z up).
+// CameraModel: a pinhole camera at a pose (position and gimbal angles) mapping ground points to
+// photo pixels and pixels to viewing rays, in a metric grid frame (x east, y north, z up).
 #pragma once
 
 #include <Eigen/Core>
@@ -11,7 +11,8 @@ using Vec3 = Eigen::Vector3d;
 // Where the camera was and where it looked. Angles follow the gimbal convention of DJI's XMP (and
 // of most drone cameras): yaw clockwise from grid north is where the top of the image points, pitch
 // -90 looks straight down (0 at the horizon), roll turns the camera about the aircraft's forward
-// axis (positive: its right side goes down, as a right bank, so a camera looking down sees to the left).
+// axis (positive: its right side goes down, as a right bank, so a camera looking down sees to the
+// left).
 struct CameraPose {
     Vec3 position{0, 0, 0}; // grid metres; z in the vertical datum of the ground model
     double yawDeg = 0.0;
@@ -39,7 +40,8 @@ public:
     bool project(const Vec3& ground, double* col, double* row) const;
     // True if the stored-pixel coordinates lie inside the photo, `marginPx` from its edges.
     bool inside(double col, double row, double marginPx = 0.0) const {
-        return col >= marginPx && row >= marginPx && col <= m_storedW - marginPx && row <= m_storedH - marginPx;
+        return col >= marginPx && row >= marginPx && col <= m_storedW - marginPx &&
+               row <= m_storedH - marginPx;
     }
     // Unit viewing direction through a stored pixel position, in the grid frame.
     Vec3 ray(double col, double row) const;
@@ -60,7 +62,7 @@ private:
 
     CameraPose m_pose;
     Eigen::Matrix3d m_worldFromCamera = Eigen::Matrix3d::Identity(); // columns: camera x, y, z axes
-    double m_fx = 1.0, m_fy = 1.0, m_cx = 0.0, m_cy = 0.0;          // display pixels
+    double m_fx = 1.0, m_fy = 1.0, m_cx = 0.0, m_cy = 0.0;           // display pixels
     int m_storedW = 0, m_storedH = 0;
     int m_orientation = 1;
 };

@@ -34,7 +34,8 @@ private:
 };
 
 // Opens a raster read-only, quietly; null if GDAL cannot read it.
-GDALDatasetUniquePtr openRaster(const std::string& path, const char* const* allowedDrivers = nullptr);
+GDALDatasetUniquePtr openRaster(const std::string& path,
+                                const char* const* allowedDrivers = nullptr);
 
 // "/a/b/IMG_0001.JPG" -> "IMG_0001.JPG", for messages.
 std::string fileName(const std::string& path);

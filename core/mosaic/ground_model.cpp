@@ -4,7 +4,8 @@
 
 namespace pf::mosaic {
 
-std::optional<Vec3> intersectGround(const GroundModel& ground, const Vec3& origin, const Vec3& dir) {
+std::optional<Vec3> intersectGround(const GroundModel& ground, const Vec3& origin,
+                                    const Vec3& dir) {
     if (dir.z() >= -1e-6)
         return std::nullopt;
     if (auto h = ground.levelHeight()) {
@@ -30,7 +31,8 @@ std::optional<Vec3> intersectGround(const GroundModel& ground, const Vec3& origi
             return Vec3(p.x(), p.y(), next);
         h = next;
     }
-    return std::abs(ground.heightAt(p.x(), p.y()) - p.z()) < 0.05 ? std::optional<Vec3>(p) : std::nullopt;
+    return std::abs(ground.heightAt(p.x(), p.y()) - p.z()) < 0.05 ? std::optional<Vec3>(p)
+                                                                  : std::nullopt;
 }
 
 } // namespace pf::mosaic

@@ -13,8 +13,8 @@
 #include "core/mosaic/utm_projection.h"
 
 #include <algorithm>
-#include <cctype>
 #include <atomic>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -39,7 +39,8 @@ std::string fmt(const char* format, double v) {
 // heights are stretched alike so that view angles stay true.
 class ScaledGround : public GroundModel {
 public:
-    ScaledGround(std::shared_ptr<const GroundModel> base, double k) : m_base(std::move(base)), m_k(k) {}
+    ScaledGround(std::shared_ptr<const GroundModel> base, double k)
+        : m_base(std::move(base)), m_k(k) {}
     double heightAt(double x, double y) const override { return m_k * m_base->heightAt(x, y); }
     std::optional<double> levelHeight() const override {
         const auto h = m_base->levelHeight();
@@ -100,10 +101,14 @@ template <class Fn> void parallelFor(int n, int threads, Fn fn) {
         t.join();
 }
 
-Error cancelled() { return makeError(ErrorCode::Cancelled, "the mosaic was cancelled"); }
+Error cancelled() {
+    return makeError(ErrorCode::Cancelled, "the mosaic was cancelled");
+}
 
 // An automatic output resolution: the photos' median, to the millimetre.
-double roundGsd(double gsd) { return std::max(0.001, std::round(gsd * 1000.0) / 1000.0); }
+double roundGsd(double gsd) {
+    return std::max(0.001, std::round(gsd * 1000.0) / 1000.0);
+}
 
 geo::GeoRing ringToGeo(const geo::Ring& r, const UtmProjection& utm) {
     geo::GeoRing out;
@@ -131,7 +136,8 @@ geo::MultiPolygon simplified(const geo::MultiPolygon& mp, double tolerance) {
 
 bool sameName(const std::string& a, const std::string& b) {
     return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-               return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+               return std::tolower(static_cast<unsigned char>(x)) ==
+                      std::tolower(static_cast<unsigned char>(y));
            });
 }
 
@@ -169,24 +175,32 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
         return makeError(ErrorCode::InvalidInput, "no output file given (--out mosaic.tif)");
     const std::filesystem::path outPath(options.outputPath);
     std::string ext = outPath.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (ext != ".tif" && ext != ".tiff")
-        return makeError(ErrorCode::InvalidInput, options.outputPath + ": the mosaic is a GeoTIFF: give a .tif file name");
+        return makeError(ErrorCode::InvalidInput,
+                         options.outputPath + ": the mosaic is a GeoTIFF: give a .tif file name");
     if (!std::isfinite(options.gsdM) || options.gsdM < 0)
         return makeError(ErrorCode::InvalidInput, "the output GSD must be positive");
     if (!std::isfinite(options.featherM) || options.featherM < 0)
         return makeError(ErrorCode::InvalidInput, "the feather width must be 0 or positive");
     if (!(options.maxViewAngleDeg > 0 && options.maxViewAngleDeg < 85))
-        return makeError(ErrorCode::InvalidInput, "the maximum view angle must lie between 0 and 85 degrees");
-    const std::filesystem::path outDir = outPath.parent_path().empty() ? std::filesystem::path(".") : outPath.parent_path();
+        return makeError(ErrorCode::InvalidInput,
+                         "the maximum view angle must lie between 0 and 85 degrees");
+    const std::filesystem::path outDir =
+        outPath.parent_path().empty() ? std::filesystem::path(".") : outPath.parent_path();
     std::error_code ec;
     if (!std::filesystem::is_directory(outDir, ec))
-        return makeError(ErrorCode::IoError, options.outputPath + ": the directory " + outDir.string() + " does not exist");
-    const std::string vectorPath = options.vectorPath.empty() ? defaultVectorPath(options.outputPath) : options.vectorPath;
+        return makeError(ErrorCode::IoError, options.outputPath + ": the directory " +
+                                                 outDir.string() + " does not exist");
+    const std::string vectorPath =
+        options.vectorPath.empty() ? defaultVectorPath(options.outputPath) : options.vectorPath;
 
     CacheLimit cache(options.gdalCacheBytes);
-    const int threads = options.threads > 0 ? options.threads
-                                            : std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, 8);
+    const int threads =
+        options.threads > 0
+            ? options.threads
+            : std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, 8);
     MosaicReport report;
     report.outputPath = options.outputPath;
     report.vectorPath = vectorPath;
@@ -260,8 +274,9 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
     report.missing = poses->missing;
     report.notes = poses->notes;
     if (poses->photos.empty())
-        return makeError(ErrorCode::InvalidInput, "none of the " + std::to_string(options.photos.size()) +
-                                                      " photo(s) can be placed: " + summarise(report.findings));
+        return makeError(ErrorCode::InvalidInput,
+                         "none of the " + std::to_string(options.photos.size()) +
+                             " photo(s) can be placed: " + summarise(report.findings));
 
     // 3. The output coordinate system: the UTM zone of the site.
     geo::LonLat site;
@@ -292,7 +307,8 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
     report.crsName = utm.name();
     report.epsg = utm.epsg();
     const double k = utm.scaleFactor(site);
-    const ScaledGround ground(options.ground ? options.ground : std::make_shared<FlatGround>(0.0), k);
+    const ScaledGround ground(options.ground ? options.ground : std::make_shared<FlatGround>(0.0),
+                              k);
 
     const int n = static_cast<int>(poses->photos.size());
     std::vector<PhotoGeometry> geoms(n);
@@ -317,17 +333,19 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
         if (!geoms[i].seesGround) {
             active[i] = 0;
             status[i] = "left out: looks too far from the vertical";
-            report.findings.push_back({detail::fileName(p.meta.path), PhotoFinding::Kind::Unused, true,
-                                       "looks " + fmt("%.0f", geoms[i].camera.offNadirDeg()) +
-                                           " degrees from the vertical: none of its ground is within " +
-                                           fmt("%.0f", options.maxViewAngleDeg) + " degrees of it"});
+            report.findings.push_back(
+                {detail::fileName(p.meta.path), PhotoFinding::Kind::Unused, true,
+                 "looks " + fmt("%.0f", geoms[i].camera.offNadirDeg()) +
+                     " degrees from the vertical: none of its ground is within " +
+                     fmt("%.0f", options.maxViewAngleDeg) + " degrees of it"});
             continue;
         }
         gsds.push_back(geoms[i].nadirGsdM / k);
     }
     if (gsds.empty())
         return makeError(ErrorCode::InvalidInput, "none of the photos looks at the ground within " +
-                                                      fmt("%.0f", options.maxViewAngleDeg) + " degrees of the vertical");
+                                                      fmt("%.0f", options.maxViewAngleDeg) +
+                                                      " degrees of the vertical");
 
     // 4. The output grid: every usable footprint, on a pixel lattice aligned to the GSD.
     std::sort(gsds.begin(), gsds.end());
@@ -335,8 +353,10 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
     OutputGrid grid;
     grid.gsd = options.gsdM > 0 ? options.gsdM : roundGsd(photoGsd);
     if (grid.gsd < 0.25 * gsds.front())
-        report.notes.push_back("the output GSD " + fmt("%.1f cm", grid.gsd * 100) + " is much finer than the photos' (" +
-                               fmt("%.1f cm", gsds.front() * 100) + "): the mosaic is larger, not sharper");
+        report.notes.push_back("the output GSD " + fmt("%.1f cm", grid.gsd * 100) +
+                               " is much finer than the photos' (" +
+                               fmt("%.1f cm", gsds.front() * 100) +
+                               "): the mosaic is larger, not sharper");
     double minX = 1e300, minY = 1e300, maxX = -1e300, maxY = -1e300;
     for (int i = 0; i < n; ++i) {
         if (!active[i])
@@ -352,12 +372,13 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
     const double heightPx = std::ceil((grid.originY - minY) / grid.gsd);
     if (widthPx * heightPx > options.maxOutputPixels || widthPx > 2e9 || heightPx > 2e9) {
         const double fit = grid.gsd * std::sqrt(widthPx * heightPx / options.maxOutputPixels);
-        return makeError(ErrorCode::TooLarge,
-                         "the mosaic would be " + fmt("%.0f", widthPx) + " x " + fmt("%.0f", heightPx) + " px (" +
-                             fmt("%.1f", widthPx * heightPx / 1e9) + " gigapixels) at " +
-                             fmt("%.1f cm", grid.gsd * 100) + " per pixel, over " +
-                             fmt("%.0f", maxX - minX) + " x " + fmt("%.0f m", maxY - minY) +
-                             ": give a coarser --gsd (at least " + fmt("%.1f cm", std::ceil(fit * 1000) / 10) + ")");
+        return makeError(
+            ErrorCode::TooLarge,
+            "the mosaic would be " + fmt("%.0f", widthPx) + " x " + fmt("%.0f", heightPx) +
+                " px (" + fmt("%.1f", widthPx * heightPx / 1e9) + " gigapixels) at " +
+                fmt("%.1f cm", grid.gsd * 100) + " per pixel, over " + fmt("%.0f", maxX - minX) +
+                " x " + fmt("%.0f m", maxY - minY) + ": give a coarser --gsd (at least " +
+                fmt("%.1f cm", std::ceil(fit * 1000) / 10) + ")");
     }
     grid.width = std::max(1, static_cast<int>(widthPx));
     grid.height = std::max(1, static_cast<int>(heightPx));
@@ -387,7 +408,8 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
             areaGrid.push_back(g);
         }
     if (options.plan && !options.planAircraft.empty() && !areaGrid.empty())
-        report.notes.push_back("coverage is measured over the part of the area planned for " + options.planAircraft);
+        report.notes.push_back("coverage is measured over the part of the area planned for " +
+                               options.planAircraft);
 
     // 5. Seams: which photo sees each pixel most from above.
     const std::string stem = "." + outPath.stem().string();
@@ -406,12 +428,14 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
         if (active[i] && windows[i].empty()) {
             active[i] = 0;
             status[i] = "not used: other photos see all of its ground more from above";
-            report.findings.push_back({detail::fileName(poses->photos[i].meta.path), PhotoFinding::Kind::Unused, false,
-                                       "not used: other photos see all of its ground more from above"});
+            report.findings.push_back(
+                {detail::fileName(poses->photos[i].meta.path), PhotoFinding::Kind::Unused, false,
+                 "not used: other photos see all of its ground more from above"});
         }
 
     // 6. Warp every photo into the parts it gives colour to, one decoded photo per worker.
-    auto canvasR = MosaicCanvas::create(grid, utm.wkt(), (outDir / (stem + ".canvas.tmp.tif")).string());
+    auto canvasR =
+        MosaicCanvas::create(grid, utm.wkt(), (outDir / (stem + ".canvas.tmp.tif")).string());
     if (!canvasR)
         return canvasR.error();
     MosaicCanvas& canvas = **canvasR;
@@ -440,8 +464,8 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
             }
             active[i] = 0;
             status[i] = "left out: " + msg;
-            report.findings.push_back(
-                {detail::fileName(poses->photos[i].meta.path), PhotoFinding::Kind::Unreadable, true, msg});
+            report.findings.push_back({detail::fileName(poses->photos[i].meta.path),
+                                       PhotoFinding::Kind::Unreadable, true, msg});
         };
         auto rgb = warpPhoto(poses->photos[i].meta.path, geoms[i], ground, grid, w);
         if (!rgb) {
@@ -501,13 +525,17 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
         {"TIFFTAG_IMAGEDESCRIPTION",
          "Mosaic of " + std::to_string(used) +
              " photos by direct georeferencing (camera poses from EXIF/XMP or the plan, " +
-             (options.ground ? std::string("ground from a terrain model") : std::string("flat ground at the take-off height")) +
-             "); not orthorectified: anything standing above the ground leans away from each photo's centre"},
+             (options.ground ? std::string("ground from a terrain model")
+                             : std::string("flat ground at the take-off height")) +
+             "); not orthorectified: anything standing above the ground leans away from each "
+             "photo's centre"},
         {"PF_MOSAIC_PHOTOS", std::to_string(used)},
         {"PF_MOSAIC_GSD_M", fmt("%.4f", grid.gsd)},
     };
     Stage writeStage{progress, 0.80, 0.15, "writing the GeoTIFF"};
-    if (Status st = canvas.writeGeoTiff(options.outputPath, options.jpegCompression, metadata, writeStage); !st)
+    if (Status st =
+            canvas.writeGeoTiff(options.outputPath, options.jpegCompression, metadata, writeStage);
+        !st)
         return st.error().code == ErrorCode::Cancelled ? cancelled() : st.error();
     canvasR->reset();
     timeStage("writing");
@@ -529,12 +557,16 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
             if (geo::area(g) >= minGap)
                 gapPolys.push_back(std::move(g));
         std::sort(gapPolys.begin(), gapPolys.end(),
-                  [](const geo::Polygon& a, const geo::Polygon& b) { return geo::area(a) > geo::area(b); });
+                  [](const geo::Polygon& a, const geo::Polygon& b) {
+                      return geo::area(a) > geo::area(b);
+                  });
         report.areaM2 = geo::area(areaGrid) / (k * k);
         // Against the whole area: parts of it may lie outside the mosaic's grid (no photo there).
         const double areaPixels = geo::area(areaGrid) / (grid.gsd * grid.gsd);
         report.coveredRatio =
-            areaPixels > 0 ? std::min(1.0, static_cast<double>((*seams)->coveredAreaPixels()) / areaPixels) : 0.0;
+            areaPixels > 0
+                ? std::min(1.0, static_cast<double>((*seams)->coveredAreaPixels()) / areaPixels)
+                : 0.0;
         for (const auto& g : gapPolys) {
             GapArea gap;
             gap.shape.push_back(polygonToGeo(g, utm));
@@ -593,7 +625,8 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
         return st.error();
     vectorStage(1.0);
     timeStage("vectors");
-    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    report.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return report;
 }
 

@@ -24,7 +24,8 @@ MosaicCanvas::~MosaicCanvas() {
     }
 }
 
-Result<std::unique_ptr<MosaicCanvas>> MosaicCanvas::create(const OutputGrid& grid, const std::string& wkt,
+Result<std::unique_ptr<MosaicCanvas>> MosaicCanvas::create(const OutputGrid& grid,
+                                                           const std::string& wkt,
                                                            const std::string& scratchPath) {
     detail::ensureGdalRegistered();
     std::unique_ptr<MosaicCanvas> canvas(new MosaicCanvas);
@@ -33,15 +34,16 @@ Result<std::unique_ptr<MosaicCanvas>> MosaicCanvas::create(const OutputGrid& gri
     GDALDriver* gtiff = GetGDALDriverManager()->GetDriverByName("GTiff");
     // Uncompressed: photos blend into tiles in any order, several times each; a compressed tile
     // rewritten would only grow the file.
-    const char* const options[] = {"TILED=YES", "BLOCKXSIZE=256", "BLOCKYSIZE=256", "INTERLEAVE=PIXEL",
-                                   "BIGTIFF=IF_SAFER", "SPARSE_OK=TRUE", "PHOTOMETRIC=RGB", "ALPHA=YES", nullptr};
+    const char* const options[] = {"TILED=YES",        "BLOCKXSIZE=256",   "BLOCKYSIZE=256",
+                                   "INTERLEAVE=PIXEL", "BIGTIFF=IF_SAFER", "SPARSE_OK=TRUE",
+                                   "PHOTOMETRIC=RGB",  "ALPHA=YES",        nullptr};
     detail::GdalErrorCapture errors;
-    canvas->m_impl->ds.reset(gtiff ? gtiff->Create(scratchPath.c_str(), grid.width, grid.height, 4, GDT_Byte,
-                                                   const_cast<char**>(options))
+    canvas->m_impl->ds.reset(gtiff ? gtiff->Create(scratchPath.c_str(), grid.width, grid.height, 4,
+                                                   GDT_Byte, const_cast<char**>(options))
                                    : nullptr);
     if (!canvas->m_impl->ds)
-        return makeError(ErrorCode::IoError, "cannot create the scratch file " + scratchPath + " (" +
-                                                 errors.message() + ")");
+        return makeError(ErrorCode::IoError, "cannot create the scratch file " + scratchPath +
+                                                 " (" + errors.message() + ")");
     double gt[6];
     grid.geoTransform(gt);
     canvas->m_impl->ds->SetGeoTransform(gt);
@@ -49,7 +51,8 @@ Result<std::unique_ptr<MosaicCanvas>> MosaicCanvas::create(const OutputGrid& gri
     return canvas;
 }
 
-Status MosaicCanvas::add(const PixelWindow& w, const std::vector<std::uint8_t>& rgb, const std::vector<float>& weight,
+Status MosaicCanvas::add(const PixelWindow& w, const std::vector<std::uint8_t>& rgb,
+                         const std::vector<float>& weight,
                          const std::vector<std::uint8_t>& opaque) {
     if (w.empty())
         return {};
@@ -59,9 +62,10 @@ Status MosaicCanvas::add(const PixelWindow& w, const std::vector<std::uint8_t>& 
     buf.resize(n * 4);
     detail::GdalErrorCapture errors;
     GDALDataset& ds = *m_impl->ds;
-    if (ds.RasterIO(GF_Read, w.x0, w.y0, w.w, w.h, buf.data(), w.w, w.h, GDT_Byte, 4, nullptr, 4, 4 * w.w, 1,
-                    nullptr) != CE_None)
-        return makeError(ErrorCode::IoError, "cannot read the scratch file " + m_impl->path + " (" + errors.message() + ")");
+    if (ds.RasterIO(GF_Read, w.x0, w.y0, w.w, w.h, buf.data(), w.w, w.h, GDT_Byte, 4, nullptr, 4,
+                    4 * w.w, 1, nullptr) != CE_None)
+        return makeError(ErrorCode::IoError, "cannot read the scratch file " + m_impl->path + " (" +
+                                                 errors.message() + ")");
     for (std::size_t i = 0; i < n; ++i) {
         const float wt = weight[i];
         if (wt > 0.0f)
@@ -72,10 +76,10 @@ Status MosaicCanvas::add(const PixelWindow& w, const std::vector<std::uint8_t>& 
         if (opaque[i])
             buf[i * 4 + 3] = 255;
     }
-    if (ds.RasterIO(GF_Write, w.x0, w.y0, w.w, w.h, buf.data(), w.w, w.h, GDT_Byte, 4, nullptr, 4, 4 * w.w, 1,
-                    nullptr) != CE_None)
-        return makeError(ErrorCode::IoError, "cannot write the scratch file " + m_impl->path + " (" + errors.message() +
-                                                 "): is the disk full?");
+    if (ds.RasterIO(GF_Write, w.x0, w.y0, w.w, w.h, buf.data(), w.w, w.h, GDT_Byte, 4, nullptr, 4,
+                    4 * w.w, 1, nullptr) != CE_None)
+        return makeError(ErrorCode::IoError, "cannot write the scratch file " + m_impl->path +
+                                                 " (" + errors.message() + "): is the disk full?");
     return {};
 }
 
@@ -95,7 +99,8 @@ int CPL_STDCALL gdalProgress(double done, const char*, void* arg) {
 
 } // namespace
 
-Status MosaicCanvas::writeGeoTiff(const std::string& path, bool jpeg, const std::map<std::string, std::string>& metadata,
+Status MosaicCanvas::writeGeoTiff(const std::string& path, bool jpeg,
+                                  const std::map<std::string, std::string>& metadata,
                                   const std::function<bool(double)>& progress) {
     std::lock_guard<std::mutex> lock(m_impl->mutex);
     GDALDataset& ds = *m_impl->ds;
@@ -104,22 +109,25 @@ Status MosaicCanvas::writeGeoTiff(const std::string& path, bool jpeg, const std:
     ds.FlushCache();
     GDALDriver* cog = GetGDALDriverManager()->GetDriverByName("COG");
     if (!cog)
-        return makeError(ErrorCode::Unsupported, "this GDAL has no COG driver (GDAL 3.1 or newer is needed)");
+        return makeError(ErrorCode::Unsupported,
+                         "this GDAL has no COG driver (GDAL 3.1 or newer is needed)");
     std::vector<const char*> options;
     if (jpeg) {
         options = {"COMPRESS=JPEG", "QUALITY=90"};
     } else {
         options = {"COMPRESS=DEFLATE", "PREDICTOR=YES"};
     }
-    options.insert(options.end(), {"BLOCKSIZE=512", "BIGTIFF=IF_SAFER", "OVERVIEW_RESAMPLING=AVERAGE",
-                                   "NUM_THREADS=ALL_CPUS", nullptr});
+    options.insert(options.end(), {"BLOCKSIZE=512", "BIGTIFF=IF_SAFER",
+                                   "OVERVIEW_RESAMPLING=AVERAGE", "NUM_THREADS=ALL_CPUS", nullptr});
     const std::filesystem::path final(path);
-    const std::filesystem::path temp = final.parent_path() / ("." + final.filename().string() + ".partial");
+    const std::filesystem::path temp =
+        final.parent_path() / ("." + final.filename().string() + ".partial");
     ProgressBridge bridge;
     bridge.fn = &progress;
     detail::GdalErrorCapture errors;
-    GDALDatasetUniquePtr out(cog->CreateCopy(temp.string().c_str(), &ds, FALSE, const_cast<char**>(options.data()),
-                                             gdalProgress, &bridge));
+    GDALDatasetUniquePtr out(cog->CreateCopy(temp.string().c_str(), &ds, FALSE,
+                                             const_cast<char**>(options.data()), gdalProgress,
+                                             &bridge));
     const bool ok = out != nullptr;
     out.reset();
     std::error_code ec;
@@ -127,7 +135,8 @@ Status MosaicCanvas::writeGeoTiff(const std::string& path, bool jpeg, const std:
         std::filesystem::remove(temp, ec);
         if (bridge.stopped)
             return makeError(ErrorCode::Cancelled, "cancelled");
-        return makeError(ErrorCode::IoError, "cannot write " + path + " (" + errors.message() + ")");
+        return makeError(ErrorCode::IoError,
+                         "cannot write " + path + " (" + errors.message() + ")");
     }
     std::filesystem::rename(temp, final, ec);
     if (ec) {

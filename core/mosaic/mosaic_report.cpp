@@ -16,8 +16,8 @@ std::string fmt(const char* format, double v) {
 
 std::string lonLat(const geo::LonLat& p) {
     char buf[96];
-    std::snprintf(buf, sizeof buf, "%.6f %c %.6f %c", std::abs(p.lat), p.lat >= 0 ? 'N' : 'S', std::abs(p.lon),
-                  p.lon >= 0 ? 'E' : 'W');
+    std::snprintf(buf, sizeof buf, "%.6f %c %.6f %c", std::abs(p.lat), p.lat >= 0 ? 'N' : 'S',
+                  std::abs(p.lon), p.lon >= 0 ? 'E' : 'W');
     return buf;
 }
 
@@ -39,8 +39,9 @@ std::string formatReport(const MosaicReport& r) {
     if (unused)
         out << ", " << unused << " not needed";
     out << "\n  output:  " << r.outputPath << " (" << r.crsName << ", " << fmt("%.1f", r.gsdM * 100)
-              << " cm/px, " << r.widthPx << " x " << r.heightPx << " px)\n"
-              << "  vectors: " << r.vectorPath << " (footprints, seams, gaps, camera_positions, missing_photos)\n";
+        << " cm/px, " << r.widthPx << " x " << r.heightPx << " px)\n"
+        << "  vectors: " << r.vectorPath
+        << " (footprints, seams, gaps, camera_positions, missing_photos)\n";
 
     auto list = [&](const char* title, auto pick) {
         bool any = false;
@@ -50,7 +51,8 @@ std::string formatReport(const MosaicReport& r) {
             if (!any)
                 out << title << '\n';
             any = true;
-            out << "  " << (f.file.empty() ? std::string("(set)") : f.file) << ": " << f.message << '\n';
+            out << "  " << (f.file.empty() ? std::string("(set)") : f.file) << ": " << f.message
+                << '\n';
         }
     };
     list("Left out:", [](const PhotoFinding& f) { return f.excluded; });
@@ -69,7 +71,8 @@ std::string formatReport(const MosaicReport& r) {
             std::size_t i = 0;
             while (i < r.missing.size()) {
                 std::size_t j = i;
-                while (j + 1 < r.missing.size() && r.missing[j + 1].aircraft == r.missing[i].aircraft &&
+                while (j + 1 < r.missing.size() &&
+                       r.missing[j + 1].aircraft == r.missing[i].aircraft &&
                        r.missing[j + 1].seq == r.missing[j].seq + 1)
                     ++j;
                 out << (i ? ", " : " ") << r.missing[i].label;
@@ -82,14 +85,15 @@ std::string formatReport(const MosaicReport& r) {
     }
     if (r.areaM2 > 0) {
         out << "Coverage of the planned area: " << fmt("%.2f", r.coveredRatio * 100) << " % of "
-                  << fmt("%.0f", r.areaM2) << " m2";
+            << fmt("%.0f", r.areaM2) << " m2";
         if (r.gaps.empty()) {
             out << ", no gap\n";
         } else {
-            out << "; " << r.gaps.size() << " gap(s), " << fmt("%.1f", r.gapAreaM2) << " m2 in total:\n";
+            out << "; " << r.gaps.size() << " gap(s), " << fmt("%.1f", r.gapAreaM2)
+                << " m2 in total:\n";
             for (std::size_t i = 0; i < r.gaps.size() && i < 20; ++i)
                 out << "  gap " << i + 1 << ": " << fmt("%.1f", r.gaps[i].areaM2) << " m2 around "
-                          << lonLat(r.gaps[i].centre) << '\n';
+                    << lonLat(r.gaps[i].centre) << '\n';
             if (r.gaps.size() > 20)
                 out << "  ... (every gap is in the vectors' gaps layer)\n";
         }

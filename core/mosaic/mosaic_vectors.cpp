@@ -17,8 +17,8 @@ struct FieldSpec {
     OGRFieldType type;
 };
 
-OGRLayer* makeLayer(GDALDataset& ds, const char* name, OGRSpatialReference* srs, OGRwkbGeometryType type,
-                    std::initializer_list<FieldSpec> fields) {
+OGRLayer* makeLayer(GDALDataset& ds, const char* name, OGRSpatialReference* srs,
+                    OGRwkbGeometryType type, std::initializer_list<FieldSpec> fields) {
     OGRLayer* layer = ds.CreateLayer(name, srs, type, nullptr);
     if (!layer)
         return nullptr;
@@ -32,37 +32,52 @@ OGRLayer* makeLayer(GDALDataset& ds, const char* name, OGRSpatialReference* srs,
 
 } // namespace
 
-Status writeMosaicVectors(const std::string& path, const std::string& wkt, const std::vector<VectorPhoto>& photos,
-                          const std::vector<geo::Polygon>& gaps, const std::vector<VectorPoint>& missing) {
+Status writeMosaicVectors(const std::string& path, const std::string& wkt,
+                          const std::vector<VectorPhoto>& photos,
+                          const std::vector<geo::Polygon>& gaps,
+                          const std::vector<VectorPoint>& missing) {
     detail::ensureGdalRegistered();
     GDALDriver* gpkg = GetGDALDriverManager()->GetDriverByName("GPKG");
     if (!gpkg)
         return makeError(ErrorCode::Unsupported, "this GDAL has no GeoPackage driver");
     const std::filesystem::path final(path);
-    const std::filesystem::path temp = final.parent_path() / ("." + final.stem().string() + ".partial.gpkg");
+    const std::filesystem::path temp =
+        final.parent_path() / ("." + final.stem().string() + ".partial.gpkg");
     std::error_code ec;
     std::filesystem::remove(temp, ec);
     detail::GdalErrorCapture errors;
     auto write = [&]() -> Status {
         GDALDatasetUniquePtr ds(gpkg->Create(temp.string().c_str(), 0, 0, 0, GDT_Unknown, nullptr));
         if (!ds)
-            return makeError(ErrorCode::IoError, "cannot write " + path + " (" + errors.message() + ")");
+            return makeError(ErrorCode::IoError,
+                             "cannot write " + path + " (" + errors.message() + ")");
         OGRSpatialReference srs;
         srs.importFromWkt(wkt.c_str());
         srs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
 
         OGRLayer* fp = makeLayer(*ds, "footprints", &srs, wkbPolygon,
-                                 {{"file", OFTString}, {"used", OFTInteger}, {"status", OFTString},
-                                  {"planned", OFTString}, {"plan_offset_m", OFTReal}, {"alt_m", OFTReal},
-                                  {"yaw_deg", OFTReal}, {"pitch_deg", OFTReal}, {"roll_deg", OFTReal},
-                                  {"gsd_m", OFTReal}, {"pose_from", OFTString}, {"camera", OFTString}});
-        OGRLayer* seams = makeLayer(*ds, "seams", &srs, wkbMultiPolygon, {{"file", OFTString}, {"area_m2", OFTReal}});
+                                 {{"file", OFTString},
+                                  {"used", OFTInteger},
+                                  {"status", OFTString},
+                                  {"planned", OFTString},
+                                  {"plan_offset_m", OFTReal},
+                                  {"alt_m", OFTReal},
+                                  {"yaw_deg", OFTReal},
+                                  {"pitch_deg", OFTReal},
+                                  {"roll_deg", OFTReal},
+                                  {"gsd_m", OFTReal},
+                                  {"pose_from", OFTString},
+                                  {"camera", OFTString}});
+        OGRLayer* seams = makeLayer(*ds, "seams", &srs, wkbMultiPolygon,
+                                    {{"file", OFTString}, {"area_m2", OFTReal}});
         OGRLayer* gapLayer = makeLayer(*ds, "gaps", &srs, wkbPolygon, {{"area_m2", OFTReal}});
-        OGRLayer* cams = makeLayer(*ds, "camera_positions", &srs, wkbPoint,
-                                   {{"file", OFTString}, {"used", OFTInteger}, {"alt_m", OFTReal}, {"yaw_deg", OFTReal}});
+        OGRLayer* cams = makeLayer(
+            *ds, "camera_positions", &srs, wkbPoint,
+            {{"file", OFTString}, {"used", OFTInteger}, {"alt_m", OFTReal}, {"yaw_deg", OFTReal}});
         OGRLayer* miss = makeLayer(*ds, "missing_photos", &srs, wkbPoint, {{"planned", OFTString}});
         if (!fp || !seams || !gapLayer || !cams || !miss)
-            return makeError(ErrorCode::IoError, "cannot write " + path + " (" + errors.message() + ")");
+            return makeError(ErrorCode::IoError,
+                             "cannot write " + path + " (" + errors.message() + ")");
 
         bool ok = true;
         ds->StartTransaction();
@@ -84,7 +99,7 @@ Status writeMosaicVectors(const std::string& path, const std::string& wkt, const
                 f.SetField("camera", p.cameraName.c_str());
                 f.SetGeometryDirectly(geo::detail::toOgr(geo::Polygon{p.footprint, {}}).release());
                 if (fp->CreateFeature(&f) != OGRERR_NONE)
-                ok = false;
+                    ok = false;
             }
             if (!p.seam.empty()) {
                 OGRFeature f(seams->GetLayerDefn());
@@ -92,7 +107,7 @@ Status writeMosaicVectors(const std::string& path, const std::string& wkt, const
                 f.SetField("area_m2", geo::area(p.seam));
                 f.SetGeometryDirectly(geo::detail::toOgr(p.seam).release());
                 if (seams->CreateFeature(&f) != OGRERR_NONE)
-                ok = false;
+                    ok = false;
             }
             OGRFeature c(cams->GetLayerDefn());
             c.SetField("file", p.file.c_str());
@@ -118,10 +133,12 @@ Status writeMosaicVectors(const std::string& path, const std::string& wkt, const
                 ok = false;
         }
         if (!ok || ds->CommitTransaction() != OGRERR_NONE)
-            return makeError(ErrorCode::IoError, "cannot write " + path + " (" + errors.message() + ")");
+            return makeError(ErrorCode::IoError,
+                             "cannot write " + path + " (" + errors.message() + ")");
         ds.reset();
         if (errors.failed())
-            return makeError(ErrorCode::IoError, "cannot write " + path + " (" + errors.message() + ")");
+            return makeError(ErrorCode::IoError,
+                             "cannot write " + path + " (" + errors.message() + ")");
         return {};
     };
     if (Status st = write(); !st) {

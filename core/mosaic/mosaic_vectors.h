@@ -1,5 +1,5 @@
-// The mosaic's vector companion: photo footprints, seams, gaps, camera positions and missing planned
-// photos as GeoPackage layers in the mosaic's coordinate system, for any GIS.
+// The mosaic's vector companion: photo footprints, seams, gaps, camera positions and missing
+// planned photos as GeoPackage layers in the mosaic's coordinate system, for any GIS.
 #pragma once
 
 #include "core/geo/types.h"
@@ -31,7 +31,9 @@ struct VectorPoint {
 
 // Writes `path` (a .gpkg, atomically) with the layers footprints, seams, gaps (area_m2),
 // camera_positions and missing_photos, all in the coordinate system `wkt`.
-Status writeMosaicVectors(const std::string& path, const std::string& wkt, const std::vector<VectorPhoto>& photos,
-                          const std::vector<geo::Polygon>& gaps, const std::vector<VectorPoint>& missing);
+Status writeMosaicVectors(const std::string& path, const std::string& wkt,
+                          const std::vector<VectorPhoto>& photos,
+                          const std::vector<geo::Polygon>& gaps,
+                          const std::vector<VectorPoint>& missing);
 
 } // namespace pf::mosaic

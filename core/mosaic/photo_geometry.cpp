@@ -10,7 +10,8 @@ constexpr double kDeg = 3.14159265358979323846 / 180.0;
 constexpr int kStepsPerSide = 16;
 } // namespace
 
-PhotoGeometry photoGeometry(const CameraModel& camera, const GroundModel& ground, double maxViewAngleDeg) {
+PhotoGeometry photoGeometry(const CameraModel& camera, const GroundModel& ground,
+                            double maxViewAngleDeg) {
     PhotoGeometry g;
     g.camera = camera;
     g.tanMaxView = std::tan(std::clamp(maxViewAngleDeg, 1.0, 85.0) * kDeg);
@@ -31,7 +32,8 @@ PhotoGeometry photoGeometry(const CameraModel& camera, const GroundModel& ground
         if (dir.z() >= 0 || horiz > -dir.z() * g.tanMaxView) {
             if (horiz < 1e-12)
                 return;
-            dir = Vec3(dir.x() / horiz * g.tanMaxView, dir.y() / horiz * g.tanMaxView, -1.0).normalized();
+            dir = Vec3(dir.x() / horiz * g.tanMaxView, dir.y() / horiz * g.tanMaxView, -1.0)
+                      .normalized();
         } else {
             ++within;
         }
@@ -59,8 +61,9 @@ PhotoGeometry photoGeometry(const CameraModel& camera, const GroundModel& ground
     g.footprintBox = geo::bounds(g.footprint);
     // Usable if part of the border is within the view angle or the photo holds the nadir point.
     double col = 0, row = 0;
-    const bool nadirInside = camera.project(Vec3(c.x(), c.y(), c.z() - g.heightAboveGroundM), &col, &row) &&
-                             camera.inside(col, row);
+    const bool nadirInside =
+        camera.project(Vec3(c.x(), c.y(), c.z() - g.heightAboveGroundM), &col, &row) &&
+        camera.inside(col, row);
     g.seesGround = within > 0 || nadirInside;
     return g;
 }

@@ -11,16 +11,18 @@ namespace pf::mosaic {
 
 struct PhotoGeometry {
     CameraModel camera;
-    geo::Ring footprint;     // grid metres: the ground seen within the maximum view angle
+    geo::Ring footprint; // grid metres: the ground seen within the maximum view angle
     geo::Box footprintBox;
     double heightAboveGroundM = 0.0; // under the camera
     double nadirGsdM = 0.0;
     double tanMaxView = 0.0; // tan of the maximum angle from the vertical a ground point is used at
     double edgeMarginPx = 1.0; // pixels this close to the image edge are not used
-    bool seesGround = false;   // false: nothing within the maximum view angle (a photo of the horizon)
+    bool seesGround =
+        false; // false: nothing within the maximum view angle (a photo of the horizon)
 
     // The squared tangent of the angle between the vertical and the line from the camera to ground
-    // point (x, y, z): the seam rule keeps, at every ground point, the photo where this is smallest.
+    // point (x, y, z): the seam rule keeps, at every ground point, the photo where this is
+    // smallest.
     double viewScore2(double x, double y, double z) const {
         const Vec3& c = camera.centre();
         const double dz = c.z() - z;
@@ -37,8 +39,9 @@ struct PhotoGeometry {
     }
 };
 
-// The photo's footprint on `ground`, from rays along its border (those steeper than the maximum view
-// angle are shortened to it).
-PhotoGeometry photoGeometry(const CameraModel& camera, const GroundModel& ground, double maxViewAngleDeg);
+// The photo's footprint on `ground`, from rays along its border (those steeper than the maximum
+// view angle are shortened to it).
+PhotoGeometry photoGeometry(const CameraModel& camera, const GroundModel& ground,
+                            double maxViewAngleDeg);
 
 } // namespace pf::mosaic

@@ -27,11 +27,13 @@ std::vector<double> numbers(const std::string& text) {
     std::vector<double> out;
     const char* p = text.c_str();
     while (*p) {
-        if (std::isdigit(static_cast<unsigned char>(*p)) || ((*p == '-' || *p == '+' || *p == '.') && p[1] &&
-                                                              (std::isdigit(static_cast<unsigned char>(p[1])) || p[1] == '.'))) {
+        if (std::isdigit(static_cast<unsigned char>(*p)) ||
+            ((*p == '-' || *p == '+' || *p == '.') && p[1] &&
+             (std::isdigit(static_cast<unsigned char>(p[1])) || p[1] == '.'))) {
             char* end = nullptr;
             const bool hex = p[0] == '0' && (p[1] == 'x' || p[1] == 'X');
-            const double v = hex ? static_cast<double>(std::strtol(p, &end, 16)) : std::strtod(p, &end);
+            const double v =
+                hex ? static_cast<double>(std::strtol(p, &end, 16)) : std::strtod(p, &end);
             if (end == p) {
                 ++p;
                 continue;
@@ -135,27 +137,32 @@ Result<PhotoMetadata> readPhotoMetadata(const std::string& path) {
     detail::GdalErrorCapture errors;
     auto ds = detail::openRaster(path);
     if (!ds)
-        return makeError(ErrorCode::ParseError,
-                         name + ": not an image GDAL can read" +
-                             (errors.message().empty() ? std::string() : " (" + errors.message() + ")"));
+        return makeError(
+            ErrorCode::ParseError,
+            name + ": not an image GDAL can read" +
+                (errors.message().empty() ? std::string() : " (" + errors.message() + ")"));
     PhotoMetadata m;
     m.path = path;
     m.widthPx = ds->GetRasterXSize();
     m.heightPx = ds->GetRasterYSize();
     const int bands = ds->GetRasterCount();
     if (m.widthPx < 2 || m.heightPx < 2 || (bands != 1 && bands != 3 && bands != 4))
-        return makeError(ErrorCode::Unsupported, name + ": expected an RGB or grey photo but found " +
-                                                     std::to_string(bands) + " band(s) of " +
-                                                     std::to_string(m.widthPx) + " x " + std::to_string(m.heightPx) + " px");
+        return makeError(ErrorCode::Unsupported,
+                         name + ": expected an RGB or grey photo but found " +
+                             std::to_string(bands) + " band(s) of " + std::to_string(m.widthPx) +
+                             " x " + std::to_string(m.heightPx) + " px");
     if (ds->GetRasterBand(1)->GetRasterDataType() != GDT_Byte)
         return makeError(ErrorCode::Unsupported, name + ": expected 8-bit samples (a JPEG photo)");
 
     if (auto o = itemNumber(*ds, "EXIF_Orientation"); o && *o >= 1 && *o <= 8)
         m.orientation = static_cast<int>(*o);
-    const auto lat = detail::exifDegrees(item(*ds, "EXIF_GPSLatitude"), item(*ds, "EXIF_GPSLatitudeRef"));
-    const auto lon = detail::exifDegrees(item(*ds, "EXIF_GPSLongitude"), item(*ds, "EXIF_GPSLongitudeRef"));
+    const auto lat =
+        detail::exifDegrees(item(*ds, "EXIF_GPSLatitude"), item(*ds, "EXIF_GPSLatitudeRef"));
+    const auto lon =
+        detail::exifDegrees(item(*ds, "EXIF_GPSLongitude"), item(*ds, "EXIF_GPSLongitudeRef"));
     // Cameras without a fix write zeros; (0, 0) is in the Gulf of Guinea, not a survey site.
-    if (lat && lon && std::abs(*lat) <= 90 && std::abs(*lon) <= 180 && !(*lat == 0.0 && *lon == 0.0))
+    if (lat && lon && std::abs(*lat) <= 90 && std::abs(*lon) <= 180 &&
+        !(*lat == 0.0 && *lon == 0.0))
         m.position = geo::LonLat{*lon, *lat};
     if (auto alt = itemNumber(*ds, "EXIF_GPSAltitude")) {
         const auto ref = itemNumber(*ds, "EXIF_GPSAltitudeRef");
@@ -195,7 +202,8 @@ Result<PhotoMetadata> readPhotoMetadata(const std::string& path) {
             auto xlon = detail::xmpNumber(xmp, "GpsLongitude");
             if (!xlon)
                 xlon = detail::xmpNumber(xmp, "GpsLongtitude");
-            if (xlat && xlon && std::abs(*xlat) <= 90 && std::abs(*xlon) <= 180 && !(*xlat == 0.0 && *xlon == 0.0))
+            if (xlat && xlon && std::abs(*xlat) <= 90 && std::abs(*xlon) <= 180 &&
+                !(*xlat == 0.0 && *xlon == 0.0))
                 m.position = geo::LonLat{*xlon, *xlat};
         }
     }
@@ -215,7 +223,8 @@ Status checkPhotoDecodes(const std::string& path) {
     GDALRasterBand* smallest = nOvr > 0 ? band->GetOverview(nOvr - 1) : band;
     const int w = smallest->GetXSize(), h = smallest->GetYSize();
     std::vector<GByte> buf(static_cast<std::size_t>(w) * h);
-    const CPLErr err = smallest->RasterIO(GF_Read, 0, 0, w, h, buf.data(), w, h, GDT_Byte, 0, 0, nullptr);
+    const CPLErr err =
+        smallest->RasterIO(GF_Read, 0, 0, w, h, buf.data(), w, h, GDT_Byte, 0, 0, nullptr);
     if (err != CE_None || errors.failed() || errors.warned()) {
         std::string why = errors.message();
         if (why.empty())

@@ -12,36 +12,38 @@ namespace pf::mosaic {
 
 struct PhotoMetadata {
     std::string path;
-    int widthPx = 0;  // as stored (EXIF orientation not applied)
+    int widthPx = 0; // as stored (EXIF orientation not applied)
     int heightPx = 0;
     int orientation = 1; // EXIF Orientation, 1..8 (1: stored upright)
 
-    std::optional<geo::LonLat> position;         // EXIF GPS, else XMP GpsLatitude/GpsLongitude
-    std::optional<double> gpsAltitudeM;          // EXIF GPSAltitude (above sea level, sign from GPSAltitudeRef)
-    std::optional<double> relativeAltitudeM;     // XMP RelativeAltitude: above the take-off point
-    std::optional<double> absoluteAltitudeM;     // XMP AbsoluteAltitude
-    std::optional<double> gimbalPitchDeg;        // XMP GimbalPitchDegree: -90 looks straight down
-    std::optional<double> gimbalYawDeg;          // XMP GimbalYawDegree: clockwise from north
-    std::optional<double> gimbalRollDeg;         // XMP GimbalRollDegree
-    std::optional<double> flightYawDeg;          // XMP FlightYawDegree (the aircraft's heading)
-    std::optional<double> imageDirectionDeg;     // EXIF GPSImgDirection (true or magnetic, see ref)
-    bool imageDirectionMagnetic = false;         // GPSImgDirectionRef M
+    std::optional<geo::LonLat> position; // EXIF GPS, else XMP GpsLatitude/GpsLongitude
+    std::optional<double>
+        gpsAltitudeM; // EXIF GPSAltitude (above sea level, sign from GPSAltitudeRef)
+    std::optional<double> relativeAltitudeM; // XMP RelativeAltitude: above the take-off point
+    std::optional<double> absoluteAltitudeM; // XMP AbsoluteAltitude
+    std::optional<double> gimbalPitchDeg;    // XMP GimbalPitchDegree: -90 looks straight down
+    std::optional<double> gimbalYawDeg;      // XMP GimbalYawDegree: clockwise from north
+    std::optional<double> gimbalRollDeg;     // XMP GimbalRollDegree
+    std::optional<double> flightYawDeg;      // XMP FlightYawDegree (the aircraft's heading)
+    std::optional<double> imageDirectionDeg; // EXIF GPSImgDirection (true or magnetic, see ref)
+    bool imageDirectionMagnetic = false;     // GPSImgDirectionRef M
 
     std::string make;  // EXIF Make, trimmed
     std::string model; // EXIF Model, trimmed
     std::optional<double> focalLengthMm;
-    std::optional<double> focalLength35mmMm;     // EXIF FocalLengthIn35mmFilm
-    std::string dateTime;                        // EXIF DateTimeOriginal (+ sub-seconds), sortable text
+    std::optional<double> focalLength35mmMm; // EXIF FocalLengthIn35mmFilm
+    std::string dateTime;                    // EXIF DateTimeOriginal (+ sub-seconds), sortable text
 
     bool hasXmp = false;
 };
 
-// Reads the metadata of one photo. Errors name the file: not readable, not an image, not RGB or grey.
+// Reads the metadata of one photo. Errors name the file: not readable, not an image, not RGB or
+// grey.
 Result<PhotoMetadata> readPhotoMetadata(const std::string& path);
 
 // Decodes the whole photo at its smallest resolution (cheap with JPEG's scaled decoding) and fails
-// if the data is damaged (truncated, corrupt entropy data), so a damaged photo is refused before the
-// seams are drawn rather than leaving a hole in the mosaic.
+// if the data is damaged (truncated, corrupt entropy data), so a damaged photo is refused before
+// the seams are drawn rather than leaving a hole in the mosaic.
 Status checkPhotoDecodes(const std::string& path);
 
 namespace detail {

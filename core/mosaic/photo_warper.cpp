@@ -40,7 +40,8 @@ int cameraTransform(void* arg, int dstToSrc, int n, double* x, double* y, double
             y[i] = row * t->scaleY - t->srcY0;
         } else {
             const double col = (x[i] + t->srcX0) / t->scaleX, row = (y[i] + t->srcY0) / t->scaleY;
-            const auto p = intersectGround(*t->ground, t->photo->camera.centre(), t->photo->camera.ray(col, row));
+            const auto p = intersectGround(*t->ground, t->photo->camera.centre(),
+                                           t->photo->camera.ray(col, row));
             ok[i] = p ? TRUE : FALSE;
             if (p) {
                 x[i] = t->grid.col(p->x()) - t->window.x0;
@@ -62,8 +63,9 @@ struct WarpOptionsDeleter {
 
 } // namespace
 
-Result<WarpedWindow> warpPhoto(const std::string& path, const PhotoGeometry& photo, const GroundModel& ground,
-                               const OutputGrid& grid, const PixelWindow& window, Resampling resampling) {
+Result<WarpedWindow> warpPhoto(const std::string& path, const PhotoGeometry& photo,
+                               const GroundModel& ground, const OutputGrid& grid,
+                               const PixelWindow& window, Resampling resampling) {
     const std::string name = detail::fileName(path);
     WarpedWindow out;
     out.window = window;
@@ -75,7 +77,8 @@ Result<WarpedWindow> warpPhoto(const std::string& path, const PhotoGeometry& pho
     detail::GdalErrorCapture errors;
     auto ds = detail::openRaster(path);
     if (!ds)
-        return makeError(ErrorCode::ParseError, name + ": cannot be opened any more (" + errors.message() + ")");
+        return makeError(ErrorCode::ParseError,
+                         name + ": cannot be opened any more (" + errors.message() + ")");
     const int storedW = ds->GetRasterXSize(), storedH = ds->GetRasterYSize();
     if (storedW != photo.camera.storedWidth() || storedH != photo.camera.storedHeight())
         return makeError(ErrorCode::IoError, name + ": changed while the mosaic was made");
@@ -111,7 +114,8 @@ Result<WarpedWindow> warpPhoto(const std::string& path, const PhotoGeometry& pho
     constexpr int kSamples = 12;
     for (int j = 0; j <= kSamples; ++j) {
         for (int i = 0; i <= kSamples; ++i) {
-            double px = window.w * static_cast<double>(i) / kSamples, py = window.h * static_cast<double>(j) / kSamples;
+            double px = window.w * static_cast<double>(i) / kSamples,
+                   py = window.h * static_cast<double>(j) / kSamples;
             double pz = 0;
             int ok = 0;
             cameraTransform(&t, TRUE, 1, &px, &py, &pz, &ok);
@@ -138,20 +142,23 @@ Result<WarpedWindow> warpPhoto(const std::string& path, const PhotoGeometry& pho
 
     // Decode that part (band-sequential) into an in-memory dataset the warper reads.
     std::vector<std::uint8_t> pixels(static_cast<std::size_t>(sw) * sh * bands);
-    if (src->RasterIO(GF_Read, x0, y0, sw, sh, pixels.data(), sw, sh, GDT_Byte, bands, nullptr, 0, 0, 0, nullptr) !=
-            CE_None ||
+    if (src->RasterIO(GF_Read, x0, y0, sw, sh, pixels.data(), sw, sh, GDT_Byte, bands, nullptr, 0,
+                      0, 0, nullptr) != CE_None ||
         errors.failed())
-        return makeError(ErrorCode::ParseError, name + ": the image data is damaged (" + errors.message() + ")");
+        return makeError(ErrorCode::ParseError,
+                         name + ": the image data is damaged (" + errors.message() + ")");
     GDALDriver* memDriver = GetGDALDriverManager()->GetDriverByName("MEM");
     GDALDatasetUniquePtr mem(memDriver->Create("", sw, sh, 0, GDT_Byte, nullptr));
     for (int b = 0; b < bands; ++b) {
         char ptr[64];
-        std::snprintf(ptr, sizeof ptr, "DATAPOINTER=%p", static_cast<void*>(pixels.data() + static_cast<std::size_t>(b) * sw * sh));
+        std::snprintf(ptr, sizeof ptr, "DATAPOINTER=%p",
+                      static_cast<void*>(pixels.data() + static_cast<std::size_t>(b) * sw * sh));
         const char* const bandOptions[] = {ptr, nullptr};
         mem->AddBand(GDT_Byte, const_cast<char**>(bandOptions));
     }
 
-    std::unique_ptr<void, ApproxDeleter> approx(GDALCreateApproxTransformer(cameraTransform, &t, 0.125));
+    std::unique_ptr<void, ApproxDeleter> approx(
+        GDALCreateApproxTransformer(cameraTransform, &t, 0.125));
     std::unique_ptr<GDALWarpOptions, WarpOptionsDeleter> wo(GDALCreateWarpOptions());
     wo->hSrcDS = GDALDataset::ToHandle(mem.get());
     wo->hDstDS = nullptr;
@@ -170,9 +177,11 @@ Result<WarpedWindow> warpPhoto(const std::string& path, const PhotoGeometry& pho
 
     GDALWarpOperation op;
     if (op.Initialize(wo.get()) != CE_None)
-        return makeError(ErrorCode::Internal, name + ": GDAL's warper refused the photo (" + errors.message() + ")");
+        return makeError(ErrorCode::Internal,
+                         name + ": GDAL's warper refused the photo (" + errors.message() + ")");
     std::vector<std::uint8_t> warped(static_cast<std::size_t>(window.w) * window.h * bands, 0);
-    if (op.WarpRegionToBuffer(0, 0, window.w, window.h, warped.data(), GDT_Byte, 0, 0, sw, sh) != CE_None)
+    if (op.WarpRegionToBuffer(0, 0, window.w, window.h, warped.data(), GDT_Byte, 0, 0, sw, sh) !=
+        CE_None)
         return makeError(ErrorCode::Internal, name + ": warping failed (" + errors.message() + ")");
 
     const std::size_t plane = static_cast<std::size_t>(window.w) * window.h;

@@ -24,8 +24,9 @@ enum class Resampling { Bilinear, Cubic, Lanczos };
 // Decodes the part of the photo the window needs, at the coarsest reduction that is still at least
 // as fine as the output, and warps it. Pixels the photo does not hold stay 0. Thread-safe (every
 // call opens its own dataset).
-Result<WarpedWindow> warpPhoto(const std::string& path, const PhotoGeometry& photo, const GroundModel& ground,
-                               const OutputGrid& grid, const PixelWindow& window,
+Result<WarpedWindow> warpPhoto(const std::string& path, const PhotoGeometry& photo,
+                               const GroundModel& ground, const OutputGrid& grid,
+                               const PixelWindow& window,
                                Resampling resampling = Resampling::Bilinear);
 
 } // namespace pf::mosaic

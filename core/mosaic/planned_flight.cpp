@@ -30,15 +30,18 @@ Result<PlannedFlight> readPlannedFlight(const std::string& pathIn) {
         path /= "plan.geojson";
     const std::string name = path.string();
     if (!std::filesystem::is_regular_file(path, ec))
-        return makeError(ErrorCode::IoError, name + ": no such file (give the plan's directory or its plan.geojson, "
-                                                    "as written by photoflight-cli plan --out DIR)");
+        return makeError(ErrorCode::IoError,
+                         name + ": no such file (give the plan's directory or its plan.geojson, "
+                                "as written by photoflight-cli plan --out DIR)");
     detail::ensureGdalRegistered();
     detail::GdalErrorCapture errors;
     const char* const drivers[] = {"GeoJSON", nullptr};
-    GDALDatasetUniquePtr ds(GDALDataset::Open(name.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, drivers));
+    GDALDatasetUniquePtr ds(
+        GDALDataset::Open(name.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, drivers));
     if (!ds || ds->GetLayerCount() < 1)
-        return makeError(ErrorCode::ParseError, name + ": not a GeoJSON plan" +
-                                                    (errors.message().empty() ? "" : " (" + errors.message() + ")"));
+        return makeError(ErrorCode::ParseError,
+                         name + ": not a GeoJSON plan" +
+                             (errors.message().empty() ? "" : " (" + errors.message() + ")"));
     OGRLayer* layer = ds->GetLayer(0);
     const OGRFeatureDefn* defn = layer->GetLayerDefn();
     const int kind = defn->GetFieldIndex("kind");
@@ -49,7 +52,8 @@ Result<PlannedFlight> readPlannedFlight(const std::string& pathIn) {
     const int across = defn->GetFieldIndex("footprint_across_m");
     const int along = defn->GetFieldIndex("footprint_along_m");
     if (kind < 0)
-        return makeError(ErrorCode::ParseError, name + ": no 'kind' property: not a plan written by photoflight-cli plan");
+        return makeError(ErrorCode::ParseError,
+                         name + ": no 'kind' property: not a plan written by photoflight-cli plan");
 
     PlannedFlight flight;
     flight.source = path.filename().string();
@@ -62,11 +66,13 @@ Result<PlannedFlight> readPlannedFlight(const std::string& pathIn) {
         if (k == "photo") {
             const auto* pt = g ? dynamic_cast<const OGRPoint*>(g) : nullptr;
             if (!pt)
-                return makeError(ErrorCode::ParseError,
-                                 name + ": feature " + std::to_string(featureNo) + ": a photo must be a Point");
+                return makeError(ErrorCode::ParseError, name + ": feature " +
+                                                            std::to_string(featureNo) +
+                                                            ": a photo must be a Point");
             if (alt < 0 || !f->IsFieldSetAndNotNull(alt))
-                return makeError(ErrorCode::ParseError,
-                                 name + ": feature " + std::to_string(featureNo) + ": photo without alt_m");
+                return makeError(ErrorCode::ParseError, name + ": feature " +
+                                                            std::to_string(featureNo) +
+                                                            ": photo without alt_m");
             PlannedPhoto p;
             p.aircraft = aircraft >= 0 ? f->GetFieldAsString(aircraft) : "";
             p.seq = seq >= 0 ? f->GetFieldAsInteger(seq) : 0;
@@ -75,10 +81,12 @@ Result<PlannedFlight> readPlannedFlight(const std::string& pathIn) {
             p.headingDeg = heading >= 0 ? f->GetFieldAsDouble(heading) : 0.0;
             p.footprintAcrossM = across >= 0 ? f->GetFieldAsDouble(across) : 0.0;
             p.footprintAlongM = along >= 0 ? f->GetFieldAsDouble(along) : 0.0;
-            if (!std::isfinite(p.position.lon) || !std::isfinite(p.position.lat) || std::abs(p.position.lat) > 90 ||
-                std::abs(p.position.lon) > 180 || !std::isfinite(p.altitudeM) || !(p.altitudeM > 0))
-                return makeError(ErrorCode::ParseError, name + ": feature " + std::to_string(featureNo) +
-                                                            ": photo position or altitude out of range");
+            if (!std::isfinite(p.position.lon) || !std::isfinite(p.position.lat) ||
+                std::abs(p.position.lat) > 90 || std::abs(p.position.lon) > 180 ||
+                !std::isfinite(p.altitudeM) || !(p.altitudeM > 0))
+                return makeError(ErrorCode::ParseError,
+                                 name + ": feature " + std::to_string(featureNo) +
+                                     ": photo position or altitude out of range");
             flight.photos.push_back(p);
         } else if (k == "subarea" && g) {
             const std::string owner = aircraft >= 0 ? f->GetFieldAsString(aircraft) : "";
@@ -99,11 +107,14 @@ Result<PlannedFlight> readPlannedFlight(const std::string& pathIn) {
     for (const auto& p : flight.photos)
         if (std::find(order.begin(), order.end(), p.aircraft) == order.end())
             order.push_back(p.aircraft);
-    std::stable_sort(flight.photos.begin(), flight.photos.end(), [&](const PlannedPhoto& a, const PlannedPhoto& b) {
-        const auto ia = std::find(order.begin(), order.end(), a.aircraft) - order.begin();
-        const auto ib = std::find(order.begin(), order.end(), b.aircraft) - order.begin();
-        return ia != ib ? ia < ib : a.seq < b.seq;
-    });
+    std::stable_sort(flight.photos.begin(), flight.photos.end(),
+                     [&](const PlannedPhoto& a, const PlannedPhoto& b) {
+                         const auto ia =
+                             std::find(order.begin(), order.end(), a.aircraft) - order.begin();
+                         const auto ib =
+                             std::find(order.begin(), order.end(), b.aircraft) - order.begin();
+                         return ia != ib ? ia < ib : a.seq < b.seq;
+                     });
     return flight;
 }
 

@@ -20,7 +20,8 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
 
 std::string lower(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return s;
 }
 
@@ -49,22 +50,25 @@ struct Fov {
     std::string name;
 };
 
-// The catalog camera's fields of view for this photo. A photo whose aspect differs from the camera's
-// (a 16:9 mode of a 3:2 sensor) keeps the long side's field of view; the short side follows from the
-// photo's square pixels.
+// The catalog camera's fields of view for this photo. A photo whose aspect differs from the
+// camera's (a 16:9 mode of a 3:2 sensor) keeps the long side's field of view; the short side
+// follows from the photo's square pixels.
 Fov fovFromCamera(const sensor::Camera& cam, const PhotoMetadata& m) {
     Fov f{sensor::horizontalFovDeg(cam), sensor::verticalFovDeg(cam), cam.name};
     const double camAspect = static_cast<double>(std::max(cam.imageWidthPx, cam.imageHeightPx)) /
                              std::max(1, std::min(cam.imageWidthPx, cam.imageHeightPx));
-    const double photoAspect = static_cast<double>(std::max(m.widthPx, m.heightPx)) / std::min(m.widthPx, m.heightPx);
-    if (cam.imageWidthPx > 0 && cam.imageHeightPx > 0 && std::abs(camAspect / photoAspect - 1.0) > 0.02)
+    const double photoAspect =
+        static_cast<double>(std::max(m.widthPx, m.heightPx)) / std::min(m.widthPx, m.heightPx);
+    if (cam.imageWidthPx > 0 && cam.imageHeightPx > 0 &&
+        std::abs(camAspect / photoAspect - 1.0) > 0.02)
         f.shortDeg = 2.0 * std::atan(std::tan(f.longDeg * kDeg / 2.0) / photoAspect) / kDeg;
     return f;
 }
 
 // From EXIF FocalLengthIn35mmFilm, defined by the diagonal of a 36 x 24 mm frame (43.27 mm).
 Fov fovFrom35mm(double f35, const PhotoMetadata& m) {
-    const double longPx = std::max(m.widthPx, m.heightPx), shortPx = std::min(m.widthPx, m.heightPx);
+    const double longPx = std::max(m.widthPx, m.heightPx),
+                 shortPx = std::min(m.widthPx, m.heightPx);
     const double halfDiag = 43.2666 / (2.0 * f35); // tan(half the diagonal field of view)
     const double diagPx = std::hypot(longPx, shortPx);
     Fov f;
@@ -95,8 +99,8 @@ struct Work {
 
 } // namespace
 
-const sensor::Camera* cameraForExif(const std::vector<sensor::Camera>& catalog, const std::string& make,
-                                    const std::string& model) {
+const sensor::Camera* cameraForExif(const std::vector<sensor::Camera>& catalog,
+                                    const std::string& make, const std::string& model) {
     if (model.empty())
         return nullptr;
     auto byName = [&](const std::string& name) -> const sensor::Camera* {
@@ -129,7 +133,8 @@ const sensor::Camera* cameraForExif(const std::vector<sensor::Camera>& catalog, 
     return nullptr;
 }
 
-Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas, const MosaicOptions& options) {
+Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas,
+                                   const MosaicOptions& options) {
     ResolvedPoses out;
     const sensor::Camera* forced = nullptr;
     if (!options.cameraName.empty()) {
@@ -158,7 +163,8 @@ Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas, cons
             std::string list;
             for (const auto& n : names)
                 list += (list.empty() ? "" : ", ") + n;
-            return makeError(ErrorCode::NotFound, "--aircraft: the plan has no photos of '" + options.planAircraft +
+            return makeError(ErrorCode::NotFound, "--aircraft: the plan has no photos of '" +
+                                                      options.planAircraft +
                                                       "' (its aircraft: " + list + ")");
         }
     }
@@ -174,7 +180,8 @@ Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas, cons
         work.push_back(w);
     }
     std::stable_sort(work.begin(), work.end(), [](const Work& a, const Work& b) {
-        if (a.meta->dateTime != b.meta->dateTime && !a.meta->dateTime.empty() && !b.meta->dateTime.empty())
+        if (a.meta->dateTime != b.meta->dateTime && !a.meta->dateTime.empty() &&
+            !b.meta->dateTime.empty())
             return a.meta->dateTime < b.meta->dateTime;
         return a.file < b.file;
     });
@@ -186,7 +193,8 @@ Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas, cons
 
     // The matching frame: centred on the plan's area, else its photos, else the photos' median.
     geo::LonLat centre{0, 0};
-    std::vector<geo::GeoPolygon> area = options.plan ? options.plan->area : std::vector<geo::GeoPolygon>{};
+    std::vector<geo::GeoPolygon> area =
+        options.plan ? options.plan->area : std::vector<geo::GeoPolygon>{};
     {
         std::vector<double> lons, lats;
         if (!area.empty()) {
@@ -214,11 +222,12 @@ Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas, cons
                 centre = {median(lons), median(lats)};
         }
     }
-    const bool anyPosition = std::any_of(work.begin(), work.end(), [](const Work& w) { return w.position.has_value(); });
+    const bool anyPosition =
+        std::any_of(work.begin(), work.end(), [](const Work& w) { return w.position.has_value(); });
     if (!havePlan && !anyPosition) {
         for (auto& w : work)
             report(PhotoFinding::Kind::NoPosition, w, true,
-                 "no GPS position in its EXIF or XMP, and no plan to place it by (give --plan)");
+                   "no GPS position in its EXIF or XMP, and no plan to place it by (give --plan)");
         return out;
     }
     auto frameR = geo::LocalFrame::create(centre);
@@ -256,9 +265,9 @@ Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas, cons
             }
             if (d > reach)
                 report(PhotoFinding::Kind::OtherSite, w, true,
-                     (d >= 2000 ? fmt("%.1f km", d / 1000.0) : fmt("%.0f m", d)) + " from the " +
-                         (areaLocal.empty() ? "planned photo points" : "planned area") +
-                         ": a photo of another site (not mosaicked)");
+                       (d >= 2000 ? fmt("%.1f km", d / 1000.0) : fmt("%.0f m", d)) + " from the " +
+                           (areaLocal.empty() ? "planned photo points" : "planned area") +
+                           ": a photo of another site (not mosaicked)");
         }
     } else {
         // Without a plan the site is the largest group of photos within reach of each other.
@@ -288,7 +297,8 @@ Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas, cons
         std::vector<int> size(groups, 0);
         for (int i : idx)
             ++size[group[i]];
-        const int main = static_cast<int>(std::max_element(size.begin(), size.end()) - size.begin());
+        const int main =
+            static_cast<int>(std::max_element(size.begin(), size.end()) - size.begin());
         for (int i : idx) {
             if (group[i] == main)
                 continue;
@@ -297,8 +307,8 @@ Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas, cons
                 if (group[j] == main)
                     d = std::min(d, (*work[i].local - *work[j].local).norm());
             report(PhotoFinding::Kind::OtherSite, work[i], true,
-                 (d >= 2000 ? fmt("%.1f km", d / 1000.0) : fmt("%.0f m", d)) +
-                     " from the other photos: a photo of another site (not mosaicked)");
+                   (d >= 2000 ? fmt("%.1f km", d / 1000.0) : fmt("%.0f m", d)) +
+                       " from the other photos: a photo of another site (not mosaicked)");
         }
     }
 
@@ -306,7 +316,8 @@ Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas, cons
     for (auto& w : work)
         if (!w.excluded && w.meta->relativeAltitudeM && *w.meta->relativeAltitudeM < 2.0)
             report(PhotoFinding::Kind::NoAltitude, w, true,
-                   fmt("%.1f m", *w.meta->relativeAltitudeM) + " above take-off (XMP relative altitude): taken on the ground");
+                   fmt("%.1f m", *w.meta->relativeAltitudeM) +
+                       " above take-off (XMP relative altitude): taken on the ground");
 
     // Matching to the plan's photo points.
     double tolerance = options.matchToleranceM;
@@ -336,7 +347,8 @@ Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas, cons
                     pairs.push_back({d, i, j});
             }
         }
-        std::sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) { return a.d < b.d; });
+        std::sort(pairs.begin(), pairs.end(),
+                  [](const Pair& a, const Pair& b) { return a.d < b.d; });
         for (const auto& p : pairs) {
             if (work[p.photo].planned >= 0 || takenBy[p.planned] >= 0)
                 continue;
@@ -358,15 +370,18 @@ Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas, cons
             }
             if (d <= tolerance)
                 report(PhotoFinding::Kind::Duplicate, w, false,
-                     "a second photo at planned point " + out.planned[nearest].label() + " (" + fmt("%.1f m", d) +
-                         " away; " + work[takenBy[nearest]].file + " is nearer): mosaicked where its EXIF says");
+                       "a second photo at planned point " + out.planned[nearest].label() + " (" +
+                           fmt("%.1f m", d) + " away; " + work[takenBy[nearest]].file +
+                           " is nearer): mosaicked where its EXIF says");
             else
                 report(PhotoFinding::Kind::FarFromPlan, w, false,
-                     fmt("%.1f m", d) + " from the nearest planned point (" + out.planned[nearest].label() +
-                         "; tolerance " + fmt("%.1f m", tolerance) + "): mosaicked where its EXIF says");
+                       fmt("%.1f m", d) + " from the nearest planned point (" +
+                           out.planned[nearest].label() + "; tolerance " +
+                           fmt("%.1f m", tolerance) + "): mosaicked where its EXIF says");
         }
 
-        // Photos without a position take the planned points between their placed neighbours, in order.
+        // Photos without a position take the planned points between their placed neighbours, in
+        // order.
         const int n = static_cast<int>(work.size());
         int i = 0;
         bool warnedCount = false;
@@ -396,16 +411,18 @@ Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas, cons
             if (room == run || (noneHasPosition && run > 0)) {
                 if (noneHasPosition && run != room && !warnedCount) {
                     warnedCount = true;
-                    out.notes.push_back(std::to_string(run) + " photos without a GPS position for " +
-                                        std::to_string(room) +
-                                        " planned photo points: matched in capture order; every photo after a "
-                                        "missed or extra shot is misplaced, check the seams");
+                    out.notes.push_back(
+                        std::to_string(run) + " photos without a GPS position for " +
+                        std::to_string(room) +
+                        " planned photo points: matched in capture order; every photo after a "
+                        "missed or extra shot is misplaced, check the seams");
                 }
                 for (int k = 0; k < run; ++k) {
                     const int planned = before + 1 + k;
                     if (planned >= static_cast<int>(out.planned.size()) || takenBy[planned] >= 0) {
                         report(PhotoFinding::Kind::NoPosition, work[i + k], true,
-                             "no GPS position, and no planned photo point left for it in capture order");
+                               "no GPS position, and no planned photo point left for it in capture "
+                               "order");
                         continue;
                     }
                     work[i + k].planned = planned;
@@ -416,17 +433,19 @@ Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas, cons
             } else {
                 for (int k = i; k < j; ++k)
                     report(PhotoFinding::Kind::NoPosition, work[k], true,
-                         "no GPS position, and the photos before and after it leave " + std::to_string(std::max(room, 0)) +
-                             " planned point(s) for " + std::to_string(run) +
-                             " photo(s) without a position: cannot tell which is which");
+                           "no GPS position, and the photos before and after it leave " +
+                               std::to_string(std::max(room, 0)) + " planned point(s) for " +
+                               std::to_string(run) +
+                               " photo(s) without a position: cannot tell which is which");
             }
             i = j;
         }
     } else {
         for (auto& w : work)
             if (!w.position)
-                report(PhotoFinding::Kind::NoPosition, w, true,
-                     "no GPS position in its EXIF or XMP, and no plan to place it by (give --plan)");
+                report(
+                    PhotoFinding::Kind::NoPosition, w, true,
+                    "no GPS position in its EXIF or XMP, and no plan to place it by (give --plan)");
     }
 
     // Take-off height above sea level, for photos that only know their absolute altitude.
@@ -436,15 +455,17 @@ Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas, cons
         for (const auto& w : work) {
             if (w.excluded || w.planned < 0 || w.inOrder || w.meta->relativeAltitudeM)
                 continue;
-            const auto abs = w.meta->gpsAltitudeM ? w.meta->gpsAltitudeM : w.meta->absoluteAltitudeM;
+            const auto abs =
+                w.meta->gpsAltitudeM ? w.meta->gpsAltitudeM : w.meta->absoluteAltitudeM;
             if (abs)
                 diffs.push_back(*abs - out.planned[w.planned].altitudeM);
         }
         if (diffs.size() >= 3) {
             takeoff = median(diffs);
-            out.notes.push_back("take-off altitude " + fmt("%.1f m", *takeoff) + " above sea level, estimated from " +
-                                std::to_string(diffs.size()) +
-                                " photos' GPS altitudes against their planned altitudes (give --takeoff-alt to set it)");
+            out.notes.push_back("take-off altitude " + fmt("%.1f m", *takeoff) +
+                                " above sea level, estimated from " + std::to_string(diffs.size()) +
+                                " photos' GPS altitudes against their planned altitudes (give "
+                                "--takeoff-alt to set it)");
         }
     }
 
@@ -475,16 +496,17 @@ Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas, cons
             p.altitudeM = plan->altitudeM;
             altFrom = "planned altitude";
         } else {
-            report(PhotoFinding::Kind::NoAltitude, w, true,
-                 abs ? "only an altitude above sea level (" + fmt("%.1f m", *abs) +
-                           ") and no take-off altitude to subtract (give --takeoff-alt M or --plan)"
-                     : "no altitude in its EXIF or XMP, and no plan to take it from");
+            report(
+                PhotoFinding::Kind::NoAltitude, w, true,
+                abs ? "only an altitude above sea level (" + fmt("%.1f m", *abs) +
+                          ") and no take-off altitude to subtract (give --takeoff-alt M or --plan)"
+                    : "no altitude in its EXIF or XMP, and no plan to take it from");
             continue;
         }
         if (!(p.altitudeM >= 2.0) || p.altitudeM > 3000.0) {
             report(PhotoFinding::Kind::NoAltitude, w, true,
-                 fmt("%.1f m", p.altitudeM) + " above take-off (" + altFrom + "): " +
-                     (p.altitudeM < 2.0 ? "taken on the ground" : "not a survey altitude"));
+                   fmt("%.1f m", p.altitudeM) + " above take-off (" + altFrom + "): " +
+                       (p.altitudeM < 2.0 ? "taken on the ground" : "not a survey altitude"));
             continue;
         }
 
@@ -504,8 +526,8 @@ Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas, cons
             p.yawDeg = plan->headingDeg;
             attFrom = "planned heading";
         } else {
-            // Along the flight track: towards the next photo, or from the previous one, whichever is
-            // nearer (the photo spacing along a line is shorter than the step to the next line).
+            // Along the flight track: towards the next photo, or from the previous one, whichever
+            // is nearer (the photo spacing along a line is shorter than the step to the next line).
             std::optional<geo::Vec2> prev, next;
             for (int k = static_cast<int>(wi) - 1; k >= 0 && !prev; --k)
                 if (!work[k].excluded && work[k].local && (*work[k].local - *w.local).norm() > 1.0)
@@ -513,10 +535,12 @@ Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas, cons
             for (std::size_t k = wi + 1; k < work.size() && !next; ++k)
                 if (!work[k].excluded && work[k].local && (*work[k].local - *w.local).norm() > 1.0)
                     next = *work[k].local - *w.local;
-            std::optional<geo::Vec2> dir = prev && next ? (prev->norm() < next->norm() ? prev : next) : (prev ? prev : next);
+            std::optional<geo::Vec2> dir =
+                prev && next ? (prev->norm() < next->norm() ? prev : next) : (prev ? prev : next);
             if (!dir) {
                 report(PhotoFinding::Kind::NoPosition, w, true,
-                     "no camera direction in its EXIF or XMP, no plan, and no other photo to follow the track by");
+                       "no camera direction in its EXIF or XMP, no plan, and no other photo to "
+                       "follow the track by");
                 continue;
             }
             p.yawDeg = std::atan2(dir->x(), dir->y()) / kDeg;
@@ -541,10 +565,13 @@ Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas, cons
         else if (plan && plan->footprintAcrossM > 0 && plan->footprintAlongM > 0)
             fov = fovFromPlan(*plan);
         if (!fov) {
-            const std::string what = m.make.empty() && m.model.empty() ? std::string("no camera make or model in EXIF")
-                                                                      : "camera '" + m.make + " " + m.model + "' is not in the catalog";
+            const std::string what =
+                m.make.empty() && m.model.empty()
+                    ? std::string("no camera make or model in EXIF")
+                    : "camera '" + m.make + " " + m.model + "' is not in the catalog";
             report(PhotoFinding::Kind::NoCamera, w, true,
-                 what + " and no 35 mm focal length: its field of view is unknown (give --camera NAME)");
+                   what + " and no 35 mm focal length: its field of view is unknown (give --camera "
+                          "NAME)");
             continue;
         }
         p.longSideFovDeg = fov->longDeg;
@@ -552,22 +579,26 @@ Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas, cons
         p.camera = fov->name;
         ++cameras[fov->name];
 
-        const std::string posFrom = w.inOrder ? "plan (capture order)" : (m.position ? "GPS" : "plan");
-        p.poseFrom = posFrom + ", " + altFrom + ", " + attFrom + (m.gimbalPitchDeg ? "" : ", assumed nadir");
+        const std::string posFrom =
+            w.inOrder ? "plan (capture order)" : (m.position ? "GPS" : "plan");
+        p.poseFrom =
+            posFrom + ", " + altFrom + ", " + attFrom + (m.gimbalPitchDeg ? "" : ", assumed nadir");
         out.photos.push_back(std::move(p));
     }
 
     if (yawFromTrack > 0)
-        out.notes.push_back(std::to_string(yawFromTrack) +
-                            " photo(s) without a camera direction: the top of each image is taken to point along "
-                            "the flight track");
+        out.notes.push_back(
+            std::to_string(yawFromTrack) +
+            " photo(s) without a camera direction: the top of each image is taken to point along "
+            "the flight track");
     if (assumedNadir > 0)
         out.notes.push_back(std::to_string(assumedNadir) +
                             " photo(s) without gimbal angles in XMP: taken to look straight down");
     if (magnetic > 0)
-        out.notes.push_back(std::to_string(magnetic) +
-                            " photo(s) give their direction from magnetic north: used as true north (the local "
-                            "declination is not applied)");
+        out.notes.push_back(
+            std::to_string(magnetic) +
+            " photo(s) give their direction from magnetic north: used as true north (the local "
+            "declination is not applied)");
     for (const auto& [name, count] : cameras)
         out.notes.push_back("camera: " + name + " (" + std::to_string(count) + " photo(s))");
 
@@ -588,8 +619,9 @@ Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas, cons
         }
         for (const auto& [name, count] : plannedPerAircraft)
             if (matchedPerAircraft[name] == 0)
-                out.notes.push_back("no photo matches any of the " + std::to_string(count) + " planned points of " +
-                                    name + " (give --aircraft NAME to match one aircraft's photos)");
+                out.notes.push_back("no photo matches any of the " + std::to_string(count) +
+                                    " planned points of " + name +
+                                    " (give --aircraft NAME to match one aircraft's photos)");
     }
     return out;
 }

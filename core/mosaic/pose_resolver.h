@@ -20,10 +20,10 @@ struct PlacedPhoto {
     double rollDeg = 0.0;
     double longSideFovDeg = 0.0;
     double shortSideFovDeg = 0.0;
-    std::string camera;      // the catalog camera, or where the field of view came from
-    int planned = -1;        // index into the plan's photos (after the aircraft filter), -1: none
+    std::string camera; // the catalog camera, or where the field of view came from
+    int planned = -1;   // index into the plan's photos (after the aircraft filter), -1: none
     double planOffsetM = -1.0;
-    std::string poseFrom;    // "EXIF GPS, XMP altitude and gimbal", "plan (in order)", ...
+    std::string poseFrom; // "EXIF GPS, XMP altitude and gimbal", "plan (in order)", ...
 };
 
 struct ResolvedPoses {
@@ -36,11 +36,12 @@ struct ResolvedPoses {
 
 // Places every photo it can; the others get a finding saying why. Fails only on options that name
 // something that does not exist (an unknown camera or aircraft).
-Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& photos, const MosaicOptions& options);
+Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& photos,
+                                   const MosaicOptions& options);
 
-// The catalog camera for an EXIF make and model (DJI's model codes, then catalog names containing the
-// model), or null.
-const sensor::Camera* cameraForExif(const std::vector<sensor::Camera>& catalog, const std::string& make,
-                                    const std::string& model);
+// The catalog camera for an EXIF make and model (DJI's model codes, then catalog names containing
+// the model), or null.
+const sensor::Camera* cameraForExif(const std::vector<sensor::Camera>& catalog,
+                                    const std::string& make, const std::string& model);
 
 } // namespace pf::mosaic

@@ -28,7 +28,8 @@ public:
             for (std::size_t i = 0; i < r.size(); ++i) {
                 const geo::Vec2& a = r[i];
                 const geo::Vec2& b = r[(i + 1) % r.size()];
-                m_edges.push_back({grid.col(a.x()), grid.row(a.y()), grid.col(b.x()), grid.row(b.y())});
+                m_edges.push_back(
+                    {grid.col(a.x()), grid.row(a.y()), grid.col(b.x()), grid.row(b.y())});
             }
         };
         for (const auto& p : area) {
@@ -87,9 +88,10 @@ SeamMap::~SeamMap() {
     }
 }
 
-Result<std::unique_ptr<SeamMap>> SeamMap::compute(const std::vector<PhotoGeometry>& photos, const GroundModel& ground,
-                                                  const OutputGrid& grid, const geo::MultiPolygon& area,
-                                                  double featherM, int threads, const std::string& scratchPath,
+Result<std::unique_ptr<SeamMap>> SeamMap::compute(const std::vector<PhotoGeometry>& photos,
+                                                  const GroundModel& ground, const OutputGrid& grid,
+                                                  const geo::MultiPolygon& area, double featherM,
+                                                  int threads, const std::string& scratchPath,
                                                   const std::function<bool(double)>& progress) {
     if (photos.size() >= 65535)
         return makeError(ErrorCode::TooLarge, "at most 65534 photos fit in one mosaic");
@@ -101,15 +103,16 @@ Result<std::unique_ptr<SeamMap>> SeamMap::compute(const std::vector<PhotoGeometr
     map->m_impl->path = scratchPath;
 
     GDALDriver* gtiff = GetGDALDriverManager()->GetDriverByName("GTiff");
-    const char* const options[] = {"TILED=YES",      "BLOCKXSIZE=256", "BLOCKYSIZE=256", "INTERLEAVE=PIXEL",
-                                   "COMPRESS=ZSTD",  "ZSTD_LEVEL=1",   "BIGTIFF=IF_SAFER", "SPARSE_OK=TRUE",
-                                   nullptr};
+    const char* const options[] = {"TILED=YES",        "BLOCKXSIZE=256", "BLOCKYSIZE=256",
+                                   "INTERLEAVE=PIXEL", "COMPRESS=ZSTD",  "ZSTD_LEVEL=1",
+                                   "BIGTIFF=IF_SAFER", "SPARSE_OK=TRUE", nullptr};
     detail::GdalErrorCapture errors;
-    map->m_impl->ds.reset(gtiff ? gtiff->Create(scratchPath.c_str(), grid.width, grid.height, 2, GDT_UInt16,
-                                                const_cast<char**>(options))
+    map->m_impl->ds.reset(gtiff ? gtiff->Create(scratchPath.c_str(), grid.width, grid.height, 2,
+                                                GDT_UInt16, const_cast<char**>(options))
                                 : nullptr);
     if (!map->m_impl->ds)
-        return makeError(ErrorCode::IoError, "cannot create the scratch file " + scratchPath + " (" + errors.message() + ")");
+        return makeError(ErrorCode::IoError, "cannot create the scratch file " + scratchPath +
+                                                 " (" + errors.message() + ")");
     double gt[6];
     grid.geoTransform(gt);
     map->m_impl->ds->SetGeoTransform(gt);
@@ -128,8 +131,9 @@ Result<std::unique_ptr<SeamMap>> SeamMap::compute(const std::vector<PhotoGeometr
         out->labels.assign(static_cast<std::size_t>(tw.w) * tw.h * 2, 0);
         out->used.clear();
         out->covered = out->coveredArea = 0;
-        const geo::Box box{{grid.originX + tw.x0 * grid.gsd, grid.originY - (tw.y0 + tw.h) * grid.gsd},
-                           {grid.originX + (tw.x0 + tw.w) * grid.gsd, grid.originY - tw.y0 * grid.gsd}};
+        const geo::Box box{
+            {grid.originX + tw.x0 * grid.gsd, grid.originY - (tw.y0 + tw.h) * grid.gsd},
+            {grid.originX + (tw.x0 + tw.w) * grid.gsd, grid.originY - tw.y0 * grid.gsd}};
         const geo::Vec2 mid = 0.5 * (box.min + box.max);
         std::vector<int> cand;
         for (int i = 0; i < static_cast<int>(photos.size()); ++i)
@@ -138,7 +142,8 @@ Result<std::unique_ptr<SeamMap>> SeamMap::compute(const std::vector<PhotoGeometr
         std::sort(cand.begin(), cand.end(), [&](int a, int b) {
             const Vec3& ca = photos[a].camera.centre();
             const Vec3& cb = photos[b].camera.centre();
-            return (geo::Vec2(ca.x(), ca.y()) - mid).squaredNorm() < (geo::Vec2(cb.x(), cb.y()) - mid).squaredNorm();
+            return (geo::Vec2(ca.x(), ca.y()) - mid).squaredNorm() <
+                   (geo::Vec2(cb.x(), cb.y()) - mid).squaredNorm();
         });
         // On a level ground a photo that holds the tile's four corners holds all of it: the ground
         // seen within a view angle is convex, and so is the image of a rectangle.
@@ -209,8 +214,9 @@ Result<std::unique_ptr<SeamMap>> SeamMap::compute(const std::vector<PhotoGeometr
         }
         for (std::size_t k = 0; k < cand.size(); ++k)
             if (ext[k].c1 >= 0)
-                out->used[cand[k]] = PixelWindow{tw.x0 + ext[k].c0, tw.y0 + ext[k].r0, ext[k].c1 - ext[k].c0 + 1,
-                                                 ext[k].r1 - ext[k].r0 + 1};
+                out->used[cand[k]] =
+                    PixelWindow{tw.x0 + ext[k].c0, tw.y0 + ext[k].r0, ext[k].c1 - ext[k].c0 + 1,
+                                ext[k].r1 - ext[k].r0 + 1};
     };
 
     std::atomic<long long> next{0};
@@ -224,8 +230,9 @@ Result<std::unique_ptr<SeamMap>> SeamMap::compute(const std::vector<PhotoGeometr
             std::lock_guard<std::mutex> lock(map->m_impl->mutex);
             detail::GdalErrorCapture werrors;
             const CPLErr err = map->m_impl->ds->RasterIO(
-                GF_Write, tile.window.x0, tile.window.y0, tile.window.w, tile.window.h, tile.labels.data(),
-                tile.window.w, tile.window.h, GDT_UInt16, 2, nullptr, 4, 4 * tile.window.w, 2, nullptr);
+                GF_Write, tile.window.x0, tile.window.y0, tile.window.w, tile.window.h,
+                tile.labels.data(), tile.window.w, tile.window.h, GDT_UInt16, 2, nullptr, 4,
+                4 * tile.window.w, 2, nullptr);
             if (err != CE_None) {
                 if (writeError.empty())
                     writeError = werrors.message();
@@ -248,23 +255,24 @@ Result<std::unique_ptr<SeamMap>> SeamMap::compute(const std::vector<PhotoGeometr
     for (auto& t : pool)
         t.join();
     if (!writeError.empty())
-        return makeError(ErrorCode::IoError, "cannot write the scratch file " + scratchPath + " (" + writeError +
-                                                 "): is the disk full?");
+        return makeError(ErrorCode::IoError, "cannot write the scratch file " + scratchPath + " (" +
+                                                 writeError + "): is the disk full?");
     if (stop)
         return makeError(ErrorCode::Cancelled, "cancelled");
     map->m_impl->ds->FlushCache();
     return map;
 }
 
-Status SeamMap::read(const PixelWindow& w, std::vector<std::uint16_t>* best, std::vector<std::uint16_t>* second) const {
+Status SeamMap::read(const PixelWindow& w, std::vector<std::uint16_t>* best,
+                     std::vector<std::uint16_t>* second) const {
     std::vector<std::uint16_t> both(static_cast<std::size_t>(w.w) * w.h * 2);
     {
         std::lock_guard<std::mutex> lock(m_impl->mutex);
         detail::GdalErrorCapture errors;
-        if (m_impl->ds->RasterIO(GF_Read, w.x0, w.y0, w.w, w.h, both.data(), w.w, w.h, GDT_UInt16, 2, nullptr, 4,
-                                 4 * w.w, 2, nullptr) != CE_None)
-            return makeError(ErrorCode::IoError, "cannot read the scratch file " + m_impl->path + " (" +
-                                                     errors.message() + ")");
+        if (m_impl->ds->RasterIO(GF_Read, w.x0, w.y0, w.w, w.h, both.data(), w.w, w.h, GDT_UInt16,
+                                 2, nullptr, 4, 4 * w.w, 2, nullptr) != CE_None)
+            return makeError(ErrorCode::IoError, "cannot read the scratch file " + m_impl->path +
+                                                     " (" + errors.message() + ")");
     }
     best->resize(both.size() / 2);
     second->resize(both.size() / 2);

@@ -18,13 +18,13 @@ namespace pf::mosaic {
 class SeamMap {
 public:
     // Labels every pixel of `grid` and writes the labels to a scratch GeoTIFF at `scratchPath`
-    // (deleted with the map). `area` (grid metres, may be empty) is only counted: how much of it the
-    // photos cover. `progress` receives the fraction done and returns false to stop (then Cancelled).
-    static Result<std::unique_ptr<SeamMap>> compute(const std::vector<PhotoGeometry>& photos,
-                                                    const GroundModel& ground, const OutputGrid& grid,
-                                                    const geo::MultiPolygon& area, double featherM, int threads,
-                                                    const std::string& scratchPath,
-                                                    const std::function<bool(double)>& progress);
+    // (deleted with the map). `area` (grid metres, may be empty) is only counted: how much of it
+    // the photos cover. `progress` receives the fraction done and returns false to stop (then
+    // Cancelled).
+    static Result<std::unique_ptr<SeamMap>>
+    compute(const std::vector<PhotoGeometry>& photos, const GroundModel& ground,
+            const OutputGrid& grid, const geo::MultiPolygon& area, double featherM, int threads,
+            const std::string& scratchPath, const std::function<bool(double)>& progress);
     ~SeamMap();
     SeamMap(const SeamMap&) = delete;
     SeamMap& operator=(const SeamMap&) = delete;
@@ -33,7 +33,8 @@ public:
     const std::vector<PixelWindow>& windows() const { return m_windows; }
     // The labels of a window, row by row: photo index + 1 (0: no photo). `second` is the photo
     // blended in near a seam (0: none). Thread-safe.
-    Status read(const PixelWindow& w, std::vector<std::uint16_t>* best, std::vector<std::uint16_t>* second) const;
+    Status read(const PixelWindow& w, std::vector<std::uint16_t>* best,
+                std::vector<std::uint16_t>* second) const;
     // The part of the mosaic taken from each photo, grid metres (polygons along pixel edges).
     Result<std::vector<geo::MultiPolygon>> seamPolygons(int photoCount) const;
 

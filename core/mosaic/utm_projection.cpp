@@ -23,9 +23,11 @@ UtmProjection& UtmProjection::operator=(UtmProjection&&) noexcept = default;
 UtmProjection::~UtmProjection() = default;
 
 Result<UtmProjection> UtmProjection::forSite(geo::LonLat site) {
-    if (!std::isfinite(site.lon) || !std::isfinite(site.lat) || std::abs(site.lat) > 84.0 || std::abs(site.lon) > 180.0) {
+    if (!std::isfinite(site.lon) || !std::isfinite(site.lat) || std::abs(site.lat) > 84.0 ||
+        std::abs(site.lon) > 180.0) {
         char buf[160];
-        std::snprintf(buf, sizeof buf, "no UTM zone for lon %.6f, lat %.6f (UTM covers latitudes 80 S to 84 N)",
+        std::snprintf(buf, sizeof buf,
+                      "no UTM zone for lon %.6f, lat %.6f (UTM covers latitudes 80 S to 84 N)",
                       site.lon, site.lat);
         return makeError(ErrorCode::InvalidInput, buf);
     }
@@ -36,7 +38,8 @@ Result<UtmProjection> UtmProjection::forSite(geo::LonLat site) {
     wgs84.SetWellKnownGeogCS("WGS84");
     wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
     if (impl->utm.importFromEPSG((north ? 32600 : 32700) + zone) != OGRERR_NONE)
-        return makeError(ErrorCode::Internal, "PROJ does not know the UTM zone " + std::to_string(zone) +
+        return makeError(ErrorCode::Internal, "PROJ does not know the UTM zone " +
+                                                  std::to_string(zone) +
                                                   " (is proj-data installed?)");
     impl->utm.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
     impl->toGrid.reset(OGRCreateCoordinateTransformation(&wgs84, &impl->utm));
@@ -47,7 +50,8 @@ Result<UtmProjection> UtmProjection::forSite(geo::LonLat site) {
 }
 
 std::string UtmProjection::name() const {
-    return "UTM zone " + std::to_string(m_zone) + (m_north ? "N" : "S") + " (EPSG:" + std::to_string(epsg()) + ")";
+    return "UTM zone " + std::to_string(m_zone) + (m_north ? "N" : "S") +
+           " (EPSG:" + std::to_string(epsg()) + ")";
 }
 
 std::string UtmProjection::wkt() const {

@@ -1,4 +1,5 @@
-// UtmProjection: the output grid's coordinate system, the UTM zone of the site (WGS84), through PROJ.
+// UtmProjection: the output grid's coordinate system, the UTM zone of the site (WGS84), through
+// PROJ.
 #pragma once
 
 #include "core/geo/types.h"
@@ -13,8 +14,8 @@ namespace pf::mosaic {
 // when writing vectors, never from its worker threads.
 class UtmProjection {
 public:
-    // The zone containing `site` (north or south by its latitude; Norway and Svalbard exceptions are
-    // not applied: a site there gets its standard 6-degree zone).
+    // The zone containing `site` (north or south by its latitude; Norway and Svalbard exceptions
+    // are not applied: a site there gets its standard 6-degree zone).
     static Result<UtmProjection> forSite(geo::LonLat site);
     UtmProjection(UtmProjection&&) noexcept;
     UtmProjection& operator=(UtmProjection&&) noexcept;

@@ -6,7 +6,8 @@
 // later runs, so that `/usr/bin/time -v pf_bench --benchmark_filter=Mosaic200` measures the mosaic
 // alone:
 //
-//   PF_MOSAIC_BENCH_DIR=/tmp/pf_mosaic_bench build/tests/bench/pf_bench --benchmark_filter=Mosaic200
+//   PF_MOSAIC_BENCH_DIR=/tmp/pf_mosaic_bench build/tests/bench/pf_bench
+//   --benchmark_filter=Mosaic200
 #include "core/io/catalog.h"
 #include "core/io/mission_file.h"
 #include "core/mission/plan_mission.h"
@@ -33,8 +34,8 @@ struct BenchSet {
     std::string error;
 };
 
-// `count` photos of `width` x 3/4 width of the demo mission's Falcon 8 flown at `altitudeM`, in `dir`
-// (rendered only if the directory does not hold this set yet).
+// `count` photos of `width` x 3/4 width of the demo mission's Falcon 8 flown at `altitudeM`, in
+// `dir` (rendered only if the directory does not hold this set yet).
 BenchSet photoSet(const std::string& dir, int count, int width, double altitudeM) {
     BenchSet s;
     auto m = io::readMissionFile(std::string(PF_RESOURCES_DIR) + "/demo/demo_mission.json");
@@ -58,11 +59,13 @@ BenchSet photoSet(const std::string& dir, int count, int width, double altitudeM
     testsim::SimOptions o;
     o.camera.widthPx = width;
     o.camera.heightPx = width * 3 / 4;
-    o.grain = 18.0; // photo-scale texture, so the JPEGs carry (and decode) as much detail as real ones
+    o.grain =
+        18.0; // photo-scale texture, so the JPEGs carry (and decode) as much detail as real ones
     o.threads = 2;
     s.photoGsdM = 2.0 * altitudeM * std::tan(o.camera.longSideFovDeg * M_PI / 360.0) / width;
     const std::string marker = dir + "/set.txt";
-    const std::string id = std::to_string(count) + " " + std::to_string(width) + " " + std::to_string(altitudeM);
+    const std::string id =
+        std::to_string(count) + " " + std::to_string(width) + " " + std::to_string(altitudeM);
     std::string have;
     std::getline(std::ifstream(marker), have);
     for (int i = 1; i <= count; ++i) {

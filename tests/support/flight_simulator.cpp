@@ -24,18 +24,27 @@ constexpr double kDeg = 3.14159265358979323846 / 180.0;
 struct V3 {
     double x, y, z;
 };
-V3 operator+(V3 a, V3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-V3 operator*(double s, V3 a) { return {s * a.x, s * a.y, s * a.z}; }
-double dot(V3 a, V3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-V3 cross(V3 a, V3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+V3 operator+(V3 a, V3 b) {
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+V3 operator*(double s, V3 a) {
+    return {s * a.x, s * a.y, s * a.z};
+}
+double dot(V3 a, V3 b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+V3 cross(V3 a, V3 b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
 // Rodrigues: v turned by `angle` about the unit axis k (right-handed).
 V3 rotate(V3 v, V3 k, double angle) {
     const double c = std::cos(angle), s = std::sin(angle);
     return c * v + s * cross(k, v) + (dot(k, v) * (1 - c)) * k;
 }
 
-// The camera's axes in the local frame (x east, y north, z up), built from the gimbal angles the way
-// a gimbal moves: face the yaw, tilt by the pitch about the right axis, roll about the forward axis.
+// The camera's axes in the local frame (x east, y north, z up), built from the gimbal angles the
+// way a gimbal moves: face the yaw, tilt by the pitch about the right axis, roll about the forward
+// axis.
 struct Axes {
     V3 right, down, view;
 };
@@ -68,7 +77,8 @@ std::string num(const char* f, double v) {
     return buf;
 }
 
-// A fine deterministic texture (value noise on a lattice) standing in for the detail a real photo has.
+// A fine deterministic texture (value noise on a lattice) standing in for the detail a real photo
+// has.
 double grainAt(double x, double y, double cell) {
     auto h = [](long long i, long long j) {
         unsigned long long k = static_cast<unsigned long long>(i) * 0x9E3779B97F4A7C15ull ^
@@ -79,9 +89,11 @@ double grainAt(double x, double y, double cell) {
         return static_cast<double>(k & 0xFFFF) / 65535.0 - 0.5;
     };
     const double u = x / cell, v = y / cell;
-    const long long i = static_cast<long long>(std::floor(u)), j = static_cast<long long>(std::floor(v));
+    const long long i = static_cast<long long>(std::floor(u)),
+                    j = static_cast<long long>(std::floor(v));
     const double fu = u - i, fv = v - j;
-    return (h(i, j) * (1 - fu) + h(i + 1, j) * fu) * (1 - fv) + (h(i, j + 1) * (1 - fu) + h(i + 1, j + 1) * fu) * fv;
+    return (h(i, j) * (1 - fu) + h(i + 1, j) * fu) * (1 - fv) +
+           (h(i, j + 1) * (1 - fu) + h(i + 1, j + 1) * fu) * fv;
 }
 
 struct GdalDatasetCloser {
@@ -101,8 +113,8 @@ std::string demoMapPath() {
     return {};
 }
 
-Result<GroundImage> GroundImage::load(const std::string& mapPath, geo::LonLat centre, double halfW, double halfH,
-                                      double res) {
+Result<GroundImage> GroundImage::load(const std::string& mapPath, geo::LonLat centre, double halfW,
+                                      double halfH, double res) {
     GDALAllRegister();
     auto frame = geo::LocalFrame::create(centre);
     if (!frame)
@@ -140,14 +152,16 @@ Result<GroundImage> GroundImage::load(const std::string& mapPath, geo::LonLat ce
     GDALWarpAppOptions* wo = GDALWarpAppOptionsNew(argv.List(), nullptr);
     GDALDatasetH srcH = src.get();
     int usageError = 0;
-    std::unique_ptr<void, GdalDatasetCloser> warped(GDALWarp("", nullptr, 1, &srcH, wo, &usageError));
+    std::unique_ptr<void, GdalDatasetCloser> warped(
+        GDALWarp("", nullptr, 1, &srcH, wo, &usageError));
     GDALWarpAppOptionsFree(wo);
     if (!warped)
-        return makeError(ErrorCode::IoError, mapPath + ": cannot resample the map into the local frame");
+        return makeError(ErrorCode::IoError,
+                         mapPath + ": cannot resample the map into the local frame");
     img.m_rgb.resize(static_cast<std::size_t>(img.m_w) * img.m_h * 3);
     int bands[3] = {1, 2, 3};
-    if (GDALDatasetRasterIO(warped.get(), GF_Read, 0, 0, img.m_w, img.m_h, img.m_rgb.data(), img.m_w, img.m_h,
-                            GDT_Byte, 3, bands, 3, 3 * img.m_w, 1) != CE_None)
+    if (GDALDatasetRasterIO(warped.get(), GF_Read, 0, 0, img.m_w, img.m_h, img.m_rgb.data(),
+                            img.m_w, img.m_h, GDT_Byte, 3, bands, 3, 3 * img.m_w, 1) != CE_None)
         return makeError(ErrorCode::IoError, mapPath + ": cannot read the resampled map");
     return img;
 }
@@ -168,8 +182,8 @@ bool GroundImage::sample(double x, double y, std::uint8_t rgb[3]) const {
     return true;
 }
 
-Status writePhoto(const GroundImage& ground, const SimPose& truth, const SimPose& recorded, const SimOptions& o,
-                  int index, const std::string& path) {
+Status writePhoto(const GroundImage& ground, const SimPose& truth, const SimPose& recorded,
+                  const SimOptions& o, int index, const std::string& path) {
     const int w = o.camera.widthPx, h = o.camera.heightPx;
     const bool landscape = w >= h;
     const double fovX = (landscape ? o.camera.longSideFovDeg : o.camera.shortSideFovDeg) * kDeg;
@@ -183,7 +197,8 @@ Status writePhoto(const GroundImage& ground, const SimPose& truth, const SimPose
     auto renderRows = [&](int r0, int r1) {
         for (int r = r0; r < r1; ++r) {
             for (int c = 0; c < w; ++c) {
-                const V3 dir = axes.view + ((c + 0.5 - w / 2.0) / fx) * axes.right + ((r + 0.5 - h / 2.0) / fy) * axes.down;
+                const V3 dir = axes.view + ((c + 0.5 - w / 2.0) / fx) * axes.right +
+                               ((r + 0.5 - h / 2.0) / fy) * axes.down;
                 if (dir.z >= 0)
                     continue;
                 // Flat ground at 0, or the terrain by fixed-point steps along the ray.
@@ -206,7 +221,8 @@ Status writePhoto(const GroundImage& ground, const SimPose& truth, const SimPose
                 if (o.grain > 0) {
                     const double g = o.grain * grainAt(p.x, p.y, o.grainCellM);
                     for (int k = 0; k < 3; ++k)
-                        px[k] = static_cast<std::uint8_t>(std::clamp(static_cast<int>(std::lround(px[k] + g)), 0, 255));
+                        px[k] = static_cast<std::uint8_t>(
+                            std::clamp(static_cast<int>(std::lround(px[k] + g)), 0, 255));
                 }
             }
         }
@@ -228,12 +244,15 @@ Status writePhoto(const GroundImage& ground, const SimPose& truth, const SimPose
         const char* const list[] = {opt[0], opt[1], opt[2], nullptr};
         GDALAddBand(ds.get(), GDT_Byte, const_cast<char**>(list));
     }
-    auto md = [&](const char* key, const std::string& value) { GDALSetMetadataItem(ds.get(), key, value.c_str(), nullptr); };
+    auto md = [&](const char* key, const std::string& value) {
+        GDALSetMetadataItem(ds.get(), key, value.c_str(), nullptr);
+    };
     md("EXIF_Make", o.camera.make);
     md("EXIF_Model", o.camera.model);
     md("EXIF_Orientation", "1");
     char date[64];
-    std::snprintf(date, sizeof date, "2024:06:07 10:%02d:%02d", (index * 2 / 60) % 60, (index * 2) % 60);
+    std::snprintf(date, sizeof date, "2024:06:07 10:%02d:%02d", (index * 2 / 60) % 60,
+                  (index * 2) % 60);
     md("EXIF_DateTimeOriginal", date);
     if (o.write35mm) {
         const double diag = std::hypot(std::tan(fovX / 2), std::tan(fovY / 2));
@@ -245,31 +264,39 @@ Status writePhoto(const GroundImage& ground, const SimPose& truth, const SimPose
         md("EXIF_GPSLongitudeRef", recorded.position.lon >= 0 ? "E" : "W");
         md("EXIF_GPSLongitude", dms(recorded.position.lon));
         md("EXIF_GPSAltitudeRef", "0");
-        md("EXIF_GPSAltitude", "(" + num("%.3f", recorded.altitudeM + o.takeoffAltitudeAmslM) + ")");
+        md("EXIF_GPSAltitude",
+           "(" + num("%.3f", recorded.altitudeM + o.takeoffAltitudeAmslM) + ")");
     }
     if (o.writeDirection) {
         md("EXIF_GPSImgDirectionRef", "T");
-        md("EXIF_GPSImgDirection", "(" + num("%.3f", std::fmod(recorded.yawDeg + 360.0, 360.0)) + ")");
+        md("EXIF_GPSImgDirection",
+           "(" + num("%.3f", std::fmod(recorded.yawDeg + 360.0, 360.0)) + ")");
     }
     const std::string q = "QUALITY=" + std::to_string(o.jpegQuality);
     const char* const jpegOptions[] = {q.c_str(), nullptr};
     {
-        std::unique_ptr<void, GdalDatasetCloser> out(GDALCreateCopy(GDALGetDriverByName("JPEG"), path.c_str(), ds.get(),
-                                                                     FALSE, const_cast<char**>(jpegOptions), nullptr, nullptr));
+        std::unique_ptr<void, GdalDatasetCloser> out(
+            GDALCreateCopy(GDALGetDriverByName("JPEG"), path.c_str(), ds.get(), FALSE,
+                           const_cast<char**>(jpegOptions), nullptr, nullptr));
         if (!out)
             return makeError(ErrorCode::IoError, path + ": cannot write the photo");
     }
     std::filesystem::remove(path + ".aux.xml");
     if (!o.writeXmp)
         return {};
-    // GDAL's JPEG writer has no XMP option: add the APP1 XMP segment after the start-of-image marker.
+    // GDAL's JPEG writer has no XMP option: add the APP1 XMP segment after the start-of-image
+    // marker.
     const std::string xmp =
-        "<x:xmpmeta xmlns:x=\"adobe:ns:meta/\"><rdf:RDF xmlns:rdf=\"http://www.w3.org/1999/02/22-rdf-syntax-ns#\">"
-        "<rdf:Description rdf:about=\"\" xmlns:drone-dji=\"http://www.dji.com/drone-dji/1.0/\" drone-dji:AbsoluteAltitude=\"" +
-        num("%+.3f", recorded.altitudeM + o.takeoffAltitudeAmslM) + "\" drone-dji:RelativeAltitude=\"" +
-        num("%+.3f", recorded.altitudeM) + "\" drone-dji:GimbalRollDegree=\"" + num("%+.3f", recorded.rollDeg) +
-        "\" drone-dji:GimbalYawDegree=\"" + num("%+.3f", recorded.yawDeg) + "\" drone-dji:GimbalPitchDegree=\"" +
-        num("%+.3f", recorded.pitchDeg) + "\" drone-dji:FlightYawDegree=\"" + num("%+.3f", recorded.yawDeg) +
+        "<x:xmpmeta xmlns:x=\"adobe:ns:meta/\"><rdf:RDF "
+        "xmlns:rdf=\"http://www.w3.org/1999/02/22-rdf-syntax-ns#\">"
+        "<rdf:Description rdf:about=\"\" xmlns:drone-dji=\"http://www.dji.com/drone-dji/1.0/\" "
+        "drone-dji:AbsoluteAltitude=\"" +
+        num("%+.3f", recorded.altitudeM + o.takeoffAltitudeAmslM) +
+        "\" drone-dji:RelativeAltitude=\"" + num("%+.3f", recorded.altitudeM) +
+        "\" drone-dji:GimbalRollDegree=\"" + num("%+.3f", recorded.rollDeg) +
+        "\" drone-dji:GimbalYawDegree=\"" + num("%+.3f", recorded.yawDeg) +
+        "\" drone-dji:GimbalPitchDegree=\"" + num("%+.3f", recorded.pitchDeg) +
+        "\" drone-dji:FlightYawDegree=\"" + num("%+.3f", recorded.yawDeg) +
         "\"/></rdf:RDF></x:xmpmeta>";
     std::string payload = std::string("http://ns.adobe.com/xap/1.0/") + '\0' + xmp;
     std::string bytes;
@@ -280,7 +307,8 @@ Status writePhoto(const GroundImage& ground, const SimPose& truth, const SimPose
     if (bytes.size() < 2)
         return makeError(ErrorCode::IoError, path + ": empty photo");
     const std::size_t len = payload.size() + 2;
-    std::string segment = {'\xFF', '\xE1', static_cast<char>(len >> 8), static_cast<char>(len & 0xFF)};
+    std::string segment = {'\xFF', '\xE1', static_cast<char>(len >> 8),
+                           static_cast<char>(len & 0xFF)};
     bytes.insert(2, segment + payload);
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
@@ -303,7 +331,8 @@ Result<std::vector<SimulatedPhoto>> simulateFlight(const GroundImage& ground,
         s.recorded = s.truth;
         if (o.positionNoiseM > 0 || o.angleNoiseDeg > 0) {
             const geo::Vec2 local = ground.frame().toLocal(p.position);
-            const double dx = o.positionNoiseM * pos(rng), dy = o.positionNoiseM * pos(rng), dz = o.positionNoiseM * pos(rng);
+            const double dx = o.positionNoiseM * pos(rng), dy = o.positionNoiseM * pos(rng),
+                         dz = o.positionNoiseM * pos(rng);
             s.recorded.position = ground.frame().toGeo(local + geo::Vec2(dx, dy));
             s.recorded.altitudeM += dz;
             s.recorded.yawDeg += o.angleNoiseDeg * ang(rng);
@@ -347,20 +376,23 @@ Result<Comparison> compareWithMap(const std::string& mosaicPath, const std::stri
     std::unique_ptr<void, GdalDatasetCloser> ref(GDALWarp("", nullptr, 1, &mapH, wo, &usageError));
     GDALWarpAppOptionsFree(wo);
     if (!ref)
-        return makeError(ErrorCode::IoError, "cannot resample " + mapPath + " onto the mosaic's grid");
+        return makeError(ErrorCode::IoError,
+                         "cannot resample " + mapPath + " onto the mosaic's grid");
 
     // The area as a raster mask on the same grid.
     std::vector<std::uint8_t> inArea(static_cast<std::size_t>(w) * h, area.empty() ? 1 : 0);
     double areaPixels = 0.0; // the whole area, also where it lies beyond the mosaic
     if (!area.empty()) {
-        std::unique_ptr<void, GdalDatasetCloser> maskDs(GDALCreate(GDALGetDriverByName("MEM"), "", w, h, 1, GDT_Byte, nullptr));
+        std::unique_ptr<void, GdalDatasetCloser> maskDs(
+            GDALCreate(GDALGetDriverByName("MEM"), "", w, h, 1, GDT_Byte, nullptr));
         GDALSetGeoTransform(maskDs.get(), gt);
         OGRSpatialReference wgs84, dst;
         wgs84.SetWellKnownGeogCS("WGS84");
         wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
         dst.importFromWkt(wkt.c_str());
         dst.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-        std::unique_ptr<OGRCoordinateTransformation> ct(OGRCreateCoordinateTransformation(&wgs84, &dst));
+        std::unique_ptr<OGRCoordinateTransformation> ct(
+            OGRCreateCoordinateTransformation(&wgs84, &dst));
         std::vector<OGRGeometryH> geoms;
         for (const auto& poly : area) {
             auto* p = new OGRPolygon;
@@ -380,12 +412,13 @@ Result<Comparison> compareWithMap(const std::string& mosaicPath, const std::stri
         }
         int band = 1;
         std::vector<double> burn(geoms.size(), 1.0);
-        GDALRasterizeGeometries(maskDs.get(), 1, &band, static_cast<int>(geoms.size()), geoms.data(), nullptr, nullptr,
-                                burn.data(), nullptr, nullptr, nullptr);
+        GDALRasterizeGeometries(maskDs.get(), 1, &band, static_cast<int>(geoms.size()),
+                                geoms.data(), nullptr, nullptr, burn.data(), nullptr, nullptr,
+                                nullptr);
         for (auto g : geoms)
             OGR_G_DestroyGeometry(g);
-        if (GDALRasterIO(GDALGetRasterBand(maskDs.get(), 1), GF_Read, 0, 0, w, h, inArea.data(), w, h, GDT_Byte, 0, 0) !=
-            CE_None)
+        if (GDALRasterIO(GDALGetRasterBand(maskDs.get(), 1), GF_Read, 0, 0, w, h, inArea.data(), w,
+                         h, GDT_Byte, 0, 0) != CE_None)
             return makeError(ErrorCode::Internal, "cannot rasterise the area");
     }
 
@@ -400,10 +433,12 @@ Result<Comparison> compareWithMap(const std::string& mosaicPath, const std::stri
         a.resize(static_cast<std::size_t>(w) * rows * 3);
         b.resize(a.size());
         m.resize(static_cast<std::size_t>(w) * rows);
-        if (GDALDatasetRasterIO(mos.get(), GF_Read, 0, y0, w, rows, a.data(), w, rows, GDT_Byte, 3, bands, 3, 3 * w, 1) != CE_None ||
-            GDALDatasetRasterIO(ref.get(), GF_Read, 0, y0, w, rows, b.data(), w, rows, GDT_Byte, 3, bands, 3, 3 * w, 1) != CE_None ||
-            GDALRasterIO(GDALGetMaskBand(GDALGetRasterBand(mos.get(), 1)), GF_Read, 0, y0, w, rows, m.data(), w, rows,
-                         GDT_Byte, 0, 0) != CE_None)
+        if (GDALDatasetRasterIO(mos.get(), GF_Read, 0, y0, w, rows, a.data(), w, rows, GDT_Byte, 3,
+                                bands, 3, 3 * w, 1) != CE_None ||
+            GDALDatasetRasterIO(ref.get(), GF_Read, 0, y0, w, rows, b.data(), w, rows, GDT_Byte, 3,
+                                bands, 3, 3 * w, 1) != CE_None ||
+            GDALRasterIO(GDALGetMaskBand(GDALGetRasterBand(mos.get(), 1)), GF_Read, 0, y0, w, rows,
+                         m.data(), w, rows, GDT_Byte, 0, 0) != CE_None)
             return makeError(ErrorCode::IoError, "cannot read " + mosaicPath);
         for (int r = 0; r < rows; ++r)
             for (int c = 0; c < w; ++c) {
@@ -415,7 +450,8 @@ Result<Comparison> compareWithMap(const std::string& mosaicPath, const std::stri
                     continue;
                 ++coveredPx;
                 for (int k = 0; k < 3; ++k)
-                    sum += std::abs(static_cast<int>(a[i * 3 + k]) - static_cast<int>(b[i * 3 + k]));
+                    sum +=
+                        std::abs(static_cast<int>(a[i * 3 + k]) - static_cast<int>(b[i * 3 + k]));
             }
     }
     cmp.comparedPixels = coveredPx;

@@ -18,8 +18,8 @@ namespace pf::testsim {
 // memory, so that rendering a photo is plain arithmetic.
 class GroundImage {
 public:
-    static Result<GroundImage> load(const std::string& mapPath, geo::LonLat centre, double halfWidthM,
-                                    double halfHeightM, double resolutionM);
+    static Result<GroundImage> load(const std::string& mapPath, geo::LonLat centre,
+                                    double halfWidthM, double halfHeightM, double resolutionM);
     const geo::LocalFrame& frame() const { return m_frame; }
     // Bilinear colour at local metres; false outside the image.
     bool sample(double x, double y, std::uint8_t rgb[3]) const;
@@ -61,22 +61,23 @@ struct SimOptions {
     double angleNoiseDeg = 0.0;  // standard deviation of the recorded yaw, pitch and roll
     unsigned seed = 1;
     double takeoffAltitudeAmslM = 112.0;
-    bool writeXmp = true;          // DJI XMP: relative and absolute altitude, gimbal and flight yaw
-    bool writeGps = true;          // EXIF GPS position and altitude above sea level
-    bool writeDirection = true;    // EXIF GPSImgDirection
-    bool write35mm = false;        // EXIF FocalLengthIn35mmFilm
+    bool writeXmp = true;       // DJI XMP: relative and absolute altitude, gimbal and flight yaw
+    bool writeGps = true;       // EXIF GPS position and altitude above sea level
+    bool writeDirection = true; // EXIF GPSImgDirection
+    bool write35mm = false;     // EXIF FocalLengthIn35mmFilm
     int jpegQuality = 92;
-    double grain = 0.0;            // amplitude (levels) of a fine texture laid over the map
+    double grain = 0.0; // amplitude (levels) of a fine texture laid over the map
     double grainCellM = 0.03;
-    Terrain terrain;               // null: flat ground at the take-off height
+    Terrain terrain; // null: flat ground at the take-off height
     int threads = 1;
     std::string namePrefix = "IMG_"; // photos are named <prefix>0001.JPG, ...
     int firstIndex = 1;              // number of the first photo (also its EXIF time: 2 s apart)
 };
 
-// Renders the photo a camera at `truth` takes and writes it to `path` with EXIF/XMP saying `recorded`.
-Status writePhoto(const GroundImage& ground, const SimPose& truth, const SimPose& recorded, const SimOptions& options,
-                  int index, const std::string& path);
+// Renders the photo a camera at `truth` takes and writes it to `path` with EXIF/XMP saying
+// `recorded`.
+Status writePhoto(const GroundImage& ground, const SimPose& truth, const SimPose& recorded,
+                  const SimOptions& options, int index, const std::string& path);
 
 struct SimulatedPhoto {
     std::string path;
@@ -84,15 +85,16 @@ struct SimulatedPhoto {
     SimPose recorded;
 };
 
-// One photo per planned point, named IMG_0001.JPG, ... (see the options) in `dir`: flown exactly as planned, recorded
-// with the options' noise (seeded, so every run writes the same photos).
+// One photo per planned point, named IMG_0001.JPG, ... (see the options) in `dir`: flown exactly as
+// planned, recorded with the options' noise (seeded, so every run writes the same photos).
 Result<std::vector<SimulatedPhoto>> simulateFlight(const GroundImage& ground,
                                                    const std::vector<mosaic::PlannedPhoto>& planned,
-                                                   const SimOptions& options, const std::string& dir);
+                                                   const SimOptions& options,
+                                                   const std::string& dir);
 
 // The mosaic against the map resampled (averaging) onto the mosaic's grid: mean absolute error of
-// the colour (0..255, over the three bands) on the mosaic's valid pixels inside `area` (WGS84; empty:
-// everywhere), and the share of the area the mosaic covers.
+// the colour (0..255, over the three bands) on the mosaic's valid pixels inside `area` (WGS84;
+// empty: everywhere), and the share of the area the mosaic covers.
 struct Comparison {
     double meanAbsError = 0.0;
     double coveredShare = 0.0;

@@ -4,7 +4,8 @@
 //
 // Usage: pf_simulate_flight MISSION.json OUTDIR [--width PX] [--noise-pos M] [--noise-angle DEG]
 //                           [--seed N] [--map FILE.tif]
-// Writes OUTDIR/photos/AC1_0001.JPG, ... (AC2_ for the second aircraft, ...) and OUTDIR/plan/plan.geojson.
+// Writes OUTDIR/photos/AC1_0001.JPG, ... (AC2_ for the second aircraft, ...) and
+// OUTDIR/plan/plan.geojson.
 #include "core/io/mission_file.h"
 #include "core/mission/plan_mission.h"
 #include "core/sensor/camera.h"
@@ -22,8 +23,11 @@ using namespace pf;
 
 int main(int argc, char** argv) {
     if (argc < 3) {
-        std::fprintf(stderr, "usage: %s MISSION.json OUTDIR [--width PX] [--noise-pos M] [--noise-angle DEG] "
-                             "[--seed N] [--map FILE.tif]\n", argv[0]);
+        std::fprintf(
+            stderr,
+            "usage: %s MISSION.json OUTDIR [--width PX] [--noise-pos M] [--noise-angle DEG] "
+            "[--seed N] [--map FILE.tif]\n",
+            argv[0]);
         return 2;
     }
     int width = 480;
@@ -77,8 +81,9 @@ int main(int argc, char** argv) {
         o.camera.longSideFovDeg = sensor::horizontalFovDeg(cfg.camera);
         o.camera.shortSideFovDeg = sensor::verticalFovDeg(cfg.camera);
         o.camera.widthPx = width;
-        o.camera.heightPx = static_cast<int>(std::lround(width * static_cast<double>(cfg.camera.imageHeightPx) /
-                                                          std::max(1, cfg.camera.imageWidthPx)));
+        o.camera.heightPx =
+            static_cast<int>(std::lround(width * static_cast<double>(cfg.camera.imageHeightPx) /
+                                         std::max(1, cfg.camera.imageWidthPx)));
         o.camera.model = cfg.camera.name;
         o.threads = 2;
         o.namePrefix = "AC" + std::to_string(a + 1) + "_";
@@ -93,10 +98,10 @@ int main(int argc, char** argv) {
             return 1;
         }
         total += static_cast<int>(sim->size());
-        std::printf("%s: %zu photos (%s, %d x %d px)\n", plan->aircraft[a].aircraft.c_str(), sim->size(),
-                    cfg.camera.name.c_str(), o.camera.widthPx, o.camera.heightPx);
+        std::printf("%s: %zu photos (%s, %d x %d px)\n", plan->aircraft[a].aircraft.c_str(),
+                    sim->size(), cfg.camera.name.c_str(), o.camera.widthPx, o.camera.heightPx);
     }
-    std::printf("wrote %d photos to %s and the plan to %s\n", total, (out / "photos").string().c_str(),
-                (out / "plan").string().c_str());
+    std::printf("wrote %d photos to %s and the plan to %s\n", total,
+                (out / "photos").string().c_str(), (out / "plan").string().c_str());
     return 0;
 }

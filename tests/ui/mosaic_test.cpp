@@ -29,7 +29,8 @@ namespace {
 
 // The demo mission planned in the window, and small photos of the first `count` photo points of
 // its first aircraft (Falcon 8, 40 m).
-std::unique_ptr<MainWindow> plannedDemoWithPhotos(const QString& dir, int count, QStringList* photos) {
+std::unique_ptr<MainWindow> plannedDemoWithPhotos(const QString& dir, int count,
+                                                  QStringList* photos) {
     auto w = test::makeWindow();
     w->planController()->setAutoPlan(false);
     QString error;
@@ -42,7 +43,8 @@ std::unique_ptr<MainWindow> plannedDemoWithPhotos(const QString& dir, int count,
         return w;
     auto flight = mosaic::plannedFlightFromPlan(*plan);
     std::vector<mosaic::PlannedPhoto> some(flight.photos.begin(), flight.photos.begin() + count);
-    auto ground = testsim::GroundImage::load(testsim::demoMapPath(), plan->frame->origin(), 320.0, 240.0, 0.25);
+    auto ground = testsim::GroundImage::load(testsim::demoMapPath(), plan->frame->origin(), 320.0,
+                                             240.0, 0.25);
     EXPECT_TRUE(ground.ok());
     testsim::SimOptions o;
     o.camera.widthPx = 240;
@@ -79,8 +81,9 @@ TEST(MosaicGui, BuildMosaicFromTheMenuShowsItOverTheMissionWithGaps) {
     MosaicDialog* d = mc->dialog();
     ASSERT_TRUE(d->isVisible());
     EXPECT_EQ(d->addPhotos({tmp.filePath(QStringLiteral("card"))}), 40); // the folder's photos
-    EXPECT_EQ(d->addPhotos(photos), 0);                                    // already there
-    EXPECT_TRUE(d->outputPath().endsWith(QStringLiteral("card/mosaic.tif"))) << d->outputPath().toStdString();
+    EXPECT_EQ(d->addPhotos(photos), 0);                                  // already there
+    EXPECT_TRUE(d->outputPath().endsWith(QStringLiteral("card/mosaic.tif")))
+        << d->outputPath().toStdString();
     d->setOutputPath(tmp.filePath(QStringLiteral("site.tif")));
     d->useCurrentPlan();
 
@@ -89,14 +92,18 @@ TEST(MosaicGui, BuildMosaicFromTheMenuShowsItOverTheMissionWithGaps) {
     EXPECT_FALSE(d->buildButton()->isEnabled());
     EXPECT_TRUE(d->cancelButton()->isEnabled());
     ASSERT_TRUE(d->waitForFinished(120000));
-    ASSERT_TRUE(d->lastReport().has_value()) << d->statusText().toStdString() << d->reportText().toStdString();
+    ASSERT_TRUE(d->lastReport().has_value())
+        << d->statusText().toStdString() << d->reportText().toStdString();
     const mosaic::MosaicReport r = *d->lastReport(); // a copy: the next build replaces it
     EXPECT_EQ(r.photosUsed, 40);
     EXPECT_EQ(d->progressBar()->value(), 1000);
-    EXPECT_TRUE(d->statusText().startsWith(QStringLiteral("Mosaic saved: "))) << d->statusText().toStdString();
+    EXPECT_TRUE(d->statusText().startsWith(QStringLiteral("Mosaic saved: ")))
+        << d->statusText().toStdString();
     // The report is the CLI's: the other aircraft and the rest of the Falcon's points are missing.
-    EXPECT_TRUE(d->reportText().contains(QStringLiteral("mosaic: 40 of 40 photos used"))) << d->reportText().toStdString();
-    EXPECT_TRUE(d->reportText().contains(QStringLiteral("Missing: "))) << d->reportText().toStdString();
+    EXPECT_TRUE(d->reportText().contains(QStringLiteral("mosaic: 40 of 40 photos used")))
+        << d->reportText().toStdString();
+    EXPECT_TRUE(d->reportText().contains(QStringLiteral("Missing: ")))
+        << d->reportText().toStdString();
     EXPECT_FALSE(r.gaps.empty()); // 40 photos of one aircraft do not cover the area
 
     // On the map: the mosaic between the base map and the mission, gaps above the area.
@@ -106,7 +113,10 @@ TEST(MosaicGui, BuildMosaicFromTheMenuShowsItOverTheMissionWithGaps) {
     EXPECT_GT(layer->tiles()->zValue(), w->tileLayer()->zValue());
     EXPECT_LT(layer->tiles()->zValue(), 10.0);
     EXPECT_EQ(layer->gapItemCount(), static_cast<int>(r.gaps.size()));
-    EXPECT_TRUE(w->mapView()->mapToScene(w->mapView()->viewport()->rect()).boundingRect().intersects(layer->bounds()));
+    EXPECT_TRUE(w->mapView()
+                    ->mapToScene(w->mapView()->viewport()->rect())
+                    .boundingRect()
+                    .intersects(layer->bounds()));
     // The mosaic's tiles render (from the GeoTIFF, warped to Web Mercator).
     w->mapView()->viewport()->grab();
     for (int i = 0; i < 200 && layer->tiles()->pendingCount() > 0; ++i)
@@ -118,8 +128,10 @@ TEST(MosaicGui, BuildMosaicFromTheMenuShowsItOverTheMissionWithGaps) {
     MosaicPanel* panel = mc->panel();
     ASSERT_TRUE(panel);
     EXPECT_TRUE(panel->isVisible());
-    EXPECT_TRUE(panel->summaryText().contains(QStringLiteral("40 of 40 photos used"))) << panel->summaryText().toStdString();
-    EXPECT_TRUE(panel->summaryText().contains(QStringLiteral("gap(s)"))) << panel->summaryText().toStdString();
+    EXPECT_TRUE(panel->summaryText().contains(QStringLiteral("40 of 40 photos used")))
+        << panel->summaryText().toStdString();
+    EXPECT_TRUE(panel->summaryText().contains(QStringLiteral("gap(s)")))
+        << panel->summaryText().toStdString();
     panel->opacitySlider()->setValue(40);
     EXPECT_DOUBLE_EQ(layer->opacity(), 0.4);
     EXPECT_DOUBLE_EQ(layer->tiles()->opacity(), 0.4);
@@ -136,12 +148,15 @@ TEST(MosaicGui, BuildMosaicFromTheMenuShowsItOverTheMissionWithGaps) {
     ASSERT_TRUE(d->lastReport().has_value()) << d->statusText().toStdString();
     const auto& falcon = *d->lastReport();
     EXPECT_LT(falcon.areaM2, 0.8 * r.areaM2);
-    EXPECT_GT(falcon.coveredRatio, r.coveredRatio) << falcon.areaM2 << " " << r.areaM2 << " " << falcon.gapAreaM2 << " " << r.gapAreaM2;
+    EXPECT_GT(falcon.coveredRatio, r.coveredRatio)
+        << falcon.areaM2 << " " << r.areaM2 << " " << falcon.gapAreaM2 << " " << r.gapAreaM2;
     for (const auto& m : falcon.missing)
         EXPECT_EQ(m.aircraft, "Falcon 8");
-    EXPECT_TRUE(d->reportText().contains(QStringLiteral("measured over the part of the area planned for Falcon 8")))
+    EXPECT_TRUE(d->reportText().contains(
+        QStringLiteral("measured over the part of the area planned for Falcon 8")))
         << d->reportText().toStdString();
-    EXPECT_EQ(QFileInfo(QString::fromStdString(layer->report().outputPath)).fileName(), QStringLiteral("falcon.tif"));
+    EXPECT_EQ(QFileInfo(QString::fromStdString(layer->report().outputPath)).fileName(),
+              QStringLiteral("falcon.tif"));
 
     mc->removeMosaic();
     EXPECT_FALSE(layer->isShown());

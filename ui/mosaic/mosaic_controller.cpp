@@ -7,13 +7,14 @@
 #include "ui/mosaic/mosaic_panel.h"
 #include "ui/planning/plan_controller.h"
 
+#include <QDockWidget>
 #include <QMainWindow>
 #include <QStatusBar>
 
 namespace pf::ui {
 
-MosaicController::MosaicController(QMainWindow* window, MapView* view, QGraphicsScene* scene, PlanController* planner,
-                                   const io::Catalog* catalog)
+MosaicController::MosaicController(QMainWindow* window, MapView* view, QGraphicsScene* scene,
+                                   PlanController* planner, const io::Catalog* catalog)
     : QObject(window), m_window(window), m_view(view), m_planner(planner), m_catalog(catalog),
       m_layer(new MosaicLayer(scene, this)) {}
 
@@ -53,6 +54,15 @@ bool MosaicController::showMosaic(const mosaic::MosaicReport& report, QString* e
     if (!m_panel) {
         m_panel = new MosaicPanel(m_layer, m_window);
         m_window->addDockWidget(Qt::RightDockWidgetArea, m_panel);
+        // A tab beside the other docks of that side (Aircraft, Mission, History), with their
+        // height.
+        QDockWidget* neighbour = nullptr;
+        for (auto* d : m_window->findChildren<QDockWidget*>())
+            if (d != m_panel && m_window->dockWidgetArea(d) == Qt::RightDockWidgetArea &&
+                !d->isFloating())
+                neighbour = d;
+        if (neighbour)
+            m_window->tabifyDockWidget(neighbour, m_panel);
         connect(m_panel, &MosaicPanel::zoomRequested, this, &MosaicController::zoomToMosaic);
         connect(m_panel, &MosaicPanel::removeRequested, this, &MosaicController::removeMosaic);
         connect(m_panel, &MosaicPanel::reportRequested, this, &MosaicController::showDialog);

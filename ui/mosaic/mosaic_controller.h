@@ -22,8 +22,8 @@ class MosaicController : public QObject {
     Q_OBJECT
 public:
     // `catalog` must outlive the controller (the main window's).
-    MosaicController(QMainWindow* window, MapView* view, QGraphicsScene* scene, PlanController* planner,
-                     const io::Catalog* catalog);
+    MosaicController(QMainWindow* window, MapView* view, QGraphicsScene* scene,
+                     PlanController* planner, const io::Catalog* catalog);
     ~MosaicController() override;
 
     // File > Build mosaic: shows the dialog (created on first use, kept with its choices).

@@ -11,8 +11,8 @@
 #include <QElapsedTimer>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QFormLayout>
 #include <QFontDatabase>
+#include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -36,7 +36,8 @@ namespace {
 enum PlanChoice { NoPlan, CurrentPlan, PlanFile };
 } // namespace
 
-MosaicDialog::MosaicDialog(const io::Catalog& catalog, std::function<std::optional<mosaic::PlannedFlight>()> currentPlan,
+MosaicDialog::MosaicDialog(const io::Catalog& catalog,
+                           std::function<std::optional<mosaic::PlannedFlight>()> currentPlan,
                            QWidget* parent)
     : QDialog(parent), m_catalog(catalog), m_currentPlan(std::move(currentPlan)) {
     setObjectName(QStringLiteral("MosaicDialog"));
@@ -60,7 +61,8 @@ MosaicDialog::MosaicDialog(const io::Catalog& catalog, std::function<std::option
     photoRow->addWidget(m_photoList, 1);
     photoRow->addLayout(photoButtons);
     m_photoCount = new QLabel;
-    layout->addWidget(new QLabel(tr("<b>Photos</b> (JPEG, with GPS in EXIF/XMP, or matched to the plan in capture order)")));
+    layout->addWidget(new QLabel(
+        tr("<b>Photos</b> (JPEG, with GPS in EXIF/XMP, or matched to the plan in capture order)")));
     layout->addLayout(photoRow);
     layout->addWidget(m_photoCount);
     connect(addFiles, &QPushButton::clicked, this, &MosaicDialog::browsePhotos);
@@ -79,7 +81,8 @@ MosaicDialog::MosaicDialog(const io::Catalog& catalog, std::function<std::option
     m_plan->addItem(tr("The current plan"), CurrentPlan);
     m_plan->addItem(tr("A plan file (plan.geojson)…"), PlanFile);
     m_planFile = new QLineEdit;
-    m_planFile->setPlaceholderText(tr("plan.geojson or the directory photoflight-cli plan --out wrote"));
+    m_planFile->setPlaceholderText(
+        tr("plan.geojson or the directory photoflight-cli plan --out wrote"));
     m_planBrowse = new QPushButton(tr("Browse…"));
     auto* planRow = new QHBoxLayout;
     planRow->addWidget(m_plan);
@@ -87,13 +90,15 @@ MosaicDialog::MosaicDialog(const io::Catalog& catalog, std::function<std::option
     planRow->addWidget(m_planBrowse);
     planRow->addStretch();
     form->addRow(tr("Plan:"), planRow);
-    connect(m_plan, QOverload<int>::of(&QComboBox::currentIndexChanged), this, &MosaicDialog::onPlanChoice);
+    connect(m_plan, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
+            &MosaicDialog::onPlanChoice);
     connect(m_planBrowse, &QPushButton::clicked, this, &MosaicDialog::browsePlan);
     connect(m_planFile, &QLineEdit::editingFinished, this, &MosaicDialog::refreshAircraft);
     m_aircraft = new QComboBox;
     m_aircraft->setObjectName(QStringLiteral("aircraft"));
-    m_aircraft->setToolTip(tr("Photos of one aircraft are matched to its photo points only, and the coverage is "
-                              "measured over its part of the area."));
+    m_aircraft->setToolTip(
+        tr("Photos of one aircraft are matched to its photo points only, and the coverage is "
+           "measured over its part of the area."));
     form->addRow(tr("Photos of:"), m_aircraft);
 
     m_camera = new QComboBox;
@@ -141,8 +146,9 @@ MosaicDialog::MosaicDialog(const io::Catalog& catalog, std::function<std::option
     m_reportView->setReadOnly(true);
     m_reportView->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
     m_reportView->setMinimumHeight(140);
-    m_reportView->setPlaceholderText(tr("The report appears here: photos left out and why, photos that do not "
-                                        "match the plan, planned photos missing, gaps in the area."));
+    m_reportView->setPlaceholderText(
+        tr("The report appears here: photos left out and why, photos that do not "
+           "match the plan, planned photos missing, gaps in the area."));
     layout->addWidget(m_progress);
     layout->addWidget(m_status);
     layout->addWidget(m_reportView, 1);
@@ -158,7 +164,8 @@ MosaicDialog::MosaicDialog(const io::Catalog& catalog, std::function<std::option
     connect(m_build, &QPushButton::clicked, this, [this] { start(); });
     connect(m_cancel, &QPushButton::clicked, this, &MosaicDialog::cancel);
     connect(m_close, &QPushButton::clicked, this, &QDialog::reject);
-    connect(&m_watcher, &QFutureWatcher<std::shared_ptr<Outcome>>::finished, this, &MosaicDialog::onFinished);
+    connect(&m_watcher, &QFutureWatcher<std::shared_ptr<Outcome>>::finished, this,
+            &MosaicDialog::onFinished);
 
     // The current plan is the natural choice when there is one.
     const bool havePlan = m_currentPlan && m_currentPlan().has_value();
@@ -180,9 +187,10 @@ int MosaicDialog::addPhotos(const QStringList& paths) {
     for (const QString& p : paths) {
         const QFileInfo info(p);
         if (info.isDir()) {
-            const auto entries = QDir(p).entryInfoList({QStringLiteral("*.jpg"), QStringLiteral("*.jpeg"),
-                                                        QStringLiteral("*.JPG"), QStringLiteral("*.JPEG")},
-                                                       QDir::Files, QDir::Name);
+            const auto entries =
+                QDir(p).entryInfoList({QStringLiteral("*.jpg"), QStringLiteral("*.jpeg"),
+                                       QStringLiteral("*.JPG"), QStringLiteral("*.JPEG")},
+                                      QDir::Files, QDir::Name);
             for (const auto& e : entries)
                 files << e.absoluteFilePath();
         } else {
@@ -197,7 +205,8 @@ int MosaicDialog::addPhotos(const QStringList& paths) {
         ++added;
     }
     if (m_output->text().isEmpty() && !files.isEmpty())
-        m_output->setText(QFileInfo(files.front()).absoluteDir().filePath(QStringLiteral("mosaic.tif")));
+        m_output->setText(
+            QFileInfo(files.front()).absoluteDir().filePath(QStringLiteral("mosaic.tif")));
     updatePhotoCount();
     return added;
 }
@@ -218,17 +227,29 @@ void MosaicDialog::updatePhotoCount() {
     m_photoCount->setText(tr("%n photo(s)", nullptr, m_photoList->count()));
 }
 
-void MosaicDialog::setOutputPath(const QString& path) { m_output->setText(path); }
-QString MosaicDialog::outputPath() const { return m_output->text().trimmed(); }
-void MosaicDialog::useCurrentPlan() { m_plan->setCurrentIndex(m_plan->findData(CurrentPlan)); }
-void MosaicDialog::useNoPlan() { m_plan->setCurrentIndex(m_plan->findData(NoPlan)); }
+void MosaicDialog::setOutputPath(const QString& path) {
+    m_output->setText(path);
+}
+QString MosaicDialog::outputPath() const {
+    return m_output->text().trimmed();
+}
+void MosaicDialog::useCurrentPlan() {
+    m_plan->setCurrentIndex(m_plan->findData(CurrentPlan));
+}
+void MosaicDialog::useNoPlan() {
+    m_plan->setCurrentIndex(m_plan->findData(NoPlan));
+}
 void MosaicDialog::usePlanFile(const QString& path) {
     m_planFile->setText(path);
     m_plan->setCurrentIndex(m_plan->findData(PlanFile));
     refreshAircraft();
 }
-void MosaicDialog::setGsdCm(double cm) { m_gsd->setValue(cm); }
-void MosaicDialog::setFeatherM(double m) { m_feather->setValue(m); }
+void MosaicDialog::setGsdCm(double cm) {
+    m_gsd->setValue(cm);
+}
+void MosaicDialog::setFeatherM(double m) {
+    m_feather->setValue(m);
+}
 void MosaicDialog::setAircraft(const QString& name) {
     const int i = m_aircraft->findData(name);
     m_aircraft->setCurrentIndex(i < 0 ? 0 : i);
@@ -245,8 +266,9 @@ void MosaicDialog::onPlanChoice() {
     m_planBrowse->setVisible(choice == PlanFile);
     if (choice == CurrentPlan) {
         const auto plan = m_currentPlan ? m_currentPlan() : std::nullopt;
-        m_plan->setItemText(1, plan ? tr("The current plan (%n photo point(s))", nullptr, int(plan->photos.size()))
-                                    : tr("The current plan (none yet: plan the mission first)"));
+        m_plan->setItemText(
+            1, plan ? tr("The current plan (%n photo point(s))", nullptr, int(plan->photos.size()))
+                    : tr("The current plan (none yet: plan the mission first)"));
     }
     refreshAircraft();
 }
@@ -256,7 +278,8 @@ std::optional<mosaic::PlannedFlight> MosaicDialog::chosenPlan(QString* why) cons
     case CurrentPlan: {
         auto plan = m_currentPlan ? m_currentPlan() : std::nullopt;
         if (!plan && why)
-            *why = tr("There is no current plan: plan the mission first, or choose a plan file or none.");
+            *why = tr(
+                "There is no current plan: plan the mission first, or choose a plan file or none.");
         return plan;
     }
     case PlanFile: {
@@ -277,7 +300,8 @@ void MosaicDialog::refreshAircraft() {
     const QString keep = m_aircraft->currentData().toString();
     m_aircraft->clear();
     m_aircraft->addItem(tr("Every aircraft of the plan"), QString());
-    if (m_plan->currentData().toInt() != NoPlan && (m_plan->currentData().toInt() != PlanFile || !m_planFile->text().isEmpty())) {
+    if (m_plan->currentData().toInt() != NoPlan &&
+        (m_plan->currentData().toInt() != PlanFile || !m_planFile->text().isEmpty())) {
         if (const auto plan = chosenPlan(nullptr))
             for (const auto& a : plan->aircraft())
                 m_aircraft->addItem(QString::fromStdString(a), QString::fromStdString(a));
@@ -287,8 +311,9 @@ void MosaicDialog::refreshAircraft() {
 }
 
 void MosaicDialog::browsePhotos() {
-    const QStringList files = QFileDialog::getOpenFileNames(this, tr("Photos"), QString(),
-                                                            tr("JPEG photos (*.jpg *.jpeg *.JPG *.JPEG);;All files (*)"));
+    const QStringList files =
+        QFileDialog::getOpenFileNames(this, tr("Photos"), QString(),
+                                      tr("JPEG photos (*.jpg *.jpeg *.JPG *.JPEG);;All files (*)"));
     addPhotos(files);
 }
 
@@ -299,7 +324,8 @@ void MosaicDialog::browseFolder() {
 }
 
 void MosaicDialog::browseOutput() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save mosaic as"), outputPath(), tr("GeoTIFF (*.tif *.tiff)"));
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save mosaic as"), outputPath(),
+                                                      tr("GeoTIFF (*.tif *.tiff)"));
     if (!path.isEmpty())
         m_output->setText(path.endsWith(QLatin1String(".tif"), Qt::CaseInsensitive) ||
                                   path.endsWith(QLatin1String(".tiff"), Qt::CaseInsensitive)
@@ -308,7 +334,8 @@ void MosaicDialog::browseOutput() {
 }
 
 void MosaicDialog::browsePlan() {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Plan"), QString(), tr("Plan (plan.geojson *.geojson);;All files (*)"));
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Plan"), QString(), tr("Plan (plan.geojson *.geojson);;All files (*)"));
     if (!path.isEmpty())
         usePlanFile(path);
 }
@@ -328,7 +355,8 @@ bool MosaicDialog::start() {
     QString out = outputPath();
     if (out.isEmpty())
         return refuse(tr("Choose where to save the mosaic."));
-    if (!out.endsWith(QLatin1String(".tif"), Qt::CaseInsensitive) && !out.endsWith(QLatin1String(".tiff"), Qt::CaseInsensitive)) {
+    if (!out.endsWith(QLatin1String(".tif"), Qt::CaseInsensitive) &&
+        !out.endsWith(QLatin1String(".tiff"), Qt::CaseInsensitive)) {
         out += QStringLiteral(".tif");
         m_output->setText(out);
     }
@@ -353,7 +381,8 @@ bool MosaicDialog::start() {
         // Called on the worker thread: hand it to the dialog's thread.
         const QString s = QString::fromStdString(stage);
         QMetaObject::invokeMethod(
-            qApp, [self, f, s] {
+            qApp,
+            [self, f, s] {
                 if (self)
                     self->onProgress(f, s);
             },
@@ -430,13 +459,18 @@ void MosaicDialog::setRunning(bool on) {
     m_running = on;
     m_build->setEnabled(!on);
     m_cancel->setEnabled(on);
-    for (auto* w : std::initializer_list<QWidget*>{m_photoList, m_plan, m_planFile, m_planBrowse, m_aircraft, m_camera,
-                                                   m_gsd, m_feather, m_output})
+    for (auto* w :
+         std::initializer_list<QWidget*>{m_photoList, m_plan, m_planFile, m_planBrowse, m_aircraft,
+                                         m_camera, m_gsd, m_feather, m_output})
         w->setEnabled(!on);
     emit runningChanged(on);
 }
 
-QString MosaicDialog::statusText() const { return m_status->text(); }
-QString MosaicDialog::reportText() const { return m_reportView->toPlainText(); }
+QString MosaicDialog::statusText() const {
+    return m_status->text();
+}
+QString MosaicDialog::reportText() const {
+    return m_reportView->toPlainText();
+}
 
 } // namespace pf::ui

@@ -1,5 +1,5 @@
-// MosaicDialog: File > Build mosaic: choose the photos, the plan, the camera, the resolution and the
-// output, then build the mosaic in the background with progress and cancel. Closing the dialog
+// MosaicDialog: File > Build mosaic: choose the photos, the plan, the camera, the resolution and
+// the output, then build the mosaic in the background with progress and cancel. Closing the dialog
 // while it builds lets the build finish; the mosaic then appears on the map.
 #pragma once
 
@@ -32,11 +32,13 @@ class MosaicDialog : public QDialog {
     Q_OBJECT
 public:
     // `currentPlan` gives the plan shown in the main window, if any, when the dialog needs it.
-    MosaicDialog(const io::Catalog& catalog, std::function<std::optional<mosaic::PlannedFlight>()> currentPlan,
+    MosaicDialog(const io::Catalog& catalog,
+                 std::function<std::optional<mosaic::PlannedFlight>()> currentPlan,
                  QWidget* parent = nullptr);
     ~MosaicDialog() override;
 
-    // Adds photo files, or every .jpg/.jpeg of a directory (not recursive). Returns the number added.
+    // Adds photo files, or every .jpg/.jpeg of a directory (not recursive). Returns the number
+    // added.
     int addPhotos(const QStringList& paths);
     void clearPhotos();
     QStringList photos() const;

@@ -37,9 +37,12 @@ QPainterPath polygonsPath(const std::vector<geo::GeoPolygon>& polys) {
 
 } // namespace
 
-MosaicLayer::MosaicLayer(QGraphicsScene* scene, QObject* parent) : QObject(parent), m_scene(scene) {}
+MosaicLayer::MosaicLayer(QGraphicsScene* scene, QObject* parent)
+    : QObject(parent), m_scene(scene) {}
 
-MosaicLayer::~MosaicLayer() { clear(); }
+MosaicLayer::~MosaicLayer() {
+    clear();
+}
 
 void MosaicLayer::clear() {
     for (auto* g : m_gaps) {
@@ -63,7 +66,8 @@ void MosaicLayer::clear() {
 
 bool MosaicLayer::show(const mosaic::MosaicReport& report, QString* error) {
     const QString path = QString::fromStdString(report.outputPath);
-    auto source = GdalTileSource::open(path, tr("Mosaic %1").arg(QFileInfo(path).fileName()), error);
+    auto source =
+        GdalTileSource::open(path, tr("Mosaic %1").arg(QFileInfo(path).fileName()), error);
     if (!source)
         return false;
     clear();
@@ -83,7 +87,8 @@ bool MosaicLayer::show(const mosaic::MosaicReport& report, QString* error) {
         item->setPen(pen);
         item->setBrush(QBrush(QColor(255, 120, 0, 190), Qt::FDiagPattern));
         item->setZValue(kZGaps);
-        item->setToolTip(tr("No photo covers this part of the area: %1 m²").arg(gap.areaM2, 0, 'f', 1));
+        item->setToolTip(
+            tr("No photo covers this part of the area: %1 m²").arg(gap.areaM2, 0, 'f', 1));
         item->setVisible(m_gapsVisible);
         m_scene->addItem(item);
         m_gaps.push_back(item);

@@ -13,7 +13,8 @@
 
 namespace pf::ui {
 
-MosaicPanel::MosaicPanel(MosaicLayer* layer, QWidget* parent) : QDockWidget(tr("Mosaic"), parent), m_layer(layer) {
+MosaicPanel::MosaicPanel(MosaicLayer* layer, QWidget* parent)
+    : QDockWidget(tr("Mosaic"), parent), m_layer(layer) {
     setObjectName(QStringLiteral("MosaicDock"));
     auto* w = new QWidget;
     auto* v = new QVBoxLayout(w);
@@ -80,12 +81,13 @@ void MosaicPanel::refresh() {
         return;
     }
     const auto& r = m_layer->report();
-    m_file->setText(QStringLiteral("<b>%1</b><br>%2, %3 cm/px, %4 × %5 px")
-                        .arg(QFileInfo(QString::fromStdString(r.outputPath)).fileName().toHtmlEscaped(),
-                             QString::fromStdString(r.crsName).toHtmlEscaped())
-                        .arg(r.gsdM * 100, 0, 'f', 1)
-                        .arg(r.widthPx)
-                        .arg(r.heightPx));
+    m_file->setText(
+        QStringLiteral("<b>%1</b><br>%2, %3 cm/px, %4 × %5 px")
+            .arg(QFileInfo(QString::fromStdString(r.outputPath)).fileName().toHtmlEscaped(),
+                 QString::fromStdString(r.crsName).toHtmlEscaped())
+            .arg(r.gsdM * 100, 0, 'f', 1)
+            .arg(r.widthPx)
+            .arg(r.heightPx));
     int leftOut = 0;
     for (const auto& f : r.findings)
         leftOut += f.excluded ? 1 : 0;
@@ -95,10 +97,12 @@ void MosaicPanel::refresh() {
     if (!r.missing.empty())
         s += tr("; %n planned photo(s) missing", nullptr, int(r.missing.size()));
     if (r.areaM2 > 0) {
-        s += QStringLiteral(".<br>") + tr("Planned area covered: %1 %").arg(r.coveredRatio * 100, 0, 'f', 2);
+        s += QStringLiteral(".<br>") +
+             tr("Planned area covered: %1 %").arg(r.coveredRatio * 100, 0, 'f', 2);
         if (!r.gaps.empty())
             s += QStringLiteral("<br><span style='color:#c05000'>") +
-                 tr("%n gap(s), %1 m² in total (hatched orange)", nullptr, int(r.gaps.size())).arg(r.gapAreaM2, 0, 'f', 1) +
+                 tr("%n gap(s), %1 m² in total (hatched orange)", nullptr, int(r.gaps.size()))
+                     .arg(r.gapAreaM2, 0, 'f', 1) +
                  QStringLiteral("</span>");
         else
             s += QStringLiteral(", ") + tr("no gap");
@@ -106,6 +110,8 @@ void MosaicPanel::refresh() {
     m_summary->setText(s);
 }
 
-QString MosaicPanel::summaryText() const { return m_summary->text(); }
+QString MosaicPanel::summaryText() const {
+    return m_summary->text();
+}
 
 } // namespace pf::ui

@@ -27,7 +27,8 @@ inline std::string slurp(const std::string& path) {
 
 inline CliRun cli(const std::string& args) {
     static int counter = 0;
-    const std::string errPath = testing::TempDir() + "pf_cli_stderr_" + std::to_string(++counter) + ".txt";
+    const std::string errPath =
+        testing::TempDir() + "pf_cli_stderr_" + std::to_string(++counter) + ".txt";
     const std::string cmd = std::string("'") + PF_CLI_PATH + "' " + args + " 2>'" + errPath + "'";
     CliRun r;
     FILE* p = popen(cmd.c_str(), "r");
@@ -44,7 +45,9 @@ inline CliRun cli(const std::string& args) {
     return r;
 }
 
-inline bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+inline bool has(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
 
 // A bad input: exit code 2 and the expected message on stderr.
 inline void expectBadInput(const std::string& args, const std::string& message) {

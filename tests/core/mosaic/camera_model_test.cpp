@@ -13,7 +13,9 @@
 namespace pf::mosaic {
 namespace {
 
-CameraIntrinsics falcon(int orientation = 1) { return {4000, 3000, 61.92751306414704, 48.45549063590834, orientation}; }
+CameraIntrinsics falcon(int orientation = 1) {
+    return {4000, 3000, 61.92751306414704, 48.45549063590834, orientation};
+}
 
 TEST(CameraModel, NadirPhotoSeesItsFootprintAndTopPointsAlongYaw) {
     // Straight down from 100 m, the image's top towards the east.
@@ -22,8 +24,8 @@ TEST(CameraModel, NadirPhotoSeesItsFootprintAndTopPointsAlongYaw) {
     ASSERT_TRUE(cam.project(Vec3(1000, 2000, 0), &c, &r));
     EXPECT_NEAR(c, 2000, 1e-9);
     EXPECT_NEAR(r, 1500, 1e-9);
-    // The footprint is 120 x 90 m at 100 m, its long side across the yaw: 45 m east is the middle of
-    // the top edge...
+    // The footprint is 120 x 90 m at 100 m, its long side across the yaw: 45 m east is the middle
+    // of the top edge...
     ASSERT_TRUE(cam.project(Vec3(1045, 2000, 0), &c, &r));
     EXPECT_NEAR(r, 0.0, 1e-6);
     EXPECT_NEAR(c, 2000, 1e-6);
@@ -75,7 +77,8 @@ TEST(CameraModel, OrientationTurnsTheStoredPixels) {
 }
 
 TEST(CameraModel, PitchLooksForwardAndRollBanksTheView) {
-    // Pitch -60 (30 degrees forward of nadir), yaw north: the centre of the image is 100 tan 30 m north.
+    // Pitch -60 (30 degrees forward of nadir), yaw north: the centre of the image is 100 tan 30 m
+    // north.
     const CameraModel pitched(falcon(), CameraPose{Vec3(0, 0, 100), 0.0, -60.0, 0.0});
     auto g = intersectGround(FlatGround(0.0), pitched.centre(), pitched.ray(2000, 1500));
     ASSERT_TRUE(g);
@@ -111,17 +114,20 @@ TEST(GroundModel, RaysMeetTheTerrainWhereItIs) {
 }
 
 TEST(PhotoGeometry, FootprintFollowsTheViewAngleLimit) {
-    const auto nadir = photoGeometry(CameraModel(falcon(), CameraPose{Vec3(0, 0, 100), 0.0, -90.0, 0.0}), FlatGround(0.0), 60.0);
+    const auto nadir = photoGeometry(
+        CameraModel(falcon(), CameraPose{Vec3(0, 0, 100), 0.0, -90.0, 0.0}), FlatGround(0.0), 60.0);
     ASSERT_TRUE(nadir.seesGround);
     EXPECT_NEAR(geo::area(geo::Polygon{nadir.footprint, {}}), 120.0 * 90.0, 1.0);
     EXPECT_NEAR(nadir.nadirGsdM, 0.03, 1e-9);
     EXPECT_TRUE(nadir.sees(50, 40, 0));
     EXPECT_FALSE(nadir.sees(70, 0, 0));
     // Looking at the horizon, nothing within 60 degrees of the vertical is in the photo.
-    const auto horizon = photoGeometry(CameraModel(falcon(), CameraPose{Vec3(0, 0, 100), 0.0, 0.0, 0.0}), FlatGround(0.0), 60.0);
+    const auto horizon = photoGeometry(
+        CameraModel(falcon(), CameraPose{Vec3(0, 0, 100), 0.0, 0.0, 0.0}), FlatGround(0.0), 60.0);
     EXPECT_FALSE(horizon.seesGround);
     // 45 degrees forward: the far part of the view is cut at 60 degrees (100 tan 60 = 173 m).
-    const auto oblique = photoGeometry(CameraModel(falcon(), CameraPose{Vec3(0, 0, 100), 0.0, -45.0, 0.0}), FlatGround(0.0), 60.0);
+    const auto oblique = photoGeometry(
+        CameraModel(falcon(), CameraPose{Vec3(0, 0, 100), 0.0, -45.0, 0.0}), FlatGround(0.0), 60.0);
     ASSERT_TRUE(oblique.seesGround);
     EXPECT_LE(oblique.footprintBox.max.y(), 100.0 * std::tan(60.0 * M_PI / 180.0) + 1e-6);
     EXPECT_FALSE(oblique.sees(0, 180, 0));
@@ -135,9 +141,10 @@ TEST(UtmProjection, ZoneConvergenceAndScale) {
     EXPECT_TRUE(utm->north());
     EXPECT_EQ(utm->epsg(), 32632);
     EXPECT_EQ(utm->name(), "UTM zone 32N (EPSG:32632)");
-    // West of the central meridian (9 E) grid north lies west of true north, so a true bearing reads
-    // larger on the grid: by (9 - 8.33) sin(49.01) degrees, to first order.
-    EXPECT_NEAR(utm->gridFromTrueDeg({8.33, 49.012}), (9.0 - 8.33) * std::sin(49.012 * M_PI / 180.0), 0.005);
+    // West of the central meridian (9 E) grid north lies west of true north, so a true bearing
+    // reads larger on the grid: by (9 - 8.33) sin(49.01) degrees, to first order.
+    EXPECT_NEAR(utm->gridFromTrueDeg({8.33, 49.012}),
+                (9.0 - 8.33) * std::sin(49.012 * M_PI / 180.0), 0.005);
     EXPECT_NEAR(utm->scaleFactor({9.0, 49.0}), 0.9996, 1e-6);
     // A point and its image round-trip to the millimetre.
     const geo::LonLat p{8.3291, 49.0118};

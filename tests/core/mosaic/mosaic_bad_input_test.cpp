@@ -49,13 +49,16 @@ TEST(MosaicBadInput, BadPhotosAreNamedAndTheRestIsMosaicked) {
     bare.writeGps = false;
     bare.writeXmp = false;
     const auto& p10 = (*photos)[10];
-    ASSERT_TRUE(testsim::writePhoto(*f.ground, p10.truth, p10.recorded, bare, 900, dir + "/nogps.jpg").ok());
+    ASSERT_TRUE(
+        testsim::writePhoto(*f.ground, p10.truth, p10.recorded, bare, 900, dir + "/nogps.jpg")
+            .ok());
     // A truncated copy (the card was pulled while writing).
     truncateCopy((*photos)[20].path, dir + "/damaged.jpg", 0.6);
     // A photo of another site, 5 km east.
     testsim::SimPose far = p10.recorded;
     far.position.lon += 5000.0 / (111320.0 * std::cos(far.position.lat * M_PI / 180.0));
-    ASSERT_TRUE(testsim::writePhoto(*f.ground, p10.truth, far, sim, 901, dir + "/elsewhere.jpg").ok());
+    ASSERT_TRUE(
+        testsim::writePhoto(*f.ground, p10.truth, far, sim, 901, dir + "/elsewhere.jpg").ok());
     // Not an image at all.
     std::ofstream(dir + "/notes.jpg") << "flight notes: wind 4 m/s from the west\n";
     for (const char* bad : {"/nogps.jpg", "/damaged.jpg", "/elsewhere.jpg", "/notes.jpg"})
@@ -80,7 +83,8 @@ TEST(MosaicBadInput, BadPhotosAreNamedAndTheRestIsMosaicked) {
     ASSERT_TRUE(elsewhere);
     EXPECT_TRUE(elsewhere->excluded);
     EXPECT_EQ(elsewhere->kind, PhotoFinding::Kind::OtherSite);
-    EXPECT_NE(elsewhere->message.find("km from the other photos: a photo of another site"), std::string::npos)
+    EXPECT_NE(elsewhere->message.find("km from the other photos: a photo of another site"),
+              std::string::npos)
         << elsewhere->message;
     const PhotoFinding* notes = findingFor(*r, "notes.jpg");
     ASSERT_TRUE(notes);
@@ -119,8 +123,10 @@ TEST(MosaicBadInput, NothingUsableIsAnErrorThatSaysWhy) {
     auto r = buildMosaic(defaultOptions(files, dir + "/mosaic.tif"), progress);
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.error().code, ErrorCode::InvalidInput);
-    EXPECT_NE(r.error().message.find("none of the 3 photo(s) can be placed"), std::string::npos) << r.error().message;
-    EXPECT_NE(r.error().message.find("p0.jpg: no GPS position"), std::string::npos) << r.error().message;
+    EXPECT_NE(r.error().message.find("none of the 3 photo(s) can be placed"), std::string::npos)
+        << r.error().message;
+    EXPECT_NE(r.error().message.find("p0.jpg: no GPS position"), std::string::npos)
+        << r.error().message;
     EXPECT_FALSE(std::filesystem::exists(dir + "/mosaic.tif"));
 }
 
@@ -144,7 +150,9 @@ TEST(MosaicBadInput, PlanListsMissingExtraFarAndPlacesUnpositionedPhotos) {
     bare.writeGps = false;
     bare.writeXmp = false;
     const auto& p20 = (*photos)[20];
-    ASSERT_TRUE(testsim::writePhoto(*f.ground, p20.truth, p20.recorded, bare, 20, dir + "/photos/IMG_0021.JPG").ok());
+    ASSERT_TRUE(testsim::writePhoto(*f.ground, p20.truth, p20.recorded, bare, 20,
+                                    dir + "/photos/IMG_0021.JPG")
+                    .ok());
     files.push_back(dir + "/photos/IMG_0021.JPG");
     // 30 m in the direction that takes it furthest from every planned point.
     const auto& p30 = (*photos)[30];
@@ -152,7 +160,8 @@ TEST(MosaicBadInput, PlanListsMissingExtraFarAndPlacesUnpositionedPhotos) {
     testsim::SimPose off = p30.recorded;
     double offDistance = 0;
     for (int k = 0; k < 16; ++k) {
-        const geo::Vec2 at = frame.toLocal(p30.recorded.position) + 30.0 * geo::Vec2(std::cos(k * M_PI / 8), std::sin(k * M_PI / 8));
+        const geo::Vec2 at = frame.toLocal(p30.recorded.position) +
+                             30.0 * geo::Vec2(std::cos(k * M_PI / 8), std::sin(k * M_PI / 8));
         double nearest = 1e300;
         for (const auto& q : f.planned.photos)
             nearest = std::min(nearest, (frame.toLocal(q.position) - at).norm());
@@ -162,10 +171,13 @@ TEST(MosaicBadInput, PlanListsMissingExtraFarAndPlacesUnpositionedPhotos) {
         }
     }
     ASSERT_GT(offDistance, 15.0);
-    ASSERT_TRUE(testsim::writePhoto(*f.ground, p30.truth, off, sim, 30, dir + "/photos/IMG_0031.JPG").ok());
+    ASSERT_TRUE(
+        testsim::writePhoto(*f.ground, p30.truth, off, sim, 30, dir + "/photos/IMG_0031.JPG").ok());
     files.push_back(dir + "/photos/IMG_0031.JPG");
     const auto& p40 = (*photos)[40];
-    ASSERT_TRUE(testsim::writePhoto(*f.ground, p40.truth, p40.recorded, sim, 40, dir + "/photos/IMG_0041b.JPG").ok());
+    ASSERT_TRUE(testsim::writePhoto(*f.ground, p40.truth, p40.recorded, sim, 40,
+                                    dir + "/photos/IMG_0041b.JPG")
+                    .ok());
     files.push_back(dir + "/photos/IMG_0041b.JPG");
 
     MosaicOptions o = defaultOptions(files, dir + "/mosaic.tif");
@@ -201,7 +213,8 @@ TEST(MosaicBadInput, PlanListsMissingExtraFarAndPlacesUnpositionedPhotos) {
         twice = findingFor(*r, "IMG_0041.JPG");
     ASSERT_TRUE(twice);
     EXPECT_EQ(twice->kind, PhotoFinding::Kind::Duplicate);
-    EXPECT_NE(twice->message.find("a second photo at planned point " + a + " #41"), std::string::npos)
+    EXPECT_NE(twice->message.find("a second photo at planned point " + a + " #41"),
+              std::string::npos)
         << twice->message;
 }
 
@@ -253,11 +266,13 @@ TEST(MosaicBadInput, GapsInTheAreaAreReportedByArea) {
     o.outputPath = dir + "/corner.tif";
     auto corner = buildMosaic(o, progress);
     ASSERT_TRUE(corner.ok()) << corner.error().message;
-    auto cornerCmp = testsim::compareWithMap(corner->outputPath, testsim::demoMapPath(), f.planned.area);
+    auto cornerCmp =
+        testsim::compareWithMap(corner->outputPath, testsim::demoMapPath(), f.planned.area);
     ASSERT_TRUE(cornerCmp.ok());
     EXPECT_LT(corner->coveredRatio, 0.5);
     EXPECT_NEAR(corner->coveredRatio, cornerCmp->coveredShare, 0.01);
-    EXPECT_NEAR(corner->gapAreaM2, (1.0 - corner->coveredRatio) * corner->areaM2, 0.01 * corner->areaM2);
+    EXPECT_NEAR(corner->gapAreaM2, (1.0 - corner->coveredRatio) * corner->areaM2,
+                0.01 * corner->areaM2);
 }
 
 TEST(MosaicBadInput, CancelLeavesNoFileBehind) {
@@ -282,7 +297,8 @@ TEST(MosaicBadInput, CancelLeavesNoFileBehind) {
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.error().code, ErrorCode::Cancelled);
     EXPECT_TRUE(std::filesystem::is_empty(out)) << "scratch or output files left in " << out;
-    EXPECT_EQ(stages, (std::vector<std::string>{"reading photos", "drawing seams", "warping photos"}));
+    EXPECT_EQ(stages,
+              (std::vector<std::string>{"reading photos", "drawing seams", "warping photos"}));
 }
 
 } // namespace

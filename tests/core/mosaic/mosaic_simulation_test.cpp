@@ -1,5 +1,6 @@
 // The mosaic of a simulated flight over the demo map, against the map itself: with exact poses it
-// reproduces the map; with pose noise the error grows as far as the misplacement of the photos says.
+// reproduces the map; with pose noise the error grows as far as the misplacement of the photos
+// says.
 #include "tests/core/mosaic/mosaic_test_util.h"
 
 #include "core/mosaic/camera_model.h"
@@ -9,8 +10,6 @@
 #include <ogrsf_frmts.h>
 
 #include <cmath>
-#include <cstdlib>
-#include <filesystem>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -45,7 +44,8 @@ struct Built {
     std::string out;
 };
 
-Built buildSimulated(const test::DemoFlight& f, const testsim::SimOptions& sim, const std::string& name) {
+Built buildSimulated(const test::DemoFlight& f, const testsim::SimOptions& sim,
+                     const std::string& name) {
     Built b;
     const std::string dir = scratchDir(name);
     auto photos = testsim::simulateFlight(*f.ground, f.planned.photos, sim, dir + "/photos");
@@ -75,9 +75,9 @@ Built buildSimulated(const test::DemoFlight& f, const testsim::SimOptions& sim, 
 // and JPEG-compressed twice.
 void expectExactMosaic(const Built& b) {
     ASSERT_FALSE(b.out.empty());
-    std::cout << "exact poses: " << b.photos.size() << " photos, MAE " << b.cmp.meanAbsError << " levels ("
-              << 100.0 * b.cmp.meanAbsError / 255.0 << " % of the range), covered " << 100.0 * b.cmp.coveredShare
-              << " %, GSD " << b.report.gsdM << " m\n";
+    std::cout << "exact poses: " << b.photos.size() << " photos, MAE " << b.cmp.meanAbsError
+              << " levels (" << 100.0 * b.cmp.meanAbsError / 255.0 << " % of the range), covered "
+              << 100.0 * b.cmp.coveredShare << " %, GSD " << b.report.gsdM << " m\n";
     EXPECT_LT(b.cmp.meanAbsError, 0.03 * 255.0);
     EXPECT_GE(b.cmp.coveredShare, 0.99);
     EXPECT_GT(b.cmp.comparedPixels, 100000);
@@ -113,20 +113,26 @@ void expectExactMosaic(const Built& b) {
     GDALDatasetUniquePtr v(GDALDataset::Open(b.report.vectorPath.c_str(), GDAL_OF_VECTOR));
     ASSERT_TRUE(v);
     ASSERT_TRUE(v->GetLayerByName("footprints"));
-    EXPECT_EQ(v->GetLayerByName("footprints")->GetFeatureCount(), static_cast<GIntBig>(b.photos.size()));
-    EXPECT_GE(v->GetLayerByName("seams")->GetFeatureCount(), static_cast<GIntBig>(b.report.photosUsed));
+    EXPECT_EQ(v->GetLayerByName("footprints")->GetFeatureCount(),
+              static_cast<GIntBig>(b.photos.size()));
+    EXPECT_GE(v->GetLayerByName("seams")->GetFeatureCount(),
+              static_cast<GIntBig>(b.report.photosUsed));
     EXPECT_EQ(v->GetLayerByName("gaps")->GetFeatureCount(), 0);
     EXPECT_EQ(v->GetLayerByName("missing_photos")->GetFeatureCount(), 0);
-    EXPECT_EQ(v->GetLayerByName("camera_positions")->GetFeatureCount(), static_cast<GIntBig>(b.photos.size()));
+    EXPECT_EQ(v->GetLayerByName("camera_positions")->GetFeatureCount(),
+              static_cast<GIntBig>(b.photos.size()));
 }
 
 // Where the ground seen at a photo's centre ends up when the mosaic believes the recorded pose
 // instead of the true one.
-double centreDisplacementM(const testsim::SimulatedPhoto& p, const testsim::SimOptions& sim, const geo::LocalFrame& frame) {
-    CameraIntrinsics in{sim.camera.widthPx, sim.camera.heightPx, sim.camera.longSideFovDeg, sim.camera.shortSideFovDeg, 1};
+double centreDisplacementM(const testsim::SimulatedPhoto& p, const testsim::SimOptions& sim,
+                           const geo::LocalFrame& frame) {
+    CameraIntrinsics in{sim.camera.widthPx, sim.camera.heightPx, sim.camera.longSideFovDeg,
+                        sim.camera.shortSideFovDeg, 1};
     auto model = [&](const testsim::SimPose& s) {
         const geo::Vec2 xy = frame.toLocal(s.position);
-        return CameraModel(in, CameraPose{Vec3(xy.x(), xy.y(), s.altitudeM), s.yawDeg, s.pitchDeg, s.rollDeg});
+        return CameraModel(
+            in, CameraPose{Vec3(xy.x(), xy.y(), s.altitudeM), s.yawDeg, s.pitchDeg, s.rollDeg});
     };
     const CameraModel truth = model(p.truth), recorded = model(p.recorded);
     double sum = 0;
@@ -145,14 +151,16 @@ double centreDisplacementM(const testsim::SimulatedPhoto& p, const testsim::SimO
 }
 
 // The map's own error when it is misplaced by `d` metres in a random direction.
-double shiftedMapError(const testsim::GroundImage& g, const std::vector<geo::GeoPolygon>& area, double d) {
+double shiftedMapError(const testsim::GroundImage& g, const std::vector<geo::GeoPolygon>& area,
+                       double d) {
     std::mt19937 rng(99);
     geo::Box box{{1e300, 1e300}, {-1e300, -1e300}};
     geo::Polygon poly;
     for (const auto& p : area.front().outer)
         poly.outer.push_back(g.frame().toLocal(p));
     box = geo::bounds(poly);
-    std::uniform_real_distribution<double> ux(box.min.x(), box.max.x()), uy(box.min.y(), box.max.y()), ua(0, 2 * M_PI);
+    std::uniform_real_distribution<double> ux(box.min.x(), box.max.x()),
+        uy(box.min.y(), box.max.y()), ua(0, 2 * M_PI);
     double sum = 0;
     int n = 0;
     while (n < 20000) {
@@ -161,7 +169,8 @@ double shiftedMapError(const testsim::GroundImage& g, const std::vector<geo::Geo
             continue;
         const double a = ua(rng);
         std::uint8_t c0[3], c1[3];
-        if (!g.sample(p.x(), p.y(), c0) || !g.sample(p.x() + d * std::cos(a), p.y() + d * std::sin(a), c1))
+        if (!g.sample(p.x(), p.y(), c0) ||
+            !g.sample(p.x() + d * std::cos(a), p.y() + d * std::sin(a), c1))
             continue;
         for (int k = 0; k < 3; ++k)
             sum += std::abs(int(c0[k]) - int(c1[k]));
@@ -195,8 +204,9 @@ TEST(MosaicSimulation, ExactPosesReproduceTheMapAndPoseNoiseGrowsTheErrorAsExpec
         displacement += centreDisplacementM(p, noisy, f.ground->frame());
     displacement /= b.photos.size();
     const double expected = shiftedMapError(*f.ground, f.planned.area, displacement);
-    std::cout << "2 m / 2 deg noise: photos misplaced by " << displacement << " m on average; MAE " << b.cmp.meanAbsError
-              << " levels (" << 100.0 * b.cmp.meanAbsError / 255.0 << " %), exact poses " << a.cmp.meanAbsError
+    std::cout << "2 m / 2 deg noise: photos misplaced by " << displacement << " m on average; MAE "
+              << b.cmp.meanAbsError << " levels (" << 100.0 * b.cmp.meanAbsError / 255.0
+              << " %), exact poses " << a.cmp.meanAbsError
               << "; the map shifted by that distance differs by " << expected << " levels; covered "
               << 100.0 * b.cmp.coveredShare << " %\n";
     // The photos land metres off, more than the GSD: the error must grow clearly...
@@ -223,7 +233,8 @@ public:
         const int i = static_cast<int>(u), j = static_cast<int>(v);
         const double fu = u - i, fv = v - j;
         auto at = [&](int a, int b) { return m_h[static_cast<std::size_t>(b) * m_nx + a]; };
-        return (at(i, j) * (1 - fu) + at(i + 1, j) * fu) * (1 - fv) + (at(i, j + 1) * (1 - fu) + at(i + 1, j + 1) * fu) * fv;
+        return (at(i, j) * (1 - fu) + at(i + 1, j) * fu) * (1 - fv) +
+               (at(i, j + 1) * (1 - fu) + at(i + 1, j + 1) * fu) * fv;
     }
 
 private:
@@ -237,7 +248,9 @@ TEST(MosaicSimulation, TerrainModelPutsPhotosOfASlopeInPlace) {
     PF_REQUIRE_DEMO_MAP(f);
     // The site on a 15 % slope rising to the north with a 30 m hill in the middle: over flat ground
     // the photos' edges land metres from where they belong.
-    auto slope = [](double x, double y) { return 0.15 * y + 30.0 * std::exp(-(x * x + y * y) / (2 * 60.0 * 60.0)); };
+    auto slope = [](double x, double y) {
+        return 0.15 * y + 30.0 * std::exp(-(x * x + y * y) / (2 * 60.0 * 60.0));
+    };
     testsim::SimOptions sim;
     sim.camera.widthPx = 240;
     sim.camera.heightPx = 180;
@@ -271,14 +284,15 @@ TEST(MosaicSimulation, TerrainModelPutsPhotosOfASlopeInPlace) {
         auto r = buildMosaic(o, progress);
         EXPECT_TRUE(r.ok()) << (r ? "" : r.error().message);
         keepCopy(dir + "/" + name + ".tif", "slope_" + name);
-        auto cmp = testsim::compareWithMap(dir + "/" + name + ".tif", testsim::demoMapPath(), f.planned.area);
+        auto cmp = testsim::compareWithMap(dir + "/" + name + ".tif", testsim::demoMapPath(),
+                                           f.planned.area);
         EXPECT_TRUE(cmp.ok());
         return cmp ? *cmp : testsim::Comparison{};
     };
     const auto onTerrain = build(ground, "terrain");
     const auto onFlat = build(nullptr, "flat");
-    std::cout << "15 % slope and a 30 m hill: MAE " << onTerrain.meanAbsError << " levels with the terrain model, " << onFlat.meanAbsError
-              << " on flat ground\n";
+    std::cout << "15 % slope and a 30 m hill: MAE " << onTerrain.meanAbsError
+              << " levels with the terrain model, " << onFlat.meanAbsError << " on flat ground\n";
     EXPECT_LT(onTerrain.meanAbsError, 0.03 * 255.0);
     EXPECT_GE(onTerrain.coveredShare, 0.99);
     EXPECT_GT(onFlat.meanAbsError, 1.5 * onTerrain.meanAbsError);

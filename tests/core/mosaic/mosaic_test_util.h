@@ -42,7 +42,8 @@ inline DemoFlight demoFlight(double altitudeM, double mapResolutionM = 0.25) {
     const std::string map = testsim::demoMapPath();
     if (map.empty())
         return f;
-    auto ground = testsim::GroundImage::load(map, f.plan.frame->origin(), 320.0, 240.0, mapResolutionM);
+    auto ground =
+        testsim::GroundImage::load(map, f.plan.frame->origin(), 320.0, 240.0, mapResolutionM);
     EXPECT_TRUE(ground.ok()) << (ground ? "" : ground.error().message);
     if (ground)
         f.ground.emplace(std::move(ground).value());
@@ -57,7 +58,8 @@ inline std::string scratchDir(const std::string& name) {
     return dir.string();
 }
 
-inline MosaicOptions defaultOptions(const std::vector<std::string>& photos, const std::string& out) {
+inline MosaicOptions defaultOptions(const std::vector<std::string>& photos,
+                                    const std::string& out) {
     MosaicOptions o;
     o.photos = photos;
     o.outputPath = out;
@@ -85,8 +87,9 @@ inline const PhotoFinding* findingFor(const MosaicReport& r, const std::string& 
 } // namespace pf::mosaic::test
 
 // Skips a test that needs the demo map when this build has no GUI (the map is drawn with Qt).
-#define PF_REQUIRE_DEMO_MAP(flight)                                                                      \
-    do {                                                                                                 \
-        if (!(flight).ground)                                                                            \
-            GTEST_SKIP() << "the demo map is generated only in builds with the GUI (PF_BUILD_UI=ON)";   \
+#define PF_REQUIRE_DEMO_MAP(flight)                                                                \
+    do {                                                                                           \
+        if (!(flight).ground)                                                                      \
+            GTEST_SKIP()                                                                           \
+                << "the demo map is generated only in builds with the GUI (PF_BUILD_UI=ON)";       \
     } while (0)

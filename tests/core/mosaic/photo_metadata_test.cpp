@@ -1,4 +1,5 @@
-// Reading a photo's EXIF and XMP through GDAL: GPS, altitudes, gimbal angles, camera; damaged files.
+// Reading a photo's EXIF and XMP through GDAL: GPS, altitudes, gimbal angles, camera; damaged
+// files.
 #include "core/mosaic/photo_metadata.h"
 #include "tests/core/mosaic/mosaic_test_util.h"
 
@@ -16,7 +17,8 @@ TEST(PhotoMetadata, ExifNumbersAndDegrees) {
     EXPECT_FALSE(detail::exifNumber("", 0));
     EXPECT_FALSE(detail::exifNumber("(1)", 1));
     EXPECT_NEAR(*detail::exifDegrees("(49) (0) (43.2)", "N"), 49.012, 1e-12);
-    EXPECT_NEAR(*detail::exifDegrees("(8) (19) (48.5)", "W"), -(8 + 19 / 60.0 + 48.5 / 3600.0), 1e-12);
+    EXPECT_NEAR(*detail::exifDegrees("(8) (19) (48.5)", "W"), -(8 + 19 / 60.0 + 48.5 / 3600.0),
+                1e-12);
     EXPECT_NEAR(*detail::exifDegrees("(33) (24) (0)", "S"), -33.4, 1e-12);
     EXPECT_FALSE(detail::exifDegrees("", "N"));
 }
@@ -24,7 +26,8 @@ TEST(PhotoMetadata, ExifNumbersAndDegrees) {
 TEST(PhotoMetadata, XmpPropertiesInAttributeAndElementForm) {
     const std::string xmp =
         "<rdf:Description drone-dji:GimbalYawDegree=\"+45.50\" drone-dji:GimbalYawDegreeX=\"9\" "
-        "drone-dji:RelativeAltitude = '+40.00'><drone-dji:GimbalPitchDegree>-89.9</drone-dji:GimbalPitchDegree>"
+        "drone-dji:RelativeAltitude = "
+        "'+40.00'><drone-dji:GimbalPitchDegree>-89.9</drone-dji:GimbalPitchDegree>"
         "<Camera:GimbalRollDegree>0.3</Camera:GimbalRollDegree></rdf:Description>";
     EXPECT_DOUBLE_EQ(*detail::xmpNumber(xmp, "GimbalYawDegree"), 45.5);
     EXPECT_DOUBLE_EQ(*detail::xmpNumber(xmp, "RelativeAltitude"), 40.0);
@@ -80,16 +83,19 @@ TEST(PhotoMetadata, ReadsWhatTheSimulatorWrote) {
     {
         std::ifstream in(dir + "/a.jpg", std::ios::binary);
         std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        std::ofstream(dir + "/cut.jpg", std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size() / 2));
+        std::ofstream(dir + "/cut.jpg", std::ios::binary)
+            .write(bytes.data(), static_cast<std::streamsize>(bytes.size() / 2));
     }
     EXPECT_TRUE(readPhotoMetadata(dir + "/cut.jpg").ok()); // the header is intact
     auto st = checkPhotoDecodes(dir + "/cut.jpg");
     ASSERT_FALSE(st.ok());
-    EXPECT_NE(st.error().message.find("cut.jpg: the image data is damaged"), std::string::npos) << st.error().message;
+    EXPECT_NE(st.error().message.find("cut.jpg: the image data is damaged"), std::string::npos)
+        << st.error().message;
     std::ofstream(dir + "/text.jpg") << "not a photo";
     auto t = readPhotoMetadata(dir + "/text.jpg");
     ASSERT_FALSE(t.ok());
-    EXPECT_NE(t.error().message.find("text.jpg: not an image GDAL can read"), std::string::npos) << t.error().message;
+    EXPECT_NE(t.error().message.find("text.jpg: not an image GDAL can read"), std::string::npos)
+        << t.error().message;
     auto none = readPhotoMetadata(dir + "/none.jpg");
     ASSERT_FALSE(none.ok());
     EXPECT_EQ(none.error().message, "none.jpg: no such file");

@@ -75,13 +75,17 @@ TEST(PoseResolver, CameraFromExifModelOr35mmFocalLength) {
     EXPECT_EQ(r->photos[0].camera, "DJI Phantom 4 Pro camera");
     EXPECT_NEAR(r->photos[0].longSideFovDeg, 2 * std::atan(13.2 / 2 / 8.8) * 180 / M_PI, 1e-9);
     const double halfDiag = std::atan(43.2666 / 48.0);
-    EXPECT_NEAR(r->photos[1].longSideFovDeg, 2 * std::atan(std::tan(halfDiag) * 0.8) * 180 / M_PI, 1e-9);
-    EXPECT_NEAR(r->photos[1].shortSideFovDeg, 2 * std::atan(std::tan(halfDiag) * 0.6) * 180 / M_PI, 1e-9);
+    EXPECT_NEAR(r->photos[1].longSideFovDeg, 2 * std::atan(std::tan(halfDiag) * 0.8) * 180 / M_PI,
+                1e-9);
+    EXPECT_NEAR(r->photos[1].shortSideFovDeg, 2 * std::atan(std::tan(halfDiag) * 0.6) * 180 / M_PI,
+                1e-9);
     EXPECT_EQ(r->photos[2].camera, "Falcon 8 camera");
     const PhotoFinding* unknown = finding(*r, "IMG_1002.JPG");
     ASSERT_TRUE(unknown);
     EXPECT_EQ(unknown->kind, PhotoFinding::Kind::NoCamera);
-    EXPECT_NE(unknown->message.find("camera 'DJI Mystery 2' is not in the catalog"), std::string::npos) << unknown->message;
+    EXPECT_NE(unknown->message.find("camera 'DJI Mystery 2' is not in the catalog"),
+              std::string::npos)
+        << unknown->message;
     EXPECT_NE(unknown->message.find("--camera NAME"), std::string::npos);
 
     // --camera forces one (its short side follows the photo's 4:3 pixels when the aspect differs).
@@ -92,12 +96,15 @@ TEST(PoseResolver, CameraFromExifModelOr35mmFocalLength) {
     for (const auto& p : r->photos)
         EXPECT_EQ(p.camera, "DJI Phantom 4 Pro camera");
     const double longFov = 2 * std::atan(13.2 / 2 / 8.8);
-    EXPECT_NEAR(r->photos[0].shortSideFovDeg, 2 * std::atan(std::tan(longFov / 2) * 0.75) * 180 / M_PI, 1e-9);
+    EXPECT_NEAR(r->photos[0].shortSideFovDeg,
+                2 * std::atan(std::tan(longFov / 2) * 0.75) * 180 / M_PI, 1e-9);
     o.cameraName = "Hasselblad 500";
     auto bad = resolvePoses(photos, o);
     ASSERT_FALSE(bad.ok());
     EXPECT_EQ(bad.error().code, ErrorCode::NotFound);
-    EXPECT_NE(bad.error().message.find("--camera: no camera 'Hasselblad 500' in the catalog (known: "), std::string::npos);
+    EXPECT_NE(
+        bad.error().message.find("--camera: no camera 'Hasselblad 500' in the catalog (known: "),
+        std::string::npos);
 }
 
 TEST(PoseResolver, YawFollowsTheTrackWhenTheFileHasNone) {
@@ -149,7 +156,8 @@ TEST(PoseResolver, TakeoffAltitudeFromThePlanAndGroundShotsLeftOut) {
         EXPECT_NEAR(p.altitudeM, 50.0, 0.41);
     bool noted = false;
     for (const auto& n : r->notes)
-        noted |= n.find("take-off altitude 152.0 m above sea level, estimated from 6 photos") != std::string::npos;
+        noted |= n.find("take-off altitude 152.0 m above sea level, estimated from 6 photos") !=
+                 std::string::npos;
     EXPECT_TRUE(noted);
     const PhotoFinding* pre = finding(*r, "preflight.JPG");
     ASSERT_TRUE(pre);
@@ -183,7 +191,8 @@ TEST(PoseResolver, PhotosWithoutGpsTakeThePlannedPointsInCaptureOrder) {
     for (int i = 0; i < 5; ++i) {
         EXPECT_EQ(r->photos[i].planned, i) << r->photos[i].meta.path;
         EXPECT_EQ(r->photos[i].meta.path, "/photos/IMG_" + std::to_string(1000 + i) + ".JPG");
-        EXPECT_NEAR(geo::geodesicDistance(r->photos[i].position, o.plan->photos[i].position), 0.0, 1e-6);
+        EXPECT_NEAR(geo::geodesicDistance(r->photos[i].position, o.plan->photos[i].position), 0.0,
+                    1e-6);
         EXPECT_DOUBLE_EQ(r->photos[i].yawDeg, 90.0); // the planned heading
         EXPECT_NE(r->photos[i].poseFrom.find("plan (capture order)"), std::string::npos);
     }
@@ -194,7 +203,8 @@ TEST(PoseResolver, PhotosWithoutGpsTakeThePlannedPointsInCaptureOrder) {
     EXPECT_EQ(r->photos.size(), 4u);
     bool warned = false;
     for (const auto& n : r->notes)
-        warned |= n.find("4 photos without a GPS position for 5 planned photo points") != std::string::npos;
+        warned |= n.find("4 photos without a GPS position for 5 planned photo points") !=
+                  std::string::npos;
     EXPECT_TRUE(warned);
     // Between placed neighbours that leave the wrong number of points, it cannot be placed.
     photos = {photo(0), photo(2, false), photo(3, false), photo(4)};
@@ -204,7 +214,8 @@ TEST(PoseResolver, PhotosWithoutGpsTakeThePlannedPointsInCaptureOrder) {
     const PhotoFinding* f = finding(*r, "IMG_1002.JPG");
     ASSERT_TRUE(f);
     EXPECT_EQ(f->kind, PhotoFinding::Kind::NoPosition);
-    EXPECT_NE(f->message.find("leave 3 planned point(s) for 2 photo(s)"), std::string::npos) << f->message;
+    EXPECT_NE(f->message.find("leave 3 planned point(s) for 2 photo(s)"), std::string::npos)
+        << f->message;
 }
 
 TEST(PoseResolver, AircraftFilterAndOtherSitesWithoutAPlan) {
@@ -216,7 +227,8 @@ TEST(PoseResolver, AircraftFilterAndOtherSitesWithoutAPlan) {
     o.planAircraft = "Mavic";
     auto bad = resolvePoses({photo(0)}, o);
     ASSERT_FALSE(bad.ok());
-    EXPECT_EQ(bad.error().message, "--aircraft: the plan has no photos of 'Mavic' (its aircraft: Falcon 8, Phantom)");
+    EXPECT_EQ(bad.error().message,
+              "--aircraft: the plan has no photos of 'Mavic' (its aircraft: Falcon 8, Phantom)");
 
     o.plan.reset();
     std::vector<PhotoMetadata> photos{photo(0), photo(1), photo(2)};
