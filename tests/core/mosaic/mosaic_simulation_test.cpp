@@ -252,8 +252,8 @@ TEST(MosaicSimulation, TerrainModelPutsPhotosOfASlopeInPlace) {
         return 0.15 * y + 30.0 * std::exp(-(x * x + y * y) / (2 * 60.0 * 60.0));
     };
     testsim::SimOptions sim;
-    sim.camera.widthPx = 240;
-    sim.camera.heightPx = 180;
+    sim.camera.widthPx = 160;
+    sim.camera.heightPx = 120;
     sim.terrain = slope;
     const std::string dir = scratchDir("terrain");
     auto photos = testsim::simulateFlight(*f.ground, f.planned.photos, sim, dir + "/photos");
