@@ -31,6 +31,7 @@
 #include "ui/dialogs/export_dialog.h"
 #include "ui/vehicle/upload_dialog.h"
 #include "ui/map/plan_layer.h"
+#include "ui/mosaic/mosaic_controller.h"
 #include "ui/panels/statistics_panel.h"
 #include "ui/panels/waypoint_panel.h"
 #include "ui/planning/plan_controller.h"
@@ -251,6 +252,10 @@ void MainWindow::buildActions() {
         if (!path.isEmpty()) importAreas(path, ImportRole::Ask);
     });
     importAct->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
+    file->addSeparator();
+    // Mosaic (issue 19): the dialog, the map layer and the dock live in ui/mosaic/.
+    m_mosaic = new MosaicController(this, m_view, m_scene, m_planner, &m_catalog);
+    file->addAction(icon("map"), tr("Build &mosaic from photos…"), m_mosaic, &MosaicController::showDialog);
     file->addSeparator();
     auto* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);

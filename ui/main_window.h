@@ -29,6 +29,7 @@ class MapView;
 class MissionDocument;
 class MissionLayer;
 class MissionPanel;
+class MosaicController;
 class PlanController;
 class PlanLayer;
 class ProblemsPanel;
@@ -58,6 +59,7 @@ public:
     WaypointPanel* waypointPanel() const { return m_waypoints; }
     StatisticsPanel* statisticsPanel() const { return m_statistics; }
     ProblemsPanel* problemsList() const { return m_problemList; }
+    MosaicController* mosaicController() const { return m_mosaic; }
     // The bar saying a new plan waits because routes were edited by hand.
     bool planNoticeVisible() const;
     AbstractTool* tool(ToolId id) const;
@@ -149,6 +151,7 @@ private:
     QAction* m_keepInsideAct = nullptr;
     QWidget* m_notice = nullptr;
     QLabel* m_noticeText = nullptr;
+    MosaicController* m_mosaic = nullptr;
 };
 
 } // namespace pf::ui

@@ -22,6 +22,7 @@ int runEval(const std::vector<std::string>& args);
 int runCatalog(const std::vector<std::string>& args);
 int runConvert(const std::vector<std::string>& args);
 int runUpload(const std::vector<std::string>& args);
+int runMosaic(const std::vector<std::string>& args);
 
 extern const char* const kValidateUsage;
 extern const char* const kGridUsage;
@@ -30,5 +31,6 @@ extern const char* const kEvalUsage;
 extern const char* const kCatalogUsage;
 extern const char* const kConvertUsage;
 extern const char* const kUploadUsage;
+extern const char* const kMosaicUsage;
 
 } // namespace pf::cli

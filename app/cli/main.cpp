@@ -21,6 +21,7 @@ const Command kCommands[] = {
     {"convert", "convert a waypoint file between formats (by file extension)", pf::cli::kConvertUsage,
      pf::cli::runConvert},
     {"upload", "send missions to vehicles over MAVLink and read them back", pf::cli::kUploadUsage, pf::cli::runUpload},
+    {"mosaic", "stitch the photos of a flight into a georeferenced GeoTIFF", pf::cli::kMosaicUsage, pf::cli::runMosaic},
 };
 
 void printHelp(std::ostream& os) {

