@@ -88,6 +88,7 @@ NoFlyField::NoFlyField(std::vector<geo::Polygon> zones, double marginM)
     for (const auto& z : m_zones) {
         const auto b = geo::bounds(z);
         m_boxes.emplace_back(b.min, b.max);
+        m_circles.emplace_back(0.5 * (b.min + b.max), 0.5 * (b.max - b.min).norm());
     }
 }
 
@@ -116,6 +117,43 @@ double NoFlyField::clearance(const Vec2& a, const Vec2& b) const {
             return 0.0;
     }
     return best;
+}
+
+bool NoFlyField::pointIsSafe(const Vec2& p) const {
+    const double need = std::max(0.0, m_margin - tolerance());
+    for (std::size_t i = 0; i < m_zones.size(); ++i) {
+        const double gap = boxGap(p, p, m_boxes[i].first, m_boxes[i].second);
+        if (gap > 0.0 && gap >= need)
+            continue; // the whole zone lies at least `need` away
+        if (geo::contains(m_zones[i], p) || !isSafeClearance(geo::distanceToBoundary(m_zones[i], p)))
+            return false;
+    }
+    return true;
+}
+
+bool NoFlyField::segmentIsSafe(const Vec2& a, const Vec2& b) const {
+    const double need = std::max(0.0, m_margin - tolerance());
+    const Vec2 smin = a.cwiseMin(b), smax = a.cwiseMax(b);
+    for (std::size_t i = 0; i < m_zones.size(); ++i) {
+        const double gap = boxGap(smin, smax, m_boxes[i].first, m_boxes[i].second);
+        if (gap > 0.0 && gap >= need)
+            continue;
+        // A long diagonal segment's box overlaps many zones' boxes; the distance to a circle around
+        // the zone prunes them.
+        const double round = pointSegDist(m_circles[i].first, a, b) - m_circles[i].second;
+        if (round > 0.0 && round >= need)
+            continue;
+        if (geo::contains(m_zones[i], a) || geo::contains(m_zones[i], b))
+            return false;
+        bool safe = true;
+        forEachEdge(m_zones[i], [&](const Vec2& c, const Vec2& d) {
+            if (safe && !isSafeClearance(segSegDist(a, b, c, d)))
+                safe = false;
+        });
+        if (!safe)
+            return false;
+    }
+    return true;
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -1,0 +1,81 @@
+// The lanes of one cell of a sweep: their heights across the cell, what each photographs and where
+// it is flown, given what lies around the cell (the area's edge, a no-fly margin).
+#pragma once
+
+#include "core/geo/polygon_ops.h"
+#include "core/geo/types.h"
+#include "core/plan/decomposition.h"
+#include "core/plan/lane.h"
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace pf::plan {
+
+// What surrounds the free space, in world coordinates: the area, the zones and their grown margins.
+class SweepGround {
+public:
+    SweepGround(const geo::MultiPolygon& area, const std::vector<geo::Polygon>& zones, const geo::MultiPolygon& grownZones);
+
+    bool insideArea(const geo::Vec2& p) const;
+    // Ground inside the area that only the margin of a zone keeps the aircraft from (admissible ground).
+    bool inMargin(const geo::Vec2& p) const;
+    // How far the ground of a margin runs from p along unit direction u before a zone, the area's edge or
+    // free space ends it (at most cap).
+    double marginRun(const geo::Vec2& p, const geo::Vec2& u, double cap) const;
+
+private:
+    struct Rings {
+        std::vector<geo::Ring> rings;
+        geo::Box box;
+    };
+    const geo::MultiPolygon& m_area;
+    const geo::MultiPolygon& m_grown;
+    std::vector<Rings> m_blockers; // per zone and per grown polygon; the area last
+};
+
+struct SweepLaneParams {
+    double trackSpacingM = 0.0;
+    double photoSpacingM = 0.0;
+    // How far a margin's ground beyond a boundary lying flat along a cell's top or bottom must be
+    // reached by the cell's outermost lane strip (what the real footprint's extra width does not).
+    double contactReachM = 0.0;
+    // Lanes may be flown beyond the area's edge (never into a margin) up to their strip's end.
+    bool flyOutsideArea = true;
+    double marginRunCapM = 0.0; // > 0
+};
+
+// One lane of a cell, left to right in the sweep frame (world coordinates).
+struct CellLane {
+    geo::Vec2 stripA{0, 0}, stripB{0, 0}; // the strip's admissible ground, along the lane's line
+    geo::Vec2 flyA{0, 0}, flyB{0, 0};     // what may be flown of it
+    LaneSpan span;                        // first and last photo (left to right) and their count
+    double y = 0.0;                       // height in the sweep frame
+    int part = 0;                         // the decomposition cell it lies in
+};
+
+// Heights of the lanes of a merged cell (frame y, increasing): lanes `trackSpacingM` apart at most,
+// the outer ones covering the cell's bottom and top (and the margin ground beyond a flat contact), and
+// at every cut between its parts a lane whose strip covers the wider part's ground up to the cut.
+// coverFrom / coverTo, when given, replace the cell's bottom and top as the heights its lanes' strips
+// must reach (a neighbour's lane covers the rest); with nothing left to cover the cell gets no lanes.
+std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, const SweepLaneParams& p,
+                                const SweepGround& ground, std::optional<double> coverFrom = std::nullopt,
+                                std::optional<double> coverTo = std::nullopt);
+
+// Heights of the lanes of every merged cell of a decomposition. A cell beside an obstacle, between a
+// cell below that keeps a lane just under the obstacle and one above that keeps one just over it (the
+// windows at their cuts), leans on those lanes where their strips reach over its own ends: it needs
+// lanes only for what they leave between them, often none.
+std::vector<std::vector<double>> allLaneHeights(const Decomposition& d, const std::vector<MergedCell>& merged,
+                                                const SweepLaneParams& p, const SweepGround& ground);
+
+// The lanes at those heights: fly interval = the cell's interval at the lane's height; strip = the
+// cell's extent within the lane's band (its part's share), run on through the margin ground beyond a
+// lane end; beyond the area's edge, flown up to the strip's end when allowed and `safe`.
+std::vector<CellLane> cellLanes(const Decomposition& d, const MergedCell& m, const std::vector<double>& heights,
+                                const SweepLaneParams& p, const SweepGround& ground,
+                                const std::function<bool(const geo::Vec2&, const geo::Vec2&)>& safe);
+
+} // namespace pf::plan

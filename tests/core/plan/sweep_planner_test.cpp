@@ -1,0 +1,46 @@
+#include "core/plan/sweep_planner.h"
+
+#include "core/geo/no_fly_field.h"
+#include "tests/core/plan/sweep_test_util.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+using namespace pf;
+using namespace pf::plan;
+using namespace pf::plan::sweeptest;
+
+TEST(SweepExplore, Table) {
+    const char* dir = std::getenv("PF_SWEEP_PICTURES");
+    Camera cam;
+    const unsigned n = std::getenv("PF_SWEEP_N") ? static_cast<unsigned>(std::atoi(std::getenv("PF_SWEEP_N"))) : 12;
+    for (unsigned seed = 1; seed <= n; ++seed) {
+        if (const char* only = std::getenv("PF_SWEEP_SEED"))
+            if (seed != static_cast<unsigned>(std::atoi(only)))
+                continue;
+        const int zones = seed % 4 == 0 ? 0 : 10 + static_cast<int>(seed % 6);
+        Area a = generateArea(seed, zones);
+        SweepOptions o = options(cam);
+        if (std::getenv("PF_SWEEP_NOMERGE"))
+            o.mergeCells = false;
+        if (const char* ang = std::getenv("PF_SWEEP_ANGLE"))
+            o.anglesDeg = {std::atof(ang)};
+        if (const char* k = std::getenv("PF_SWEEP_K"))
+            o.plannedDirections = std::atoi(k);
+        auto plan = planSweep(a.region, a.zones, o);
+        ASSERT_TRUE(plan.ok()) << a.name << ": " << plan.error().message;
+        const auto y = yardstick(a, cam, o.time);
+        double unc = 0;
+        const double cov = coverage(a, *plan, cam, &unc);
+        const auto v = countNoFlyViolations({sweepFlightPath(*plan, o.home, o.landing)}, a.zones, o.safetyMarginM);
+        std::printf("%-22s time %.0f / %.0f = %.3f  photos %d / %d = %.3f  cov %.4f (%.0f m2)  viol %d  cells %d->%d  ang %.1f  lanes %zu turns %d len %.0f est %d plan %d constr %.0f moves %d\n",
+                    a.name.c_str(), plan->time.totalS, y.timeS, plan->time.totalS / y.timeS, photoCount(*plan),
+                    y.photosOutsideZones, double(photoCount(*plan)) / y.photosOutsideZones, cov, unc, v.total(),
+                    plan->stats.cellsBeforeMerge, plan->stats.cellsAfterMerge, plan->stats.angleDeg, plan->lanes.size(),
+                    plan->time.turns, plan->time.lengthM, plan->stats.directionsEstimated, plan->stats.directionsPlanned,
+                    plan->stats.constructedTimeS, plan->stats.orderMoves);
+        if (dir)
+            writeGeoJson(std::string(dir) + "/" + a.name + ".geojson", a, *plan, o);
+    }
+}
