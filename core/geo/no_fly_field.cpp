@@ -48,10 +48,44 @@ template <class F> void forEachEdge(const geo::Polygon& poly, F f) {
         ring(h);
 }
 
+// Even-odd containment over every ring: for points known not to lie on the boundary.
+bool insideRings(const geo::Polygon& poly, const Vec2& p) {
+    bool inside = false;
+    auto ring = [&](const geo::Ring& r) {
+        const std::size_t n = r.size();
+        for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+            const Vec2 &a = r[i], &b = r[j];
+            if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
+                inside = !inside;
+        }
+    };
+    ring(poly.outer);
+    for (const auto& h : poly.holes)
+        ring(h);
+    return inside;
+}
+
 double boxGap(const Vec2& amin, const Vec2& amax, const Vec2& bmin, const Vec2& bmax) {
     const double dx = std::max({0.0, bmin.x() - amax.x(), amin.x() - bmax.x()});
     const double dy = std::max({0.0, bmin.y() - amax.y(), amin.y() - bmax.y()});
     return std::hypot(dx, dy);
+}
+
+// True when two boxes are at least `need` apart (and apart at all): what boxGap >= need says, without
+// a square root.
+bool boxesApart(const Vec2& amin, const Vec2& amax, const Vec2& bmin, const Vec2& bmax, double need) {
+    const double dx = std::max({0.0, bmin.x() - amax.x(), amin.x() - bmax.x()});
+    const double dy = std::max({0.0, bmin.y() - amax.y(), amin.y() - bmax.y()});
+    const double g2 = dx * dx + dy * dy;
+    return g2 > 0.0 && g2 >= need * need;
+}
+
+// Squared distance from p to the segment ab.
+double pointSegDist2(const Vec2& p, const Vec2& a, const Vec2& b) {
+    const Vec2 ab = b - a;
+    const double len2 = ab.squaredNorm();
+    const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+    return (a + t * ab - p).squaredNorm();
 }
 
 // The nearest point to p on any ring of polys.
@@ -122,10 +156,11 @@ double NoFlyField::clearance(const Vec2& a, const Vec2& b) const {
 bool NoFlyField::pointIsSafe(const Vec2& p) const {
     const double need = std::max(0.0, m_margin - tolerance());
     for (std::size_t i = 0; i < m_zones.size(); ++i) {
-        const double gap = boxGap(p, p, m_boxes[i].first, m_boxes[i].second);
-        if (gap > 0.0 && gap >= need)
+        if (boxesApart(p, p, m_boxes[i].first, m_boxes[i].second, need))
             continue; // the whole zone lies at least `need` away
-        if (geo::contains(m_zones[i], p) || !isSafeClearance(geo::distanceToBoundary(m_zones[i], p)))
+        // Far enough from the boundary, p is inside exactly when the even-odd rule says so.
+        const double d = geo::distanceToBoundary(m_zones[i], p);
+        if (!isSafeClearance(d) || insideRings(m_zones[i], p))
             return false;
     }
     return true;
@@ -135,22 +170,25 @@ bool NoFlyField::segmentIsSafe(const Vec2& a, const Vec2& b) const {
     const double need = std::max(0.0, m_margin - tolerance());
     const Vec2 smin = a.cwiseMin(b), smax = a.cwiseMax(b);
     for (std::size_t i = 0; i < m_zones.size(); ++i) {
-        const double gap = boxGap(smin, smax, m_boxes[i].first, m_boxes[i].second);
-        if (gap > 0.0 && gap >= need)
+        if (boxesApart(smin, smax, m_boxes[i].first, m_boxes[i].second, need))
             continue;
         // A long diagonal segment's box overlaps many zones' boxes; the distance to a circle around
         // the zone prunes them.
-        const double round = pointSegDist(m_circles[i].first, a, b) - m_circles[i].second;
-        if (round > 0.0 && round >= need)
+        const double reach = m_circles[i].second + need;
+        if (pointSegDist2(m_circles[i].first, a, b) > reach * reach)
             continue;
-        if (geo::contains(m_zones[i], a) || geo::contains(m_zones[i], b))
-            return false;
         bool safe = true;
         forEachEdge(m_zones[i], [&](const Vec2& c, const Vec2& d) {
-            if (safe && !isSafeClearance(segSegDist(a, b, c, d)))
+            if (!safe)
+                return;
+            // An edge whose box lies at least `need` beyond the segment's box is far enough.
+            if (boxesApart(smin, smax, c.cwiseMin(d), c.cwiseMax(d), need))
+                return;
+            if (!isSafeClearance(segSegDist(a, b, c, d)))
                 safe = false;
         });
-        if (!safe)
+        // Clear of every edge by the margin: the segment lies wholly inside or wholly outside.
+        if (!safe || insideRings(m_zones[i], a))
             return false;
     }
     return true;

@@ -236,6 +236,18 @@ VisibilityGraph::VisibilityGraph(NoFlyField field, VisibilityGraphOptions option
             m_edges[i].emplace_back(static_cast<int>(j), d);
             m_edges[j].emplace_back(static_cast<int>(i), d);
         }
+    if (options.allPairs && n > 0 && static_cast<int>(n) <= options.maxAllPairsNodes) {
+        m_pairDist.assign(n * n, std::numeric_limits<float>::infinity());
+        m_pairNext.assign(n * n, -1);
+        for (std::size_t j = 0; j < n; ++j) {
+            // Dijkstra towards j; next[i][j] is i's predecessor on the way back from j.
+            const Tree t = tree(m_nodes[j].p, {static_cast<int>(j)});
+            for (std::size_t i = 0; i < n; ++i) {
+                m_pairDist[i * n + j] = static_cast<float>(t.dist[i]);
+                m_pairNext[i * n + j] = i == j ? static_cast<int>(j) : t.prev[i];
+            }
+        }
+    }
 }
 
 bool VisibilityGraph::tangentAt(const Node& n, const Vec2& from, const std::vector<char>* inside) const {
@@ -248,8 +260,18 @@ bool VisibilityGraph::tangentAt(const Node& n, const Vec2& from, const std::vect
 
 std::vector<char> VisibilityGraph::obstaclesHolding(const Vec2& p) const {
     std::vector<char> in(m_obstacles.size(), 0);
-    for (std::size_t i = 0; i < m_obstacles.size(); ++i)
-        in[i] = m_obstacleBoxes[i].contains(p) && contains(m_obstacles[i], p);
+    for (std::size_t i = 0; i < m_obstacles.size(); ++i) {
+        if (!m_obstacleBoxes[i].contains(p))
+            continue;
+        // even-odd: on the boundary either answer does (a tangent there is a tangent either way)
+        const Ring& r = m_obstacles[i].outer;
+        bool inside = false;
+        for (std::size_t k = 0, j = r.size() - 1; k < r.size(); j = k++)
+            if ((r[k].y() > p.y()) != (r[j].y() > p.y()) &&
+                p.x() < (r[j].x() - r[k].x()) * (p.y() - r[k].y()) / (r[j].y() - r[k].y()) + r[k].x())
+                inside = !inside;
+        in[i] = inside;
+    }
     return in;
 }
 
@@ -341,6 +363,50 @@ std::vector<Vec2> VisibilityGraph::path(const Tree& t, const Vec2& target, const
     for (int v = bestLastNode(t, target, targetVisible, &len); v >= 0; v = t.prev[static_cast<std::size_t>(v)])
         out.push_back(m_nodes[static_cast<std::size_t>(v)].p);
     std::reverse(out.begin(), out.end());
+    return out;
+}
+
+double VisibilityGraph::bestPair(const Vec2& a, const std::vector<int>& aVisible, const Vec2& b,
+                                 const std::vector<int>& bVisible, int* from, int* to) const {
+    const std::size_t n = m_nodes.size();
+    double best = kInf;
+    for (int j : bVisible) {
+        const double tail = (m_nodes[static_cast<std::size_t>(j)].p - b).norm();
+        for (int i : aVisible) {
+            const double d = (m_nodes[static_cast<std::size_t>(i)].p - a).norm() +
+                             m_pairDist[static_cast<std::size_t>(i) * n + static_cast<std::size_t>(j)] + tail;
+            if (d < best) {
+                best = d;
+                *from = i;
+                *to = j;
+            }
+        }
+    }
+    return best;
+}
+
+double VisibilityGraph::distance(const Vec2& a, const std::vector<int>& aVisible, const Vec2& b,
+                                 const std::vector<int>& bVisible) const {
+    if (segmentIsFree(a, b))
+        return (b - a).norm();
+    int i = -1, j = -1;
+    return bestPair(a, aVisible, b, bVisible, &i, &j);
+}
+
+std::vector<Vec2> VisibilityGraph::path(const Vec2& a, const std::vector<int>& aVisible, const Vec2& b,
+                                        const std::vector<int>& bVisible) const {
+    if (segmentIsFree(a, b))
+        return {};
+    int i = -1, j = -1;
+    if (!std::isfinite(bestPair(a, aVisible, b, bVisible, &i, &j)))
+        return {};
+    const std::size_t n = m_nodes.size();
+    std::vector<Vec2> out;
+    for (int k = i; k >= 0; k = m_pairNext[static_cast<std::size_t>(k) * n + static_cast<std::size_t>(j)]) {
+        out.push_back(m_nodes[static_cast<std::size_t>(k)].p);
+        if (k == j || out.size() > n)
+            break;
+    }
     return out;
 }
 

@@ -25,6 +25,10 @@ struct VisibilityGraphOptions {
     // at a few corners instead of hugging a many-sided margin, each bend a turn for the aircraft.
     // Outside the grown zones is safe, so these corners are too.
     bool coarseCorners = false;
+    // Precompute the shortest paths between all nodes (when there are at most maxAllPairsNodes): a
+    // path between two points is then a look-up over their visible nodes, for planners asking many.
+    bool allPairs = false;
+    int maxAllPairsNodes = 600;
 };
 
 // The nodes are the convex corners of the grown zones (and the reflex corners of keepInside), the
@@ -62,6 +66,13 @@ public:
     double distance(const Tree& t, const Vec2& target, const std::vector<int>& targetVisible) const;
     std::vector<Vec2> path(const Tree& t, const Vec2& target, const std::vector<int>& targetVisible) const;
 
+    // Between two points through the all-pairs table (false when it was not built): the length, and
+    // the points strictly between them. aVisible, bVisible: visibleNodes(a), visibleNodes(b).
+    bool hasAllPairs() const { return !m_pairDist.empty(); }
+    double distance(const Vec2& a, const std::vector<int>& aVisible, const Vec2& b, const std::vector<int>& bVisible) const;
+    std::vector<Vec2> path(const Vec2& a, const std::vector<int>& aVisible, const Vec2& b,
+                           const std::vector<int>& bVisible) const;
+
     // One query: the points strictly between a and b of the shortest free path (empty when the segment
     // is free). Errors: a or b not free, or no free way.
     Result<std::vector<Vec2>> shortestPath(const Vec2& a, const Vec2& b) const;
@@ -90,6 +101,10 @@ private:
     std::vector<Box> m_obstacleBoxes;
     std::vector<Node> m_nodes;
     std::vector<std::vector<std::pair<int, double>>> m_edges;
+    std::vector<float> m_pairDist; // n x n, infinity when unreachable
+    std::vector<int> m_pairNext;   // n x n: the node after i on the way from i to j
+    double bestPair(const Vec2& a, const std::vector<int>& aVisible, const Vec2& b, const std::vector<int>& bVisible,
+                    int* from, int* to) const;
 };
 
 } // namespace pf::geo

@@ -151,7 +151,10 @@ public:
                 const int prev = i > 0 ? exit(seq[static_cast<std::size_t>(i - 1)]) : kNone;
                 const int next = last + 1 < n ? entry(seq[static_cast<std::size_t>(last + 1)]) : kNone;
                 const int bi = entry(seq[static_cast<std::size_t>(i)]), bx = exit(seq[static_cast<std::size_t>(last)]);
-                const double removeGain = link(prev, bi) + link(bx, next) - link(prev, next);
+                const double removed = link(prev, bi) + link(bx, next);
+                if (removed - bound(prev, next) <= kGainEps)
+                    continue;
+                const double removeGain = removed - link(prev, next);
                 if (removeGain <= kGainEps)
                     continue;
                 // insert between k and k + 1 (k = -1: at the front), k outside [i - 1, last]
@@ -276,7 +279,10 @@ public:
                 const int bi = entry(seq[static_cast<std::size_t>(i)]), bx = exit(seq[static_cast<std::size_t>(last)]);
                 if (!dear(prev, bi) && !dear(bx, next))
                     continue;
-                const double removeGain = link(prev, bi) + link(bx, next) - link(prev, next);
+                const double removed = link(prev, bi) + link(bx, next);
+                if (removed - bound(prev, next) <= kGainEps)
+                    continue;
+                const double removeGain = removed - link(prev, next);
                 if (removeGain <= kGainEps)
                     continue;
                 bool moved = false;

@@ -231,7 +231,9 @@ Result<Decomposition> decompose(const geo::MultiPolygon& polys, const SweepFrame
             if (pos % 2 == 0) {
                 // Start: a new piece of free space.
                 active.insert(active.begin() + pos, {eL, eR});
-                openCell.insert(openCell.begin() + pos / 2, newCell(v, v));
+                const int ci = newCell(v, v);
+                cells[static_cast<std::size_t>(ci)].bottomTouches.push_back(v);
+                openCell.insert(openCell.begin() + pos / 2, ci);
             } else {
                 // Split: an obstacle begins inside the interval; its cell ends, two begin.
                 const int k = (pos - 1) / 2;
@@ -242,6 +244,7 @@ Result<Decomposition> decompose(const geo::MultiPolygon& polys, const SweepFrame
                     auto& c = cells[static_cast<std::size_t>(ci)];
                     c.left.emplace_back(xl, v.y());
                     c.right.emplace_back(xr, v.y());
+                    c.topTouches.push_back(v);
                     const Edge& er = edges[static_cast<std::size_t>(eR)];
                     if (er.horizontal())
                         c.topContacts.emplace_back(er.lo.x(), er.hi.x());
@@ -266,6 +269,7 @@ Result<Decomposition> decompose(const geo::MultiPolygon& polys, const SweepFrame
             auto& c = cells[static_cast<std::size_t>(openCell[static_cast<std::size_t>(lo / 2)])];
             c.left.push_back(v);
             c.right.push_back(v);
+            c.topTouches.push_back(v);
             active.erase(active.begin() + lo, active.begin() + lo + 2);
             openCell.erase(openCell.begin() + lo / 2);
         } else {
@@ -279,6 +283,7 @@ Result<Decomposition> decompose(const geo::MultiPolygon& polys, const SweepFrame
             cells[static_cast<std::size_t>(c2)].left.push_back(v);
             cells[static_cast<std::size_t>(c2)].right.emplace_back(xr, v.y());
             const int cm = newCell(Vec2(xl, v.y()), Vec2(xr, v.y()));
+            cells[static_cast<std::size_t>(cm)].bottomTouches.push_back(v);
             const Edge& el = edges[static_cast<std::size_t>(active[static_cast<std::size_t>(lo)])];
             if (el.horizontal())
                 cells[static_cast<std::size_t>(cm)].bottomContacts.emplace_back(el.lo.x(), el.hi.x());

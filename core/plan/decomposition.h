@@ -28,6 +28,8 @@ struct MonotoneCell {
     // x ranges of boundary lying flat along the bottom (y = ylo) and top (y = yhi): what lies beyond
     // there is not free (outside the polygon); the planner decides whether it is ground to photograph.
     std::vector<std::pair<double, double>> bottomContacts, topContacts;
+    // Boundary vertices that touch the bottom / top from beyond (where an obstacle begins or ends).
+    std::vector<geo::Vec2> bottomTouches, topTouches;
 
     // The cell's interval at y (clamped to [ylo, yhi]); at a height where a chain runs horizontally,
     // the narrower interval.

@@ -13,6 +13,29 @@ namespace {
 
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
+// Even-odd containment over the polygons' rings: the ground model probes points a few centimetres off
+// a boundary, never on one, so the boundary case does not matter and the plain rule is exact.
+bool insideEvenOdd(const geo::Polygon& poly, const Vec2& p) {
+    bool inside = false;
+    auto ring = [&](const geo::Ring& r) {
+        for (std::size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
+            if ((r[i].y() > p.y()) != (r[j].y() > p.y()) &&
+                p.x() < (r[j].x() - r[i].x()) * (p.y() - r[i].y()) / (r[j].y() - r[i].y()) + r[i].x())
+                inside = !inside;
+    };
+    ring(poly.outer);
+    for (const auto& h : poly.holes)
+        ring(h);
+    return inside;
+}
+
+bool insideAny(const geo::MultiPolygon& polys, const std::vector<geo::Box>& boxes, const Vec2& p) {
+    for (std::size_t i = 0; i < polys.size(); ++i)
+        if (boxes[i].contains(p) && insideEvenOdd(polys[i], p))
+            return true;
+    return false;
+}
+
 void addRings(const geo::Polygon& poly, std::vector<geo::Ring>& out) {
     out.push_back(poly.outer);
     for (const auto& h : poly.holes)
@@ -23,7 +46,7 @@ void addRings(const geo::Polygon& poly, std::vector<geo::Ring>& out) {
 
 SweepGround::SweepGround(const geo::MultiPolygon& area, const std::vector<geo::Polygon>& zones,
                          const geo::MultiPolygon& grownZones)
-    : m_area(area), m_grown(grownZones) {
+    : m_area(area), m_grown(grownZones), m_zones(zones) {
     auto add = [&](const geo::Polygon& poly) {
         Rings r;
         addRings(poly, r.rings);
@@ -36,11 +59,15 @@ SweepGround::SweepGround(const geo::MultiPolygon& area, const std::vector<geo::P
         add(g);
     for (const auto& a : area)
         add(a);
+    for (const auto& a : area)
+        m_areaBoxes.push_back(geo::bounds(a));
+    for (const auto& g : grownZones)
+        m_grownBoxes.push_back(geo::bounds(g));
 }
 
-bool SweepGround::insideArea(const Vec2& p) const { return geo::contains(m_area, p); }
+bool SweepGround::insideArea(const Vec2& p) const { return insideAny(m_area, m_areaBoxes, p); }
 
-bool SweepGround::inMargin(const Vec2& p) const { return insideArea(p) && geo::contains(m_grown, p); }
+bool SweepGround::inMargin(const Vec2& p) const { return insideArea(p) && insideAny(m_grown, m_grownBoxes, p); }
 
 double SweepGround::marginRun(const Vec2& p, const Vec2& u, double cap) const {
     double best = cap;
@@ -68,22 +95,64 @@ double SweepGround::marginRun(const Vec2& p, const Vec2& u, double cap) const {
     return best;
 }
 
+std::vector<int> SweepGround::zonesNear(const Vec2& p, double d) const {
+    std::vector<int> out;
+    for (std::size_t i = 0; i < m_zones.size(); ++i) {
+        const geo::Box& b = m_blockers[i].box;
+        if (p.x() < b.min.x() - d || p.x() > b.max.x() + d || p.y() < b.min.y() - d || p.y() > b.max.y() + d)
+            continue;
+        if (insideEvenOdd(m_zones[i], p) || geo::distanceToBoundary(m_zones[i], p) <= d)
+            out.push_back(static_cast<int>(i));
+    }
+    return out;
+}
+
 namespace {
 
 struct Window {
     double lo, hi;
 };
 
-// Does boundary lie flat along the cell's top (or bottom) with margin ground beyond it?
-bool marginContact(const Decomposition& d, const MonotoneCell& c, bool top, const SweepGround& ground) {
+// How far beyond the cell's top (or bottom) the outermost lane's strip must reach: the ground of a
+// margin lies there when a zone's grown boundary touches the cut, up to the zone itself. Flat along
+// the cut, that is the grown margin; at a corner of a zone whose side runs at a shallow angle to the
+// lanes, the side's rise too (the lanes beside the zone end at that side and see little of it). Less
+// what the real footprint's extra width sees anyway.
+double contactReach(const Decomposition& d, const MonotoneCell& c, bool top, const SweepLaneParams& p,
+                    const SweepGround& ground) {
+    const double y = top ? c.yhi : c.ylo, dir = top ? 1.0 : -1.0;
+    double need = 0.0;
     for (const auto& [x1, x2] : top ? c.topContacts : c.bottomContacts) {
         if (x2 - x1 < 0.5)
             continue;
-        const Vec2 q(0.5 * (x1 + x2), top ? c.yhi + 0.05 : c.ylo - 0.05);
-        if (ground.inMargin(d.frame.toWorld(q)))
-            return true;
+        if (ground.inMargin(d.frame.toWorld(Vec2(0.5 * (x1 + x2), y + 0.05 * dir))))
+            need = std::max(need, p.grownMarginM);
     }
-    return false;
+    constexpr double kShallow = 30.0 * M_PI / 180.0;
+    for (const auto& t : top ? c.topTouches : c.bottomTouches) {
+        if (!ground.inMargin(d.frame.toWorld(Vec2(t.x(), t.y() + 0.05 * dir))))
+            continue;
+        for (int zi : ground.zonesNear(d.frame.toWorld(t), p.grownMarginM + 0.5)) {
+            // The zone's vertex nearest the cut and its two sides from there, in the frame.
+            const auto& ring = ground.zone(zi).outer;
+            const std::size_t n = ring.size();
+            std::size_t best = 0;
+            for (std::size_t i = 1; i < n; ++i)
+                if (dir * d.frame.toFrame(ring[i]).y() < dir * d.frame.toFrame(ring[best]).y())
+                    best = i;
+            const Vec2 z = d.frame.toFrame(ring[best]);
+            double h = dir * (z.y() - y);
+            for (const std::size_t k : {(best + 1) % n, (best + n - 1) % n}) {
+                const Vec2 e = d.frame.toFrame(ring[k]) - z;
+                const double len = e.norm();
+                const double a = std::atan2(std::abs(e.y()), std::abs(e.x()));
+                if (len > 0 && a < kShallow)
+                    h = std::max(h, dir * (z.y() - y) + len * std::sin(a));
+            }
+            need = std::max(need, h);
+        }
+    }
+    return std::max(0.0, need - p.neighbourReachM);
 }
 
 } // namespace
@@ -97,11 +166,12 @@ std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, con
     if (yhi - ylo <= 0.04)
         return {0.5 * (ylo + yhi)};
     const double eps = 0.01;
-    const double e = std::clamp(p.contactReachM, 0.0, 0.5 * s - 2 * eps);
+    const double cap = 0.5 * s - 2 * eps;
+    auto reach = [&](const MonotoneCell& c, bool top) { return std::min(cap, contactReach(d, c, top, p, ground)); };
     std::vector<Window> w;
     // The heights the outer strips must reach.
-    const double from = coverFrom ? *coverFrom : ylo - (marginContact(d, first, false, ground) ? e : 0.0);
-    const double to = coverTo ? *coverTo : yhi + (marginContact(d, last, true, ground) ? e : 0.0);
+    const double from = coverFrom ? *coverFrom : ylo - reach(first, false);
+    const double to = coverTo ? *coverTo : yhi + reach(last, true);
     if (m.parts.size() == 1 && from >= to)
         return {};
     const double et = to - yhi;
@@ -113,10 +183,10 @@ std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, con
         const double c = lo.yhi;
         const bool narrowing = up.xLeft(up.ylo) >= lo.xLeft(lo.yhi) - 1e-6 && up.xRight(up.ylo) <= lo.xRight(lo.yhi) + 1e-6;
         if (narrowing) {
-            const double ec = marginContact(d, lo, true, ground) ? e : 0.0;
+            const double ec = reach(lo, true);
             w.push_back(Window{c - 0.5 * s + ec, c - eps});
         } else {
-            const double ec = marginContact(d, up, false, ground) ? e : 0.0;
+            const double ec = reach(up, false);
             w.push_back(Window{c + eps, c + 0.5 * s - ec});
         }
     }
@@ -242,6 +312,10 @@ std::vector<CellLane> cellLanes(const Decomposition& d, const MergedCell& m, con
         const double b1 = std::max(y - 0.5 * s, cell.ylo), b2 = std::min(y + 0.5 * s, cell.yhi);
         double sa = std::min(xl, cell.minLeft(b1, b2)), sb = std::max(xr, cell.maxRight(b1, b2));
         double fa = xl, fb = xr;
+        const double inset = std::min(p.neighbourReachM, 0.25 * s);
+        const double lb1 = std::max(y - 0.5 * s + inset, cell.ylo), ub2 = std::min(y + 0.5 * s - inset, cell.yhi);
+        const double wrb = y > lb1 ? cell.maxRight(lb1, y) - xr : 0.0, wra = ub2 > y ? cell.maxRight(y, ub2) - xr : 0.0;
+        const double wlb = y > lb1 ? xl - cell.minLeft(lb1, y) : 0.0, wla = ub2 > y ? xl - cell.minLeft(y, ub2) : 0.0;
         // What lies beyond each end along the lane's line.
         auto beyond = [&](double x, double dir, double& strip, double& fly) {
             const Vec2 e = d.frame.toWorld(Vec2(x, y));
@@ -266,6 +340,12 @@ std::vector<CellLane> cellLanes(const Decomposition& d, const MergedCell& m, con
         l.flyA = d.frame.toWorld(Vec2(fa, y));
         l.flyB = d.frame.toWorld(Vec2(fb, y));
         l.span = laneSpan(l.stripA, l.stripB, p.photoSpacingM, l.flyA, l.flyB);
+        // Beyond the area's edge the lane itself flies on over the wedge.
+        const double flownRight = fb - xr, flownLeft = xl - fa;
+        l.wedgeRightBelow = std::max(0.0, wrb - flownRight);
+        l.wedgeRightAbove = std::max(0.0, wra - flownRight);
+        l.wedgeLeftBelow = std::max(0.0, wlb - flownLeft);
+        l.wedgeLeftAbove = std::max(0.0, wla - flownLeft);
         out.push_back(l);
     }
     return out;

@@ -24,6 +24,9 @@ public:
     // How far the ground of a margin runs from p along unit direction u before a zone, the area's edge or
     // free space ends it (at most cap).
     double marginRun(const geo::Vec2& p, const geo::Vec2& u, double cap) const;
+    // The zones whose boundary lies within d of p.
+    std::vector<int> zonesNear(const geo::Vec2& p, double d) const;
+    const geo::Polygon& zone(int i) const { return m_zones[static_cast<std::size_t>(i)]; }
 
 private:
     struct Rings {
@@ -32,18 +35,22 @@ private:
     };
     const geo::MultiPolygon& m_area;
     const geo::MultiPolygon& m_grown;
+    const std::vector<geo::Polygon>& m_zones;
     std::vector<Rings> m_blockers; // per zone and per grown polygon; the area last
+    std::vector<geo::Box> m_areaBoxes, m_grownBoxes;
 };
 
 struct SweepLaneParams {
     double trackSpacingM = 0.0;
     double photoSpacingM = 0.0;
-    // How far a margin's ground beyond a boundary lying flat along a cell's top or bottom must be
-    // reached by the cell's outermost lane strip (what the real footprint's extra width does not).
-    double contactReachM = 0.0;
+    // The grown margin: how far a zone lies beyond the free space's edge.
+    double grownMarginM = 0.0;
     // Lanes may be flown beyond the area's edge (never into a margin) up to their strip's end.
     bool flyOutsideArea = true;
     double marginRunCapM = 0.0; // > 0
+    // How far into a neighbour lane's strip the real footprint reaches ((real across - spacing) / 2):
+    // that part of a half band is the neighbour's, not a wedge of this lane.
+    double neighbourReachM = 0.0;
 };
 
 // One lane of a cell, left to right in the sweep frame (world coordinates).
@@ -53,6 +60,10 @@ struct CellLane {
     LaneSpan span;                        // first and last photo (left to right) and their count
     double y = 0.0;                       // height in the sweep frame
     int part = 0;                         // the decomposition cell it lies in
+    // How far the cell's ground runs on beyond each fly end (frame x) in the lower and upper half of
+    // the lane's strip (less what the neighbour lanes' real footprints see): ground that only a flight
+    // along the boundary there can photograph, as the connection to the neighbour lane on that side is.
+    double wedgeLeftBelow = 0.0, wedgeLeftAbove = 0.0, wedgeRightBelow = 0.0, wedgeRightAbove = 0.0;
 };
 
 // Heights of the lanes of a merged cell (frame y, increasing): lanes `trackSpacingM` apart at most,

@@ -4,6 +4,7 @@
 #include "core/geo/polygon_ops.h"
 #include "core/geo/visibility_graph.h"
 #include "core/plan/cell_order.h"
+#include "core/plan/coverage_check.h"
 #include "core/plan/decomposition.h"
 #include "core/plan/sweep_lanes.h"
 
@@ -135,6 +136,14 @@ private:
         const Vec2 &a = point(u).p, &b = point(v).p;
         if (g.segmentIsFree(a, b)) {
             mid.clear();
+            return true;
+        }
+        if (g.hasAllPairs()) {
+            const auto& va = visible(g, c, u);
+            const auto& vb = visible(g, c, v);
+            if (!std::isfinite(g.distance(a, va, b, vb)))
+                return false;
+            mid = g.path(a, va, b, vb);
             return true;
         }
         // Search from the end point with the larger tree cache hit chance: the lower id (cells' order).
@@ -354,6 +363,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     geo::VisibilityGraphOptions vgo;
     vgo.quadrantSegments = opt.quadrantSegments;
     vgo.coarseCorners = true;
+    vgo.allPairs = true;
     const geo::VisibilityGraph freeGraph(field, vgo);
     std::unique_ptr<geo::VisibilityGraph> keepGraph;
     if (opt.keepInside) {
@@ -435,9 +445,10 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     SweepLaneParams lp;
     lp.trackSpacingM = s;
     lp.photoSpacingM = ph;
-    lp.contactReachM = std::max(0.0, freeGraph.inflatedMarginM() - 0.5 * (realAcross - s));
+    lp.grownMarginM = freeGraph.inflatedMarginM();
     lp.flyOutsideArea = !opt.keepInside;
     lp.marginRunCapM = 2.0 * std::max(realAlong, ph) + 2.0 * freeGraph.inflatedMarginM();
+    lp.neighbourReachM = std::max(0.0, 0.5 * (realAcross - s));
     const double uTurnS = 2.0 * turnCostS(90.0, opt.time) + s / opt.time.speedMps;
     std::vector<DirectionPlan> dirs;
     for (double a : angles) {
@@ -670,6 +681,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     // Every point flown for a lane-level sequence, with the links.
     struct Flown {
         std::vector<std::pair<const CellLane*, bool>> lanes; // lane, flown left to right
+        std::vector<std::pair<int, int>> refs;               // (planned cell, lane) of each
         std::vector<std::vector<Vec2>> links;
         std::vector<Vec2> homeLink, landingLink;
         int leaving = 0;
@@ -692,6 +704,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
                     f.links.push_back(std::move(r.mid));
             }
             f.lanes.emplace_back(&pc.lanes[static_cast<std::size_t>(j)], !st.reversed);
+            f.refs.emplace_back(ci, j);
             lastPt = st.exit(fp.laneProblem);
         }
         if (fp.landingPt >= 0 && !steps.empty()) {
@@ -738,8 +751,13 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     plan.homeLink = flown.homeLink;
     plan.landingLink = flown.landingLink;
     plan.links = std::move(flown.links);
+    plan.stats.laneSegments = static_cast<int>(flown.lanes.size());
     plan.lanes.reserve(flown.lanes.size());
-    for (const auto& [l, ltr] : flown.lanes) {
+    const Vec2 u = dp.d.frame.toWorld(Vec2(1, 0));
+    const double reach = 0.5 * realAlong;
+    std::vector<std::vector<Vec2>> links;
+    for (std::size_t i = 0; i < flown.lanes.size(); ++i) {
+        const auto& [l, ltr] = flown.lanes[i];
         Lane lane = makeLane(l->stripA, l->stripB, ph, l->flyA, l->flyB);
         if (!ltr) {
             std::reverse(lane.photos.begin(), lane.photos.end());
@@ -747,44 +765,118 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
             lane.headingDeg = std::fmod(lane.headingDeg + 180.0, 360.0);
         }
         plan.lanes.push_back(std::move(lane));
+        if (i + 1 >= flown.lanes.size())
+            break;
+        std::vector<Vec2> link = std::move(plan.links[i]);
+        // A straight turn to the neighbour lane of the same cell that runs along the boundary past
+        // the end photos' reach, through ground only that turn flies over: photos on it.
+        const auto& [nl, nltr] = flown.lanes[i + 1];
+        const bool neighbours = flown.refs[i].first == flown.refs[i + 1].first &&
+                                std::abs(flown.refs[i].second - flown.refs[i + 1].second) == 1 && ltr != nltr;
+        if (neighbours && link.empty()) {
+            const bool right = ltr; // the turn is at the lanes' right ends
+            const double o = right ? 1.0 : -1.0;
+            const Vec2 P = ltr ? l->span.last : l->span.first, Q = nltr ? nl->span.first : nl->span.last;
+            const double eP = o * P.dot(u), eQ = o * Q.dot(u);
+            const bool pNear = eP < eQ;
+            const CellLane* nearLane = pNear ? l : nl;
+            const bool otherBelow = pNear ? nl->y < l->y : l->y < nl->y;
+            const double wedge = right ? (otherBelow ? nearLane->wedgeRightBelow : nearLane->wedgeRightAbove)
+                                       : (otherBelow ? nearLane->wedgeLeftBelow : nearLane->wedgeLeftAbove);
+            const double eNear = std::min(eP, eQ), eFar = std::max(eP, eQ);
+            const double lo = eNear + reach, hi = std::min(eNear + wedge, eFar - reach);
+            if (hi > lo + 1e-6 && eFar > eNear) {
+                const double L = (Q - P).norm();
+                const double t0 = (lo - eP) / (eQ - eP), t1 = (hi - eP) / (eQ - eP);
+                const double ta = std::min(t0, t1), tb = std::max(t0, t1);
+                const int n = std::max(1, static_cast<int>(std::ceil((tb - ta) * L / ph - 1e-9)));
+                Lane side;
+                const Vec2 d = (Q - P) / L;
+                for (int k = 0; k < n; ++k) {
+                    const double t = std::clamp(0.5 * (ta + tb) + (k - 0.5 * (n - 1)) * ph / L, 0.0, 1.0);
+                    side.photos.push_back(P + t * L * d);
+                }
+                side.stripStart = P + ta * L * d;
+                side.stripEnd = P + tb * L * d;
+                double h = std::atan2(d.x(), d.y()) * 180.0 / M_PI;
+                side.headingDeg = h < 0 ? h + 360.0 : h;
+                links.push_back({});
+                plan.lanes.push_back(std::move(side));
+            }
+        }
+        links.push_back(std::move(link));
     }
+    plan.links = std::move(links);
     if (flown.broken)
         plan.warnings.push_back("Some transitions of the sweep found no safe way and fly straight: check the plan.");
     if (flown.leaving > 0 && opt.keepInside)
         plan.warnings.push_back(std::to_string(flown.leaving) +
                                 " transitions leave the area: no way over it keeps the safety margin.");
 
-    // --- unreachable pockets: what the footprints from outside do not reach
+    // --- ground no photo can see: free pieces no safe path reaches (pockets), and ground between
+    // zones whose margins merge, farther from the reachable free space than the footprint reaches.
     {
-        std::vector<int> ids;
-        geo::MultiPolygon reachableFree, pocketGround;
+        std::vector<int> pocketIds;
+        geo::MultiPolygon reachableFree;
         for (const auto& f : freeSpace) {
             const int id = pockets.of(interiorPoint(f));
-            if (id == anchor) {
+            if (id == anchor)
                 reachableFree.push_back(f);
-            } else if (std::find(ids.begin(), ids.end(), id) == ids.end()) {
-                ids.push_back(id);
-            }
+            else if (std::find(pocketIds.begin(), pocketIds.end(), id) == pocketIds.end())
+                pocketIds.push_back(id);
         }
-        if (!ids.empty()) {
-            for (int id : ids) {
-                if (id < 0) { // the outside of every pocket while home sits in one
-                    for (const auto& g : geo::difference(region, noFly))
-                        pocketGround.push_back(g);
-                    continue;
-                }
-                for (const auto& g : geo::difference(geo::intersection(region, pockets.hole(id)), noFly))
-                    pocketGround.push_back(g);
+        // Convex zones each alone in its grown piece hide no ground from the footprints.
+        bool hiding = !pocketIds.empty();
+        for (const auto& g : grown) {
+            int inside = 0;
+            for (const auto& z : noFly)
+                if (!z.outer.empty() && geo::contains(g, z.outer.front()))
+                    ++inside;
+            hiding = hiding || inside != 1 || !g.holes.empty();
+        }
+        for (const auto& z : noFly) {
+            const std::size_t n = z.outer.size();
+            int pos = 0, neg = 0;
+            for (std::size_t i = 0; i < n; ++i) {
+                const Vec2 a = z.outer[(i + 1) % n] - z.outer[i], b = z.outer[(i + 2) % n] - z.outer[(i + 1) % n];
+                const double c = a.x() * b.y() - a.y() * b.x();
+                pos += c > 1e-9;
+                neg += c < -1e-9;
             }
+            hiding = hiding || (pos > 0 && neg > 0) || !z.holes.empty();
+        }
+        if (hiding) {
+            // Candidates: ground farther from the reachable free space than half the footprint's short
+            // side; what the plan's photos leave of them, by the independent coverage check.
             const double reach = 0.5 * std::min(realAcross, realAlong);
-            const geo::MultiPolygon seen = geo::buffer(reachableFree, reach, 4);
-            const double left = geo::area(geo::difference(pocketGround, seen));
-            plan.stats.unreachablePockets = static_cast<int>(ids.size());
+            const geo::MultiPolygon ground = geo::difference(region, geo::MultiPolygon(noFly.begin(), noFly.end()));
+            const geo::MultiPolygon far = geo::difference(ground, geo::buffer(reachableFree, reach, 4));
+            double left = 0.0;
+            if (!far.empty()) {
+                const geo::Box fb = geo::bounds(far);
+                const double pad = 0.5 * std::hypot(realAcross, realAlong);
+                std::vector<PhotoFootprint> near;
+                for (const auto& l : plan.lanes)
+                    for (const auto& p : l.photos)
+                        if (p.x() > fb.min.x() - pad && p.x() < fb.max.x() + pad && p.y() > fb.min.y() - pad &&
+                            p.y() < fb.max.y() + pad)
+                            near.push_back(PhotoFootprint{p, l.headingDeg, realAcross, realAlong});
+                CoverageCheckOptions co;
+                co.resolutionM = std::min(0.5, 0.05 * std::min(realAcross, realAlong));
+                co.maxPixels = 2'000'000;
+                auto cov = checkCoverage(far, near, co);
+                left = cov.ok() ? cov->uncoveredAreaM2 : geo::area(far);
+            }
+            plan.stats.unreachablePockets = static_cast<int>(pocketIds.size());
             plan.stats.unreachableAreaM2 = left;
-            plan.warnings.push_back(std::to_string(ids.size()) + (ids.size() == 1 ? " pocket" : " pockets") +
-                                    " between no-fly zones cannot be reached without entering a safety margin; "
-                                    "photographed from outside as far as the footprint reaches, about " +
-                                    fmt(left, 0) + " m2 stay unphotographed.");
+            if (left >= 1.0 || !pocketIds.empty())
+                plan.warnings.push_back(
+                    "About " + fmt(left, 0) + " m2 of ground between no-fly zones" +
+                    (pocketIds.empty() ? std::string()
+                                       : " (" + std::to_string(pocketIds.size()) +
+                                             (pocketIds.size() == 1 ? " pocket" : " pockets") + " no safe path reaches)") +
+                    " lies beyond the footprint's reach from anywhere the aircraft may fly without entering a "
+                    "safety margin: it stays unphotographed; everything else is covered.");
         }
     }
     return plan;

@@ -53,10 +53,14 @@ struct SweepStats {
     double unreachableAreaM2 = 0.0;         // their ground the footprints from outside do not reach (estimate)
     int transitionsLeavingArea = 0;         // keep-inside asked, but no way over the area existed
     int graphNodes = 0, graphEdges = 0;     // the visibility graph of the transitions
+    int laneSegments = 0;                   // lanes across the cells (without the photographed turns)
 };
 
 struct SweepPlan {
-    std::vector<Lane> lanes;                   // flight order, each flown from photos.front() to photos.back()
+    std::vector<Lane> lanes;                   // flight order, each flown from photos.front() to photos.back();
+                                               // besides the cells' lanes, the straight turns between two of
+                                               // them that run along a boundary carry photos too (lanes of
+                                               // their own, in the turn's direction)
     std::vector<std::vector<geo::Vec2>> links; // links[i]: points strictly between lane i's last photo and
                                                // lane i + 1's first photo (the safe path); size lanes.size() - 1
     std::vector<geo::Vec2> homeLink, landingLink; // the same from home to the first photo, the last to landing

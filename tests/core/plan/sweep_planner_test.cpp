@@ -32,15 +32,48 @@ TEST(SweepExplore, Table) {
         ASSERT_TRUE(plan.ok()) << a.name << ": " << plan.error().message;
         const auto y = yardstick(a, cam, o.time);
         double unc = 0;
-        const double cov = coverage(a, *plan, cam, &unc);
+        std::vector<UncoveredPatch> holes;
+        const double cov = coverage(a, *plan, cam, &unc, &holes);
         const auto v = countNoFlyViolations({sweepFlightPath(*plan, o.home, o.landing)}, a.zones, o.safetyMarginM);
-        std::printf("%-22s time %.0f / %.0f = %.3f  photos %d / %d = %.3f  cov %.4f (%.0f m2)  viol %d  cells %d->%d  ang %.1f  lanes %zu turns %d len %.0f est %d plan %d constr %.0f moves %d\n",
+        std::printf("%-22s time %.0f / %.0f = %.3f  photos %d / %d = %.3f  cov %.4f (%.0f m2, unreach %.0f)  viol %d  cells %d->%d  ang %.1f  lanes %zu turns %d len %.0f est %d plan %d constr %.0f moves %d\n",
                     a.name.c_str(), plan->time.totalS, y.timeS, plan->time.totalS / y.timeS, photoCount(*plan),
-                    y.photosOutsideZones, double(photoCount(*plan)) / y.photosOutsideZones, cov, unc, v.total(),
+                    y.photosOutsideZones, double(photoCount(*plan)) / y.photosOutsideZones, cov, unc, plan->stats.unreachableAreaM2, v.total(),
                     plan->stats.cellsBeforeMerge, plan->stats.cellsAfterMerge, plan->stats.angleDeg, plan->lanes.size(),
                     plan->time.turns, plan->time.lengthM, plan->stats.directionsEstimated, plan->stats.directionsPlanned,
                     plan->stats.constructedTimeS, plan->stats.orderMoves);
+        if (std::getenv("PF_SWEEP_DETAIL")) {
+            double laneS = 0, linkS = 0, stripM = 0, spanM = 0;
+            int bigLinks = 0;
+            double bigLinkS = 0;
+            for (std::size_t i = 0; i < plan->lanes.size(); ++i) {
+                const auto& l = plan->lanes[i];
+                laneS += (l.photos.back() - l.photos.front()).norm() / o.time.speedMps;
+                stripM += (l.stripEnd - l.stripStart).norm();
+                spanM += (l.photos.back() - l.photos.front()).norm();
+                if (i + 1 < plan->lanes.size()) {
+                    std::vector<geo::Vec2> pts{l.photos.back() - (l.photos.back() - l.photos.front()).normalized()};
+                    pts.push_back(l.photos.back());
+                    pts.insert(pts.end(), plan->links[i].begin(), plan->links[i].end());
+                    const auto& n = plan->lanes[i + 1];
+                    pts.push_back(n.photos.front());
+                    if (n.photos.size() > 1)
+                        pts.push_back(n.photos.front() + (n.photos[1] - n.photos.front()).normalized());
+                    const double t = flightTime(pts, o.time).totalS - 2.0 / o.time.speedMps - o.time.stopCostS();
+                    linkS += t;
+                    if (t > 16) {
+                        ++bigLinks;
+                        bigLinkS += t;
+                    }
+                }
+            }
+            std::printf("    lanes %.0f s, links %.0f s (%d dear ones: %.0f s), strips %.0f m, flown %.0f m, photos/strip %.3f\n", laneS,
+                        linkS, bigLinks, bigLinkS, stripM, spanM, photoCount(*plan) / (stripM / o.photoSpacingM));
+        }
+        if (std::getenv("PF_SWEEP_HOLES"))
+            for (const auto& h : holes)
+                if (h.areaM2 > 10)
+                    std::printf("    hole %.0f m2 at (%.0f, %.0f)\n", h.areaM2, h.centroid.x(), h.centroid.y());
         if (dir)
-            writeGeoJson(std::string(dir) + "/" + a.name + ".geojson", a, *plan, o);
+            writeGeoJson(std::string(dir) + "/" + a.name + ".geojson", a, *plan, o, holes);
     }
 }

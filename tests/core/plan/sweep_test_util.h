@@ -319,7 +319,8 @@ inline int photoCount(const SweepPlan& plan) {
     return n;
 }
 
-inline double coverage(const Area& a, const SweepPlan& plan, const Camera& cam, double* uncoveredM2 = nullptr) {
+inline double coverage(const Area& a, const SweepPlan& plan, const Camera& cam, double* uncoveredM2 = nullptr,
+                       std::vector<UncoveredPatch>* patches = nullptr) {
     std::vector<PhotoFootprint> fps;
     for (const auto& l : plan.lanes)
         for (const auto& p : l.photos)
@@ -331,12 +332,15 @@ inline double coverage(const Area& a, const SweepPlan& plan, const Camera& cam, 
         return -1;
     if (uncoveredM2)
         *uncoveredM2 = r->uncoveredAreaM2;
+    if (patches)
+        *patches = r->patches;
     return r->coveredFraction;
 }
 
 // A GeoJSON FeatureCollection (local metres) with the area, the zones, the cells, the lanes and the
 // flown path, for plotting.
-inline void writeGeoJson(const std::string& path, const Area& a, const SweepPlan& plan, const SweepOptions& o) {
+inline void writeGeoJson(const std::string& path, const Area& a, const SweepPlan& plan, const SweepOptions& o,
+                         const std::vector<UncoveredPatch>& holes = {}) {
     std::ofstream f(path);
     auto ring = [&](const geo::Ring& r) {
         std::string s = "[";
@@ -371,6 +375,9 @@ inline void writeGeoJson(const std::string& path, const Area& a, const SweepPlan
         poly(z, "zone");
     for (const auto& c : plan.cells)
         poly(c, "cell");
+    for (const auto& h : holes)
+        for (const auto& p : h.shape)
+            poly(p, "hole");
     for (const auto& l : plan.lanes)
         feats.push_back("{\"type\":\"Feature\",\"properties\":{\"role\":\"photos\"},\"geometry\":{\"type\":\"MultiPoint\",\"coordinates\":" +
                         line(l.photos) + "}}");
