@@ -69,6 +69,13 @@ bool SweepGround::insideArea(const Vec2& p) const { return insideAny(m_area, m_a
 
 bool SweepGround::inMargin(const Vec2& p) const { return insideArea(p) && insideAny(m_grown, m_grownBoxes, p); }
 
+bool SweepGround::inZone(const Vec2& p) const {
+    for (std::size_t i = 0; i < m_zones.size(); ++i)
+        if (m_blockers[i].box.contains(p) && insideEvenOdd(m_zones[i], p))
+            return true;
+    return false;
+}
+
 double SweepGround::marginRun(const Vec2& p, const Vec2& u, double cap) const {
     double best = cap;
     const Vec2 far = p + cap * u;
@@ -159,7 +166,7 @@ double contactReach(const Decomposition& d, const MonotoneCell& c, bool top, con
 
 std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, const SweepLaneParams& p,
                                 const SweepGround& ground, std::optional<double> coverFrom,
-                                std::optional<double> coverTo) {
+                                std::optional<double> coverTo, const std::vector<double>& fixed) {
     const auto& first = d.cells[static_cast<std::size_t>(m.parts.front())];
     const auto& last = d.cells[static_cast<std::size_t>(m.parts.back())];
     const double ylo = first.ylo, yhi = last.yhi, s = p.trackSpacingM;
@@ -172,7 +179,7 @@ std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, con
     // The heights the outer strips must reach.
     const double from = coverFrom ? *coverFrom : ylo - reach(first, false);
     const double to = coverTo ? *coverTo : yhi + reach(last, true);
-    if (m.parts.size() == 1 && from >= to)
+    if (m.parts.size() == 1 && from >= to && fixed.empty())
         return {};
     const double et = to - yhi;
     w.push_back(Window{ylo + eps, from + 0.5 * s});
@@ -190,7 +197,9 @@ std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, con
             w.push_back(Window{c + eps, c + 0.5 * s - ec});
         }
     }
-    if (m.parts.size() == 1 && w[0].hi >= w[1].lo) {
+    for (double y : fixed)
+        w.push_back(Window{y, y});
+    if (m.parts.size() == 1 && w[0].hi >= w[1].lo && fixed.empty()) {
         // One lane does: in the middle of what it may take.
         const double lo = std::max(ylo + eps, w[1].lo), hi = std::min(yhi - eps, w[0].hi);
         return {lo <= hi ? 0.5 * (lo + hi) : 0.5 * (ylo + yhi)};
@@ -241,7 +250,8 @@ std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, con
 }
 
 std::vector<std::vector<double>> allLaneHeights(const Decomposition& d, const std::vector<MergedCell>& merged,
-                                                const SweepLaneParams& p, const SweepGround& ground) {
+                                                const SweepLaneParams& p, const SweepGround& ground,
+                                                std::vector<std::vector<char>>* pinned) {
     std::vector<std::vector<double>> hs;
     hs.reserve(merged.size());
     for (const auto& m : merged)
@@ -254,12 +264,17 @@ std::vector<std::vector<double>> allLaneHeights(const Decomposition& d, const st
             posOf[static_cast<std::size_t>(merged[i].parts[k])] = static_cast<int>(k);
         }
     const double s = p.trackSpacingM, tol = 1e-6;
-    std::vector<std::vector<double>> out = hs;
+    struct Lean {
+        std::optional<double> from, to;
+        std::vector<std::pair<int, int>> on; // (merged cell, lane) leaned on
+    };
+    std::vector<Lean> lean(merged.size());
+    std::vector<char> leanedOn(merged.size(), 0);
     for (std::size_t i = 0; i < merged.size(); ++i) {
         const auto& m = merged[i];
         const auto& bottom = d.cells[static_cast<std::size_t>(m.parts.front())];
         const auto& top = d.cells[static_cast<std::size_t>(m.parts.back())];
-        std::optional<double> from, to;
+        Lean& L = lean[i];
         // A cell below whose chain goes on past this cut (so it keeps a lane just under it) and whose
         // lane there spans this cell's bottom.
         for (int b : bottom.below) {
@@ -268,11 +283,16 @@ std::vector<std::vector<double>> allLaneHeights(const Decomposition& d, const st
             if (mb < 0 || mb == static_cast<int>(i) || pos + 1 >= static_cast<int>(merged[static_cast<std::size_t>(mb)].parts.size()))
                 continue;
             const auto& cb = d.cells[static_cast<std::size_t>(b)];
-            for (double y : hs[static_cast<std::size_t>(mb)]) {
+            const auto& ys = hs[static_cast<std::size_t>(mb)];
+            for (std::size_t k = 0; k < ys.size(); ++k) {
+                const double y = ys[k];
                 if (y < cb.ylo || y > cb.yhi || y < bottom.ylo - 0.5 * s)
                     continue;
-                if (cb.xLeft(y) <= bottom.xLeft(bottom.ylo) + tol && cb.xRight(y) >= bottom.xRight(bottom.ylo) - tol)
-                    from = std::max(from.value_or(-1e300), y + 0.5 * s);
+                if (cb.xLeft(y) <= bottom.xLeft(bottom.ylo) + tol && cb.xRight(y) >= bottom.xRight(bottom.ylo) - tol &&
+                    y + 0.5 * s > L.from.value_or(-1e300)) {
+                    L.from = y + 0.5 * s;
+                    L.on.emplace_back(mb, static_cast<int>(k));
+                }
             }
         }
         for (int a : top.above) {
@@ -281,15 +301,42 @@ std::vector<std::vector<double>> allLaneHeights(const Decomposition& d, const st
             if (ma < 0 || ma == static_cast<int>(i) || pos == 0)
                 continue;
             const auto& ca = d.cells[static_cast<std::size_t>(a)];
-            for (double y : hs[static_cast<std::size_t>(ma)]) {
+            const auto& ys = hs[static_cast<std::size_t>(ma)];
+            for (std::size_t k = 0; k < ys.size(); ++k) {
+                const double y = ys[k];
                 if (y < ca.ylo || y > ca.yhi || y > top.yhi + 0.5 * s)
                     continue;
-                if (ca.xLeft(y) <= top.xLeft(top.yhi) + tol && ca.xRight(y) >= top.xRight(top.yhi) - tol)
-                    to = std::min(to.value_or(1e300), y - 0.5 * s);
+                if (ca.xLeft(y) <= top.xLeft(top.yhi) + tol && ca.xRight(y) >= top.xRight(top.yhi) - tol &&
+                    y - 0.5 * s < L.to.value_or(1e300)) {
+                    L.to = y - 0.5 * s;
+                    L.on.emplace_back(ma, static_cast<int>(k));
+                }
             }
         }
-        if (from || to)
-            out[i] = laneHeights(d, m, p, ground, from, to);
+        for (const auto& [mc, k] : L.on)
+            leanedOn[static_cast<std::size_t>(mc)] = 1;
+    }
+    // Every cell needs only what the lanes it leans on leave; a lane leaned on keeps its height.
+    std::vector<std::vector<double>> fixed(merged.size());
+    for (const auto& L : lean)
+        for (const auto& [mc, k] : L.on)
+            fixed[static_cast<std::size_t>(mc)].push_back(hs[static_cast<std::size_t>(mc)][static_cast<std::size_t>(k)]);
+    std::vector<std::vector<double>> out = hs;
+    for (std::size_t i = 0; i < merged.size(); ++i) {
+        const Lean& L = lean[i];
+        if (!L.from && !L.to)
+            continue;
+        out[i] = laneHeights(d, merged[i], p, ground, L.from, L.to, fixed[i]);
+    }
+    if (pinned) {
+        pinned->assign(merged.size(), {});
+        for (std::size_t i = 0; i < merged.size(); ++i) {
+            (*pinned)[i].assign(out[i].size(), 0);
+            for (std::size_t k = 0; k < out[i].size(); ++k)
+                for (double y : fixed[i])
+                    if (out[i][k] == y)
+                        (*pinned)[i][k] = 1;
+        }
     }
     return out;
 }
@@ -301,21 +348,44 @@ std::vector<CellLane> cellLanes(const Decomposition& d, const MergedCell& m, con
     out.reserve(heights.size());
     const Vec2 u = d.frame.toWorld(Vec2(1, 0));
     const double s = p.trackSpacingM;
+    // The cell's extreme x between two heights, over all its parts (a part met over less than a
+    // hair's height, where two lanes' bands meet at a cut, does not count).
+    const double hair = 0.01 * s;
+    auto extreme = [&](double y1, double y2, bool left, std::size_t own) {
+        double x = left ? 1e300 : -1e300;
+        for (std::size_t k = 0; k < m.parts.size(); ++k) {
+            const auto& c = d.cells[static_cast<std::size_t>(m.parts[k])];
+            const double a = std::max(y1, c.ylo), b = std::min(y2, c.yhi);
+            if (a > b || (k != own && b - a < hair))
+                continue;
+            x = left ? std::min(x, c.minLeft(a, b)) : std::max(x, c.maxRight(a, b));
+        }
+        return x;
+    };
     std::size_t part = 0;
-    for (double y : heights) {
+    for (std::size_t j = 0; j < heights.size(); ++j) {
+        const double y = heights[j];
         while (part + 1 < m.parts.size() && y > d.cells[static_cast<std::size_t>(m.parts[part])].yhi)
             ++part;
         const auto& cell = d.cells[static_cast<std::size_t>(m.parts[part])];
         double xl = cell.xLeft(y), xr = cell.xRight(y);
         if (xr < xl)
             xl = xr = 0.5 * (xl + xr);
-        const double b1 = std::max(y - 0.5 * s, cell.ylo), b2 = std::min(y + 0.5 * s, cell.yhi);
-        double sa = std::min(xl, cell.minLeft(b1, b2)), sb = std::max(xr, cell.maxRight(b1, b2));
+        // The heights this lane answers for: its band less what the neighbour lanes' bands hold,
+        // over every part of the cell (a part beside the lane's own may reach further there).
+        double lo = y - 0.5 * s, hi = y + 0.5 * s;
+        if (j > 0)
+            lo = std::max(lo, std::min(y, heights[j - 1] + 0.5 * s));
+        if (j + 1 < heights.size())
+            hi = std::min(hi, std::max(y, heights[j + 1] - 0.5 * s));
+        double sa = std::min(xl, extreme(lo, hi, true, part)), sb = std::max(xr, extreme(lo, hi, false, part));
         double fa = xl, fb = xr;
         const double inset = std::min(p.neighbourReachM, 0.25 * s);
-        const double lb1 = std::max(y - 0.5 * s + inset, cell.ylo), ub2 = std::min(y + 0.5 * s - inset, cell.yhi);
-        const double wrb = y > lb1 ? cell.maxRight(lb1, y) - xr : 0.0, wra = ub2 > y ? cell.maxRight(y, ub2) - xr : 0.0;
-        const double wlb = y > lb1 ? xl - cell.minLeft(lb1, y) : 0.0, wla = ub2 > y ? xl - cell.minLeft(y, ub2) : 0.0;
+        const double lb1 = std::max(lo, y - 0.5 * s + inset), ub2 = std::min(hi, y + 0.5 * s - inset);
+        const double wrb = y > lb1 ? extreme(lb1, y, false, part) - xr : 0.0;
+        const double wra = ub2 > y ? extreme(y, ub2, false, part) - xr : 0.0;
+        const double wlb = y > lb1 ? xl - extreme(lb1, y, true, part) : 0.0;
+        const double wla = ub2 > y ? xl - extreme(y, ub2, true, part) : 0.0;
         // What lies beyond each end along the lane's line.
         auto beyond = [&](double x, double dir, double& strip, double& fly) {
             const Vec2 e = d.frame.toWorld(Vec2(x, y));
@@ -349,6 +419,130 @@ std::vector<CellLane> cellLanes(const Decomposition& d, const MergedCell& m, con
         out.push_back(l);
     }
     return out;
+}
+
+int dropCoveredLanes(const Decomposition& d, std::vector<std::vector<CellLane>>& lanes,
+                     const std::vector<std::vector<char>>& pinned, const SweepLaneParams& p, const SweepGround& ground,
+                     double realAcrossM, double realAlongM, double maxLengthM) {
+    struct Ref {
+        std::size_t cell, lane;
+    };
+    std::vector<Ref> all, candidates;
+    for (std::size_t c = 0; c < lanes.size(); ++c)
+        for (std::size_t j = 0; j < lanes[c].size(); ++j) {
+            all.push_back(Ref{c, j});
+            const auto& l = lanes[c][j];
+            const bool pin = c < pinned.size() && j < pinned[c].size() && pinned[c][j];
+            if (!pin && (l.flyB - l.flyA).norm() <= maxLengthM)
+                candidates.push_back(Ref{c, j});
+        }
+    if (candidates.empty())
+        return 0;
+    std::stable_sort(candidates.begin(), candidates.end(), [&](const Ref& a, const Ref& b) {
+        const auto &la = lanes[a.cell][a.lane], &lb = lanes[b.cell][b.lane];
+        return (la.flyB - la.flyA).squaredNorm() < (lb.flyB - lb.flyA).squaredNorm();
+    });
+    const double s = p.trackSpacingM;
+    const double pad = 0.5 * std::hypot(realAcrossM, realAlongM) + 0.5 * s;
+    // Lanes by the box of their strip, on a grid, to find the photos near a candidate.
+    geo::Box whole{lanes[all.front().cell][all.front().lane].stripA, lanes[all.front().cell][all.front().lane].stripA};
+    std::vector<geo::Box> boxes;
+    boxes.reserve(all.size());
+    for (const auto& r : all) {
+        const auto& l = lanes[r.cell][r.lane];
+        geo::Box b{l.stripA.cwiseMin(l.stripB), l.stripA.cwiseMax(l.stripB)};
+        b.min -= Vec2(pad, pad);
+        b.max += Vec2(pad, pad);
+        boxes.push_back(b);
+        whole.min = whole.min.cwiseMin(b.min);
+        whole.max = whole.max.cwiseMax(b.max);
+    }
+    const double g = std::max(50.0, 2 * pad);
+    const int nx = static_cast<int>((whole.max.x() - whole.min.x()) / g) + 1;
+    const int ny = static_cast<int>((whole.max.y() - whole.min.y()) / g) + 1;
+    std::vector<std::vector<int>> grid(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
+    auto cellRange = [&](const geo::Box& b, int& x0, int& y0, int& x1, int& y1) {
+        x0 = std::clamp(static_cast<int>((b.min.x() - whole.min.x()) / g), 0, nx - 1);
+        y0 = std::clamp(static_cast<int>((b.min.y() - whole.min.y()) / g), 0, ny - 1);
+        x1 = std::clamp(static_cast<int>((b.max.x() - whole.min.x()) / g), 0, nx - 1);
+        y1 = std::clamp(static_cast<int>((b.max.y() - whole.min.y()) / g), 0, ny - 1);
+    };
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        int x0, y0, x1, y1;
+        cellRange(boxes[i], x0, y0, x1, y1);
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x)
+                grid[static_cast<std::size_t>(y) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(x)].push_back(static_cast<int>(i));
+    }
+    std::vector<char> dropped(all.size(), 0);
+    std::vector<std::vector<Vec2>> photos(all.size());
+    std::vector<char> built(all.size(), 0);
+    std::vector<std::size_t> offset(lanes.size() + 1, 0);
+    for (std::size_t c = 0; c < lanes.size(); ++c)
+        offset[c + 1] = offset[c] + lanes[c].size();
+    auto refIndex = [&](const Ref& r) { return offset[r.cell] + r.lane; };
+    const double ha = 0.5 * realAlongM, hc = 0.5 * realAcrossM;
+    const Vec2 u = d.frame.toWorld(Vec2(1, 0)); // every lane runs along u: footprints are aligned with it
+    const double r = std::clamp(s / 20.0, 0.25, 1.5);
+    int count = 0;
+    for (const auto& cand : candidates) {
+        const std::size_t ci = refIndex(cand);
+        const CellLane& l = lanes[cand.cell][cand.lane];
+        // the photos of the other lanes near it
+        int x0, y0, x1, y1;
+        cellRange(boxes[ci], x0, y0, x1, y1);
+        std::vector<int> near;
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x)
+                for (int o : grid[static_cast<std::size_t>(y) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(x)])
+                    if (static_cast<std::size_t>(o) != ci && !dropped[static_cast<std::size_t>(o)] && boxes[static_cast<std::size_t>(o)].intersects(boxes[ci]))
+                        near.push_back(o);
+        std::sort(near.begin(), near.end());
+        near.erase(std::unique(near.begin(), near.end()), near.end());
+        std::vector<Vec2> pts;
+        for (int o : near) {
+            const auto& ref = all[static_cast<std::size_t>(o)];
+            if (!built[static_cast<std::size_t>(o)]) {
+                const auto& ol = lanes[ref.cell][ref.lane];
+                photos[static_cast<std::size_t>(o)] = makeLane(ol.stripA, ol.stripB, p.photoSpacingM, ol.flyA, ol.flyB).photos;
+                built[static_cast<std::size_t>(o)] = 1;
+            }
+            pts.insert(pts.end(), photos[static_cast<std::size_t>(o)].begin(), photos[static_cast<std::size_t>(o)].end());
+        }
+        auto seen = [&](const Vec2& q) {
+            for (const auto& c : pts) {
+                const Vec2 dq = q - c;
+                if (std::abs(dq.dot(u)) <= ha && std::abs(u.x() * dq.y() - u.y() * dq.x()) <= hc)
+                    return true;
+            }
+            return false;
+        };
+        // Everything its own photos see that is ground must be seen by another photo too.
+        const std::vector<Vec2> own = makeLane(l.stripA, l.stripB, p.photoSpacingM, l.flyA, l.flyB).photos;
+        const Vec2 v(-u.y(), u.x());
+        bool covered = !pts.empty();
+        for (std::size_t k = 0; covered && k < own.size(); ++k)
+            for (double b = -hc + 0.5 * r; covered && b < hc; b += r)
+                for (double a = -ha + 0.5 * r; covered && a < ha; a += r) {
+                    const Vec2 q = own[k] + a * u + b * v;
+                    if (ground.insideArea(q) && !ground.inZone(q) && !seen(q))
+                        covered = false;
+                }
+        if (covered) {
+            dropped[ci] = 1;
+            ++count;
+        }
+    }
+    // remove the dropped lanes
+    std::size_t k = 0;
+    for (auto& cl : lanes) {
+        std::vector<CellLane> keep;
+        for (auto& l : cl)
+            if (!dropped[k++])
+                keep.push_back(l);
+        cl = std::move(keep);
+    }
+    return count;
 }
 
 } // namespace pf::plan

@@ -21,6 +21,7 @@ public:
     bool insideArea(const geo::Vec2& p) const;
     // Ground inside the area that only the margin of a zone keeps the aircraft from (admissible ground).
     bool inMargin(const geo::Vec2& p) const;
+    bool inZone(const geo::Vec2& p) const;
     // How far the ground of a margin runs from p along unit direction u before a zone, the area's edge or
     // free space ends it (at most cap).
     double marginRun(const geo::Vec2& p, const geo::Vec2& u, double cap) const;
@@ -71,16 +72,19 @@ struct CellLane {
 // at every cut between its parts a lane whose strip covers the wider part's ground up to the cut.
 // coverFrom / coverTo, when given, replace the cell's bottom and top as the heights its lanes' strips
 // must reach (a neighbour's lane covers the rest); with nothing left to cover the cell gets no lanes.
+// `fixed` heights must stay lanes (others lean on them).
 std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, const SweepLaneParams& p,
                                 const SweepGround& ground, std::optional<double> coverFrom = std::nullopt,
-                                std::optional<double> coverTo = std::nullopt);
+                                std::optional<double> coverTo = std::nullopt, const std::vector<double>& fixed = {});
 
 // Heights of the lanes of every merged cell of a decomposition. A cell beside an obstacle, between a
 // cell below that keeps a lane just under the obstacle and one above that keeps one just over it (the
 // windows at their cuts), leans on those lanes where their strips reach over its own ends: it needs
 // lanes only for what they leave between them, often none.
+// A cell others lean on keeps its own lanes; `pinned` (when given) flags the lanes leaned on.
 std::vector<std::vector<double>> allLaneHeights(const Decomposition& d, const std::vector<MergedCell>& merged,
-                                                const SweepLaneParams& p, const SweepGround& ground);
+                                                const SweepLaneParams& p, const SweepGround& ground,
+                                                std::vector<std::vector<char>>* pinned = nullptr);
 
 // The lanes at those heights: fly interval = the cell's interval at the lane's height; strip = the
 // cell's extent within the lane's band (its part's share), run on through the margin ground beyond a
@@ -88,5 +92,13 @@ std::vector<std::vector<double>> allLaneHeights(const Decomposition& d, const st
 std::vector<CellLane> cellLanes(const Decomposition& d, const MergedCell& m, const std::vector<double>& heights,
                                 const SweepLaneParams& p, const SweepGround& ground,
                                 const std::function<bool(const geo::Vec2&, const geo::Vec2&)>& safe);
+
+// Drops short lanes (flown no longer than maxLengthM, not `pinned`) whose ground the photos of the
+// other lanes already see with the real footprint (across x along): slivers between a zone's margin and
+// the area's edge, or between two margins, often are. Shortest first; a dropped lane no longer counts
+// for the others. Returns how many were dropped.
+int dropCoveredLanes(const Decomposition& d, std::vector<std::vector<CellLane>>& lanes,
+                     const std::vector<std::vector<char>>& pinned, const SweepLaneParams& p, const SweepGround& ground,
+                     double realAcrossM, double realAlongM, double maxLengthM);
 
 } // namespace pf::plan

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <unordered_map>
@@ -254,6 +255,7 @@ struct DirectionPlan {
     Decomposition d;
     std::vector<MergedCell> merged;
     std::vector<std::vector<double>> heights;
+    std::vector<std::vector<char>> pinned; // lanes that neighbours lean on
 };
 
 struct FullPlan {
@@ -468,7 +470,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         }
         double est = 0.0;
         std::vector<std::pair<Vec2, Vec2>> ends;
-        dp.heights = allLaneHeights(dp.d, dp.merged, lp, ground);
+        dp.heights = allLaneHeights(dp.d, dp.merged, lp, ground, &dp.pinned);
         for (std::size_t mi = 0; mi < dp.merged.size(); ++mi) {
             const auto& m = dp.merged[mi];
             const auto& hs = dp.heights[mi];
@@ -538,10 +540,14 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         fp->router = std::make_unique<Router>(opt.time, graph, keepGraph ? &freeGraph : nullptr);
         Router& router = *fp->router;
         const Vec2 u = dp.d.frame.toWorld(Vec2(1, 0));
+        std::vector<std::vector<CellLane>> laneSets(dp.merged.size());
+        for (std::size_t mi = 0; mi < dp.merged.size(); ++mi)
+            laneSets[mi] = cellLanes(dp.d, dp.merged[mi], dp.heights[mi], lp, ground, safeOutside);
+        dropCoveredLanes(dp.d, laneSets, dp.pinned, lp, ground, realAcross, realAlong, std::getenv("PF_NODROP") ? 0.0 : 4.0 * ph);
         for (std::size_t mi = 0; mi < dp.merged.size(); ++mi) {
             PlannedCell pc;
             pc.merged = static_cast<int>(mi);
-            pc.lanes = cellLanes(dp.d, dp.merged[mi], dp.heights[mi], lp, ground, safeOutside);
+            pc.lanes = std::move(laneSets[mi]);
             if (pc.lanes.empty())
                 continue;
             const auto& midLane = pc.lanes[pc.lanes.size() / 2];
@@ -643,12 +649,12 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
                 pts.push_back(fp->cells[static_cast<std::size_t>(ci)].pt(static_cast<std::size_t>(j), false));
                 pts.push_back(fp->cells[static_cast<std::size_t>(ci)].pt(static_cast<std::size_t>(j), true));
             }
-            fp->near = nearestEndPoints(router, pts, 10, s);
+            fp->near = nearestEndPoints(router, pts, std::getenv("PF_K") ? std::atoi(std::getenv("PF_K")) : 10, s);
             const auto& nearRef = fp->near;
             fp->laneProblem.near = [&nearRef](int p) -> const std::vector<int>& { return nearRef[static_cast<std::size_t>(p)]; };
             OrderOptions lo;
             lo.maxRounds = opt.maxOrderRounds;
-            lo.focusAboveS = 1.2 * uTurnS;
+            lo.focusAboveS = std::getenv("PF_FOCUS") ? std::atof(std::getenv("PF_FOCUS")) : 1.2 * uTurnS;
             const OrderResult lr = improveOrder(fp->laneProblem, fp->steps, lo);
             fp->steps = lr.steps;
             fp->timeS = lr.costS;
@@ -663,6 +669,33 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
 
     // --- the plan of the best direction, in flight order
     FullPlan& fp = *best;
+    if (std::getenv("PF_SWEEP_CELLS"))
+        for (std::size_t ci = 0; ci < fp.cells.size(); ++ci) {
+            const auto& pc = fp.cells[ci];
+            const auto& m = fp.dir->merged[static_cast<std::size_t>(pc.merged)];
+            const auto& d = fp.dir->d;
+            double w = 0;
+            for (const auto& l : pc.lanes)
+                w += (l.flyB - l.flyA).norm();
+            std::fprintf(stderr, "cell %zu parts %zu y [%.0f, %.0f] h %.0f lanes %zu mean len %.0f area %.0f\n", ci, m.parts.size(),
+                         d.cells[static_cast<std::size_t>(m.parts.front())].ylo, d.cells[static_cast<std::size_t>(m.parts.back())].yhi,
+                         d.cells[static_cast<std::size_t>(m.parts.back())].yhi - d.cells[static_cast<std::size_t>(m.parts.front())].ylo,
+                         pc.lanes.size(), pc.lanes.empty() ? 0.0 : w / static_cast<double>(pc.lanes.size()),
+                         std::abs(geo::signedArea(mergedRing(d, m))));
+            if (std::getenv("PF_SWEEP_PARTS") && std::atoi(std::getenv("PF_SWEEP_PARTS")) == static_cast<int>(ci)) {
+                for (int part : m.parts) {
+                    const auto& c = d.cells[static_cast<std::size_t>(part)];
+                    std::fprintf(stderr, "  part %d y [%.1f, %.1f] bottom [%.1f, %.1f] top [%.1f, %.1f]\n", part, c.ylo, c.yhi,
+                                 c.xLeft(c.ylo), c.xRight(c.ylo), c.xLeft(c.yhi), c.xRight(c.yhi));
+                    for (const auto& q : c.right)
+                        std::fprintf(stderr, "     R (%.3f, %.3f)\n", q.x(), q.y());
+                }
+                for (const auto& l : pc.lanes)
+                    std::fprintf(stderr, "  lane y %.1f part %d fly [%.1f, %.1f] strip [%.1f, %.1f]\n", l.y, l.part,
+                                 d.frame.toFrame(l.flyA).x(), d.frame.toFrame(l.flyB).x(), d.frame.toFrame(l.stripA).x(),
+                                 d.frame.toFrame(l.stripB).x());
+            }
+        }
     Router& router = *fp.router;
     const DirectionPlan& dp = *fp.dir;
     plan.stats.angleDeg = fp.angleDeg;

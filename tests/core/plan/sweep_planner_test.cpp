@@ -69,6 +69,8 @@ TEST(SweepExplore, Table) {
             std::printf("    lanes %.0f s, links %.0f s (%d dear ones: %.0f s), strips %.0f m, flown %.0f m, photos/strip %.3f\n", laneS,
                         linkS, bigLinks, bigLinkS, stripM, spanM, photoCount(*plan) / (stripM / o.photoSpacingM));
         }
+        if (std::getenv("PF_SWEEP_DETAIL"))
+            std::printf("    yardstick angle %.1f photos %d\n", y.angleDeg, y.photos);
         if (std::getenv("PF_SWEEP_HOLES"))
             for (const auto& h : holes)
                 if (h.areaM2 > 10)
