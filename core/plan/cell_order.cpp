@@ -493,6 +493,19 @@ OrderResult orderCells(const OrderProblem& problem, const OrderOptions& options)
             out.steps = std::move(seq);
         }
     }
+    if (problem.sweepOrder.size() == n) {
+        for (int dir = 0; dir < 2; ++dir) {
+            std::vector<OrderStep> seq;
+            for (std::size_t k = 0; k < n; ++k)
+                seq.push_back(OrderStep{problem.sweepOrder[dir ? n - 1 - k : k], 0, false});
+            s.bestWays(seq);
+            const double c = s.cost(seq);
+            if (c < bestC) {
+                bestC = c;
+                out.steps = std::move(seq);
+            }
+        }
+    }
     out.constructedCostS = bestC;
     if (options.improve)
         s.improve(out.steps, options, out);

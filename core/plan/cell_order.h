@@ -32,6 +32,9 @@ struct OrderProblem {
     // Optional: end points near point p (any order). When set, the local search only tries moves that
     // create a link to a near point, so it scales to many thousands of cells.
     std::function<const std::vector<int>&(int p)> near;
+    // Optional: a natural order of the cells (across the area, as a sweep meets them); the construction
+    // also tries it, forwards and backwards, each cell flown its best way.
+    std::vector<int> sweepOrder;
 };
 
 struct OrderOptions {
@@ -60,7 +63,7 @@ struct OrderResult {
     std::int64_t linkEvaluations = 0;
 };
 
-// Nearest-neighbour construction (best of several first cells), then 2-opt (reverse a run of cells),
+// Nearest-neighbour construction (best of several first cells, and the sweep order when given), then 2-opt (reverse a run of cells),
 // or-opt (move a run of up to three cells, either way round) and the best way for every cell given
 // the order (a shortest path over the ways), until no move pays or maxRounds. Deterministic.
 OrderResult orderCells(const OrderProblem& problem, const OrderOptions& options = {});

@@ -588,6 +588,19 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
             fp->problem.cells.push_back(oc);
             fp->orderCellOf.push_back(static_cast<int>(ci));
         }
+        // The sweep's own order: cells by where they begin across the lanes, then along them.
+        {
+            std::vector<int> order(fp->orderCellOf.size());
+            for (std::size_t k = 0; k < order.size(); ++k)
+                order[k] = static_cast<int>(k);
+            auto key = [&](int k) {
+                const auto& pc = fp->cells[static_cast<std::size_t>(fp->orderCellOf[static_cast<std::size_t>(k)])];
+                const auto& l = pc.lanes.front();
+                return std::make_pair(l.y, dp.d.frame.toFrame(l.flyA).x());
+            };
+            std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key(a) < key(b); });
+            fp->problem.sweepOrder = order;
+        }
         fp->problem.link = [&router](int a, int b) { return router.route(a, b).timeS; };
         fp->problem.lowerBound = [&router](int a, int b) { return router.lowerBound(a, b); };
         if (home) {
