@@ -162,6 +162,34 @@ double contactReach(const Decomposition& d, const MonotoneCell& c, bool top, con
     return std::max(0.0, need - p.neighbourReachM);
 }
 
+// At a cut where the wide cell (below a narrowing, above a widening) meets the cells on the other side,
+// must the wide cell keep a lane right at the cut? Its ground next to the cut but beyond the other
+// cells' intervals (under an obstacle that begins there, or where the outline steps in) is seen only by
+// the other side's lane ends, up to the footprint's reach along the lane; wider than that, it needs a
+// lane of its own within half a spacing of the cut. The obstacle's width is measured half a spacing
+// past the cut, where the other side's first lanes lie at most.
+bool cutNeedsLane(const Decomposition& d, const MonotoneCell& wide, bool top, const SweepLaneParams& p) {
+    const double s = p.trackSpacingM, c = top ? wide.yhi : wide.ylo;
+    const double y = top ? c + 0.5 * s : c - 0.5 * s;
+    std::vector<std::pair<double, double>> iv; // the other side's intervals there
+    for (int o : top ? wide.above : wide.below) {
+        const auto& oc = d.cells[static_cast<std::size_t>(o)];
+        const double yy = std::clamp(y, oc.ylo, oc.yhi);
+        iv.emplace_back(oc.xLeft(yy), oc.xRight(yy));
+    }
+    if (iv.empty())
+        return true;
+    std::sort(iv.begin(), iv.end());
+    const double reach2 = 2.0 * p.reachAlongM;
+    for (std::size_t k = 0; k + 1 < iv.size(); ++k)
+        if (iv[k + 1].first - iv[k].second > reach2)
+            return true;
+    // An outline stepping in: the other side's lanes would have to fly out over the wide cell's
+    // ground there (or cannot, kept inside).
+    const double xl = wide.xLeft(c), xr = wide.xRight(c);
+    return iv.front().first - xl > 0.5 * reach2 || xr - iv.back().second > 0.5 * reach2;
+}
+
 } // namespace
 
 std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, const SweepLaneParams& p,
@@ -191,10 +219,12 @@ std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, con
         const bool narrowing = up.xLeft(up.ylo) >= lo.xLeft(lo.yhi) - 1e-6 && up.xRight(up.ylo) <= lo.xRight(lo.yhi) + 1e-6;
         if (narrowing) {
             const double ec = reach(lo, true);
-            w.push_back(Window{c - 0.5 * s + ec, c - eps});
+            if (ec > 0 || cutNeedsLane(d, lo, true, p))
+                w.push_back(Window{c - 0.5 * s + ec, c - eps});
         } else {
             const double ec = reach(up, false);
-            w.push_back(Window{c + eps, c + 0.5 * s - ec});
+            if (ec > 0 || cutNeedsLane(d, up, false, p))
+                w.push_back(Window{c + eps, c + 0.5 * s - ec});
         }
     }
     for (double y : fixed)

@@ -49,6 +49,8 @@ struct SweepLaneParams {
     // Lanes may be flown beyond the area's edge (never into a margin) up to their strip's end.
     bool flyOutsideArea = true;
     double marginRunCapM = 0.0; // > 0
+    // How far a photo sees along the lane beyond itself: half the real footprint along the track.
+    double reachAlongM = 0.0;
     // How far into a neighbour lane's strip the real footprint reaches ((real across - spacing) / 2):
     // that part of a half band is the neighbour's, not a wedge of this lane.
     double neighbourReachM = 0.0;

@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <unordered_map>
@@ -25,6 +24,10 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // The cost of a transition no safe path makes: large enough that the order never chooses one.
 constexpr double kNoWayS = 1e7;
+// Lane ends the lane-level search considers joining, per end: the nearest this many.
+constexpr int kNeighbours = 10;
+// Lanes flown no longer than this many trigger distances are checked for being redundant.
+constexpr double kShortLanePhotos = 4.0;
 
 std::string fmt(double v, int decimals = 1) {
     char buf[64];
@@ -451,6 +454,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     lp.flyOutsideArea = !opt.keepInside;
     lp.marginRunCapM = 2.0 * std::max(realAlong, ph) + 2.0 * freeGraph.inflatedMarginM();
     lp.neighbourReachM = std::max(0.0, 0.5 * (realAcross - s));
+    lp.reachAlongM = 0.5 * realAlong;
     const double uTurnS = 2.0 * turnCostS(90.0, opt.time) + s / opt.time.speedMps;
     std::vector<DirectionPlan> dirs;
     for (double a : angles) {
@@ -543,7 +547,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         std::vector<std::vector<CellLane>> laneSets(dp.merged.size());
         for (std::size_t mi = 0; mi < dp.merged.size(); ++mi)
             laneSets[mi] = cellLanes(dp.d, dp.merged[mi], dp.heights[mi], lp, ground, safeOutside);
-        dropCoveredLanes(dp.d, laneSets, dp.pinned, lp, ground, realAcross, realAlong, std::getenv("PF_NODROP") ? 0.0 : 4.0 * ph);
+        dropCoveredLanes(dp.d, laneSets, dp.pinned, lp, ground, realAcross, realAlong, kShortLanePhotos * ph);
         for (std::size_t mi = 0; mi < dp.merged.size(); ++mi) {
             PlannedCell pc;
             pc.merged = static_cast<int>(mi);
@@ -662,12 +666,12 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
                 pts.push_back(fp->cells[static_cast<std::size_t>(ci)].pt(static_cast<std::size_t>(j), false));
                 pts.push_back(fp->cells[static_cast<std::size_t>(ci)].pt(static_cast<std::size_t>(j), true));
             }
-            fp->near = nearestEndPoints(router, pts, std::getenv("PF_K") ? std::atoi(std::getenv("PF_K")) : 10, s);
+            fp->near = nearestEndPoints(router, pts, kNeighbours, s);
             const auto& nearRef = fp->near;
             fp->laneProblem.near = [&nearRef](int p) -> const std::vector<int>& { return nearRef[static_cast<std::size_t>(p)]; };
             OrderOptions lo;
             lo.maxRounds = opt.maxOrderRounds;
-            lo.focusAboveS = std::getenv("PF_FOCUS") ? std::atof(std::getenv("PF_FOCUS")) : 1.2 * uTurnS;
+            lo.focusAboveS = 1.2 * uTurnS;
             const OrderResult lr = improveOrder(fp->laneProblem, fp->steps, lo);
             fp->steps = lr.steps;
             fp->timeS = lr.costS;
@@ -682,33 +686,6 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
 
     // --- the plan of the best direction, in flight order
     FullPlan& fp = *best;
-    if (std::getenv("PF_SWEEP_CELLS"))
-        for (std::size_t ci = 0; ci < fp.cells.size(); ++ci) {
-            const auto& pc = fp.cells[ci];
-            const auto& m = fp.dir->merged[static_cast<std::size_t>(pc.merged)];
-            const auto& d = fp.dir->d;
-            double w = 0;
-            for (const auto& l : pc.lanes)
-                w += (l.flyB - l.flyA).norm();
-            std::fprintf(stderr, "cell %zu parts %zu y [%.0f, %.0f] h %.0f lanes %zu mean len %.0f area %.0f\n", ci, m.parts.size(),
-                         d.cells[static_cast<std::size_t>(m.parts.front())].ylo, d.cells[static_cast<std::size_t>(m.parts.back())].yhi,
-                         d.cells[static_cast<std::size_t>(m.parts.back())].yhi - d.cells[static_cast<std::size_t>(m.parts.front())].ylo,
-                         pc.lanes.size(), pc.lanes.empty() ? 0.0 : w / static_cast<double>(pc.lanes.size()),
-                         std::abs(geo::signedArea(mergedRing(d, m))));
-            if (std::getenv("PF_SWEEP_PARTS") && std::atoi(std::getenv("PF_SWEEP_PARTS")) == static_cast<int>(ci)) {
-                for (int part : m.parts) {
-                    const auto& c = d.cells[static_cast<std::size_t>(part)];
-                    std::fprintf(stderr, "  part %d y [%.1f, %.1f] bottom [%.1f, %.1f] top [%.1f, %.1f]\n", part, c.ylo, c.yhi,
-                                 c.xLeft(c.ylo), c.xRight(c.ylo), c.xLeft(c.yhi), c.xRight(c.yhi));
-                    for (const auto& q : c.right)
-                        std::fprintf(stderr, "     R (%.3f, %.3f)\n", q.x(), q.y());
-                }
-                for (const auto& l : pc.lanes)
-                    std::fprintf(stderr, "  lane y %.1f part %d fly [%.1f, %.1f] strip [%.1f, %.1f]\n", l.y, l.part,
-                                 d.frame.toFrame(l.flyA).x(), d.frame.toFrame(l.flyB).x(), d.frame.toFrame(l.stripA).x(),
-                                 d.frame.toFrame(l.stripB).x());
-            }
-        }
     Router& router = *fp.router;
     const DirectionPlan& dp = *fp.dir;
     plan.stats.angleDeg = fp.angleDeg;
