@@ -218,19 +218,25 @@ VisibilityGraph::VisibilityGraph(NoFlyField field, VisibilityGraphOptions option
             m_nodes.push_back(c);
     const std::size_t n = m_nodes.size();
     m_edges.assign(n, {});
-    auto tangent = [&](const Node& at, const Vec2& from) {
-        if (tangentAt(at, from))
+    // The obstacles each node lies inside (coarse corners overlap): from there any direction may be
+    // needed, not only tangents.
+    std::vector<std::vector<int>> holding(n);
+    for (std::size_t j = 0; j < n; ++j) {
+        const std::vector<char> in = obstaclesHolding(m_nodes[j].p);
+        for (std::size_t k = 0; k < in.size(); ++k)
+            if (in[k])
+                holding[j].push_back(static_cast<int>(k));
+    }
+    auto tangent = [&](const Node& at, std::size_t from) {
+        if (tangentAt(at, m_nodes[from].p))
             return true;
-        if (at.obstacle < 0)
-            return false;
-        const auto i = static_cast<std::size_t>(at.obstacle);
-        return m_obstacleBoxes[i].contains(from) && contains(m_obstacles[i], from);
+        return at.obstacle >= 0 && std::find(holding[from].begin(), holding[from].end(), at.obstacle) != holding[from].end();
     };
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = i + 1; j < n; ++j) {
             const Vec2& a = m_nodes[i].p;
             const Vec2& b = m_nodes[j].p;
-            if (!tangent(m_nodes[i], b) || !tangent(m_nodes[j], a) || !segmentIsFree(a, b))
+            if (!tangent(m_nodes[i], j) || !tangent(m_nodes[j], i) || !segmentIsFree(a, b))
                 continue;
             const double d = (a - b).norm();
             m_edges[i].emplace_back(static_cast<int>(j), d);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <unordered_map>
 
 namespace pf::plan {
@@ -164,15 +165,27 @@ public:
                     const int a = k >= 0 ? exit(seq[static_cast<std::size_t>(k)]) : kNone;
                     const int b = k + 1 < n ? entry(seq[static_cast<std::size_t>(k + 1)]) : kNone;
                     const double ab = link(a, b);
-                    for (int r = 0; r < 2; ++r) {
-                        const int in = r ? bx : bi, out = r ? bi : bx;
-                        if (removeGain - (bound(a, in) + bound(out, b) - ab) <= kGainEps)
+                    // a single cell may also change its way where it lands
+                    const OrderStep moved = seq[static_cast<std::size_t>(i)];
+                    const int ways = len == 1 ? static_cast<int>(m_p.cells[static_cast<std::size_t>(moved.cell)].ways.size()) : 1;
+                    for (int c = 0; c < 2 * ways; ++c) {
+                        const int r = c % 2;
+                        OrderStep as = moved;
+                        if (len == 1) {
+                            as.way = c / 2;
+                            as.reversed = r == 1;
+                        }
+                        const int in = len == 1 ? entry(as) : (r ? bx : bi), out = len == 1 ? exit(as) : (r ? bi : bx);
+                        const double wayDelta = len == 1 ? wayCost(as) - wayCost(moved) : 0.0;
+                        if (removeGain - wayDelta - (bound(a, in) + bound(out, b) - ab) <= kGainEps)
                             continue;
                         const double add = link(a, in) + link(out, b) - ab;
-                        if (removeGain - add <= kGainEps)
+                        if (removeGain - wayDelta - add <= kGainEps)
                             continue;
                         std::vector<OrderStep> block(seq.begin() + i, seq.begin() + i + len);
-                        if (r) {
+                        if (len == 1) {
+                            block[0] = as;
+                        } else if (r) {
                             std::reverse(block.begin(), block.end());
                             for (auto& s : block)
                                 s.reversed = !s.reversed;
@@ -507,8 +520,39 @@ OrderResult orderCells(const OrderProblem& problem, const OrderOptions& options)
         }
     }
     out.constructedCostS = bestC;
-    if (options.improve)
+    if (options.improve) {
         s.improve(out.steps, options, out);
+        if (!problem.near && n >= 4) {
+            // Iterated local search: a double bridge (A B C D -> A C B D) and a flipped way or two,
+            // then the local search; kept when the whole flies faster.
+            std::mt19937 rng(12345);
+            double cur = s.cost(out.steps);
+            for (int k = 0; k < options.kicks; ++k) {
+                std::vector<OrderStep> t = out.steps;
+                std::uniform_int_distribution<std::size_t> cut(1, n - 1);
+                std::size_t c1 = cut(rng), c2 = cut(rng), c3 = cut(rng);
+                if (c1 > c2)
+                    std::swap(c1, c2);
+                if (c2 > c3)
+                    std::swap(c2, c3);
+                if (c1 > c2)
+                    std::swap(c1, c2);
+                std::vector<OrderStep> k2(t.begin(), t.begin() + static_cast<std::ptrdiff_t>(c1));
+                k2.insert(k2.end(), t.begin() + static_cast<std::ptrdiff_t>(c2), t.begin() + static_cast<std::ptrdiff_t>(c3));
+                k2.insert(k2.end(), t.begin() + static_cast<std::ptrdiff_t>(c1), t.begin() + static_cast<std::ptrdiff_t>(c2));
+                k2.insert(k2.end(), t.begin() + static_cast<std::ptrdiff_t>(c3), t.end());
+                std::uniform_int_distribution<std::size_t> any(0, n - 1);
+                k2[any(rng)].reversed ^= true;
+                OrderResult scratch;
+                s.improve(k2, options, scratch);
+                const double c = s.cost(k2);
+                if (c < cur - kGainEps) {
+                    cur = c;
+                    out.steps = std::move(k2);
+                }
+            }
+        }
+    }
     out.costS = s.cost(out.steps);
     out.moves = s.moves;
     out.linkEvaluations = s.evaluations;

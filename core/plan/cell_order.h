@@ -40,6 +40,9 @@ struct OrderProblem {
 struct OrderOptions {
     int maxRounds = 50;        // local-search passes (each tries every move once), >= 0
     int maxStarts = 8;         // first cells tried by the construction when the start is free
+    // Kicks of an iterated local search (a seeded double bridge, then the local search again, kept
+    // when better); 0: none. Only without neighbour lists (cell-sized problems).
+    int kicks = 0;
     bool improve = true;       // false: the construction alone (for tests and comparisons)
     // With neighbour lists: only moves that remove a link dearer than this many seconds are tried
     // (links between neighbouring lanes of a cell are as good as they get).

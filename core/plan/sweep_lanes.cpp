@@ -76,7 +76,7 @@ bool SweepGround::inZone(const Vec2& p) const {
     return false;
 }
 
-double SweepGround::marginRun(const Vec2& p, const Vec2& u, double cap) const {
+double SweepGround::runToBoundary(const Vec2& p, const Vec2& u, double cap) const {
     double best = cap;
     const Vec2 far = p + cap * u;
     const geo::Box ray{p.cwiseMin(far), p.cwiseMax(far)};
@@ -118,7 +118,49 @@ namespace {
 
 struct Window {
     double lo, hi;
+    bool optional = false; // for time only (a lane may fly out over an outline's step instead)
 };
+
+// Lanes at most s apart with one in every window, greedily from the bottom (each as high as the
+// spacing and the windows ahead allow), then moved down by half the excess at the top as far as the
+// windows allow.
+std::vector<double> place(const std::vector<Window>& w, double ylo, double yhi, double et, double s, double eps) {
+    double y = w.front().hi;
+    for (const auto& win : w)
+        y = std::min(y, win.hi);
+    std::vector<double> ys{y};
+    for (;;) {
+        double next = y + s;
+        bool pending = false;
+        for (const auto& win : w)
+            if (win.lo > y) {
+                pending = true;
+                next = std::min(next, win.hi);
+            }
+        if (!pending)
+            break;
+        if (next <= y + 1e-9)
+            next = y + s;
+        y = std::min(next, yhi - eps);
+        ys.push_back(y);
+        if (y >= yhi - eps)
+            break;
+    }
+    double shift = 0.5 * ((ys.back() + 0.5 * s) - (yhi + et));
+    shift = std::min(shift, ys.front() - (ylo + eps));
+    for (const auto& win : w) {
+        double inside = -1.0;
+        for (double v : ys)
+            if (v >= win.lo - 1e-12 && v <= win.hi + 1e-12)
+                inside = std::max(inside, v - win.lo);
+        if (inside >= 0.0)
+            shift = std::min(shift, inside);
+    }
+    if (shift > 0)
+        for (auto& v : ys)
+            v -= shift;
+    return ys;
+}
 
 // How far beyond the cell's top (or bottom) the outermost lane's strip must reach: the ground of a
 // margin lies there when a zone's grown boundary touches the cut, up to the zone itself. Flat along
@@ -168,7 +210,8 @@ double contactReach(const Decomposition& d, const MonotoneCell& c, bool top, con
 // the other side's lane ends, up to the footprint's reach along the lane; wider than that, it needs a
 // lane of its own within half a spacing of the cut. The obstacle's width is measured half a spacing
 // past the cut, where the other side's first lanes lie at most.
-bool cutNeedsLane(const Decomposition& d, const MonotoneCell& wide, bool top, const SweepLaneParams& p) {
+enum class Need { None, ForCoverage, ForTime };
+Need cutNeedsLane(const Decomposition& d, const MonotoneCell& wide, bool top, const SweepLaneParams& p) {
     const double s = p.trackSpacingM, c = top ? wide.yhi : wide.ylo;
     const double y = top ? c + 0.5 * s : c - 0.5 * s;
     std::vector<std::pair<double, double>> iv; // the other side's intervals there
@@ -178,16 +221,18 @@ bool cutNeedsLane(const Decomposition& d, const MonotoneCell& wide, bool top, co
         iv.emplace_back(oc.xLeft(yy), oc.xRight(yy));
     }
     if (iv.empty())
-        return true;
+        return Need::ForCoverage;
     std::sort(iv.begin(), iv.end());
     const double reach2 = 2.0 * p.reachAlongM;
     for (std::size_t k = 0; k + 1 < iv.size(); ++k)
         if (iv[k + 1].first - iv[k].second > reach2)
-            return true;
+            return Need::ForCoverage;
     // An outline stepping in: the other side's lanes would have to fly out over the wide cell's
     // ground there (or cannot, kept inside).
     const double xl = wide.xLeft(c), xr = wide.xRight(c);
-    return iv.front().first - xl > 0.5 * reach2 || xr - iv.back().second > 0.5 * reach2;
+    if (iv.front().first - xl > 0.5 * reach2 || xr - iv.back().second > 0.5 * reach2)
+        return p.flyOutsideArea ? Need::ForTime : Need::ForCoverage;
+    return Need::None;
 }
 
 } // namespace
@@ -217,14 +262,38 @@ std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, con
         const auto& up = d.cells[static_cast<std::size_t>(m.parts[i])];
         const double c = lo.yhi;
         const bool narrowing = up.xLeft(up.ylo) >= lo.xLeft(lo.yhi) - 1e-6 && up.xRight(up.ylo) <= lo.xRight(lo.yhi) + 1e-6;
-        if (narrowing) {
-            const double ec = reach(lo, true);
-            if (ec > 0 || cutNeedsLane(d, lo, true, p))
-                w.push_back(Window{c - 0.5 * s + ec, c - eps});
-        } else {
-            const double ec = reach(up, false);
-            if (ec > 0 || cutNeedsLane(d, up, false, p))
-                w.push_back(Window{c + eps, c + 0.5 * s - ec});
+        const double ec = narrowing ? reach(lo, true) : reach(up, false);
+        const Need need = ec > 0 ? Need::ForCoverage : cutNeedsLane(d, narrowing ? lo : up, narrowing, p);
+        if (need == Need::None)
+            continue;
+        if (narrowing)
+            w.push_back(Window{c - 0.5 * s + ec, c - eps, need == Need::ForTime});
+        else
+            w.push_back(Window{c + eps, c + 0.5 * s - ec, need == Need::ForTime});
+    }
+    // Steps of the outline inside a part (a chain running along the lanes): the wide side keeps a lane
+    // within half a spacing when the step is longer than the footprints from the narrow side reach
+    // along their lanes (or they would fly far out over the step, or cannot, kept inside).
+    for (int pi : m.parts) {
+        const auto& c = d.cells[static_cast<std::size_t>(pi)];
+        for (int side = 0; side < 2; ++side) {
+            const auto& chain = side ? c.right : c.left;
+            for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
+                const Vec2 &a = chain[k], &b = chain[k + 1];
+                if (a.y() != b.y() || a.y() <= c.ylo || a.y() >= c.yhi || std::abs(b.x() - a.x()) <= 2.0 * p.reachAlongM)
+                    continue;
+                // a right chain's run widens the cell above it; a left chain's run widens it below
+                const bool wideAbove = side == 1;
+                const double h = a.y();
+                const Vec2 probe(0.5 * (a.x() + b.x()), wideAbove ? h - 0.05 : h + 0.05);
+                const bool margin = ground.inMargin(d.frame.toWorld(probe));
+                const double e = margin ? std::max(0.0, std::min(cap, p.grownMarginM - p.neighbourReachM)) : 0.0;
+                const bool optional = !margin && p.flyOutsideArea;
+                if (wideAbove)
+                    w.push_back(Window{h + eps, h + 0.5 * s - e, optional});
+                else
+                    w.push_back(Window{h - 0.5 * s + e, h - eps, optional});
+            }
         }
     }
     for (double y : fixed)
@@ -240,43 +309,16 @@ std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, con
         if (win.lo > win.hi)
             win.lo = win.hi;
     }
-    // Greedy from the bottom: every lane as high as the spacing and the windows still ahead allow.
-    double y = w.front().hi;
-    for (const auto& win : w)
-        y = std::min(y, win.hi);
-    std::vector<double> ys{y};
-    for (;;) {
-        double next = y + s;
-        bool pending = false;
-        for (const auto& win : w)
-            if (win.lo > y) {
-                pending = true;
-                next = std::min(next, win.hi);
-            }
-        if (!pending)
-            break;
-        if (next <= y + 1e-9)
-            next = y + s;
-        y = std::min(next, yhi - eps);
-        ys.push_back(y);
-        if (y >= yhi - eps)
-            break;
-    }
-    // Centre: move every lane down by half the excess at the top, as far as the windows allow.
-    double shift = 0.5 * ((ys.back() + 0.5 * s) - (yhi + et));
-    shift = std::min(shift, ys.front() - (ylo + eps));
-    for (const auto& win : w) {
-        double inside = -1.0;
-        for (double v : ys)
-            if (v >= win.lo - 1e-12 && v <= win.hi + 1e-12)
-                inside = std::max(inside, v - win.lo);
-        if (inside >= 0.0)
-            shift = std::min(shift, inside);
-    }
-    if (shift > 0)
-        for (auto& v : ys)
-            v -= shift;
-    return ys;
+    // Windows kept for time only are dropped when that saves a lane.
+    const std::vector<double> all = place(w, ylo, yhi, et, s, eps);
+    if (std::none_of(w.begin(), w.end(), [](const Window& x) { return x.optional; }))
+        return all;
+    std::vector<Window> needed;
+    for (const auto& x : w)
+        if (!x.optional)
+            needed.push_back(x);
+    const std::vector<double> fewer = place(needed, ylo, yhi, et, s, eps);
+    return fewer.size() < all.size() ? fewer : all;
 }
 
 std::vector<std::vector<double>> allLaneHeights(const Decomposition& d, const std::vector<MergedCell>& merged,
@@ -422,11 +464,17 @@ std::vector<CellLane> cellLanes(const Decomposition& d, const MergedCell& m, con
             const Vec2 dirW = dir * u;
             const Vec2 q = e + 0.05 * dirW;
             if (!ground.insideArea(q)) {
-                const double reach = dir > 0 ? strip - x : x - strip;
-                if (p.flyOutsideArea && reach > 1e-6 && safe(e, d.frame.toWorld(Vec2(strip, y))))
-                    fly = strip;
+                // Flown on over the area's edge up to the strip's end, but not back into the area (at a
+                // notch of its outline the line returns over another cell) nor into a margin.
+                double reach = dir > 0 ? strip - x : x - strip;
+                if (p.flyOutsideArea && reach > 1e-6) {
+                    reach = std::min(reach, ground.runToBoundary(e, dirW, reach + 1.0));
+                    const double end = x + dir * reach;
+                    if (safe(e, d.frame.toWorld(Vec2(end, y))))
+                        fly = end;
+                }
             } else if (ground.inMargin(q)) {
-                const double run = ground.marginRun(e, dirW, p.marginRunCapM);
+                const double run = ground.runToBoundary(e, dirW, p.marginRunCapM);
                 strip = dir > 0 ? std::max(strip, x + run) : std::min(strip, x - run);
             }
         };

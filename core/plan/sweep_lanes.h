@@ -22,9 +22,10 @@ public:
     // Ground inside the area that only the margin of a zone keeps the aircraft from (admissible ground).
     bool inMargin(const geo::Vec2& p) const;
     bool inZone(const geo::Vec2& p) const;
-    // How far the ground of a margin runs from p along unit direction u before a zone, the area's edge or
-    // free space ends it (at most cap).
-    double marginRun(const geo::Vec2& p, const geo::Vec2& u, double cap) const;
+    // How far from p (on a boundary) along unit direction u the first boundary beyond lies: a zone, a
+    // grown margin's edge or the area's outline (at most cap). From a lane end into a margin, how far
+    // its ground runs; from a lane end over the area's edge, where the line comes back.
+    double runToBoundary(const geo::Vec2& p, const geo::Vec2& u, double cap) const;
     // The zones whose boundary lies within d of p.
     std::vector<int> zonesNear(const geo::Vec2& p, double d) const;
     const geo::Polygon& zone(int i) const { return m_zones[static_cast<std::size_t>(i)]; }

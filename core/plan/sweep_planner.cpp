@@ -83,13 +83,41 @@ struct Route {
     bool leavesArea = false;
 };
 
-// Safe transitions between end points: straight when free, else the visibility graph's shortest path
-// (over the area with keep-inside; outside it only when no way over it exists). Trees and visible
-// nodes are cached per end point, routes per pair.
+// A visibility graph built the first time a transition needs it (the detailed ones seldom are).
+class LazyGraph {
+public:
+    explicit LazyGraph(const geo::VisibilityGraph& built) : m_built(&built) {}
+    LazyGraph(const geo::NoFlyField& field, geo::VisibilityGraphOptions options)
+        : m_field(field), m_options(std::move(options)) {}
+    const geo::VisibilityGraph& get() const {
+        if (m_built)
+            return *m_built;
+        if (!m_own)
+            m_own = std::make_unique<geo::VisibilityGraph>(m_field, m_options);
+        return *m_own;
+    }
+
+private:
+    const geo::VisibilityGraph* m_built = nullptr;
+    geo::NoFlyField m_field;
+    geo::VisibilityGraphOptions m_options;
+    mutable std::unique_ptr<geo::VisibilityGraph> m_own;
+};
+
+// The graphs a transition may take, in order of preference: over the area (when kept inside), with
+// coarse corners (few turns), then the detailed margins (a lane end in a narrow notch between two
+// merged margins sees no coarse corner), then outside the area when no way over it exists.
+struct RouteGraph {
+    const LazyGraph* graph = nullptr;
+    bool leavesArea = false;
+};
+
+// Safe transitions between end points: straight when free, else the first graph's shortest path that
+// exists. Trees and visible nodes are cached per end point and graph, routes per pair.
 class Router {
 public:
-    Router(const FlightTimeModel& model, const geo::VisibilityGraph& primary, const geo::VisibilityGraph* fallback)
-        : m_model(model), m_primary(primary), m_fallback(fallback) {}
+    Router(const FlightTimeModel& model, std::vector<RouteGraph> graphs)
+        : m_model(model), m_graphs(std::move(graphs)), m_caches(m_graphs.size()) {}
 
     int add(const EndPoint& e) {
         m_pts.push_back(e);
@@ -161,24 +189,22 @@ private:
     Route compute(int u, int v) {
         Route r;
         const auto &a = point(u), &b = point(v);
-        if (!via(m_primary, m_primaryCache, u, v, r.mid)) {
-            if (m_fallback && via(*m_fallback, m_fallbackCache, u, v, r.mid)) {
-                r.leavesArea = true;
-            } else {
-                r.ok = false;
-                r.mid.clear();
-                r.timeS = kNoWayS;
+        for (std::size_t k = 0; k < m_graphs.size(); ++k) {
+            if (via(m_graphs[k].graph->get(), m_caches[k], u, v, r.mid)) {
+                r.leavesArea = m_graphs[k].leavesArea;
+                r.timeS = transitionTime(m_model, a.p, -a.in, r.mid, b.p, b.in);
                 return r;
             }
         }
-        r.timeS = transitionTime(m_model, a.p, -a.in, r.mid, b.p, b.in);
+        r.ok = false;
+        r.mid.clear();
+        r.timeS = kNoWayS;
         return r;
     }
 
     FlightTimeModel m_model;
-    const geo::VisibilityGraph& m_primary;
-    const geo::VisibilityGraph* m_fallback;
-    Cache m_primaryCache, m_fallbackCache;
+    std::vector<RouteGraph> m_graphs;
+    std::vector<Cache> m_caches;
     std::vector<EndPoint> m_pts;
     std::unordered_map<std::uint64_t, Route> m_routes;
 };
@@ -275,6 +301,7 @@ struct FullPlan {
     std::vector<OrderStep> steps;        // lane-level order: the improved one
     std::vector<OrderStep> constructed;  // lane-level order of the cell-level construction alone
     double timeS = kInf;
+    double missedM2 = 0.0;               // ground beside lane ends no photo may reach (estimate)
     int laneMoves = 0;
     int homePt = -1, landingPt = -1;
     const DirectionPlan* dir = nullptr;
@@ -350,7 +377,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         return bad("The flight-time model needs a positive speed and turn rate.");
     if (!(opt.coarseStepDeg > 0) || opt.plannedDirections < 1 || opt.quadrantSegments < 1 || opt.maxOrderRounds < 0)
         return bad("The sweep's direction step, planned directions and margin segments must be positive.");
-    if (region.empty() || !(geo::area(region) > 0))
+    if (region.empty())
         return makeError(ErrorCode::InvalidGeometry, "The area to sweep is empty.");
     for (std::size_t i = 0; i < region.size(); ++i) {
         std::string why;
@@ -358,6 +385,8 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
             return makeError(ErrorCode::InvalidGeometry, "The area to sweep (part " + std::to_string(i + 1) +
                                                              ") is not a valid polygon: " + why);
     }
+    if (!(geo::area(region) > 0))
+        return makeError(ErrorCode::InvalidGeometry, "The area to sweep has no area.");
     const double s = opt.trackSpacingM, ph = opt.photoSpacingM;
     const double realAcross = opt.realAcrossM > 0 ? opt.realAcrossM : s;
     const double realAlong = opt.realAlongM > 0 ? opt.realAlongM : ph;
@@ -376,6 +405,25 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         keepGraph = std::make_unique<geo::VisibilityGraph>(field, vgo);
     }
     const geo::VisibilityGraph& graph = keepGraph ? *keepGraph : freeGraph;
+    // The detailed graphs serve the few transitions the coarse ones miss: no all-pairs table for them.
+    geo::VisibilityGraphOptions detailed = vgo;
+    detailed.coarseCorners = false;
+    detailed.allPairs = false;
+    const LazyGraph coarseFree(freeGraph), detailedFree(field, [&] {
+        auto o = detailed;
+        o.keepInside.clear();
+        return o;
+    }());
+    std::unique_ptr<LazyGraph> coarseKeep, detailedKeep;
+    std::vector<RouteGraph> routeGraphs;
+    if (keepGraph) {
+        coarseKeep = std::make_unique<LazyGraph>(*keepGraph);
+        detailedKeep = std::make_unique<LazyGraph>(field, detailed);
+        routeGraphs.push_back(RouteGraph{coarseKeep.get(), false});
+        routeGraphs.push_back(RouteGraph{detailedKeep.get(), false});
+    }
+    routeGraphs.push_back(RouteGraph{&coarseFree, opt.keepInside});
+    routeGraphs.push_back(RouteGraph{&detailedFree, opt.keepInside});
     plan.stats.graphNodes = static_cast<int>(graph.nodeCount());
     plan.stats.graphEdges = static_cast<int>(graph.edgeCount());
     const geo::MultiPolygon& grown = freeGraph.inflatedZones();
@@ -533,6 +581,8 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     std::stable_sort(rank.begin(), rank.end(), [&](std::size_t a, std::size_t b) { return dirs[a].estimateS < dirs[b].estimateS; });
 
     // --- full plans for the best directions
+    const double regionArea = geo::area(region);
+    const double wedgeDepth = std::max(0.0, 0.5 * s - std::max(0.0, 0.5 * (realAcross - s)));
     auto safeOutside = [&](const Vec2& a, const Vec2& b) { return field.segmentIsSafe(a, b); };
     std::unique_ptr<FullPlan> best;
     const int planned = std::min<int>(opt.plannedDirections, static_cast<int>(rank.size()));
@@ -541,7 +591,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         auto fp = std::make_unique<FullPlan>();
         fp->angleDeg = dp.angleDeg;
         fp->dir = &dp;
-        fp->router = std::make_unique<Router>(opt.time, graph, keepGraph ? &freeGraph : nullptr);
+        fp->router = std::make_unique<Router>(opt.time, routeGraphs);
         Router& router = *fp->router;
         const Vec2 u = dp.d.frame.toWorld(Vec2(1, 0));
         std::vector<std::vector<CellLane>> laneSets(dp.merged.size());
@@ -679,7 +729,23 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         } else {
             fp->timeS = orderCost(fp->laneProblem, fp->steps);
         }
-        if (!best || fp->timeS < best->timeS)
+        // Wedges of ground beyond a lane's end that its own line cannot fly over (a margin there, or
+        // the area's edge with keep-inside): about half lie on a turn to the neighbour lane, which
+        // photographs them; the rest is missed. A direction may not buy time with coverage.
+        for (const auto& pc : fp->cells)
+            if (pc.reachable)
+                for (const auto& l : pc.lanes)
+                    for (double w : {l.wedgeLeftBelow, l.wedgeLeftAbove, l.wedgeRightBelow, l.wedgeRightAbove})
+                        fp->missedM2 += 0.25 * std::max(0.0, w - 0.5 * realAlong) * wedgeDepth;
+        const double allowed = 0.001 * regionArea;
+        auto worse = [&](const FullPlan& a, const FullPlan& b) {
+            const bool aMiss = a.missedM2 > allowed, bMiss = b.missedM2 > allowed;
+            if (aMiss != bMiss)
+                return aMiss;
+            return aMiss ? a.missedM2 > b.missedM2 + allowed || (a.missedM2 >= b.missedM2 - allowed && a.timeS > b.timeS)
+                         : a.timeS > b.timeS;
+        };
+        if (!best || worse(*best, *fp))
             best = std::move(fp);
     }
     plan.stats.directionsPlanned = planned;
@@ -788,6 +854,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
             lane.headingDeg = std::fmod(lane.headingDeg + 180.0, 360.0);
         }
         plan.lanes.push_back(std::move(lane));
+        plan.laneCells.push_back(fp.cells[static_cast<std::size_t>(flown.refs[i].first)].merged);
         if (i + 1 >= flown.lanes.size())
             break;
         std::vector<Vec2> link = std::move(plan.links[i]);
@@ -825,6 +892,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
                 side.headingDeg = h < 0 ? h + 360.0 : h;
                 links.push_back({});
                 plan.lanes.push_back(std::move(side));
+                plan.laneCells.push_back(-1);
             }
         }
         links.push_back(std::move(link));

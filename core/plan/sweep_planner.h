@@ -65,6 +65,7 @@ struct SweepPlan {
                                                // lane i + 1's first photo (the safe path); size lanes.size() - 1
     std::vector<geo::Vec2> homeLink, landingLink; // the same from home to the first photo, the last to landing
     std::vector<geo::Polygon> cells;           // the merged cells of the chosen direction (world), for drawing
+    std::vector<int> laneCells;                // per lane: index into cells, -1 for a photographed turn
     FlightTime time;                           // of the whole survey (home -> ... -> landing when given)
     SweepStats stats;
     std::vector<std::string> warnings;         // e.g. unreachable pockets (the plan is still complete elsewhere)
