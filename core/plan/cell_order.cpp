@@ -23,6 +23,9 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kGainEps = 1e-7;
 constexpr int kNone = -1; // the take-off or landing side of a link
+// Or-opt with every way re-chosen costs n^3 ways: only for a handful of cells (larger plans gain
+// nothing from it that the lane-level search does not find).
+constexpr int kWaysSearchCells = 12;
 
 class Search {
 public:
@@ -365,8 +368,43 @@ public:
         return false;
     }
 
+    // Or-opt judged with the best ways of the whole sequence after the move (a move may pay only once
+    // its neighbours change their way too): for problems of cells, not of thousands of lanes.
+    bool orOptWithWays(std::vector<OrderStep>& seq) {
+        const int n = static_cast<int>(seq.size());
+        if (n > kWaysSearchCells)
+            return false;
+        double cur = cost(seq);
+        for (int len = 1; len <= 2; ++len)
+            for (int i = 0; i + len <= n; ++i)
+                for (int k = -1; k < n; ++k) {
+                    const int last = i + len - 1;
+                    if (k >= i - 1 && k <= last)
+                        continue;
+                    std::vector<OrderStep> block(seq.begin() + i, seq.begin() + i + len), cand;
+                    cand.reserve(seq.size());
+                    if (k == -1)
+                        cand.insert(cand.end(), block.begin(), block.end());
+                    for (int t = 0; t < n; ++t) {
+                        if (t >= i && t <= last)
+                            continue;
+                        cand.push_back(seq[static_cast<std::size_t>(t)]);
+                        if (t == k)
+                            cand.insert(cand.end(), block.begin(), block.end());
+                    }
+                    bestWays(cand, false);
+                    const double c = cost(cand);
+                    if (c < cur - kGainEps) {
+                        seq = std::move(cand);
+                        ++moves;
+                        return true;
+                    }
+                }
+        return false;
+    }
+
     // The best way and direction for every cell, given the order: a shortest path over the choices.
-    bool bestWays(std::vector<OrderStep>& seq) {
+    bool bestWays(std::vector<OrderStep>& seq, bool count = true) {
         const std::size_t n = seq.size();
         if (n == 0)
             return false;
@@ -412,7 +450,8 @@ public:
             seq[i] = opts[i][static_cast<std::size_t>(k)];
             k = from[i][static_cast<std::size_t>(k)];
         }
-        ++moves;
+        if (count)
+            ++moves;
         return true;
     }
 
@@ -436,6 +475,8 @@ public:
             while (!near && moves < budget && orOpt(steps))
                 changed = true;
             if (!near && bestWays(steps))
+                changed = true;
+            while (!near && !changed && moves < budget && orOptWithWays(steps))
                 changed = true;
             if (!changed)
                 break;
