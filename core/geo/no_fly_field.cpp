@@ -1,5 +1,6 @@
 #include "core/geo/no_fly_field.h"
 
+#include "core/geo/even_odd.h"
 #include "core/geo/polygon_ops.h"
 
 #include <algorithm>
@@ -46,23 +47,6 @@ template <class F> void forEachEdge(const geo::Polygon& poly, F f) {
     ring(poly.outer);
     for (const auto& h : poly.holes)
         ring(h);
-}
-
-// Even-odd containment over every ring: for points known not to lie on the boundary.
-bool insideRings(const geo::Polygon& poly, const Vec2& p) {
-    bool inside = false;
-    auto ring = [&](const geo::Ring& r) {
-        const std::size_t n = r.size();
-        for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
-            const Vec2 &a = r[i], &b = r[j];
-            if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
-                inside = !inside;
-        }
-    };
-    ring(poly.outer);
-    for (const auto& h : poly.holes)
-        ring(h);
-    return inside;
 }
 
 double boxGap(const Vec2& amin, const Vec2& amax, const Vec2& bmin, const Vec2& bmax) {
@@ -160,7 +144,7 @@ bool NoFlyField::pointIsSafe(const Vec2& p) const {
             continue; // the whole zone lies at least `need` away
         // Far enough from the boundary, p is inside exactly when the even-odd rule says so.
         const double d = geo::distanceToBoundary(m_zones[i], p);
-        if (!isSafeClearance(d) || insideRings(m_zones[i], p))
+        if (!isSafeClearance(d) || geo::insideEvenOdd(m_zones[i], p))
             return false;
     }
     return true;
@@ -188,7 +172,7 @@ bool NoFlyField::segmentIsSafe(const Vec2& a, const Vec2& b) const {
                 safe = false;
         });
         // Clear of every edge by the margin: the segment lies wholly inside or wholly outside.
-        if (!safe || insideRings(m_zones[i], a))
+        if (!safe || geo::insideEvenOdd(m_zones[i], a))
             return false;
     }
     return true;

@@ -1,5 +1,6 @@
 #include "core/geo/visibility_graph.h"
 
+#include "core/geo/even_odd.h"
 #include "core/geo/polygon_ops.h"
 
 #include <algorithm>
@@ -269,13 +270,8 @@ std::vector<char> VisibilityGraph::obstaclesHolding(const Vec2& p) const {
     for (std::size_t i = 0; i < m_obstacles.size(); ++i) {
         if (!m_obstacleBoxes[i].contains(p))
             continue;
-        // even-odd: on the boundary either answer does (a tangent there is a tangent either way)
-        const Ring& r = m_obstacles[i].outer;
-        bool inside = false;
-        for (std::size_t k = 0, j = r.size() - 1; k < r.size(); j = k++)
-            if ((r[k].y() > p.y()) != (r[j].y() > p.y()) &&
-                p.x() < (r[j].x() - r[k].x()) * (p.y() - r[k].y()) / (r[j].y() - r[k].y()) + r[k].x())
-                inside = !inside;
+        // on the boundary either answer does (a tangent there is a tangent either way)
+        const bool inside = insideEvenOdd(m_obstacles[i].outer, p);
         in[i] = inside;
     }
     return in;

@@ -1,5 +1,6 @@
 #include "core/plan/sweep_lanes.h"
 
+#include "core/geo/even_odd.h"
 #include "core/geo/polygon_ops.h"
 
 #include <algorithm>
@@ -13,25 +14,11 @@ namespace {
 
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
-// Even-odd containment over the polygons' rings: the ground model probes points a few centimetres off
-// a boundary, never on one, so the boundary case does not matter and the plain rule is exact.
-bool insideEvenOdd(const geo::Polygon& poly, const Vec2& p) {
-    bool inside = false;
-    auto ring = [&](const geo::Ring& r) {
-        for (std::size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
-            if ((r[i].y() > p.y()) != (r[j].y() > p.y()) &&
-                p.x() < (r[j].x() - r[i].x()) * (p.y() - r[i].y()) / (r[j].y() - r[i].y()) + r[i].x())
-                inside = !inside;
-    };
-    ring(poly.outer);
-    for (const auto& h : poly.holes)
-        ring(h);
-    return inside;
-}
-
+// The ground model probes points a few centimetres off a boundary, never on one: the even-odd rule
+// alone is exact there.
 bool insideAny(const geo::MultiPolygon& polys, const std::vector<geo::Box>& boxes, const Vec2& p) {
     for (std::size_t i = 0; i < polys.size(); ++i)
-        if (boxes[i].contains(p) && insideEvenOdd(polys[i], p))
+        if (boxes[i].contains(p) && geo::insideEvenOdd(polys[i], p))
             return true;
     return false;
 }
@@ -71,7 +58,7 @@ bool SweepGround::inMargin(const Vec2& p) const { return insideArea(p) && inside
 
 bool SweepGround::inZone(const Vec2& p) const {
     for (std::size_t i = 0; i < m_zones.size(); ++i)
-        if (m_blockers[i].box.contains(p) && insideEvenOdd(m_zones[i], p))
+        if (m_blockers[i].box.contains(p) && geo::insideEvenOdd(m_zones[i], p))
             return true;
     return false;
 }
@@ -108,7 +95,7 @@ std::vector<int> SweepGround::zonesNear(const Vec2& p, double d) const {
         const geo::Box& b = m_blockers[i].box;
         if (p.x() < b.min.x() - d || p.x() > b.max.x() + d || p.y() < b.min.y() - d || p.y() > b.max.y() + d)
             continue;
-        if (insideEvenOdd(m_zones[i], p) || geo::distanceToBoundary(m_zones[i], p) <= d)
+        if (geo::insideEvenOdd(m_zones[i], p) || geo::distanceToBoundary(m_zones[i], p) <= d)
             out.push_back(static_cast<int>(i));
     }
     return out;
