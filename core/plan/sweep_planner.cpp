@@ -399,12 +399,11 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     vgo.coarseCorners = true;
     vgo.allPairs = true;
     const geo::VisibilityGraph freeGraph(field, vgo);
-    std::unique_ptr<geo::VisibilityGraph> keepGraph;
-    if (opt.keepInside) {
-        vgo.keepInside = region;
-        keepGraph = std::make_unique<geo::VisibilityGraph>(field, vgo);
-    }
-    const geo::VisibilityGraph& graph = keepGraph ? *keepGraph : freeGraph;
+    // Transitions stay over the area with keep-inside; without, within half a track spacing of it
+    // (as no waypoint of any plan may stray further), unless no such way exists.
+    vgo.keepInside = opt.keepInside ? region : geo::buffer(region, 0.5 * opt.trackSpacingM - 0.05, 2);
+    std::unique_ptr<geo::VisibilityGraph> keepGraph = std::make_unique<geo::VisibilityGraph>(field, vgo);
+    const geo::VisibilityGraph& graph = *keepGraph;
     // The detailed graphs serve the few transitions the coarse ones miss: no all-pairs table for them.
     geo::VisibilityGraphOptions detailed = vgo;
     detailed.coarseCorners = false;
@@ -422,8 +421,8 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         routeGraphs.push_back(RouteGraph{coarseKeep.get(), false});
         routeGraphs.push_back(RouteGraph{detailedKeep.get(), false});
     }
-    routeGraphs.push_back(RouteGraph{&coarseFree, opt.keepInside});
-    routeGraphs.push_back(RouteGraph{&detailedFree, opt.keepInside});
+    routeGraphs.push_back(RouteGraph{&coarseFree, true});
+    routeGraphs.push_back(RouteGraph{&detailedFree, true});
     plan.stats.graphNodes = static_cast<int>(graph.nodeCount());
     plan.stats.graphEdges = static_cast<int>(graph.edgeCount());
     const geo::MultiPolygon& grown = freeGraph.inflatedZones();
@@ -786,7 +785,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
             if (lastPt >= 0) {
                 Route r = router.route(lastPt, entry);
                 f.broken = f.broken || !r.ok;
-                f.leaving += r.leavesArea ? 1 : 0;
+                f.leaving += r.leavesArea && !f.lanes.empty() ? 1 : 0; // the way from home may well
                 if (f.lanes.empty())
                     f.homeLink = std::move(r.mid);
                 else

@@ -19,7 +19,8 @@ struct SweepOptions {
     double photoSpacingM = 0.0;             // trigger distance (effective along-track footprint), > 0
     double realAcrossM = 0.0, realAlongM = 0.0; // the real footprint; 0: the effective one
     double safetyMarginM = 5.0;             // >= 0
-    bool keepInside = false;                // transitions stay over the area (else may pass outside when shorter)
+    bool keepInside = false;                // transitions stay over the area (else may pass outside when
+                                            // shorter, within half a track spacing of it where they can)
     FlightTimeModel time;
     std::optional<geo::Vec2> home, landing; // the flight starts / ends there (landing: home when unset)
 
@@ -51,7 +52,8 @@ struct SweepStats {
     double constructedTimeS = 0.0;          // the same lanes in the construction's order, before local search
     int unreachablePockets = 0;             // free pieces no safe path reaches
     double unreachableAreaM2 = 0.0;         // their ground the footprints from outside do not reach (estimate)
-    int transitionsLeavingArea = 0;         // keep-inside asked, but no way over the area existed
+    int transitionsLeavingArea = 0;         // transitions leaving the area (keep-inside) or straying more
+                                            // than half a track spacing from it: no way within existed
     int graphNodes = 0, graphEdges = 0;     // the visibility graph of the transitions
     int laneSegments = 0;                   // lanes across the cells (without the photographed turns)
 };

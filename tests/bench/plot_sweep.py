@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Draw sweep plans dumped as GeoJSON (tests' sweeptest::writeGeoJson) to PNG: area, zones, cells,
 photos and the flown path. Usage: plot_sweep.py IN.geojson... (writes IN.png beside each).
+The dumps: PF_SWEEP_PICTURES=DIR pf_core_tests --gtest_filter=SweepPlanner.TimeAgainstTheYardstick
 ZOOM=x0,y0,x1,y1 in the environment draws only that window, with the photos' real footprints."""
 import json
 import os

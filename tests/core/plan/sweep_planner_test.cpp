@@ -66,6 +66,17 @@ void expectSafeAndComplete(const Area& a, const SweepPlan& plan, const SweepOpti
                                                                 << q.x() << ", " << q.y() << ")";
         }
     }
+    // No waypoint further outside the area than half the track spacing (issue 12), none with keep-inside,
+    // but for the transitions the plan reports as having no way within.
+    const double limit = o.keepInside ? 0.01 : 0.5 * o.trackSpacingM + 0.01;
+    for (const auto& l : plan.lanes)
+        for (const auto& p : l.photos)
+            EXPECT_LE(geo::distanceTo(a.region, p), limit) << what << ": (" << p.x() << ", " << p.y() << ") is outside the area";
+    if (plan.stats.transitionsLeavingArea == 0) {
+        for (const auto& link : plan.links)
+            for (const auto& p : link)
+                EXPECT_LE(geo::distanceTo(a.region, p), limit) << what << ": (" << p.x() << ", " << p.y() << ") is outside the area";
+    }
     // Complete: the real footprints see the admissible ground but for what the plan reports as beyond
     // any footprint's reach (pockets and ground between merged margins), and that report is honest.
     double uncovered = 0;
@@ -258,6 +269,8 @@ TEST(SweepPlanner, TimeAgainstTheYardstick) {
         ASSERT_TRUE(plan.ok()) << a.name;
         const Yardstick y = yardstick(a, cam, o.time);
         const double ratio = plan->time.totalS / y.timeS;
+        if (const char* dir = std::getenv("PF_SWEEP_PICTURES")) // for looking: tests/bench/plot_sweep.py
+            writeGeoJson(std::string(dir) + "/" + a.name + ".geojson", a, *plan, o);
         if (zones == 0) {
             worstNoZones = std::max(worstNoZones, ratio);
         } else {
