@@ -504,12 +504,18 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     lp.reachAlongM = 0.5 * realAlong;
     const double uTurnS = 2.0 * turnCostS(90.0, opt.time) + s / opt.time.speedMps;
     std::vector<DirectionPlan> dirs;
+    geo::MultiPolygon shrunk;
     for (double a : angles) {
         DirectionPlan dp;
         dp.angleDeg = a;
         auto dec = decompose(freeSpace, SweepFrame{a * M_PI / 180.0});
         if (!dec.ok()) // a degenerate order of vertices: a hair's rotation resolves it
             dec = decompose(freeSpace, SweepFrame{a * M_PI / 180.0 + 1e-7});
+        if (!dec.ok()) { // rings touching at a point: 5 mm less free space parts them
+            if (shrunk.empty())
+                shrunk = geo::buffer(freeSpace, -0.005, 2);
+            dec = decompose(shrunk, SweepFrame{a * M_PI / 180.0});
+        }
         if (!dec.ok())
             continue;
         dp.d = std::move(*dec);

@@ -229,6 +229,27 @@ TEST(SweepPlanner, UnreachablePocketIsReportedNotEntered) {
     expectSafeAndComplete(a, *plan, o, cam);
 }
 
+// A valid area always gets a plan: zones touching each other and the area's edge at single points
+// (the free space's rings then touch too).
+TEST(SweepPlanner, TouchingZonesAndEdgesStillPlan) {
+    const Camera cam;
+    Area a;
+    a.name = "touching";
+    a.region = {rect(0, 0, 300, 200)};
+    a.zones = {geo::Polygon{{Vec2(100, 0), Vec2(120, 20), Vec2(100, 40), Vec2(80, 20)}, {}},
+               geo::Polygon{{Vec2(100, 40), Vec2(120, 60), Vec2(100, 80), Vec2(80, 60)}, {}},
+               rect(200, 100, 240, 140), rect(240, 140, 280, 180)};
+    for (double deg : {0.0, 45.0, 90.0}) {
+        SweepOptions o = options(cam);
+        o.anglesDeg = {deg};
+        o.safetyMarginM = 0.0;
+        auto plan = planSweep(a.region, a.zones, o);
+        ASSERT_TRUE(plan.ok()) << deg << ": " << plan.error().message;
+        EXPECT_FALSE(plan->lanes.empty());
+        expectSafeAndComplete(a, *plan, o, cam);
+    }
+}
+
 TEST(SweepPlanner, BadInputNamesTheProblem) {
     const Camera cam;
     const geo::MultiPolygon area{rect(0, 0, 100, 100)};
