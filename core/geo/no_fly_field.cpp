@@ -1,5 +1,6 @@
 #include "core/geo/no_fly_field.h"
 
+#include "core/geo/even_odd.h"
 #include "core/geo/polygon_ops.h"
 
 #include <algorithm>
@@ -54,6 +55,23 @@ double boxGap(const Vec2& amin, const Vec2& amax, const Vec2& bmin, const Vec2& 
     return std::hypot(dx, dy);
 }
 
+// True when two boxes are at least `need` apart (and apart at all): what boxGap >= need says, without
+// a square root.
+bool boxesApart(const Vec2& amin, const Vec2& amax, const Vec2& bmin, const Vec2& bmax, double need) {
+    const double dx = std::max({0.0, bmin.x() - amax.x(), amin.x() - bmax.x()});
+    const double dy = std::max({0.0, bmin.y() - amax.y(), amin.y() - bmax.y()});
+    const double g2 = dx * dx + dy * dy;
+    return g2 > 0.0 && g2 >= need * need;
+}
+
+// Squared distance from p to the segment ab.
+double pointSegDist2(const Vec2& p, const Vec2& a, const Vec2& b) {
+    const Vec2 ab = b - a;
+    const double len2 = ab.squaredNorm();
+    const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+    return (a + t * ab - p).squaredNorm();
+}
+
 // The nearest point to p on any ring of polys.
 Vec2 nearestOnBoundary(const geo::MultiPolygon& polys, const Vec2& p) {
     Vec2 best = p;
@@ -88,6 +106,7 @@ NoFlyField::NoFlyField(std::vector<geo::Polygon> zones, double marginM)
     for (const auto& z : m_zones) {
         const auto b = geo::bounds(z);
         m_boxes.emplace_back(b.min, b.max);
+        m_circles.emplace_back(0.5 * (b.min + b.max), 0.5 * (b.max - b.min).norm());
     }
 }
 
@@ -116,6 +135,47 @@ double NoFlyField::clearance(const Vec2& a, const Vec2& b) const {
             return 0.0;
     }
     return best;
+}
+
+bool NoFlyField::pointIsSafe(const Vec2& p) const {
+    const double need = std::max(0.0, m_margin - tolerance());
+    for (std::size_t i = 0; i < m_zones.size(); ++i) {
+        if (boxesApart(p, p, m_boxes[i].first, m_boxes[i].second, need))
+            continue; // the whole zone lies at least `need` away
+        // Far enough from the boundary, p is inside exactly when the even-odd rule says so.
+        const double d = geo::distanceToBoundary(m_zones[i], p);
+        if (!isSafeClearance(d) || geo::insideEvenOdd(m_zones[i], p))
+            return false;
+    }
+    return true;
+}
+
+bool NoFlyField::segmentIsSafe(const Vec2& a, const Vec2& b) const {
+    const double need = std::max(0.0, m_margin - tolerance());
+    const Vec2 smin = a.cwiseMin(b), smax = a.cwiseMax(b);
+    for (std::size_t i = 0; i < m_zones.size(); ++i) {
+        if (boxesApart(smin, smax, m_boxes[i].first, m_boxes[i].second, need))
+            continue;
+        // A long diagonal segment's box overlaps many zones' boxes; the distance to a circle around
+        // the zone prunes them.
+        const double reach = m_circles[i].second + need;
+        if (pointSegDist2(m_circles[i].first, a, b) > reach * reach)
+            continue;
+        bool safe = true;
+        forEachEdge(m_zones[i], [&](const Vec2& c, const Vec2& d) {
+            if (!safe)
+                return;
+            // An edge whose box lies at least `need` beyond the segment's box is far enough.
+            if (boxesApart(smin, smax, c.cwiseMin(d), c.cwiseMax(d), need))
+                return;
+            if (!isSafeClearance(segSegDist(a, b, c, d)))
+                safe = false;
+        });
+        // Clear of every edge by the margin: the segment lies wholly inside or wholly outside.
+        if (!safe || geo::insideEvenOdd(m_zones[i], a))
+            return false;
+    }
+    return true;
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -27,13 +27,17 @@ public:
     double clearance(const Vec2& p) const;
     double clearance(const Vec2& a, const Vec2& b) const;
     // Inside or touching a zone is never safe, whatever the margin.
-    bool pointIsSafe(const Vec2& p) const { return isSafeClearance(clearance(p)); }
-    bool segmentIsSafe(const Vec2& a, const Vec2& b) const { return isSafeClearance(clearance(a, b)); }
+    // The same answers as isSafeClearance(clearance(...)), but a zone whose bounding box lies beyond
+    // the margin is skipped and the scan stops at the first zone too close: planners ask these
+    // millions of times.
+    bool pointIsSafe(const Vec2& p) const;
+    bool segmentIsSafe(const Vec2& a, const Vec2& b) const;
     bool isSafeClearance(double c) const { return c > 0.0 && c >= m_margin - tolerance(); }
 
 private:
     std::vector<Polygon> m_zones;
     std::vector<std::pair<Vec2, Vec2>> m_boxes; // per zone: min, max
+    std::vector<std::pair<Vec2, double>> m_circles; // per zone: a circle holding it (centre, radius)
     double m_margin = 0.0;
 };
 

@@ -56,4 +56,41 @@ Lane makeLane(const geo::Vec2& a, const geo::Vec2& b, double spacing, const geo:
     return l;
 }
 
+LaneSpan laneSpan(const geo::Vec2& a, const geo::Vec2& b, double spacing, const geo::Vec2& flyA,
+                  const geo::Vec2& flyB) {
+    // The same arithmetic as stripPhotos and makeLane, keeping only what the planner needs.
+    LaneSpan s;
+    const geo::Vec2 d = b - a;
+    const double len = d.norm();
+    if (len == 0.0) {
+        s.first = s.last = 0.5 * (a + b);
+        s.photos = 1;
+        return s;
+    }
+    int n = 1;
+    if (spacing > 0 && std::isfinite(spacing)) {
+        const double k = std::ceil(len / spacing - 1e-9);
+        n = std::max(1, static_cast<int>(std::min(k, 1e9)));
+    } else {
+        spacing = 0.0;
+    }
+    const double len2 = d.squaredNorm();
+    const double ta = (flyA - a).dot(d) / len2, tb = (flyB - a).dot(d) / len2;
+    const geo::Vec2 u = d / len, mid = 0.5 * (a + b);
+    geo::Vec2 lastKept(0, 0);
+    for (int i = 0; i < n; ++i) {
+        const geo::Vec2 p = mid + ((i - 0.5 * (n - 1)) * spacing) * u;
+        const double t = (p - a).dot(d) / len2;
+        const geo::Vec2 q = t < ta ? flyA : (t > tb ? flyB : p);
+        if (s.photos == 0 || (lastKept - q).norm() >= 0.01) {
+            if (s.photos == 0)
+                s.first = q;
+            lastKept = q;
+            ++s.photos;
+        }
+    }
+    s.last = lastKept;
+    return s;
+}
+
 } // namespace pf::plan

@@ -38,4 +38,13 @@ Lane makeLane(const geo::Vec2& a, const geo::Vec2& b, double spacing);
 // exact between the photos that did not move.
 Lane makeLane(const geo::Vec2& a, const geo::Vec2& b, double spacing, const geo::Vec2& flyA, const geo::Vec2& flyB);
 
+// What makeLane(a, b, spacing, flyA, flyB) flies, without placing every photo: its first and last
+// photo and how many it takes. For planners that weigh many candidate lanes before building some.
+struct LaneSpan {
+    geo::Vec2 first{0, 0};
+    geo::Vec2 last{0, 0};
+    int photos = 0;
+};
+LaneSpan laneSpan(const geo::Vec2& a, const geo::Vec2& b, double spacing, const geo::Vec2& flyA, const geo::Vec2& flyB);
+
 } // namespace pf::plan

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 using namespace pf;
 using namespace pf::plan;
@@ -54,4 +55,24 @@ TEST(Lane, MakeLaneKeepsTheStripAndHeadsAlongIt) {
     ASSERT_EQ(l.photos.size(), 4u);
     EXPECT_GT(l.photos.front().y(), l.photos.back().y()); // in flight order
     EXPECT_NEAR(makeLane(Vec2(0, 0), Vec2(1, 0), 30).headingDeg, 90.0, 1e-9);
+}
+
+// laneSpan is makeLane without the photos in between: the same first and last photo, the same count.
+TEST(Lane, SpanMatchesMakeLane) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-100, 100), t(0, 1), sp(3, 40);
+    for (int k = 0; k < 2000; ++k) {
+        const Vec2 a(u(rng), u(rng));
+        const Vec2 b = k % 50 == 0 ? a : Vec2(u(rng), u(rng));
+        double ta = t(rng) * 0.5, tb = 1 - t(rng) * 0.5;
+        if (k % 7 == 0)
+            ta = 0, tb = 1;
+        const Vec2 fa = a + ta * (b - a), fb = a + tb * (b - a);
+        const double s = k % 97 == 0 ? 0.0 : sp(rng);
+        const Lane l = makeLane(a, b, s, fa, fb);
+        const LaneSpan span = laneSpan(a, b, s, fa, fb);
+        ASSERT_EQ(span.photos, static_cast<int>(l.photos.size())) << k;
+        EXPECT_NEAR((span.first - l.photos.front()).norm(), 0.0, 1e-9) << k;
+        EXPECT_NEAR((span.last - l.photos.back()).norm(), 0.0, 1e-9) << k;
+    }
 }

@@ -1,0 +1,613 @@
+#include "core/plan/sweep_lanes.h"
+
+#include "core/geo/even_odd.h"
+#include "core/geo/polygon_ops.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pf::plan {
+
+using geo::Vec2;
+
+namespace {
+
+double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// The ground model probes points a few centimetres off a boundary, never on one: the even-odd rule
+// alone is exact there.
+bool insideAny(const geo::MultiPolygon& polys, const std::vector<geo::Box>& boxes, const Vec2& p) {
+    for (std::size_t i = 0; i < polys.size(); ++i)
+        if (boxes[i].contains(p) && geo::insideEvenOdd(polys[i], p))
+            return true;
+    return false;
+}
+
+void addRings(const geo::Polygon& poly, std::vector<geo::Ring>& out) {
+    out.push_back(poly.outer);
+    for (const auto& h : poly.holes)
+        out.push_back(h);
+}
+
+} // namespace
+
+SweepGround::SweepGround(const geo::MultiPolygon& area, const std::vector<geo::Polygon>& zones,
+                         const geo::MultiPolygon& grownZones)
+    : m_area(area), m_grown(grownZones), m_zones(zones) {
+    auto add = [&](const geo::Polygon& poly) {
+        Rings r;
+        addRings(poly, r.rings);
+        r.box = geo::bounds(poly);
+        m_blockers.push_back(std::move(r));
+    };
+    for (const auto& z : zones)
+        add(z);
+    for (const auto& g : grownZones)
+        add(g);
+    for (const auto& a : area)
+        add(a);
+    for (const auto& a : area)
+        m_areaBoxes.push_back(geo::bounds(a));
+    for (const auto& g : grownZones)
+        m_grownBoxes.push_back(geo::bounds(g));
+}
+
+bool SweepGround::insideArea(const Vec2& p) const { return insideAny(m_area, m_areaBoxes, p); }
+
+bool SweepGround::inMargin(const Vec2& p) const { return insideArea(p) && insideAny(m_grown, m_grownBoxes, p); }
+
+bool SweepGround::inZone(const Vec2& p) const {
+    for (std::size_t i = 0; i < m_zones.size(); ++i)
+        if (m_blockers[i].box.contains(p) && geo::insideEvenOdd(m_zones[i], p))
+            return true;
+    return false;
+}
+
+double SweepGround::runToBoundary(const Vec2& p, const Vec2& u, double cap) const {
+    double best = cap;
+    const Vec2 far = p + cap * u;
+    const geo::Box ray{p.cwiseMin(far), p.cwiseMax(far)};
+    for (const auto& b : m_blockers) {
+        if (!b.box.intersects(ray))
+            continue;
+        for (const auto& ring : b.rings) {
+            const std::size_t n = ring.size();
+            for (std::size_t i = 0; i < n; ++i) {
+                const Vec2& c = ring[i];
+                const Vec2 e = ring[(i + 1) % n] - c;
+                const double den = cross(u, e);
+                if (std::abs(den) < 1e-15)
+                    continue;
+                const Vec2 pc = c - p;
+                const double t = cross(pc, e) / den;  // along the ray
+                const double s = cross(pc, u) / den;  // along the edge
+                if (t > 0.02 && t < best && s >= 0.0 && s <= 1.0)
+                    best = t;
+            }
+        }
+    }
+    return best;
+}
+
+std::vector<int> SweepGround::zonesNear(const Vec2& p, double d) const {
+    std::vector<int> out;
+    for (std::size_t i = 0; i < m_zones.size(); ++i) {
+        const geo::Box& b = m_blockers[i].box;
+        if (p.x() < b.min.x() - d || p.x() > b.max.x() + d || p.y() < b.min.y() - d || p.y() > b.max.y() + d)
+            continue;
+        if (geo::insideEvenOdd(m_zones[i], p) || geo::distanceToBoundary(m_zones[i], p) <= d)
+            out.push_back(static_cast<int>(i));
+    }
+    return out;
+}
+
+namespace {
+
+struct Window {
+    double lo, hi;
+    bool optional = false; // for time only (a lane may fly out over an outline's step instead)
+};
+
+// Lanes at most s apart with one in every window, greedily from the bottom (each as high as the
+// spacing and the windows ahead allow), then moved down by half the excess at the top as far as the
+// windows allow.
+std::vector<double> place(const std::vector<Window>& w, double ylo, double yhi, double et, double s, double eps) {
+    double y = w.front().hi;
+    for (const auto& win : w)
+        y = std::min(y, win.hi);
+    std::vector<double> ys{y};
+    for (;;) {
+        double next = y + s;
+        bool pending = false;
+        for (const auto& win : w)
+            if (win.lo > y) {
+                pending = true;
+                next = std::min(next, win.hi);
+            }
+        if (!pending)
+            break;
+        if (next <= y + 1e-9)
+            next = y + s;
+        y = std::min(next, yhi - eps);
+        ys.push_back(y);
+        if (y >= yhi - eps)
+            break;
+    }
+    double shift = 0.5 * ((ys.back() + 0.5 * s) - (yhi + et));
+    shift = std::min(shift, ys.front() - (ylo + eps));
+    for (const auto& win : w) {
+        double inside = -1.0;
+        for (double v : ys)
+            if (v >= win.lo - 1e-12 && v <= win.hi + 1e-12)
+                inside = std::max(inside, v - win.lo);
+        if (inside >= 0.0)
+            shift = std::min(shift, inside);
+    }
+    if (shift > 0)
+        for (auto& v : ys)
+            v -= shift;
+    return ys;
+}
+
+// How far beyond the cell's top (or bottom) the outermost lane's strip must reach: the ground of a
+// margin lies there when a zone's grown boundary touches the cut, up to the zone itself. Flat along
+// the cut, that is the grown margin; at a corner of a zone whose side runs at a shallow angle to the
+// lanes, the side's rise too (the lanes beside the zone end at that side and see little of it). Less
+// what the real footprint's extra width sees anyway.
+double contactReach(const Decomposition& d, const MonotoneCell& c, bool top, const SweepLaneParams& p,
+                    const SweepGround& ground) {
+    const double y = top ? c.yhi : c.ylo, dir = top ? 1.0 : -1.0;
+    double need = 0.0;
+    for (const auto& [x1, x2] : top ? c.topContacts : c.bottomContacts) {
+        if (x2 - x1 < 0.5)
+            continue;
+        if (ground.inMargin(d.frame.toWorld(Vec2(0.5 * (x1 + x2), y + 0.05 * dir))))
+            need = std::max(need, p.grownMarginM);
+    }
+    constexpr double kShallow = 30.0 * M_PI / 180.0;
+    for (const auto& t : top ? c.topTouches : c.bottomTouches) {
+        if (!ground.inMargin(d.frame.toWorld(Vec2(t.x(), t.y() + 0.05 * dir))))
+            continue;
+        for (int zi : ground.zonesNear(d.frame.toWorld(t), p.grownMarginM + 0.5)) {
+            // The zone's vertex nearest the cut and its two sides from there, in the frame.
+            const auto& ring = ground.zone(zi).outer;
+            const std::size_t n = ring.size();
+            std::size_t best = 0;
+            for (std::size_t i = 1; i < n; ++i)
+                if (dir * d.frame.toFrame(ring[i]).y() < dir * d.frame.toFrame(ring[best]).y())
+                    best = i;
+            const Vec2 z = d.frame.toFrame(ring[best]);
+            double h = dir * (z.y() - y);
+            for (const std::size_t k : {(best + 1) % n, (best + n - 1) % n}) {
+                const Vec2 e = d.frame.toFrame(ring[k]) - z;
+                const double len = e.norm();
+                const double a = std::atan2(std::abs(e.y()), std::abs(e.x()));
+                if (len > 0 && a < kShallow)
+                    h = std::max(h, dir * (z.y() - y) + len * std::sin(a));
+            }
+            need = std::max(need, h);
+        }
+    }
+    return std::max(0.0, need - p.neighbourReachM);
+}
+
+// At a cut where the wide cell (below a narrowing, above a widening) meets the cells on the other side,
+// must the wide cell keep a lane right at the cut? Its ground next to the cut but beyond the other
+// cells' intervals (under an obstacle that begins there, or where the outline steps in) is seen only by
+// the other side's lane ends, up to the footprint's reach along the lane; wider than that, it needs a
+// lane of its own within half a spacing of the cut. The obstacle's width is measured half a spacing
+// past the cut, where the other side's first lanes lie at most.
+enum class Need { None, ForCoverage, ForTime };
+Need cutNeedsLane(const Decomposition& d, const MonotoneCell& wide, bool top, const SweepLaneParams& p) {
+    const double s = p.trackSpacingM, c = top ? wide.yhi : wide.ylo;
+    const double y = top ? c + 0.5 * s : c - 0.5 * s;
+    std::vector<std::pair<double, double>> iv; // the other side's intervals there
+    for (int o : top ? wide.above : wide.below) {
+        const auto& oc = d.cells[static_cast<std::size_t>(o)];
+        const double yy = std::clamp(y, oc.ylo, oc.yhi);
+        iv.emplace_back(oc.xLeft(yy), oc.xRight(yy));
+    }
+    if (iv.empty())
+        return Need::ForCoverage;
+    std::sort(iv.begin(), iv.end());
+    const double reach2 = 2.0 * p.reachAlongM;
+    for (std::size_t k = 0; k + 1 < iv.size(); ++k)
+        if (iv[k + 1].first - iv[k].second > reach2)
+            return Need::ForCoverage;
+    // An outline stepping in: the other side's lanes would have to fly out over the wide cell's
+    // ground there (or cannot, kept inside).
+    const double xl = wide.xLeft(c), xr = wide.xRight(c);
+    if (iv.front().first - xl > 0.5 * reach2 || xr - iv.back().second > 0.5 * reach2)
+        return p.flyOutsideArea ? Need::ForTime : Need::ForCoverage;
+    return Need::None;
+}
+
+} // namespace
+
+std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, const SweepLaneParams& p,
+                                const SweepGround& ground, std::optional<double> coverFrom,
+                                std::optional<double> coverTo, const std::vector<double>& fixed) {
+    const auto& first = d.cells[static_cast<std::size_t>(m.parts.front())];
+    const auto& last = d.cells[static_cast<std::size_t>(m.parts.back())];
+    const double ylo = first.ylo, yhi = last.yhi, s = p.trackSpacingM;
+    if (yhi - ylo <= 0.04)
+        return {0.5 * (ylo + yhi)};
+    const double eps = 0.01;
+    const double cap = 0.5 * s - 2 * eps;
+    auto reach = [&](const MonotoneCell& c, bool top) { return std::min(cap, contactReach(d, c, top, p, ground)); };
+    std::vector<Window> w;
+    // The heights the outer strips must reach.
+    const double from = coverFrom ? *coverFrom : ylo - reach(first, false);
+    const double to = coverTo ? *coverTo : yhi + reach(last, true);
+    if (m.parts.size() == 1 && from >= to && fixed.empty())
+        return {};
+    const double et = to - yhi;
+    w.push_back(Window{ylo + eps, from + 0.5 * s});
+    w.push_back(Window{to - 0.5 * s, yhi - eps});
+    for (std::size_t i = 1; i < m.parts.size(); ++i) {
+        const auto& lo = d.cells[static_cast<std::size_t>(m.parts[i - 1])];
+        const auto& up = d.cells[static_cast<std::size_t>(m.parts[i])];
+        const double c = lo.yhi;
+        const bool narrowing = up.xLeft(up.ylo) >= lo.xLeft(lo.yhi) - 1e-6 && up.xRight(up.ylo) <= lo.xRight(lo.yhi) + 1e-6;
+        const double ec = narrowing ? reach(lo, true) : reach(up, false);
+        const Need need = ec > 0 ? Need::ForCoverage : cutNeedsLane(d, narrowing ? lo : up, narrowing, p);
+        if (need == Need::None)
+            continue;
+        if (narrowing)
+            w.push_back(Window{c - 0.5 * s + ec, c - eps, need == Need::ForTime});
+        else
+            w.push_back(Window{c + eps, c + 0.5 * s - ec, need == Need::ForTime});
+    }
+    // Steps of the outline inside a part (a chain running along the lanes): the wide side keeps a lane
+    // within half a spacing when the step is longer than the footprints from the narrow side reach
+    // along their lanes (or they would fly far out over the step, or cannot, kept inside).
+    for (int pi : m.parts) {
+        const auto& c = d.cells[static_cast<std::size_t>(pi)];
+        for (int side = 0; side < 2; ++side) {
+            const auto& chain = side ? c.right : c.left;
+            for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
+                const Vec2 &a = chain[k], &b = chain[k + 1];
+                if (a.y() != b.y() || a.y() <= c.ylo || a.y() >= c.yhi || std::abs(b.x() - a.x()) <= 2.0 * p.reachAlongM)
+                    continue;
+                // a right chain's run widens the cell above it; a left chain's run widens it below
+                const bool wideAbove = side == 1;
+                const double h = a.y();
+                const Vec2 probe(0.5 * (a.x() + b.x()), wideAbove ? h - 0.05 : h + 0.05);
+                const bool margin = ground.inMargin(d.frame.toWorld(probe));
+                const double e = margin ? std::max(0.0, std::min(cap, p.grownMarginM - p.neighbourReachM)) : 0.0;
+                const bool optional = !margin && p.flyOutsideArea;
+                if (wideAbove)
+                    w.push_back(Window{h + eps, h + 0.5 * s - e, optional});
+                else
+                    w.push_back(Window{h - 0.5 * s + e, h - eps, optional});
+            }
+        }
+    }
+    for (double y : fixed)
+        w.push_back(Window{y, y});
+    if (m.parts.size() == 1 && w[0].hi >= w[1].lo && fixed.empty()) {
+        // One lane does: in the middle of what it may take.
+        const double lo = std::max(ylo + eps, w[1].lo), hi = std::min(yhi - eps, w[0].hi);
+        return {lo <= hi ? 0.5 * (lo + hi) : 0.5 * (ylo + yhi)};
+    }
+    for (auto& win : w) {
+        win.lo = std::clamp(win.lo, ylo + eps, yhi - eps);
+        win.hi = std::clamp(win.hi, ylo + eps, yhi - eps);
+        if (win.lo > win.hi)
+            win.lo = win.hi;
+    }
+    // Windows kept for time only are dropped when that saves a lane.
+    const std::vector<double> all = place(w, ylo, yhi, et, s, eps);
+    if (std::none_of(w.begin(), w.end(), [](const Window& x) { return x.optional; }))
+        return all;
+    std::vector<Window> needed;
+    for (const auto& x : w)
+        if (!x.optional)
+            needed.push_back(x);
+    const std::vector<double> fewer = place(needed, ylo, yhi, et, s, eps);
+    return fewer.size() < all.size() ? fewer : all;
+}
+
+std::vector<std::vector<double>> allLaneHeights(const Decomposition& d, const std::vector<MergedCell>& merged,
+                                                const SweepLaneParams& p, const SweepGround& ground,
+                                                std::vector<std::vector<char>>* pinned) {
+    std::vector<std::vector<double>> hs;
+    hs.reserve(merged.size());
+    for (const auto& m : merged)
+        hs.push_back(laneHeights(d, m, p, ground));
+    // Which merged cell each part is in, and where in its chain.
+    std::vector<int> mergedOf(d.cells.size(), -1), posOf(d.cells.size(), -1);
+    for (std::size_t i = 0; i < merged.size(); ++i)
+        for (std::size_t k = 0; k < merged[i].parts.size(); ++k) {
+            mergedOf[static_cast<std::size_t>(merged[i].parts[k])] = static_cast<int>(i);
+            posOf[static_cast<std::size_t>(merged[i].parts[k])] = static_cast<int>(k);
+        }
+    const double s = p.trackSpacingM, tol = 1e-6;
+    struct Lean {
+        std::optional<double> from, to;
+        std::vector<std::pair<int, int>> on; // (merged cell, lane) leaned on
+    };
+    std::vector<Lean> lean(merged.size());
+    std::vector<char> leanedOn(merged.size(), 0);
+    for (std::size_t i = 0; i < merged.size(); ++i) {
+        const auto& m = merged[i];
+        const auto& bottom = d.cells[static_cast<std::size_t>(m.parts.front())];
+        const auto& top = d.cells[static_cast<std::size_t>(m.parts.back())];
+        Lean& L = lean[i];
+        // A cell below whose chain goes on past this cut (so it keeps a lane just under it) and whose
+        // lane there spans this cell's bottom.
+        for (int b : bottom.below) {
+            const int mb = mergedOf[static_cast<std::size_t>(b)];
+            const int pos = posOf[static_cast<std::size_t>(b)];
+            if (mb < 0 || mb == static_cast<int>(i) || pos + 1 >= static_cast<int>(merged[static_cast<std::size_t>(mb)].parts.size()))
+                continue;
+            const auto& cb = d.cells[static_cast<std::size_t>(b)];
+            const auto& ys = hs[static_cast<std::size_t>(mb)];
+            for (std::size_t k = 0; k < ys.size(); ++k) {
+                const double y = ys[k];
+                if (y < cb.ylo || y > cb.yhi || y < bottom.ylo - 0.5 * s)
+                    continue;
+                if (cb.xLeft(y) <= bottom.xLeft(bottom.ylo) + tol && cb.xRight(y) >= bottom.xRight(bottom.ylo) - tol &&
+                    y + 0.5 * s > L.from.value_or(-1e300)) {
+                    L.from = y + 0.5 * s;
+                    L.on.emplace_back(mb, static_cast<int>(k));
+                }
+            }
+        }
+        for (int a : top.above) {
+            const int ma = mergedOf[static_cast<std::size_t>(a)];
+            const int pos = posOf[static_cast<std::size_t>(a)];
+            if (ma < 0 || ma == static_cast<int>(i) || pos == 0)
+                continue;
+            const auto& ca = d.cells[static_cast<std::size_t>(a)];
+            const auto& ys = hs[static_cast<std::size_t>(ma)];
+            for (std::size_t k = 0; k < ys.size(); ++k) {
+                const double y = ys[k];
+                if (y < ca.ylo || y > ca.yhi || y > top.yhi + 0.5 * s)
+                    continue;
+                if (ca.xLeft(y) <= top.xLeft(top.yhi) + tol && ca.xRight(y) >= top.xRight(top.yhi) - tol &&
+                    y - 0.5 * s < L.to.value_or(1e300)) {
+                    L.to = y - 0.5 * s;
+                    L.on.emplace_back(ma, static_cast<int>(k));
+                }
+            }
+        }
+        for (const auto& [mc, k] : L.on)
+            leanedOn[static_cast<std::size_t>(mc)] = 1;
+    }
+    // Every cell needs only what the lanes it leans on leave; a lane leaned on keeps its height.
+    std::vector<std::vector<double>> fixed(merged.size());
+    for (const auto& L : lean)
+        for (const auto& [mc, k] : L.on)
+            fixed[static_cast<std::size_t>(mc)].push_back(hs[static_cast<std::size_t>(mc)][static_cast<std::size_t>(k)]);
+    std::vector<std::vector<double>> out = hs;
+    for (std::size_t i = 0; i < merged.size(); ++i) {
+        const Lean& L = lean[i];
+        if (!L.from && !L.to)
+            continue;
+        out[i] = laneHeights(d, merged[i], p, ground, L.from, L.to, fixed[i]);
+    }
+    if (pinned) {
+        pinned->assign(merged.size(), {});
+        for (std::size_t i = 0; i < merged.size(); ++i) {
+            (*pinned)[i].assign(out[i].size(), 0);
+            for (std::size_t k = 0; k < out[i].size(); ++k)
+                for (double y : fixed[i])
+                    if (out[i][k] == y)
+                        (*pinned)[i][k] = 1;
+        }
+    }
+    return out;
+}
+
+std::vector<CellLane> cellLanes(const Decomposition& d, const MergedCell& m, const std::vector<double>& heights,
+                                const SweepLaneParams& p, const SweepGround& ground,
+                                const std::function<bool(const Vec2&, const Vec2&)>& safe) {
+    std::vector<CellLane> out;
+    out.reserve(heights.size());
+    const Vec2 u = d.frame.toWorld(Vec2(1, 0));
+    const double s = p.trackSpacingM;
+    // The cell's extreme x between two heights, over all its parts (a part met over less than a
+    // hair's height, where two lanes' bands meet at a cut, does not count).
+    const double hair = 0.01 * s;
+    auto extreme = [&](double y1, double y2, bool left, std::size_t own) {
+        double x = left ? 1e300 : -1e300;
+        for (std::size_t k = 0; k < m.parts.size(); ++k) {
+            const auto& c = d.cells[static_cast<std::size_t>(m.parts[k])];
+            const double a = std::max(y1, c.ylo), b = std::min(y2, c.yhi);
+            if (a > b || (k != own && b - a < hair))
+                continue;
+            x = left ? std::min(x, c.minLeft(a, b)) : std::max(x, c.maxRight(a, b));
+        }
+        return x;
+    };
+    std::size_t part = 0;
+    for (std::size_t j = 0; j < heights.size(); ++j) {
+        const double y = heights[j];
+        while (part + 1 < m.parts.size() && y > d.cells[static_cast<std::size_t>(m.parts[part])].yhi)
+            ++part;
+        const auto& cell = d.cells[static_cast<std::size_t>(m.parts[part])];
+        double xl = cell.xLeft(y), xr = cell.xRight(y);
+        if (xr < xl)
+            xl = xr = 0.5 * (xl + xr);
+        // The heights this lane answers for: its band less what the neighbour lanes' bands hold,
+        // over every part of the cell (a part beside the lane's own may reach further there).
+        double lo = y - 0.5 * s, hi = y + 0.5 * s;
+        if (j > 0)
+            lo = std::max(lo, std::min(y, heights[j - 1] + 0.5 * s));
+        if (j + 1 < heights.size())
+            hi = std::min(hi, std::max(y, heights[j + 1] - 0.5 * s));
+        double sa = std::min(xl, extreme(lo, hi, true, part)), sb = std::max(xr, extreme(lo, hi, false, part));
+        double fa = xl, fb = xr;
+        const double inset = std::min(p.neighbourReachM, 0.25 * s);
+        const double lb1 = std::max(lo, y - 0.5 * s + inset), ub2 = std::min(hi, y + 0.5 * s - inset);
+        const double wrb = y > lb1 ? extreme(lb1, y, false, part) - xr : 0.0;
+        const double wra = ub2 > y ? extreme(y, ub2, false, part) - xr : 0.0;
+        const double wlb = y > lb1 ? xl - extreme(lb1, y, true, part) : 0.0;
+        const double wla = ub2 > y ? xl - extreme(y, ub2, true, part) : 0.0;
+        // What lies beyond each end along the lane's line.
+        auto beyond = [&](double x, double dir, double& strip, double& fly) {
+            const Vec2 e = d.frame.toWorld(Vec2(x, y));
+            const Vec2 dirW = dir * u;
+            const Vec2 q = e + 0.05 * dirW;
+            if (!ground.insideArea(q)) {
+                // Flown on over the area's edge up to the strip's end, but not back into the area (at a
+                // notch of its outline the line returns over another cell) nor into a margin.
+                double reach = dir > 0 ? strip - x : x - strip;
+                if (p.flyOutsideArea && reach > 1e-6) {
+                    reach = std::min(reach, ground.runToBoundary(e, dirW, reach + 1.0));
+                    const double end = x + dir * reach;
+                    if (safe(e, d.frame.toWorld(Vec2(end, y))))
+                        fly = end;
+                }
+            } else if (ground.inMargin(q)) {
+                const double run = ground.runToBoundary(e, dirW, p.marginRunCapM);
+                strip = dir > 0 ? std::max(strip, x + run) : std::min(strip, x - run);
+            }
+        };
+        beyond(xr, 1.0, sb, fb);
+        beyond(xl, -1.0, sa, fa);
+        CellLane l;
+        l.y = y;
+        l.part = m.parts[part];
+        l.stripA = d.frame.toWorld(Vec2(sa, y));
+        l.stripB = d.frame.toWorld(Vec2(sb, y));
+        l.flyA = d.frame.toWorld(Vec2(fa, y));
+        l.flyB = d.frame.toWorld(Vec2(fb, y));
+        l.span = laneSpan(l.stripA, l.stripB, p.photoSpacingM, l.flyA, l.flyB);
+        // Beyond the area's edge the lane itself flies on over the wedge.
+        const double flownRight = fb - xr, flownLeft = xl - fa;
+        l.wedgeRightBelow = std::max(0.0, wrb - flownRight);
+        l.wedgeRightAbove = std::max(0.0, wra - flownRight);
+        l.wedgeLeftBelow = std::max(0.0, wlb - flownLeft);
+        l.wedgeLeftAbove = std::max(0.0, wla - flownLeft);
+        out.push_back(l);
+    }
+    return out;
+}
+
+int dropCoveredLanes(const Decomposition& d, std::vector<std::vector<CellLane>>& lanes,
+                     const std::vector<std::vector<char>>& pinned, const SweepLaneParams& p, const SweepGround& ground,
+                     double realAcrossM, double realAlongM, double maxLengthM) {
+    struct Ref {
+        std::size_t cell, lane;
+    };
+    std::vector<Ref> all, candidates;
+    for (std::size_t c = 0; c < lanes.size(); ++c)
+        for (std::size_t j = 0; j < lanes[c].size(); ++j) {
+            all.push_back(Ref{c, j});
+            const auto& l = lanes[c][j];
+            const bool pin = c < pinned.size() && j < pinned[c].size() && pinned[c][j];
+            if (!pin && (l.flyB - l.flyA).norm() <= maxLengthM)
+                candidates.push_back(Ref{c, j});
+        }
+    if (candidates.empty())
+        return 0;
+    std::stable_sort(candidates.begin(), candidates.end(), [&](const Ref& a, const Ref& b) {
+        const auto &la = lanes[a.cell][a.lane], &lb = lanes[b.cell][b.lane];
+        return (la.flyB - la.flyA).squaredNorm() < (lb.flyB - lb.flyA).squaredNorm();
+    });
+    const double s = p.trackSpacingM;
+    const double pad = 0.5 * std::hypot(realAcrossM, realAlongM) + 0.5 * s;
+    // Lanes by the box of their strip, on a grid, to find the photos near a candidate.
+    geo::Box whole{lanes[all.front().cell][all.front().lane].stripA, lanes[all.front().cell][all.front().lane].stripA};
+    std::vector<geo::Box> boxes;
+    boxes.reserve(all.size());
+    for (const auto& r : all) {
+        const auto& l = lanes[r.cell][r.lane];
+        geo::Box b{l.stripA.cwiseMin(l.stripB), l.stripA.cwiseMax(l.stripB)};
+        b.min -= Vec2(pad, pad);
+        b.max += Vec2(pad, pad);
+        boxes.push_back(b);
+        whole.min = whole.min.cwiseMin(b.min);
+        whole.max = whole.max.cwiseMax(b.max);
+    }
+    const double g = std::max(50.0, 2 * pad);
+    const int nx = static_cast<int>((whole.max.x() - whole.min.x()) / g) + 1;
+    const int ny = static_cast<int>((whole.max.y() - whole.min.y()) / g) + 1;
+    std::vector<std::vector<int>> grid(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
+    auto cellRange = [&](const geo::Box& b, int& x0, int& y0, int& x1, int& y1) {
+        x0 = std::clamp(static_cast<int>((b.min.x() - whole.min.x()) / g), 0, nx - 1);
+        y0 = std::clamp(static_cast<int>((b.min.y() - whole.min.y()) / g), 0, ny - 1);
+        x1 = std::clamp(static_cast<int>((b.max.x() - whole.min.x()) / g), 0, nx - 1);
+        y1 = std::clamp(static_cast<int>((b.max.y() - whole.min.y()) / g), 0, ny - 1);
+    };
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        int x0, y0, x1, y1;
+        cellRange(boxes[i], x0, y0, x1, y1);
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x)
+                grid[static_cast<std::size_t>(y) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(x)].push_back(static_cast<int>(i));
+    }
+    std::vector<char> dropped(all.size(), 0);
+    std::vector<std::vector<Vec2>> photos(all.size());
+    std::vector<char> built(all.size(), 0);
+    std::vector<std::size_t> offset(lanes.size() + 1, 0);
+    for (std::size_t c = 0; c < lanes.size(); ++c)
+        offset[c + 1] = offset[c] + lanes[c].size();
+    auto refIndex = [&](const Ref& r) { return offset[r.cell] + r.lane; };
+    const double ha = 0.5 * realAlongM, hc = 0.5 * realAcrossM;
+    const Vec2 u = d.frame.toWorld(Vec2(1, 0)); // every lane runs along u: footprints are aligned with it
+    const double r = std::clamp(s / 20.0, 0.25, 1.5);
+    int count = 0;
+    for (const auto& cand : candidates) {
+        const std::size_t ci = refIndex(cand);
+        const CellLane& l = lanes[cand.cell][cand.lane];
+        // the photos of the other lanes near it
+        int x0, y0, x1, y1;
+        cellRange(boxes[ci], x0, y0, x1, y1);
+        std::vector<int> near;
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x)
+                for (int o : grid[static_cast<std::size_t>(y) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(x)])
+                    if (static_cast<std::size_t>(o) != ci && !dropped[static_cast<std::size_t>(o)] && boxes[static_cast<std::size_t>(o)].intersects(boxes[ci]))
+                        near.push_back(o);
+        std::sort(near.begin(), near.end());
+        near.erase(std::unique(near.begin(), near.end()), near.end());
+        std::vector<Vec2> pts;
+        for (int o : near) {
+            const auto& ref = all[static_cast<std::size_t>(o)];
+            if (!built[static_cast<std::size_t>(o)]) {
+                const auto& ol = lanes[ref.cell][ref.lane];
+                photos[static_cast<std::size_t>(o)] = makeLane(ol.stripA, ol.stripB, p.photoSpacingM, ol.flyA, ol.flyB).photos;
+                built[static_cast<std::size_t>(o)] = 1;
+            }
+            pts.insert(pts.end(), photos[static_cast<std::size_t>(o)].begin(), photos[static_cast<std::size_t>(o)].end());
+        }
+        auto seen = [&](const Vec2& q) {
+            for (const auto& c : pts) {
+                const Vec2 dq = q - c;
+                if (std::abs(dq.dot(u)) <= ha && std::abs(u.x() * dq.y() - u.y() * dq.x()) <= hc)
+                    return true;
+            }
+            return false;
+        };
+        // Everything its own photos see that is ground must be seen by another photo too.
+        const std::vector<Vec2> own = makeLane(l.stripA, l.stripB, p.photoSpacingM, l.flyA, l.flyB).photos;
+        const Vec2 v(-u.y(), u.x());
+        bool covered = !pts.empty();
+        for (std::size_t k = 0; covered && k < own.size(); ++k)
+            for (double b = -hc + 0.5 * r; covered && b < hc; b += r)
+                for (double a = -ha + 0.5 * r; covered && a < ha; a += r) {
+                    const Vec2 q = own[k] + a * u + b * v;
+                    if (ground.insideArea(q) && !ground.inZone(q) && !seen(q))
+                        covered = false;
+                }
+        if (covered) {
+            dropped[ci] = 1;
+            ++count;
+        }
+    }
+    // remove the dropped lanes
+    std::size_t k = 0;
+    for (auto& cl : lanes) {
+        std::vector<CellLane> keep;
+        for (auto& l : cl)
+            if (!dropped[k++])
+                keep.push_back(l);
+        cl = std::move(keep);
+    }
+    return count;
+}
+
+} // namespace pf::plan

@@ -1,0 +1,107 @@
+// The lanes of one cell of a sweep: their heights across the cell, what each photographs and where
+// it is flown, given what lies around the cell (the area's edge, a no-fly margin).
+#pragma once
+
+#include "core/geo/polygon_ops.h"
+#include "core/geo/types.h"
+#include "core/plan/decomposition.h"
+#include "core/plan/lane.h"
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace pf::plan {
+
+// What surrounds the free space, in world coordinates: the area, the zones and their grown margins.
+class SweepGround {
+public:
+    SweepGround(const geo::MultiPolygon& area, const std::vector<geo::Polygon>& zones, const geo::MultiPolygon& grownZones);
+
+    bool insideArea(const geo::Vec2& p) const;
+    // Ground inside the area that only the margin of a zone keeps the aircraft from (admissible ground).
+    bool inMargin(const geo::Vec2& p) const;
+    bool inZone(const geo::Vec2& p) const;
+    // How far from p (on a boundary) along unit direction u the first boundary beyond lies: a zone, a
+    // grown margin's edge or the area's outline (at most cap). From a lane end into a margin, how far
+    // its ground runs; from a lane end over the area's edge, where the line comes back.
+    double runToBoundary(const geo::Vec2& p, const geo::Vec2& u, double cap) const;
+    // The zones whose boundary lies within d of p.
+    std::vector<int> zonesNear(const geo::Vec2& p, double d) const;
+    const geo::Polygon& zone(int i) const { return m_zones[static_cast<std::size_t>(i)]; }
+
+private:
+    struct Rings {
+        std::vector<geo::Ring> rings;
+        geo::Box box;
+    };
+    const geo::MultiPolygon& m_area;
+    const geo::MultiPolygon& m_grown;
+    const std::vector<geo::Polygon>& m_zones;
+    std::vector<Rings> m_blockers; // per zone and per grown polygon; the area last
+    std::vector<geo::Box> m_areaBoxes, m_grownBoxes;
+};
+
+struct SweepLaneParams {
+    double trackSpacingM = 0.0;
+    double photoSpacingM = 0.0;
+    // The grown margin: how far a zone lies beyond the free space's edge.
+    double grownMarginM = 0.0;
+    // Lanes may be flown beyond the area's edge (never into a margin) up to their strip's end.
+    bool flyOutsideArea = true;
+    double marginRunCapM = 0.0; // > 0
+    // How far a photo sees along the lane beyond itself: half the real footprint along the track.
+    double reachAlongM = 0.0;
+    // How far into a neighbour lane's strip the real footprint reaches ((real across - spacing) / 2):
+    // that part of a half band is the neighbour's, not a wedge of this lane.
+    double neighbourReachM = 0.0;
+};
+
+// One lane of a cell, left to right in the sweep frame (world coordinates).
+struct CellLane {
+    geo::Vec2 stripA{0, 0}, stripB{0, 0}; // the strip's admissible ground, along the lane's line
+    geo::Vec2 flyA{0, 0}, flyB{0, 0};     // what may be flown of it
+    LaneSpan span;                        // first and last photo (left to right) and their count
+    double y = 0.0;                       // height in the sweep frame
+    int part = 0;                         // the decomposition cell it lies in
+    // How far the cell's ground runs on beyond each fly end (frame x) in the lower and upper half of
+    // the lane's strip (less what the neighbour lanes' real footprints see): ground that only a flight
+    // along the boundary there can photograph, as the connection to the neighbour lane on that side is.
+    double wedgeLeftBelow = 0.0, wedgeLeftAbove = 0.0, wedgeRightBelow = 0.0, wedgeRightAbove = 0.0;
+};
+
+// Heights of the lanes of a merged cell (frame y, increasing): lanes `trackSpacingM` apart at most,
+// the outer ones covering the cell's bottom and top (and the margin ground beyond a flat contact), and
+// at every cut between its parts a lane whose strip covers the wider part's ground up to the cut.
+// coverFrom / coverTo, when given, replace the cell's bottom and top as the heights its lanes' strips
+// must reach (a neighbour's lane covers the rest); with nothing left to cover the cell gets no lanes.
+// `fixed` heights must stay lanes (others lean on them).
+std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, const SweepLaneParams& p,
+                                const SweepGround& ground, std::optional<double> coverFrom = std::nullopt,
+                                std::optional<double> coverTo = std::nullopt, const std::vector<double>& fixed = {});
+
+// Heights of the lanes of every merged cell of a decomposition. A cell beside an obstacle, between a
+// cell below that keeps a lane just under the obstacle and one above that keeps one just over it (the
+// windows at their cuts), leans on those lanes where their strips reach over its own ends: it needs
+// lanes only for what they leave between them, often none.
+// A cell others lean on keeps its own lanes; `pinned` (when given) flags the lanes leaned on.
+std::vector<std::vector<double>> allLaneHeights(const Decomposition& d, const std::vector<MergedCell>& merged,
+                                                const SweepLaneParams& p, const SweepGround& ground,
+                                                std::vector<std::vector<char>>* pinned = nullptr);
+
+// The lanes at those heights: fly interval = the cell's interval at the lane's height; strip = the
+// cell's extent within the lane's band (its part's share), run on through the margin ground beyond a
+// lane end; beyond the area's edge, flown up to the strip's end when allowed and `safe`.
+std::vector<CellLane> cellLanes(const Decomposition& d, const MergedCell& m, const std::vector<double>& heights,
+                                const SweepLaneParams& p, const SweepGround& ground,
+                                const std::function<bool(const geo::Vec2&, const geo::Vec2&)>& safe);
+
+// Drops short lanes (flown no longer than maxLengthM, not `pinned`) whose ground the photos of the
+// other lanes already see with the real footprint (across x along): slivers between a zone's margin and
+// the area's edge, or between two margins, often are. Shortest first; a dropped lane no longer counts
+// for the others. Returns how many were dropped.
+int dropCoveredLanes(const Decomposition& d, std::vector<std::vector<CellLane>>& lanes,
+                     const std::vector<std::vector<char>>& pinned, const SweepLaneParams& p, const SweepGround& ground,
+                     double realAcrossM, double realAlongM, double maxLengthM);
+
+} // namespace pf::plan

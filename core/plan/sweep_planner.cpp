@@ -1,0 +1,1001 @@
+#include "core/plan/sweep_planner.h"
+
+#include "core/geo/no_fly_field.h"
+#include "core/geo/polygon_ops.h"
+#include "core/geo/visibility_graph.h"
+#include "core/plan/cell_order.h"
+#include "core/plan/coverage_check.h"
+#include "core/plan/decomposition.h"
+#include "core/plan/sweep_lanes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <unordered_map>
+
+namespace pf::plan {
+
+using geo::Vec2;
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// The cost of a transition no safe path makes: large enough that the order never chooses one.
+constexpr double kNoWayS = 1e7;
+// Lane ends the lane-level search considers joining, per end: the nearest this many.
+constexpr int kNeighbours = 10;
+// Lanes flown no longer than this many trigger distances are checked for being redundant.
+constexpr double kShortLanePhotos = 4.0;
+
+std::string fmt(double v, int decimals = 1) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    return buf;
+}
+
+double angleDeg(const Vec2& u, const Vec2& v) {
+    const double nu = u.norm(), nv = v.norm();
+    if (nu == 0.0 || nv == 0.0)
+        return 0.0;
+    return std::atan2(std::fabs(u.x() * v.y() - u.y() * v.x()), u.dot(v)) * 180.0 / M_PI;
+}
+
+// Time of a transition by the one model: straight legs from a through mid to b, a turn at every
+// vertex. `arrive` is the direction the aircraft arrives at a with, `leave` the one it leaves b with
+// (zero: at rest there, no turn).
+double transitionTime(const FlightTimeModel& m, const Vec2& a, const Vec2& arrive, const std::vector<Vec2>& mid,
+                      const Vec2& b, const Vec2& leave) {
+    double len = 0.0, t = 0.0;
+    Vec2 dir = arrive, p = a;
+    auto leg = [&](const Vec2& q) {
+        const Vec2 d = q - p;
+        const double l = d.norm();
+        if (l == 0.0)
+            return;
+        const Vec2 u = d / l;
+        if (dir.squaredNorm() > 0)
+            t += turnCostS(angleDeg(dir, u), m);
+        dir = u;
+        len += l;
+        p = q;
+    };
+    for (const auto& q : mid)
+        leg(q);
+    leg(b);
+    if (leave.squaredNorm() > 0 && dir.squaredNorm() > 0)
+        t += turnCostS(angleDeg(dir, leave), m);
+    return t + len / m.speedMps;
+}
+
+// A place a lane starts or ends at: a lane starting here flies along `in`, one ending here arrives
+// along -in. Home and landing have in = 0 (at rest).
+struct EndPoint {
+    Vec2 p{0, 0};
+    Vec2 in{0, 0};
+};
+
+struct Route {
+    std::vector<Vec2> mid; // from the lower id to the higher
+    double timeS = 0.0;
+    bool ok = true;
+    bool leavesArea = false;
+};
+
+// A visibility graph built the first time a transition needs it (the detailed ones seldom are).
+class LazyGraph {
+public:
+    explicit LazyGraph(const geo::VisibilityGraph& built) : m_built(&built) {}
+    LazyGraph(const geo::NoFlyField& field, geo::VisibilityGraphOptions options)
+        : m_field(field), m_options(std::move(options)) {}
+    const geo::VisibilityGraph& get() const {
+        if (m_built)
+            return *m_built;
+        if (!m_own)
+            m_own = std::make_unique<geo::VisibilityGraph>(m_field, m_options);
+        return *m_own;
+    }
+
+private:
+    const geo::VisibilityGraph* m_built = nullptr;
+    geo::NoFlyField m_field;
+    geo::VisibilityGraphOptions m_options;
+    mutable std::unique_ptr<geo::VisibilityGraph> m_own;
+};
+
+// The graphs a transition may take, in order of preference: over the area (when kept inside), with
+// coarse corners (few turns), then the detailed margins (a lane end in a narrow notch between two
+// merged margins sees no coarse corner), then outside the area when no way over it exists.
+struct RouteGraph {
+    const LazyGraph* graph = nullptr;
+    bool leavesArea = false;
+};
+
+// Safe transitions between end points: straight when free, else the first graph's shortest path that
+// exists. Trees and visible nodes are cached per end point and graph, routes per pair.
+class Router {
+public:
+    Router(const FlightTimeModel& model, std::vector<RouteGraph> graphs)
+        : m_model(model), m_graphs(std::move(graphs)), m_caches(m_graphs.size()) {}
+
+    int add(const EndPoint& e) {
+        m_pts.push_back(e);
+        return static_cast<int>(m_pts.size()) - 1;
+    }
+    const EndPoint& point(int i) const { return m_pts[static_cast<std::size_t>(i)]; }
+    std::size_t size() const { return m_pts.size(); }
+
+    // From u (arriving along -in_u) to v (leaving along in_v); mid in that order.
+    Route route(int u, int v) {
+        const int lo = std::min(u, v), hi = std::max(u, v);
+        const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(lo)) << 32) |
+                                  static_cast<std::uint32_t>(hi);
+        auto it = m_routes.find(key);
+        if (it == m_routes.end())
+            it = m_routes.emplace(key, compute(lo, hi)).first;
+        Route r = it->second;
+        if (u != lo)
+            std::reverse(r.mid.begin(), r.mid.end());
+        return r;
+    }
+
+    double lowerBound(int u, int v) const {
+        const auto& a = point(u);
+        const auto& b = point(v);
+        return (a.p - b.p).norm() / m_model.speedMps + angleDeg(-a.in, b.in) / m_model.turnRateDegS;
+    }
+
+private:
+    struct Cache {
+        std::unordered_map<int, std::vector<int>> visible;
+        std::unordered_map<int, geo::VisibilityGraph::Tree> trees;
+    };
+    const std::vector<int>& visible(const geo::VisibilityGraph& g, Cache& c, int i) {
+        auto it = c.visible.find(i);
+        if (it == c.visible.end())
+            it = c.visible.emplace(i, g.visibleNodes(point(i).p)).first;
+        return it->second;
+    }
+    const geo::VisibilityGraph::Tree& tree(const geo::VisibilityGraph& g, Cache& c, int i) {
+        auto it = c.trees.find(i);
+        if (it == c.trees.end())
+            it = c.trees.emplace(i, g.tree(point(i).p, visible(g, c, i))).first;
+        return it->second;
+    }
+    // The shortest free way on graph g, or false.
+    bool via(const geo::VisibilityGraph& g, Cache& c, int u, int v, std::vector<Vec2>& mid) {
+        const Vec2 &a = point(u).p, &b = point(v).p;
+        if (g.segmentIsFree(a, b)) {
+            mid.clear();
+            return true;
+        }
+        if (g.hasAllPairs()) {
+            const auto& va = visible(g, c, u);
+            const auto& vb = visible(g, c, v);
+            if (!std::isfinite(g.distance(a, va, b, vb)))
+                return false;
+            mid = g.path(a, va, b, vb);
+            return true;
+        }
+        // Search from the end point with the larger tree cache hit chance: the lower id (cells' order).
+        const auto& t = tree(g, c, u);
+        const auto& vis = visible(g, c, v);
+        if (!std::isfinite(g.distance(t, b, vis)))
+            return false;
+        mid = g.path(t, b, vis);
+        return true;
+    }
+    Route compute(int u, int v) {
+        Route r;
+        const auto &a = point(u), &b = point(v);
+        for (std::size_t k = 0; k < m_graphs.size(); ++k) {
+            if (via(m_graphs[k].graph->get(), m_caches[k], u, v, r.mid)) {
+                r.leavesArea = m_graphs[k].leavesArea;
+                r.timeS = transitionTime(m_model, a.p, -a.in, r.mid, b.p, b.in);
+                return r;
+            }
+        }
+        r.ok = false;
+        r.mid.clear();
+        r.timeS = kNoWayS;
+        return r;
+    }
+
+    FlightTimeModel m_model;
+    std::vector<RouteGraph> m_graphs;
+    std::vector<Cache> m_caches;
+    std::vector<EndPoint> m_pts;
+    std::unordered_map<std::uint64_t, Route> m_routes;
+};
+
+// A point inside the polygon: the middle of the widest interval of a horizontal line through it.
+Vec2 interiorPoint(const geo::Polygon& poly) {
+    const geo::Box b = geo::bounds(poly);
+    Vec2 best = 0.5 * (b.min + b.max);
+    double bestW = -1.0;
+    for (double f : {0.5, 0.37, 0.63, 0.21, 0.79}) {
+        const double y = b.min.y() + f * (b.max.y() - b.min.y());
+        std::vector<double> xs;
+        auto ring = [&](const geo::Ring& r) {
+            for (std::size_t i = 0; i < r.size(); ++i) {
+                const Vec2 &p = r[i], &q = r[(i + 1) % r.size()];
+                if ((p.y() > y) != (q.y() > y))
+                    xs.push_back(p.x() + (y - p.y()) * (q.x() - p.x()) / (q.y() - p.y()));
+            }
+        };
+        ring(poly.outer);
+        for (const auto& h : poly.holes)
+            ring(h);
+        std::sort(xs.begin(), xs.end());
+        for (std::size_t i = 0; i + 1 < xs.size(); i += 2)
+            if (xs[i + 1] - xs[i] > bestW) {
+                bestW = xs[i + 1] - xs[i];
+                best = Vec2(0.5 * (xs[i] + xs[i + 1]), y);
+            }
+        if (bestW > 0)
+            break;
+    }
+    return best;
+}
+
+// Pockets: the holes of the grown zones' union, free space that no way from outside enters.
+class Pockets {
+public:
+    explicit Pockets(const geo::MultiPolygon& grown) {
+        for (const auto& g : grown)
+            for (const auto& h : g.holes)
+                m_holes.push_back(geo::Polygon{h, {}});
+        for (const auto& h : m_holes)
+            m_areas.push_back(geo::area(h));
+    }
+    // The innermost pocket holding p, -1 outside every pocket.
+    int of(const Vec2& p) const {
+        int best = -1;
+        for (std::size_t i = 0; i < m_holes.size(); ++i)
+            if (geo::contains(m_holes[i], p) && (best < 0 || m_areas[i] < m_areas[static_cast<std::size_t>(best)]))
+                best = static_cast<int>(i);
+        return best;
+    }
+    const geo::Polygon& hole(int i) const { return m_holes[static_cast<std::size_t>(i)]; }
+
+private:
+    std::vector<geo::Polygon> m_holes;
+    std::vector<double> m_areas;
+};
+
+// One merged cell of a direction, with its lanes and the connections between consecutive lanes.
+struct PlannedCell {
+    int merged = 0;
+    std::vector<CellLane> lanes;
+    int firstPoint = 0;              // lane j: first photo = firstPoint + 2j, last = firstPoint + 2j + 1
+    std::vector<Route> right, left;  // between lanes j and j + 1 at their right (last) / left (first) ends
+    double laneTimeS = 0.0;
+    bool reachable = true;
+    int pt(std::size_t j, bool last) const { return firstPoint + 2 * static_cast<int>(j) + (last ? 1 : 0); }
+};
+
+// The lanes of a way: lane j flown left to right when (j + parity) is even.
+bool leftToRight(std::size_t j, int parity) { return (j + static_cast<std::size_t>(parity)) % 2 == 0; }
+
+struct DirectionPlan {
+    double angleDeg = 0.0;
+    double estimateS = 0.0;
+    Decomposition d;
+    std::vector<MergedCell> merged;
+    std::vector<std::vector<double>> heights;
+    std::vector<std::vector<char>> pinned; // lanes that neighbours lean on
+};
+
+struct FullPlan {
+    double angleDeg = 0.0;
+    std::unique_ptr<Router> router;
+    std::vector<PlannedCell> cells;      // every merged cell (unreachable ones flagged)
+    std::vector<int> orderCellOf;        // order problem cell -> index into cells
+    OrderProblem problem;                // cells, two ways each
+    OrderResult order;
+    OrderProblem laneProblem;            // lanes, one way each (first photo to last), for the lane-level search
+    std::vector<std::vector<int>> near;  // per end point: the nearest end points of other lanes
+    std::vector<std::pair<int, int>> laneRef; // lane-level cell -> (index into cells, lane)
+    std::vector<int> laneBase;           // per planned cell: its first lane-level id
+    std::vector<OrderStep> steps;        // lane-level order: the improved one
+    std::vector<OrderStep> constructed;  // lane-level order of the cell-level construction alone
+    double timeS = kInf;
+    double missedM2 = 0.0;               // ground beside lane ends no photo may reach (estimate)
+    int laneMoves = 0;
+    int homePt = -1, landingPt = -1;
+    const DirectionPlan* dir = nullptr;
+};
+
+// For each of `pts` (end point ids of the router), the k nearest others of `pts`, on a grid of cell h.
+std::vector<std::vector<int>> nearestEndPoints(const Router& router, const std::vector<int>& pts, int k, double h) {
+    std::vector<std::vector<int>> out(router.size());
+    if (pts.empty())
+        return out;
+    geo::Box box{router.point(pts.front()).p, router.point(pts.front()).p};
+    for (int id : pts) {
+        box.min = box.min.cwiseMin(router.point(id).p);
+        box.max = box.max.cwiseMax(router.point(id).p);
+    }
+    const int nx = std::max(1, static_cast<int>((box.max.x() - box.min.x()) / h) + 1);
+    const int ny = std::max(1, static_cast<int>((box.max.y() - box.min.y()) / h) + 1);
+    std::vector<std::vector<int>> grid(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
+    auto cellOf = [&](const Vec2& p, int& cx, int& cy) {
+        cx = std::clamp(static_cast<int>((p.x() - box.min.x()) / h), 0, nx - 1);
+        cy = std::clamp(static_cast<int>((p.y() - box.min.y()) / h), 0, ny - 1);
+    };
+    for (int id : pts) {
+        int cx, cy;
+        cellOf(router.point(id).p, cx, cy);
+        grid[static_cast<std::size_t>(cy) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(cx)].push_back(id);
+    }
+    std::vector<std::pair<double, int>> found;
+    for (int id : pts) {
+        const Vec2 p = router.point(id).p;
+        int cx, cy;
+        cellOf(p, cx, cy);
+        found.clear();
+        // rings of grid cells until k are found and the next ring is farther than the k-th
+        for (int r = 0; r <= std::max(nx, ny); ++r) {
+            for (int y = cy - r; y <= cy + r; ++y)
+                for (int x = cx - r; x <= cx + r; ++x) {
+                    if (x < 0 || y < 0 || x >= nx || y >= ny || (std::abs(x - cx) != r && std::abs(y - cy) != r))
+                        continue;
+                    for (int o : grid[static_cast<std::size_t>(y) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(x)])
+                        if (o != id)
+                            found.emplace_back((router.point(o).p - p).squaredNorm(), o);
+                }
+            if (static_cast<int>(found.size()) >= k) {
+                std::nth_element(found.begin(), found.begin() + (k - 1), found.end());
+                const double kth = std::sqrt(found[static_cast<std::size_t>(k - 1)].first);
+                if (kth <= r * h)
+                    break;
+            }
+        }
+        std::sort(found.begin(), found.end());
+        auto& list = out[static_cast<std::size_t>(id)];
+        for (std::size_t i = 0; i < found.size() && static_cast<int>(i) < k; ++i)
+            list.push_back(found[i].second);
+    }
+    return out;
+}
+
+} // namespace
+
+Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
+                            const SweepOptions& opt) {
+    auto bad = [](const std::string& m) { return makeError(ErrorCode::InvalidInput, m); };
+    if (!(opt.trackSpacingM > 0) || !std::isfinite(opt.trackSpacingM))
+        return bad("The sweep's track spacing must be a positive distance (got " + fmt(opt.trackSpacingM, 3) + " m).");
+    if (!(opt.photoSpacingM > 0) || !std::isfinite(opt.photoSpacingM))
+        return bad("The sweep's photo spacing must be a positive distance (got " + fmt(opt.photoSpacingM, 3) + " m).");
+    if (!(opt.realAcrossM >= 0) || !(opt.realAlongM >= 0) || !std::isfinite(opt.realAcrossM) || !std::isfinite(opt.realAlongM))
+        return bad("The photo footprint's sides must not be negative.");
+    if (!(opt.safetyMarginM >= 0) || !std::isfinite(opt.safetyMarginM))
+        return bad("The safety margin must not be negative (got " + fmt(opt.safetyMarginM) + " m).");
+    if (!(opt.time.speedMps > 0) || !(opt.time.turnRateDegS > 0))
+        return bad("The flight-time model needs a positive speed and turn rate.");
+    if (!(opt.coarseStepDeg > 0) || opt.plannedDirections < 1 || opt.quadrantSegments < 1 || opt.maxOrderRounds < 0)
+        return bad("The sweep's direction step, planned directions and margin segments must be positive.");
+    if (region.empty())
+        return makeError(ErrorCode::InvalidGeometry, "The area to sweep is empty.");
+    for (std::size_t i = 0; i < region.size(); ++i) {
+        std::string why;
+        if (!geo::isValid(region[i], &why))
+            return makeError(ErrorCode::InvalidGeometry, "The area to sweep (part " + std::to_string(i + 1) +
+                                                             ") is not a valid polygon: " + why);
+    }
+    if (!(geo::area(region) > 0))
+        return makeError(ErrorCode::InvalidGeometry, "The area to sweep has no area.");
+    const double s = opt.trackSpacingM, ph = opt.photoSpacingM;
+    const double realAcross = opt.realAcrossM > 0 ? opt.realAcrossM : s;
+    const double realAlong = opt.realAlongM > 0 ? opt.realAlongM : ph;
+
+    SweepPlan plan;
+    // --- the free space and the ways through it
+    geo::NoFlyField field(noFly, opt.safetyMarginM);
+    geo::VisibilityGraphOptions vgo;
+    vgo.quadrantSegments = opt.quadrantSegments;
+    vgo.coarseCorners = true;
+    vgo.allPairs = true;
+    const geo::VisibilityGraph freeGraph(field, vgo);
+    // Transitions stay over the area with keep-inside; without, within half a track spacing of it
+    // (as no waypoint of any plan may stray further), unless no such way exists.
+    vgo.keepInside = opt.keepInside ? region : geo::buffer(region, 0.5 * opt.trackSpacingM - 0.05, 2);
+    std::unique_ptr<geo::VisibilityGraph> keepGraph = std::make_unique<geo::VisibilityGraph>(field, vgo);
+    const geo::VisibilityGraph& graph = *keepGraph;
+    // The detailed graphs serve the few transitions the coarse ones miss: no all-pairs table for them.
+    geo::VisibilityGraphOptions detailed = vgo;
+    detailed.coarseCorners = false;
+    detailed.allPairs = false;
+    const LazyGraph coarseFree(freeGraph), detailedFree(field, [&] {
+        auto o = detailed;
+        o.keepInside.clear();
+        return o;
+    }());
+    std::unique_ptr<LazyGraph> coarseKeep, detailedKeep;
+    std::vector<RouteGraph> routeGraphs;
+    if (keepGraph) {
+        coarseKeep = std::make_unique<LazyGraph>(*keepGraph);
+        detailedKeep = std::make_unique<LazyGraph>(field, detailed);
+        routeGraphs.push_back(RouteGraph{coarseKeep.get(), false});
+        routeGraphs.push_back(RouteGraph{detailedKeep.get(), false});
+    }
+    routeGraphs.push_back(RouteGraph{&coarseFree, true});
+    routeGraphs.push_back(RouteGraph{&detailedFree, true});
+    plan.stats.graphNodes = static_cast<int>(graph.nodeCount());
+    plan.stats.graphEdges = static_cast<int>(graph.edgeCount());
+    const geo::MultiPolygon& grown = freeGraph.inflatedZones();
+    const geo::MultiPolygon freeSpace = grown.empty() ? region : geo::difference(region, grown);
+    const SweepGround ground(region, noFly, grown);
+
+    const std::optional<Vec2> home = opt.home;
+    const std::optional<Vec2> landing = opt.landing ? opt.landing : opt.home;
+    for (const auto* p : {&home, &landing})
+        if (*p && !field.pointIsSafe(**p))
+            return makeError(ErrorCode::NoPath, std::string(p == &home ? "The home point" : "The landing point") +
+                                                    " (" + fmt((*p)->x()) + ", " + fmt((*p)->y()) +
+                                                    ") m lies within the " + fmt(opt.safetyMarginM) +
+                                                    " m safety margin of a no-fly zone.");
+
+    // --- reachability: free pieces inside a pocket of the grown zones are reached only from there
+    const Pockets pockets(grown);
+    int anchor = -1;
+    {
+        if (home) {
+            anchor = pockets.of(*home);
+        } else {
+            std::unordered_map<int, double> areaOf;
+            for (const auto& f : freeSpace)
+                areaOf[pockets.of(interiorPoint(f))] += geo::area(f);
+            double best = -1;
+            for (const auto& [id, a] : areaOf)
+                if (a > best || (a == best && id < anchor)) {
+                    best = a;
+                    anchor = id;
+                }
+        }
+    }
+
+    // --- candidate directions
+    std::vector<double> angles;
+    auto addAngle = [&](double deg) {
+        deg = std::fmod(deg, 180.0);
+        if (deg < 0)
+            deg += 180.0;
+        for (double a : angles) {
+            const double dd = std::fabs(a - deg);
+            if (std::min(dd, 180.0 - dd) < 0.5)
+                return;
+        }
+        angles.push_back(deg);
+    };
+    if (!opt.anglesDeg.empty()) {
+        for (double a : opt.anglesDeg)
+            addAngle(a);
+    } else {
+        auto longest = [&](const std::vector<geo::Polygon>& polys) {
+            std::vector<std::pair<double, double>> edges; // length, angle
+            for (const auto& poly : polys) {
+                const auto& r = poly.outer;
+                for (std::size_t i = 0; i < r.size(); ++i) {
+                    const Vec2 d = r[(i + 1) % r.size()] - r[i];
+                    edges.emplace_back(d.norm(), std::atan2(d.y(), d.x()) * 180.0 / M_PI);
+                }
+            }
+            std::stable_sort(edges.begin(), edges.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+            for (std::size_t i = 0; i < edges.size() && static_cast<int>(i) < opt.edgeDirections; ++i)
+                addAngle(edges[i].second);
+        };
+        longest(region);
+        longest(noFly);
+        for (double a = 0; a < 180.0 - 1e-9; a += opt.coarseStepDeg)
+            addAngle(a);
+    }
+
+    // --- quick estimate per direction: decomposition, lane heights, turns, cell changes
+    SweepLaneParams lp;
+    lp.trackSpacingM = s;
+    lp.photoSpacingM = ph;
+    lp.grownMarginM = freeGraph.inflatedMarginM();
+    lp.flyOutsideArea = !opt.keepInside;
+    lp.marginRunCapM = 2.0 * std::max(realAlong, ph) + 2.0 * freeGraph.inflatedMarginM();
+    lp.neighbourReachM = std::max(0.0, 0.5 * (realAcross - s));
+    lp.reachAlongM = 0.5 * realAlong;
+    const double uTurnS = 2.0 * turnCostS(90.0, opt.time) + s / opt.time.speedMps;
+    std::vector<DirectionPlan> dirs;
+    geo::MultiPolygon shrunk;
+    for (double a : angles) {
+        DirectionPlan dp;
+        dp.angleDeg = a;
+        auto dec = decompose(freeSpace, SweepFrame{a * M_PI / 180.0});
+        if (!dec.ok()) // a degenerate order of vertices: a hair's rotation resolves it
+            dec = decompose(freeSpace, SweepFrame{a * M_PI / 180.0 + 1e-7});
+        if (!dec.ok()) { // rings touching at a point: 5 mm less free space parts them
+            if (shrunk.empty())
+                shrunk = geo::buffer(freeSpace, -0.005, 2);
+            dec = decompose(shrunk, SweepFrame{a * M_PI / 180.0});
+        }
+        if (!dec.ok())
+            continue;
+        dp.d = std::move(*dec);
+        if (opt.mergeCells) {
+            dp.merged = mergeCells(dp.d);
+        } else {
+            for (std::size_t i = 0; i < dp.d.cells.size(); ++i)
+                dp.merged.push_back(MergedCell{{static_cast<int>(i)}});
+        }
+        double est = 0.0;
+        std::vector<std::pair<Vec2, Vec2>> ends;
+        dp.heights = allLaneHeights(dp.d, dp.merged, lp, ground, &dp.pinned);
+        for (std::size_t mi = 0; mi < dp.merged.size(); ++mi) {
+            const auto& m = dp.merged[mi];
+            const auto& hs = dp.heights[mi];
+            if (hs.empty())
+                continue;
+            std::size_t part = 0;
+            Vec2 first(0, 0), last(0, 0);
+            for (std::size_t j = 0; j < hs.size(); ++j) {
+                while (part + 1 < m.parts.size() && hs[j] > dp.d.cells[static_cast<std::size_t>(m.parts[part])].yhi)
+                    ++part;
+                const auto& c = dp.d.cells[static_cast<std::size_t>(m.parts[part])];
+                const double w = c.xRight(hs[j]) - c.xLeft(hs[j]);
+                est += std::max(0.0, w - ph) / opt.time.speedMps;
+                const Vec2 mid(0.5 * (c.xRight(hs[j]) + c.xLeft(hs[j])), hs[j]);
+                if (j == 0)
+                    first = mid;
+                last = mid;
+            }
+            est += static_cast<double>(hs.size() > 0 ? hs.size() - 1 : 0) * uTurnS;
+            ends.emplace_back(first, last);
+        }
+        // cell changes: nearest neighbour over the cells' first and last lanes
+        if (!ends.empty()) {
+            std::vector<char> used(ends.size(), 0);
+            used[0] = 1;
+            Vec2 at = ends[0].second;
+            for (std::size_t k = 1; k < ends.size(); ++k) {
+                double best = kInf;
+                std::size_t bi = 0;
+                bool flip = false;
+                for (std::size_t i = 0; i < ends.size(); ++i) {
+                    if (used[i])
+                        continue;
+                    const double d1 = (ends[i].first - at).norm(), d2 = (ends[i].second - at).norm();
+                    if (std::min(d1, d2) < best) {
+                        best = std::min(d1, d2);
+                        bi = i;
+                        flip = d2 < d1;
+                    }
+                }
+                used[bi] = 1;
+                at = flip ? ends[bi].first : ends[bi].second;
+                est += best / opt.time.speedMps + 2.0 * turnCostS(90.0, opt.time);
+            }
+        }
+        dp.estimateS = est;
+        dirs.push_back(std::move(dp));
+    }
+    plan.stats.directionsEstimated = static_cast<int>(dirs.size());
+    if (dirs.empty())
+        return makeError(ErrorCode::InvalidGeometry,
+                         "The area could not be decomposed in any sweep direction: its outline may touch or cross itself.");
+    std::vector<std::size_t> rank(dirs.size());
+    for (std::size_t i = 0; i < rank.size(); ++i)
+        rank[i] = i;
+    std::stable_sort(rank.begin(), rank.end(), [&](std::size_t a, std::size_t b) { return dirs[a].estimateS < dirs[b].estimateS; });
+
+    // --- full plans for the best directions
+    const double regionArea = geo::area(region);
+    const double wedgeDepth = std::max(0.0, 0.5 * s - std::max(0.0, 0.5 * (realAcross - s)));
+    auto safeOutside = [&](const Vec2& a, const Vec2& b) { return field.segmentIsSafe(a, b); };
+    std::unique_ptr<FullPlan> best;
+    const int planned = std::min<int>(opt.plannedDirections, static_cast<int>(rank.size()));
+    for (int r = 0; r < planned; ++r) {
+        const DirectionPlan& dp = dirs[rank[static_cast<std::size_t>(r)]];
+        auto fp = std::make_unique<FullPlan>();
+        fp->angleDeg = dp.angleDeg;
+        fp->dir = &dp;
+        fp->router = std::make_unique<Router>(opt.time, routeGraphs);
+        Router& router = *fp->router;
+        const Vec2 u = dp.d.frame.toWorld(Vec2(1, 0));
+        std::vector<std::vector<CellLane>> laneSets(dp.merged.size());
+        for (std::size_t mi = 0; mi < dp.merged.size(); ++mi)
+            laneSets[mi] = cellLanes(dp.d, dp.merged[mi], dp.heights[mi], lp, ground, safeOutside);
+        dropCoveredLanes(dp.d, laneSets, dp.pinned, lp, ground, realAcross, realAlong, kShortLanePhotos * ph);
+        for (std::size_t mi = 0; mi < dp.merged.size(); ++mi) {
+            PlannedCell pc;
+            pc.merged = static_cast<int>(mi);
+            pc.lanes = std::move(laneSets[mi]);
+            if (pc.lanes.empty())
+                continue;
+            const auto& midLane = pc.lanes[pc.lanes.size() / 2];
+            pc.reachable = pockets.of(0.5 * (midLane.flyA + midLane.flyB)) == anchor;
+            pc.firstPoint = static_cast<int>(router.size());
+            for (const auto& l : pc.lanes) {
+                router.add(EndPoint{l.span.first, u});
+                router.add(EndPoint{l.span.last, -u});
+                pc.laneTimeS += (l.span.last - l.span.first).norm() / opt.time.speedMps;
+            }
+            if (pc.reachable)
+                for (std::size_t j = 0; j + 1 < pc.lanes.size(); ++j) {
+                    pc.right.push_back(router.route(pc.pt(j, true), pc.pt(j + 1, true)));
+                    pc.left.push_back(router.route(pc.pt(j, false), pc.pt(j + 1, false)));
+                }
+            fp->cells.push_back(std::move(pc));
+        }
+        if (home)
+            fp->homePt = router.add(EndPoint{*home, Vec2(0, 0)});
+        if (landing)
+            fp->landingPt = router.add(EndPoint{*landing, Vec2(0, 0)});
+        // The order problem over the reachable cells: two ways each (first lane's direction).
+        for (std::size_t ci = 0; ci < fp->cells.size(); ++ci) {
+            const auto& pc = fp->cells[ci];
+            if (!pc.reachable)
+                continue;
+            const std::size_t n = pc.lanes.size();
+            OrderCell oc;
+            for (int parity = 0; parity < (n > 1 ? 2 : 1); ++parity) {
+                OrderWay w;
+                w.a = pc.pt(0, !leftToRight(0, parity));
+                w.b = pc.pt(n - 1, leftToRight(n - 1, parity));
+                w.costS = pc.laneTimeS;
+                for (std::size_t j = 0; j + 1 < n; ++j)
+                    w.costS += (leftToRight(j, parity) ? pc.right[j] : pc.left[j]).timeS;
+                oc.ways.push_back(w);
+            }
+            fp->problem.cells.push_back(oc);
+            fp->orderCellOf.push_back(static_cast<int>(ci));
+        }
+        // The sweep's own order: cells by where they begin across the lanes, then along them.
+        {
+            std::vector<int> order(fp->orderCellOf.size());
+            for (std::size_t k = 0; k < order.size(); ++k)
+                order[k] = static_cast<int>(k);
+            auto key = [&](int k) {
+                const auto& pc = fp->cells[static_cast<std::size_t>(fp->orderCellOf[static_cast<std::size_t>(k)])];
+                const auto& l = pc.lanes.front();
+                return std::make_pair(l.y, dp.d.frame.toFrame(l.flyA).x());
+            };
+            std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key(a) < key(b); });
+            fp->problem.sweepOrder = order;
+        }
+        fp->problem.link = [&router](int a, int b) { return router.route(a, b).timeS; };
+        fp->problem.lowerBound = [&router](int a, int b) { return router.lowerBound(a, b); };
+        if (home) {
+            const int h = fp->homePt;
+            fp->problem.start = [&router, h](int v) { return router.route(h, v).timeS; };
+        }
+        if (landing) {
+            const int l = fp->landingPt;
+            fp->problem.finish = [&router, l](int v) { return router.route(v, l).timeS; };
+        }
+        OrderOptions oo;
+        oo.improve = opt.improveOrder;
+        oo.maxRounds = opt.maxOrderRounds;
+        fp->order = orderCells(fp->problem, oo);
+        // The lane-level problem: every lane on its own, so that the search can also fly a few lanes
+        // of one cell between two of another (round a zone, say), where cell by cell cannot.
+        fp->laneBase.assign(fp->cells.size(), -1);
+        for (std::size_t ci = 0; ci < fp->cells.size(); ++ci) {
+            const auto& pc = fp->cells[ci];
+            if (!pc.reachable)
+                continue;
+            fp->laneBase[ci] = static_cast<int>(fp->laneRef.size());
+            for (std::size_t j = 0; j < pc.lanes.size(); ++j) {
+                fp->laneRef.emplace_back(static_cast<int>(ci), static_cast<int>(j));
+                OrderCell oc;
+                const auto& l = pc.lanes[j];
+                oc.ways.push_back(OrderWay{pc.pt(j, false), pc.pt(j, true), (l.span.last - l.span.first).norm() / opt.time.speedMps});
+                fp->laneProblem.cells.push_back(oc);
+            }
+        }
+        auto toLanes = [&](const std::vector<OrderStep>& cellSteps) {
+            std::vector<OrderStep> out;
+            for (const auto& st : cellSteps) {
+                const int ci = fp->orderCellOf[static_cast<std::size_t>(st.cell)];
+                const auto& pc = fp->cells[static_cast<std::size_t>(ci)];
+                const std::size_t n = pc.lanes.size();
+                for (std::size_t k = 0; k < n; ++k) {
+                    const std::size_t j = st.reversed ? n - 1 - k : k;
+                    const bool ltr = leftToRight(j, st.way) != st.reversed;
+                    out.push_back(OrderStep{fp->laneBase[static_cast<std::size_t>(ci)] + static_cast<int>(j), 0, !ltr});
+                }
+            }
+            return out;
+        };
+        {
+            OrderOptions co;
+            co.improve = false;
+            fp->constructed = toLanes(orderCells(fp->problem, co).steps);
+        }
+        fp->laneProblem.link = fp->problem.link;
+        fp->laneProblem.lowerBound = fp->problem.lowerBound;
+        fp->laneProblem.start = fp->problem.start;
+        fp->laneProblem.finish = fp->problem.finish;
+        fp->steps = toLanes(fp->order.steps);
+        if (opt.improveOrder && !fp->steps.empty()) {
+            // Neighbour lists: the nearest end points of other lanes, found on a grid of lane spacings.
+            std::vector<int> pts;
+            for (const auto& [ci, j] : fp->laneRef) {
+                pts.push_back(fp->cells[static_cast<std::size_t>(ci)].pt(static_cast<std::size_t>(j), false));
+                pts.push_back(fp->cells[static_cast<std::size_t>(ci)].pt(static_cast<std::size_t>(j), true));
+            }
+            fp->near = nearestEndPoints(router, pts, kNeighbours, s);
+            const auto& nearRef = fp->near;
+            fp->laneProblem.near = [&nearRef](int p) -> const std::vector<int>& { return nearRef[static_cast<std::size_t>(p)]; };
+            OrderOptions lo;
+            lo.maxRounds = opt.maxOrderRounds;
+            lo.focusAboveS = 1.2 * uTurnS;
+            const OrderResult lr = improveOrder(fp->laneProblem, fp->steps, lo);
+            fp->steps = lr.steps;
+            fp->timeS = lr.costS;
+            fp->laneMoves = lr.moves;
+        } else {
+            fp->timeS = orderCost(fp->laneProblem, fp->steps);
+        }
+        // Wedges of ground beyond a lane's end that its own line cannot fly over (a margin there, or
+        // the area's edge with keep-inside): about half lie on a turn to the neighbour lane, which
+        // photographs them; the rest is missed. A direction may not buy time with coverage.
+        for (const auto& pc : fp->cells)
+            if (pc.reachable)
+                for (const auto& l : pc.lanes)
+                    for (double w : {l.wedgeLeftBelow, l.wedgeLeftAbove, l.wedgeRightBelow, l.wedgeRightAbove})
+                        fp->missedM2 += 0.25 * std::max(0.0, w - 0.5 * realAlong) * wedgeDepth;
+        const double allowed = 0.001 * regionArea;
+        auto worse = [&](const FullPlan& a, const FullPlan& b) {
+            const bool aMiss = a.missedM2 > allowed, bMiss = b.missedM2 > allowed;
+            if (aMiss != bMiss)
+                return aMiss;
+            return aMiss ? a.missedM2 > b.missedM2 + allowed || (a.missedM2 >= b.missedM2 - allowed && a.timeS > b.timeS)
+                         : a.timeS > b.timeS;
+        };
+        if (!best || worse(*best, *fp))
+            best = std::move(fp);
+    }
+    plan.stats.directionsPlanned = planned;
+
+    // --- the plan of the best direction, in flight order
+    FullPlan& fp = *best;
+    Router& router = *fp.router;
+    const DirectionPlan& dp = *fp.dir;
+    plan.stats.angleDeg = fp.angleDeg;
+    plan.stats.cellsBeforeMerge = static_cast<int>(dp.d.cells.size());
+    plan.stats.cellsAfterMerge = static_cast<int>(dp.merged.size());
+    plan.stats.orderRounds = fp.order.rounds;
+    plan.stats.orderMoves = fp.order.moves + fp.laneMoves;
+    plan.stats.linkEvaluations = fp.order.linkEvaluations;
+    for (const auto& m : dp.merged) {
+        geo::Polygon poly;
+        for (const auto& p : mergedRing(dp.d, m))
+            poly.outer.push_back(dp.d.frame.toWorld(p));
+        plan.cells.push_back(std::move(poly));
+    }
+
+    // Every point flown for a lane-level sequence, with the links.
+    struct Flown {
+        std::vector<std::pair<const CellLane*, bool>> lanes; // lane, flown left to right
+        std::vector<std::pair<int, int>> refs;               // (planned cell, lane) of each
+        std::vector<std::vector<Vec2>> links;
+        std::vector<Vec2> homeLink, landingLink;
+        int leaving = 0;
+        bool broken = false;
+    };
+    auto fly = [&](const std::vector<OrderStep>& steps) {
+        Flown f;
+        int lastPt = fp.homePt;
+        for (const auto& st : steps) {
+            const auto& [ci, j] = fp.laneRef[static_cast<std::size_t>(st.cell)];
+            const PlannedCell& pc = fp.cells[static_cast<std::size_t>(ci)];
+            const int entry = st.entry(fp.laneProblem);
+            if (lastPt >= 0) {
+                Route r = router.route(lastPt, entry);
+                f.broken = f.broken || !r.ok;
+                f.leaving += r.leavesArea && !f.lanes.empty() ? 1 : 0; // the way from home may well
+                if (f.lanes.empty())
+                    f.homeLink = std::move(r.mid);
+                else
+                    f.links.push_back(std::move(r.mid));
+            }
+            f.lanes.emplace_back(&pc.lanes[static_cast<std::size_t>(j)], !st.reversed);
+            f.refs.emplace_back(ci, j);
+            lastPt = st.exit(fp.laneProblem);
+        }
+        if (fp.landingPt >= 0 && !steps.empty()) {
+            Route r = router.route(lastPt, fp.landingPt);
+            f.broken = f.broken || !r.ok;
+            f.landingLink = std::move(r.mid);
+        }
+        return f;
+    };
+    auto flownTime = [&](const Flown& f) {
+        FlightTimeAccumulator acc(opt.time);
+        if (home)
+            acc.add(*home);
+        for (const auto& p : f.homeLink)
+            acc.add(p);
+        for (std::size_t i = 0; i < f.lanes.size(); ++i) {
+            const auto& [l, ltr] = f.lanes[i];
+            acc.add(ltr ? l->span.first : l->span.last);
+            acc.add(ltr ? l->span.last : l->span.first);
+            if (i < f.links.size())
+                for (const auto& p : f.links[i])
+                    acc.add(p);
+        }
+        for (const auto& p : f.landingLink)
+            acc.add(p);
+        if (landing)
+            acc.add(*landing);
+        return acc.result();
+    };
+    Flown flown = fly(fp.steps);
+    FlightTime time = flownTime(flown);
+    {
+        // The search works on the same model; keep the construction should it ever fly faster.
+        Flown constructed = fly(fp.constructed);
+        const FlightTime ct = flownTime(constructed);
+        plan.stats.constructedTimeS = ct.totalS;
+        if (ct.totalS < time.totalS) {
+            flown = std::move(constructed);
+            time = ct;
+        }
+    }
+    plan.stats.transitionsLeavingArea = flown.leaving;
+    plan.time = time;
+    plan.homeLink = flown.homeLink;
+    plan.landingLink = flown.landingLink;
+    plan.links = std::move(flown.links);
+    plan.stats.laneSegments = static_cast<int>(flown.lanes.size());
+    plan.lanes.reserve(flown.lanes.size());
+    const Vec2 u = dp.d.frame.toWorld(Vec2(1, 0));
+    const double reach = 0.5 * realAlong;
+    std::vector<std::vector<Vec2>> links;
+    for (std::size_t i = 0; i < flown.lanes.size(); ++i) {
+        const auto& [l, ltr] = flown.lanes[i];
+        Lane lane = makeLane(l->stripA, l->stripB, ph, l->flyA, l->flyB);
+        if (!ltr) {
+            std::reverse(lane.photos.begin(), lane.photos.end());
+            std::swap(lane.stripStart, lane.stripEnd);
+            lane.headingDeg = std::fmod(lane.headingDeg + 180.0, 360.0);
+        }
+        plan.lanes.push_back(std::move(lane));
+        plan.laneCells.push_back(fp.cells[static_cast<std::size_t>(flown.refs[i].first)].merged);
+        if (i + 1 >= flown.lanes.size())
+            break;
+        std::vector<Vec2> link = std::move(plan.links[i]);
+        // A straight turn to the neighbour lane of the same cell that runs along the boundary past
+        // the end photos' reach, through ground only that turn flies over: photos on it.
+        const auto& [nl, nltr] = flown.lanes[i + 1];
+        const bool neighbours = flown.refs[i].first == flown.refs[i + 1].first &&
+                                std::abs(flown.refs[i].second - flown.refs[i + 1].second) == 1 && ltr != nltr;
+        if (neighbours && link.empty()) {
+            const bool right = ltr; // the turn is at the lanes' right ends
+            const double o = right ? 1.0 : -1.0;
+            const Vec2 P = ltr ? l->span.last : l->span.first, Q = nltr ? nl->span.first : nl->span.last;
+            const double eP = o * P.dot(u), eQ = o * Q.dot(u);
+            const bool pNear = eP < eQ;
+            const CellLane* nearLane = pNear ? l : nl;
+            const bool otherBelow = pNear ? nl->y < l->y : l->y < nl->y;
+            const double wedge = right ? (otherBelow ? nearLane->wedgeRightBelow : nearLane->wedgeRightAbove)
+                                       : (otherBelow ? nearLane->wedgeLeftBelow : nearLane->wedgeLeftAbove);
+            const double eNear = std::min(eP, eQ), eFar = std::max(eP, eQ);
+            const double lo = eNear + reach, hi = std::min(eNear + wedge, eFar - reach);
+            if (hi > lo + 1e-6 && eFar > eNear) {
+                const double L = (Q - P).norm();
+                const double t0 = (lo - eP) / (eQ - eP), t1 = (hi - eP) / (eQ - eP);
+                const double ta = std::min(t0, t1), tb = std::max(t0, t1);
+                const int n = std::max(1, static_cast<int>(std::ceil((tb - ta) * L / ph - 1e-9)));
+                Lane side;
+                const Vec2 d = (Q - P) / L;
+                for (int k = 0; k < n; ++k) {
+                    const double t = std::clamp(0.5 * (ta + tb) + (k - 0.5 * (n - 1)) * ph / L, 0.0, 1.0);
+                    side.photos.push_back(P + t * L * d);
+                }
+                side.stripStart = P + ta * L * d;
+                side.stripEnd = P + tb * L * d;
+                double h = std::atan2(d.x(), d.y()) * 180.0 / M_PI;
+                side.headingDeg = h < 0 ? h + 360.0 : h;
+                links.push_back({});
+                plan.lanes.push_back(std::move(side));
+                plan.laneCells.push_back(-1);
+            }
+        }
+        links.push_back(std::move(link));
+    }
+    plan.links = std::move(links);
+    if (flown.broken)
+        plan.warnings.push_back("Some transitions of the sweep found no safe way and fly straight: check the plan.");
+    if (flown.leaving > 0 && opt.keepInside)
+        plan.warnings.push_back(std::to_string(flown.leaving) +
+                                " transitions leave the area: no way over it keeps the safety margin.");
+
+    // --- ground no photo can see: free pieces no safe path reaches (pockets), and ground between
+    // zones whose margins merge, farther from the reachable free space than the footprint reaches.
+    {
+        std::vector<int> pocketIds;
+        geo::MultiPolygon reachableFree;
+        for (const auto& f : freeSpace) {
+            const int id = pockets.of(interiorPoint(f));
+            if (id == anchor)
+                reachableFree.push_back(f);
+            else if (std::find(pocketIds.begin(), pocketIds.end(), id) == pocketIds.end())
+                pocketIds.push_back(id);
+        }
+        // Convex zones each alone in its grown piece hide no ground from the footprints.
+        bool hiding = !pocketIds.empty();
+        for (const auto& g : grown) {
+            int inside = 0;
+            for (const auto& z : noFly)
+                if (!z.outer.empty() && geo::contains(g, z.outer.front()))
+                    ++inside;
+            hiding = hiding || inside != 1 || !g.holes.empty();
+        }
+        for (const auto& z : noFly) {
+            const std::size_t n = z.outer.size();
+            int pos = 0, neg = 0;
+            for (std::size_t i = 0; i < n; ++i) {
+                const Vec2 a = z.outer[(i + 1) % n] - z.outer[i], b = z.outer[(i + 2) % n] - z.outer[(i + 1) % n];
+                const double c = a.x() * b.y() - a.y() * b.x();
+                pos += c > 1e-9;
+                neg += c < -1e-9;
+            }
+            hiding = hiding || (pos > 0 && neg > 0) || !z.holes.empty();
+        }
+        if (hiding) {
+            // Candidates: ground farther from the reachable free space than half the footprint's short
+            // side; what the plan's photos leave of them, by the independent coverage check.
+            const double reach = 0.5 * std::min(realAcross, realAlong);
+            const geo::MultiPolygon ground = geo::difference(region, geo::MultiPolygon(noFly.begin(), noFly.end()));
+            const geo::MultiPolygon far = geo::difference(ground, geo::buffer(reachableFree, reach, 4));
+            double left = 0.0;
+            if (!far.empty()) {
+                const geo::Box fb = geo::bounds(far);
+                const double pad = 0.5 * std::hypot(realAcross, realAlong);
+                std::vector<PhotoFootprint> near;
+                for (const auto& l : plan.lanes)
+                    for (const auto& p : l.photos)
+                        if (p.x() > fb.min.x() - pad && p.x() < fb.max.x() + pad && p.y() > fb.min.y() - pad &&
+                            p.y() < fb.max.y() + pad)
+                            near.push_back(PhotoFootprint{p, l.headingDeg, realAcross, realAlong});
+                CoverageCheckOptions co;
+                co.resolutionM = std::min(0.5, 0.05 * std::min(realAcross, realAlong));
+                co.maxPixels = 2'000'000;
+                auto cov = checkCoverage(far, near, co);
+                left = cov.ok() ? cov->uncoveredAreaM2 : geo::area(far);
+            }
+            plan.stats.unreachablePockets = static_cast<int>(pocketIds.size());
+            plan.stats.unreachableAreaM2 = left;
+            if (left >= 1.0 || !pocketIds.empty())
+                plan.warnings.push_back(
+                    "About " + fmt(left, 0) + " m2 of ground between no-fly zones" +
+                    (pocketIds.empty() ? std::string()
+                                       : " (" + std::to_string(pocketIds.size()) +
+                                             (pocketIds.size() == 1 ? " pocket" : " pockets") + " no safe path reaches)") +
+                    " lies beyond the footprint's reach from anywhere the aircraft may fly without entering a "
+                    "safety margin: it stays unphotographed; everything else is covered.");
+        }
+    }
+    return plan;
+}
+
+std::vector<geo::Vec2> sweepFlightPath(const SweepPlan& plan, const std::optional<geo::Vec2>& home,
+                                       const std::optional<geo::Vec2>& landing) {
+    std::vector<Vec2> out;
+    if (home)
+        out.push_back(*home);
+    if (!plan.lanes.empty())
+        out.insert(out.end(), plan.homeLink.begin(), plan.homeLink.end());
+    for (std::size_t i = 0; i < plan.lanes.size(); ++i) {
+        out.insert(out.end(), plan.lanes[i].photos.begin(), plan.lanes[i].photos.end());
+        if (i < plan.links.size() && i + 1 < plan.lanes.size())
+            out.insert(out.end(), plan.links[i].begin(), plan.links[i].end());
+    }
+    if (!plan.lanes.empty())
+        out.insert(out.end(), plan.landingLink.begin(), plan.landingLink.end());
+    const std::optional<Vec2> land = landing ? landing : home;
+    if (land)
+        out.push_back(*land);
+    return out;
+}
+
+} // namespace pf::plan
