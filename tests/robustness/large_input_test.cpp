@@ -52,7 +52,10 @@ TEST(LargeInput, AreaBeyondTheBudgetIsRefusedWithAdvice) {
     EXPECT_NE(summary.find("more than the budget of 100,000"), std::string::npos) << summary;
     EXPECT_NE(summary.find("an altitude of at least"), std::string::npos) << summary;
     EXPECT_NE(summary.find("would fit"), std::string::npos) << summary;
-    // Planning anyway is refused before any per-cell memory is taken, with the cell size that fits.
+    // Planning anyway with a grid planner is refused before any per-cell memory is taken, with the
+    // cell size that fits (the automatic choice would fall back to the sweep planner, which needs no
+    // grid; the check above already stops the CLI and the GUI).
+    m.options.planner = mission::PlannerKind::Stride;
     const auto plan = mission::planMission(m);
     ASSERT_FALSE(plan);
     const std::string& msg = plan.error().message;
