@@ -133,11 +133,16 @@ RouteCheck checkRoute(const route::Route& route, const RouteLimits& limits) {
 
     if (limits.area.outer.size() >= 3) {
         const geo::Polygon area = frame->toLocal(limits.area);
+        // A lane ends on the boundary itself: a waypoint within 5 cm of it (rounding of the exact
+        // geometry and of the WGS84 round trip) is inside.
+        constexpr double kOnBoundaryM = 0.05;
         for (std::size_t i = 0; i < n; ++i) {
             if (geo::contains(area, local[i]))
                 continue;
-            ++out.outsideArea;
             const double d = geo::distanceTo(area, local[i]);
+            if (d <= kOnBoundaryM)
+                continue;
+            ++out.outsideArea;
             if (d > out.farthestOutsideM) {
                 out.farthestOutsideM = d;
                 out.farthestOutside = int(i);

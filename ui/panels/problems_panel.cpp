@@ -102,7 +102,7 @@ void ProblemsPanel::refresh() {
                                 "cover the boundary; turn on Keep inside area to stay within it.",
                                 nullptr, is.check.outsideArea)
                                  .arg(name)
-                                 .arg(is.check.farthestOutsideM, 0, 'f', 0),
+                                 .arg(is.check.farthestOutsideM, 0, 'f', is.check.farthestOutsideM < 10 ? 1 : 0),
                              tr("route check: a note, not an error"), Severity::Info);
             item->setData(KindRole, WaypointTarget);
             item->setData(IndexRole, int(r));

@@ -253,17 +253,28 @@ void StatisticsPanel::refreshStatistics() {
         }
         batteriesTotal += batteries;
         photosTotal += photos;
-        turnsTotal += ap.metrics.turns;
+        // The flown route's turns (what the aircraft stops for), as the CLI shows them; the cell
+        // path's count only where no route was made.
+        const int turns = ap.flight.lengthM > 0 ? ap.flight.turns : ap.metrics.turns;
+        turnsTotal += turns;
         distanceTotal += shownDistanceM;
         longestS = std::max(longestS, shownTimeS);
         planMsTotal += ap.metrics.planningMs;
         m_stats->setItem(r, Photos, cell(QString::number(photos)));
         m_stats->setItem(r, Km, cell(QString::number(shownDistanceM / 1000.0, 'f', 2)));
         m_stats->setItem(r, Time, cell(minutes(shownTimeS)));
-        m_stats->setItem(r, Turns, cell(QString::number(ap.metrics.turns)));
+        m_stats->setItem(r, Turns, cell(QString::number(turns)));
         m_stats->setItem(r, Sorties, cell(QString::number(batteries)));
-        const double cov = ap.metrics.visitable > 0 ? 100.0 * ap.metrics.cells / ap.metrics.visitable : 0.0;
-        m_stats->setItem(r, Cover, cell(QString::number(cov, 'f', 1)));
+        // Per aircraft: the share of its grid's cells it visits (grid planners); the sweep plans on
+        // the exact polygon, without cells: a dash (the total is the independent check).
+        if (ap.metrics.visitable > 0) {
+            m_stats->setItem(r, Cover, cell(QString::number(100.0 * ap.metrics.cells / ap.metrics.visitable, 'f', 1)));
+            m_stats->item(r, Cover)->setToolTip(tr("Share of this aircraft's grid cells its path visits"));
+        } else {
+            m_stats->setItem(r, Cover, cell(kDash));
+            m_stats->item(r, Cover)->setToolTip(tr("Planned without a grid (%1): see the total, the independent check")
+                                                    .arg(QString::fromUtf8(mission::plannerKindInfo(ap.planner).label)));
+        }
         m_stats->setItem(r, PlanMs, cell(QString::number(ap.metrics.planningMs, 'f', 0)));
     }
     const auto& t = plan->totals;

@@ -99,6 +99,15 @@ TEST(RouteCheck, WaypointsOutsideTheAreaAreANoteWithTheFarthest) {
     EXPECT_NEAR(c.farthestOutsideM, 18.0, 0.05);
 }
 
+// A lane ends on the boundary: 2 cm beyond it (rounding) is inside, 20 cm is outside.
+TEST(RouteCheck, AWaypointOnTheBoundaryIsInside) {
+    Site s;
+    const auto c = s.check(s.route({{-80, -80}, {-100.02, -80}, {-100.2, -60}, {-80, -60}}));
+    EXPECT_EQ(c.outsideArea, 1);
+    EXPECT_EQ(c.farthestOutside, 2);
+    EXPECT_NEAR(c.farthestOutsideM, 0.2, 0.01);
+}
+
 TEST(RouteCheck, RouteErrorsLabelsEveryRoute) {
     Site s;
     auto a = s.route({{-80, -80}, {0, 0}});
