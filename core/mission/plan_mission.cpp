@@ -352,7 +352,9 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
                 return makeError(safe.error().code, who + ": " + safe.error().message);
             survey = std::move(*safe);
         }
-        route::dropNearDuplicates(survey);
+        // After the no-fly stage nothing repairs a leg: a waypoint is dropped only where the leg that
+        // replaces it keeps the margin.
+        route::dropNearDuplicates(survey, yardstick ? nullptr : &finder.field());
         for (const auto& w : rep.warnings)
             plan.warnings.push_back(who + ": " + w);
         ap.detours = rep.detours;
