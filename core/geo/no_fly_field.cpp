@@ -110,6 +110,12 @@ NoFlyField::NoFlyField(std::vector<geo::Polygon> zones, double marginM)
     }
 }
 
+NoFlyField NoFlyField::forCheck(std::vector<geo::Polygon> zones, double marginM) {
+    NoFlyField f(std::move(zones), marginM);
+    f.m_slack = 0.0;
+    return f;
+}
+
 double NoFlyField::clearance(const Vec2& p) const {
     double best = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < m_zones.size(); ++i) {
@@ -138,7 +144,7 @@ double NoFlyField::clearance(const Vec2& a, const Vec2& b) const {
 }
 
 bool NoFlyField::pointIsSafe(const Vec2& p) const {
-    const double need = std::max(0.0, m_margin - tolerance());
+    const double need = std::max(0.0, minClearance());
     for (std::size_t i = 0; i < m_zones.size(); ++i) {
         if (boxesApart(p, p, m_boxes[i].first, m_boxes[i].second, need))
             continue; // the whole zone lies at least `need` away
@@ -151,7 +157,7 @@ bool NoFlyField::pointIsSafe(const Vec2& p) const {
 }
 
 bool NoFlyField::segmentIsSafe(const Vec2& a, const Vec2& b) const {
-    const double need = std::max(0.0, m_margin - tolerance());
+    const double need = std::max(0.0, minClearance());
     const Vec2 smin = a.cwiseMin(b), smax = a.cwiseMax(b);
     for (std::size_t i = 0; i < m_zones.size(); ++i) {
         if (boxesApart(smin, smax, m_boxes[i].first, m_boxes[i].second, need))

@@ -11,10 +11,31 @@ namespace pf::geo {
 
 // No-fly zones with their safety margin, measured exactly (distances to the zones' edges) rather
 // than through a polygonised buffer, so that every stage agrees on what "safe" means.
+//
+// What keeps the margin, everywhere: a clearance of at least margin - tolerance(). A leg passing at
+// exactly the margin (5.0 m of 5 m) keeps it, and so does one a few millimetres closer (the drawing
+// tolerance below); one at 4.96 m of 5 m does not, and the route check prints it so (never "5.0 m").
+// Two uses, two strictnesses:
+// - the final checks (mission::checkRoute, plan::countNoFlyViolations: field made with forCheck())
+//   flag a breach below margin - tolerance();
+// - the planner's own tests (a field made with the constructor: detours, transits, sorties, photo
+//   placement's safety net) ask kPlanningSlackM more, so that a leg the planner accepts at its limit
+//   is still accepted by the check after the rounding it goes through (the route is checked in WGS84,
+//   converted back to metres in the check's own frame). The slack is no safety distance: a stage
+//   that moves or drops waypoints after the no-fly stage must test the legs it makes with the
+//   planner's field (dropNearDuplicates does).
 class NoFlyField {
 public:
+    // The planner's slack beyond the check's threshold: 300 times what a round trip through WGS84 costs
+    // (3e-9 m measured across an 800 m area), so small that it changes no plan of the 60 generated
+    // areas (1 mm already added a detour corner on one).
+    static constexpr double kPlanningSlackM = 1e-6;
+
     NoFlyField() = default;
+    // A field for planning: safe means at least margin - tolerance() + kPlanningSlackM away.
     NoFlyField(std::vector<Polygon> zones, double marginM);
+    // A field for the final check: safe means at least margin - tolerance() away.
+    static NoFlyField forCheck(std::vector<Polygon> zones, double marginM);
 
     const std::vector<Polygon>& zones() const { return m_zones; }
     double marginM() const { return m_margin; }
@@ -22,6 +43,9 @@ public:
     // Slack granted below the margin: 1 cm + 0.5 % of it, the gap between a circle and the polygon
     // GEOS uses for a buffer (8 segments per quarter), so points on such a buffer count as safe.
     double tolerance() const { return 0.01 + 0.005 * m_margin; }
+    // The least clearance this field accepts (see above): margin - tolerance(), plus the planning
+    // slack for a planner's field.
+    double minClearance() const { return m_margin - tolerance() + m_slack; }
 
     // Distance from p (or from the segment ab) to the nearest zone; 0 inside or across one.
     double clearance(const Vec2& p) const;
@@ -32,13 +56,14 @@ public:
     // millions of times.
     bool pointIsSafe(const Vec2& p) const;
     bool segmentIsSafe(const Vec2& a, const Vec2& b) const;
-    bool isSafeClearance(double c) const { return c > 0.0 && c >= m_margin - tolerance(); }
+    bool isSafeClearance(double c) const { return c > 0.0 && c >= minClearance(); }
 
 private:
     std::vector<Polygon> m_zones;
     std::vector<std::pair<Vec2, Vec2>> m_boxes; // per zone: min, max
     std::vector<std::pair<Vec2, double>> m_circles; // per zone: a circle holding it (centre, radius)
     double m_margin = 0.0;
+    double m_slack = kPlanningSlackM;
 };
 
 // Shortest safe paths around the zones: a visibility graph over the vertices of the zones buffered

@@ -53,7 +53,8 @@ struct AircraftPlan {
     // Filled by planMission (planRegion leaves them empty or zero):
     geo::MultiPolygon subarea;    // the part of the area assigned to this aircraft, local metres
     std::vector<route::LocalWaypoint> surveyWaypoints; // first to last photo after dedup and safety
-    std::vector<SortieSummary> sorties; // one per battery; route.waypoints holds them in order
+    std::vector<SortieSummary> sorties; // one per battery; route.waypoints holds them in order, with a
+                                        // Transit waypoint at home between two (outside every sortie)
     std::vector<route::Route> sortieRoutes; // each sortie as a flight of its own (home to home)
     double timeS = 0.0;           // whole flight, home to home over every sortie, transit included
     plan::FlightTime flight;      // the flown path (home, every waypoint, home between sorties, landing):

@@ -352,7 +352,9 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
                 return makeError(safe.error().code, who + ": " + safe.error().message);
             survey = std::move(*safe);
         }
-        route::dropNearDuplicates(survey);
+        // After the no-fly stage nothing repairs a leg: a waypoint is dropped only where the leg that
+        // replaces it keeps the margin.
+        route::dropNearDuplicates(survey, yardstick ? nullptr : &finder.field());
         for (const auto& w : rep.warnings)
             plan.warnings.push_back(who + ": " + w);
         ap.detours = rep.detours;
@@ -387,6 +389,13 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
                 ap.sorties.push_back(s);
             } else {
                 for (const auto& s : sp->sorties) {
+                    // Between two sorties the route flies through home (where the battery is changed): a
+                    // straight leg from one sortie's last waypoint to the next one's first is never
+                    // flown, and may cross a zone, yet the whole route (its check, the map, the one file
+                    // for the aircraft) would join them.
+                    if (!flown.empty())
+                        flown.push_back({*home, route::headingDeg(*home, s.waypoints.front().pos),
+                                         route::WaypointKind::Transit, -1});
                     SortieSummary sum;
                     sum.firstWaypoint = static_cast<int>(flown.size());
                     flown.insert(flown.end(), s.waypoints.begin(), s.waypoints.end());
@@ -591,14 +600,9 @@ std::string planToGeoJson(const MissionPlan& plan) {
         CPLJSONArray coords;
         if (a.route.home)
             coords.Add(position(*a.route.home));
-        for (std::size_t i = 0; i < a.route.waypoints.size(); ++i) {
-            coords.Add(position(a.route.waypoints[i].position));
-            // Between two sorties the aircraft lands at home for a fresh battery.
-            const bool sortieEnds = std::any_of(a.sorties.begin(), a.sorties.end() - (a.sorties.empty() ? 0 : 1),
-                                                [&](const SortieSummary& s) { return s.lastWaypoint == static_cast<int>(i); });
-            if (a.route.home && sortieEnds)
-                coords.Add(position(*a.route.home));
-        }
+        // Between two sorties the route itself passes through home (a Transit waypoint there).
+        for (const auto& w : a.route.waypoints)
+            coords.Add(position(w.position));
         if (a.route.home)
             coords.Add(position(*a.route.home));
         geom.Add("coordinates", coords);

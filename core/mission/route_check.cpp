@@ -20,6 +20,19 @@ std::string num(double v, int decimals = 1) {
 
 void add(std::string& slot, const std::string& why) { slot += (slot.empty() ? "" : "; ") + why; }
 
+// A clearance that breaches the margin, with the decimals it takes to read as less than the least
+// clearance allowed: 4.96 m for a leg 4.964 m from a zone with a 5 m margin, never "5.0 m (margin
+// 5.0 m)", which reads as if the margin were kept.
+std::string breachText(double c, const geo::NoFlyField& f) {
+    int decimals = 1;
+    double scale = 10.0;
+    while (decimals < 4 && std::round(c * scale) / scale >= f.minClearance()) {
+        ++decimals;
+        scale *= 10.0;
+    }
+    return num(c, decimals);
+}
+
 // A frame for the check: centred on the area when there is one, else on the route itself.
 Result<geo::LocalFrame> frameFor(const route::Route& route, const RouteLimits& limits) {
     if (limits.area.outer.size() >= 3)
@@ -83,11 +96,12 @@ RouteCheck checkRoute(const route::Route& route, const RouteLimits& limits) {
     for (std::size_t i = 0; i < n; ++i)
         local[i] = frame->toLocal(route.waypoints[i].position);
 
-    // One field per zone, so that a message names the zone.
+    // One field per zone, so that a message names the zone. The check's threshold: margin less the
+    // drawing tolerance, without the planner's slack (geo/no_fly_field.h).
     const double margin = limits.safetyMarginM;
     std::vector<geo::NoFlyField> fields;
     for (const auto& z : limits.zones)
-        fields.emplace_back(std::vector<geo::Polygon>{frame->toLocal(z.polygon)}, margin);
+        fields.push_back(geo::NoFlyField::forCheck(std::vector<geo::Polygon>{frame->toLocal(z.polygon)}, margin));
     auto zoneName = [&](std::size_t z) {
         return limits.zones[z].name.empty() ? "no-fly zone " + std::to_string(z + 1)
                                             : "no-fly zone " + limits.zones[z].name;
@@ -98,7 +112,7 @@ RouteCheck checkRoute(const route::Route& route, const RouteLimits& limits) {
             if (c <= 0.0)
                 return "inside " + zoneName(z);
             if (!fields[z].isSafeClearance(c))
-                return num(c) + " m from " + zoneName(z) + " (margin " + num(margin) + " m)";
+                return breachText(c, fields[z]) + " m from " + zoneName(z) + " (margin " + num(margin) + " m)";
         }
         return {};
     };
@@ -108,7 +122,8 @@ RouteCheck checkRoute(const route::Route& route, const RouteLimits& limits) {
             if (c <= 0.0)
                 return what + " crosses " + zoneName(z);
             if (!fields[z].isSafeClearance(c))
-                return what + " passes " + num(c) + " m from " + zoneName(z) + " (margin " + num(margin) + " m)";
+                return what + " passes " + breachText(c, fields[z]) + " m from " + zoneName(z) + " (margin " +
+                       num(margin) + " m)";
         }
         return {};
     };

@@ -203,7 +203,8 @@ Result<CoverageReport> checkCoverage(const geo::MultiPolygon& admissible, const 
 NoFlyViolations countNoFlyViolations(const std::vector<std::vector<geo::Vec2>>& paths,
                                      const std::vector<geo::Polygon>& noFly, double marginM) {
     NoFlyViolations v;
-    const route::NoFlyField field(noFly, marginM);
+    // The final check's threshold, without the planner's slack (geo/no_fly_field.h).
+    const route::NoFlyField field = route::NoFlyField::forCheck(noFly, marginM);
     if (field.empty())
         return v;
     for (const auto& path : paths)

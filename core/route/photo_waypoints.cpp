@@ -332,26 +332,44 @@ std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellP
     return out;
 }
 
-void dropNearDuplicates(std::vector<LocalWaypoint>& waypoints) {
+void dropNearDuplicates(std::vector<LocalWaypoint>& waypoints, const geo::NoFlyField* field) {
     // A turn or transit point a few millimetres from its neighbour (a lane's end cell centre under the
     // lane's last photo, say) adds nothing but a zero-length leg that vehicles reject; so does a photo
     // that repeats the one before it (same heading, less than the gap away: the same picture, shifted
     // by less than the coverage check's resolution).
+    const auto near = [](const Vec2& a, const Vec2& b) { return (a - b).norm() < kMinWaypointGapM; };
+    const auto safeLeg = [&](const Vec2& a, const Vec2& b) { return !field || field->segmentIsSafe(a, b); };
+    const std::size_t n = waypoints.size();
     std::vector<LocalWaypoint> out;
-    out.reserve(waypoints.size());
-    for (std::size_t i = 0; i < waypoints.size(); ++i) {
+    out.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
         const LocalWaypoint& w = waypoints[i];
-        if (w.kind == WaypointKind::Photo && !out.empty() && out.back().kind == WaypointKind::Photo &&
-            (out.back().pos - w.pos).norm() < kMinWaypointGapM &&
-            std::fabs(std::remainder(out.back().headingDeg - w.headingDeg, 360.0)) < 0.5)
+        const bool photo = w.kind == WaypointKind::Photo;
+        const bool repeat = photo && !out.empty() && out.back().kind == WaypointKind::Photo && near(out.back().pos, w.pos) &&
+                            std::fabs(std::remainder(out.back().headingDeg - w.headingDeg, 360.0)) < 0.5;
+        const bool nearPrev = !photo && !out.empty() && near(out.back().pos, w.pos);
+        const bool nearNext = !photo && i + 1 < n && near(waypoints[i + 1].pos, w.pos);
+        if (!repeat && !nearPrev && !nearNext) {
+            out.push_back(w);
             continue;
-        if (w.kind != WaypointKind::Photo) {
-            const bool nearPrev = !out.empty() && (out.back().pos - w.pos).norm() < kMinWaypointGapM;
-            const bool nearNext = i + 1 < waypoints.size() && (waypoints[i + 1].pos - w.pos).norm() < kMinWaypointGapM;
-            if (nearPrev || nearNext)
-                continue;
         }
-        out.push_back(w);
+        // Dropped, w leaves the leg from the waypoint before it straight to the one after it. Every leg
+        // of `out` is one of the input's or was tested here, so the margin holds wherever it held.
+        if (out.empty() || i + 1 == n || safeLeg(out.back().pos, waypoints[i + 1].pos))
+            continue;
+        // That leg would cut into a margin. Merged at w's position, the pair keeps w's leg on one side
+        // and makes one new leg on the other: with the waypoint before (it moves onto w), or with the
+        // one after (it moves onto w, its leg onwards is new).
+        const bool wSafe = field->pointIsSafe(w.pos);
+        if (wSafe && (repeat || nearPrev) && (out.size() < 2 || safeLeg(out[out.size() - 2].pos, w.pos))) {
+            out.back().pos = w.pos;
+            continue;
+        }
+        if (wSafe && nearNext && (i + 2 == n || safeLeg(w.pos, waypoints[i + 2].pos))) {
+            waypoints[i + 1].pos = w.pos;
+            continue;
+        }
+        out.push_back(w); // a leg shorter than the gap, but within the margin nowhere
     }
     waypoints.swap(out);
 }

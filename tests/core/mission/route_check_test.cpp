@@ -61,6 +61,20 @@ TEST(RouteCheck, WaypointsAndLegsInTheMarginAreNamedWithTheZone) {
     EXPECT_EQ(c.noFly, c.count());
 }
 
+// What keeps the margin (geo/no_fly_field.h): a leg at exactly the margin does, and so does one within
+// the drawing tolerance (1 cm + 0.5 % of the margin, 3.5 cm of 5 m); one closer breaches it, and the
+// message shows its clearance with the decimals that tell it from the margin (not "5.0 m").
+TEST(RouteCheck, ALegAtTheMarginKeepsItOneJustInsideBreachesItAndReadsSo) {
+    Site s; // the zone's top edge is at y = 10
+    EXPECT_TRUE(s.check(s.route({{-60, 15.0}, {60, 15.0}})).ok());
+    EXPECT_TRUE(s.check(s.route({{-60, 14.97}, {60, 14.97}})).ok());
+    const auto c = s.check(s.route({{-60, 14.96}, {60, 14.96}}));
+    EXPECT_EQ(c.noFly, 1);
+    EXPECT_EQ(c.leg[0], "the leg to waypoint 2 passes 4.96 m from no-fly zone Mast (margin 5.0 m)");
+    const auto far = s.check(s.route({{-60, 14.2}, {60, 14.2}}));
+    EXPECT_EQ(far.leg[0], "the leg to waypoint 2 passes 4.2 m from no-fly zone Mast (margin 5.0 m)");
+}
+
 TEST(RouteCheck, LegsFromAndBackHomeAreChecked) {
     Site s;
     s.m.home = s.frame.toGeo(geo::Vec2{-50, 0});

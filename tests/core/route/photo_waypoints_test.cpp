@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -259,6 +260,53 @@ TEST(StraightenTransits, KeepsTheWayRoundAConcaveArea) {
     straightenTransits(*g, straight);
     for (const auto& w : straight)
         EXPECT_EQ(w.kind, WaypointKind::Photo);
+}
+
+// The bug of generated area 8 (seed 1): after the no-fly stage a detour's corner T lay 9 cm before a
+// photo P; dropping T joined the waypoint before straight to P, a leg cutting 4 cm into the margin
+// of a zone's corner, and nothing after that stage repairs a leg. Given the planner's field, the drop
+// keeps every leg safe: here T and P merge at T's position (the photo moves by 9 cm).
+TEST(DropNearDuplicates, NeverCutsACornerIntoAMargin) {
+    // A 10 m square zone, margin 5 m: its top edge is at y = 10, the margin's edge at y = 15.
+    const geo::NoFlyField field({geo::Polygon{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {}}}, 5.0);
+    const geo::Vec2 x(-20, 14.97), t(20, 14.97), p(20.05, 14.90), q(40, 14.90);
+    ASSERT_TRUE(field.segmentIsSafe(x, t)); // 4.97 m from the zone: within the margin's tolerance
+    ASSERT_TRUE(field.segmentIsSafe(t, p));
+    ASSERT_FALSE(field.segmentIsSafe(x, p)); // 4.93 m over the zone's top edge
+    ASSERT_LT((t - p).norm(), kMinWaypointGapM);
+    const std::vector<LocalWaypoint> route{{x, 90, WaypointKind::Photo, -1},
+                                           {t, 90, WaypointKind::Transit, -1},
+                                           {p, 90, WaypointKind::Photo, -1},
+                                           {q, 90, WaypointKind::Photo, -1}};
+    auto photos = [](const std::vector<LocalWaypoint>& w) {
+        return std::count_if(w.begin(), w.end(), [](const auto& v) { return v.kind == WaypointKind::Photo; });
+    };
+
+    // Without a field (before the no-fly stage, which repairs what this leaves) T goes: the cut leg.
+    auto blind = route;
+    dropNearDuplicates(blind);
+    ASSERT_EQ(blind.size(), 3u);
+    EXPECT_FALSE(field.segmentIsSafe(blind[0].pos, blind[1].pos));
+
+    auto safe = route;
+    dropNearDuplicates(safe, &field);
+    EXPECT_EQ(photos(safe), 3);
+    ASSERT_EQ(safe.size(), 3u);
+    EXPECT_EQ(safe[1].kind, WaypointKind::Photo);
+    EXPECT_LT((safe[1].pos - p).norm(), kMinWaypointGapM);
+    for (std::size_t i = 1; i < safe.size(); ++i) {
+        EXPECT_TRUE(field.segmentIsSafe(safe[i - 1].pos, safe[i].pos)) << "leg " << i;
+        EXPECT_GE((safe[i].pos - safe[i - 1].pos).norm(), kMinWaypointGapM) << "leg " << i;
+    }
+
+    // When neither the drop nor a merge keeps the margin, both waypoints stay.
+    auto stuck = route;
+    stuck[3].pos = geo::Vec2(-20, 14.90); // the leg on from T would cross the margin too
+    ASSERT_FALSE(field.segmentIsSafe(t, stuck[3].pos));
+    dropNearDuplicates(stuck, &field);
+    ASSERT_EQ(stuck.size(), 4u);
+    EXPECT_EQ(stuck[1].pos, t);
+    EXPECT_EQ(stuck[2].pos, p);
 }
 
 } // namespace
