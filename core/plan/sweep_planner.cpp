@@ -26,8 +26,6 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNoWayS = 1e7;
 // Lane ends the lane-level search considers joining, per end: the nearest this many.
 constexpr int kNeighbours = 10;
-// Lanes flown no longer than this many trigger distances are checked for being redundant.
-constexpr double kShortLanePhotos = 4.0;
 
 std::string fmt(double v, int decimals = 1) {
     char buf[64];
@@ -303,9 +301,58 @@ struct FullPlan {
     double timeS = kInf;
     double missedM2 = 0.0;               // ground beside lane ends no photo may reach (estimate)
     int laneMoves = 0;
+    bool rowStart = false;               // the kept lane order came from the row-by-row start
     int homePt = -1, landingPt = -1;
     const DirectionPlan* dir = nullptr;
 };
+
+// The lane-level sequence that flies the lanes row by row (lanes less than half a spacing apart across
+// the lanes form a row, flown along the lanes' direction in turn), the best of the four corners to
+// begin at by the problem's own cost; empty without lanes.
+std::vector<OrderStep> rowOrders(const OrderProblem& lanes, const std::vector<std::pair<int, int>>& laneRef,
+                                 const std::vector<PlannedCell>& cells, const SweepFrame& frame, double spacing) {
+    struct Key {
+        double y, x;
+        int id;
+    };
+    std::vector<Key> keys;
+    keys.reserve(laneRef.size());
+    for (std::size_t id = 0; id < laneRef.size(); ++id) {
+        const auto& [ci, j] = laneRef[id];
+        const CellLane& l = cells[static_cast<std::size_t>(ci)].lanes[static_cast<std::size_t>(j)];
+        keys.push_back(Key{l.y, frame.toFrame(0.5 * (l.span.first + l.span.last)).x(), static_cast<int>(id)});
+    }
+    if (keys.empty())
+        return {};
+    std::stable_sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) { return a.y < b.y; });
+    std::vector<std::vector<Key>> rows;
+    for (const auto& k : keys) {
+        if (rows.empty() || k.y - rows.back().front().y >= 0.5 * spacing)
+            rows.emplace_back();
+        rows.back().push_back(k);
+    }
+    for (auto& r : rows)
+        std::stable_sort(r.begin(), r.end(), [](const Key& a, const Key& b) { return a.x < b.x; });
+    std::vector<OrderStep> best;
+    double bestCost = kInf;
+    for (int variant = 0; variant < 4; ++variant) {
+        const bool upwards = variant < 2, firstLtr = variant % 2 == 0;
+        std::vector<OrderStep> seq;
+        seq.reserve(keys.size());
+        for (std::size_t k = 0; k < rows.size(); ++k) {
+            const auto& row = rows[upwards ? k : rows.size() - 1 - k];
+            const bool ltr = (k % 2 == 0) == firstLtr;
+            for (std::size_t i = 0; i < row.size(); ++i)
+                seq.push_back(OrderStep{row[ltr ? i : row.size() - 1 - i].id, 0, !ltr});
+        }
+        const double c = orderCost(lanes, seq);
+        if (c < bestCost) {
+            bestCost = c;
+            best = std::move(seq);
+        }
+    }
+    return best;
+}
 
 // For each of `pts` (end point ids of the router), the k nearest others of `pts`, on a grid of cell h.
 std::vector<std::vector<int>> nearestEndPoints(const Router& router, const std::vector<int>& pts, int k, double h) {
@@ -602,7 +649,9 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         std::vector<std::vector<CellLane>> laneSets(dp.merged.size());
         for (std::size_t mi = 0; mi < dp.merged.size(); ++mi)
             laneSets[mi] = cellLanes(dp.d, dp.merged[mi], dp.heights[mi], lp, ground, safeOutside);
-        dropCoveredLanes(dp.d, laneSets, dp.pinned, lp, ground, realAcross, realAlong, kShortLanePhotos * ph);
+        // Every lane whose ground the others' photos see goes, not only short ones: beside a zone the
+        // lanes of the cells above, below and beside it often overlap along their whole length.
+        dropCoveredLanes(dp.d, laneSets, dp.pinned, lp, ground, realAcross, realAlong, kInf);
         for (std::size_t mi = 0; mi < dp.merged.size(); ++mi) {
             PlannedCell pc;
             pc.merged = static_cast<int>(mi);
@@ -727,7 +776,18 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
             OrderOptions lo;
             lo.maxRounds = opt.maxOrderRounds;
             lo.focusAboveS = 1.2 * uTurnS;
-            const OrderResult lr = improveOrder(fp->laneProblem, fp->steps, lo);
+            OrderResult lr = improveOrder(fp->laneProblem, fp->steps, lo);
+            // A second start: the lanes row by row across the area, as a Survey flies its lines, each
+            // row's pieces one after the other round the zones between them (the search then moves
+            // pieces where a cell of their own pays).
+            const auto rows = !opt.rowStart ? std::vector<OrderStep>{} : rowOrders(fp->laneProblem, fp->laneRef, fp->cells, dp.d.frame, s);
+            if (!rows.empty()) {
+                OrderResult rr = improveOrder(fp->laneProblem, rows, lo);
+                if (rr.costS < lr.costS) {
+                    lr = std::move(rr);
+                    fp->rowStart = true;
+                }
+            }
             fp->steps = lr.steps;
             fp->timeS = lr.costS;
             fp->laneMoves = lr.moves;
@@ -765,6 +825,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     plan.stats.orderRounds = fp.order.rounds;
     plan.stats.orderMoves = fp.order.moves + fp.laneMoves;
     plan.stats.linkEvaluations = fp.order.linkEvaluations;
+    plan.stats.rowStart = fp.rowStart;
     for (const auto& m : dp.merged) {
         geo::Polygon poly;
         for (const auto& p : mergedRing(dp.d, m))

@@ -35,6 +35,9 @@ struct SweepOptions {
     bool mergeCells = true;                 // merge neighbouring cells that one pattern covers
     bool improveOrder = true;               // local search after the nearest-neighbour construction
     int maxOrderRounds = 50;                // local-search passes, >= 0
+    // Also start the lane-level search from the lanes row by row across the area (as a Survey flies
+    // its lines, a cut line's pieces one after the other round the zones), keeping the faster result.
+    bool rowStart = true;
     // Segments per quarter circle of the margin polygon the lanes end at and transitions turn around:
     // few segments, few turns (each a stop) on a transition. >= 1.
     int quadrantSegments = 2;
@@ -50,6 +53,7 @@ struct SweepStats {
     int orderMoves = 0;                     // improving local-search moves
     std::int64_t linkEvaluations = 0;       // transitions costed by the order search
     double constructedTimeS = 0.0;          // the same lanes in the construction's order, before local search
+    bool rowStart = false;                  // the order kept grew from the row-by-row start
     int unreachablePockets = 0;             // free pieces no safe path reaches
     double unreachableAreaM2 = 0.0;         // their ground the footprints from outside do not reach (estimate)
     int transitionsLeavingArea = 0;         // transitions leaving the area (keep-inside) or straying more
