@@ -84,11 +84,6 @@ QString importFilter() {
                                        "Areas (*.geojson *.json *.kml *.shp *.gpkg *.gml);;All files (*)");
 }
 
-double polygonAreaM2(const geo::GeoPolygon& p) {
-    auto frame = geo::LocalFrame::forArea(p);
-    return frame ? geo::area(frame->toLocal(p)) : 0.0;
-}
-
 QString formatLonLat(const geo::LonLat& p) {
     return QStringLiteral("%1° %2, %3° %4")
         .arg(std::abs(p.lat), 0, 'f', 6)
@@ -632,7 +627,7 @@ int MainWindow::importAreas(const QString& path, ImportRole role, QString* error
     if (areaFromFile) {
         double best = -1;
         for (std::size_t i = 0; i < polys.size(); ++i) {
-            const double a = polygonAreaM2(polys[i].polygon);
+            const double a = geo::groundAreaM2(polys[i].polygon);
             if (a > best) {
                 best = a;
                 largest = i;
@@ -761,7 +756,6 @@ void MainWindow::buildPlanning() {
             tr("Waypoint files (*.plan *.waypoints *.gpx *.geojson *.json *.csv);;All files (*)"));
         if (!path.isEmpty()) openWaypointFile(path);
     });
-    Q_UNUSED(compareAct);
 
     m_plannerBox = new QComboBox;
     m_plannerBox->setObjectName(QStringLiteral("PlannerBox"));
@@ -964,12 +958,9 @@ int MainWindow::openWaypointFile(const QString& path, int assignTo, QString* err
             if (!r.aircraft.empty() && r.aircraft == name) return int(i);
         }
         // Formats without a vehicle name (.plan, .waypoints, .csv): the exported file is named after it
-        // (with the characters unsafe in file names replaced, as the export does).
+        // (with the characters unsafe in file names replaced, by the export's own rule).
         for (std::size_t i = 0; i < existing.size(); ++i) {
-            QString name = QString::fromStdString(existing[i].route.aircraft);
-            for (QChar& c : name)
-                if (!(c.isLetterOrNumber() || c == QLatin1Char('-') || c == QLatin1Char('_') || c == QLatin1Char('.')))
-                    c = QLatin1Char('_');
+            const QString name = QString::fromStdString(io::fileNameSafe(existing[i].route.aircraft));
             if (!name.isEmpty() && routes.size() == 1 && base.endsWith(name, Qt::CaseInsensitive)) return int(i);
         }
         if (m_interactive && !existing.empty()) {

@@ -4,6 +4,8 @@
 #include "app/cli/eval_charts.h"
 #include "app/cli/eval_survey.h"
 
+#include "core/mission/evaluation_report.h"
+#include "core/mission/planner_kinds.h"
 #include "core/plan/evaluation.h"
 
 #include <filesystem>
@@ -96,9 +98,10 @@ int runEval(const std::vector<std::string>& argv) {
         std::stringstream ss(*list);
         std::string name;
         while (std::getline(ss, name, ',')) {
-            const auto k = plan::parsePlannerKind(name);
+            const auto k = mission::gridPlannerFromId(name);
             if (!k)
-                return reportError("--planners: unknown planner '" + name + "' (use stride, raster or wavefront)");
+                return reportError("--planners: unknown planner '" + name + "' (use " + mission::gridPlannerIdList() +
+                                   ")");
             opt.planners.push_back(*k);
         }
         if (opt.planners.empty())
@@ -132,7 +135,7 @@ int runEval(const std::vector<std::string>& argv) {
         std::cerr << area->name << ": " << g->visitCount() << " cells, " << (runsN - runs0) << " runs\n";
     }
     const auto summary = plan::summarise(runs, bounds);
-    std::cout << plan::evalTable(summary);
+    std::cout << mission::evalTable(summary);
 
     if (const auto out = args->value("out")) {
         std::error_code ec;
@@ -142,7 +145,7 @@ int runEval(const std::vector<std::string>& argv) {
         const std::filesystem::path dir(*out);
         {
             std::ofstream f(dir / "eval.csv", std::ios::binary | std::ios::trunc);
-            f << plan::evalCsv(runs);
+            f << mission::evalCsv(runs);
             if (!f)
                 return reportError(makeError(ErrorCode::IoError, "cannot write " + (dir / "eval.csv").string()));
         }

@@ -1,5 +1,7 @@
 #include "app/cli/eval_charts.h"
 
+#include "core/mission/planner_kinds.h"
+
 #ifdef PF_CLI_HAS_QT
 #include <QColor>
 #include <QGuiApplication>
@@ -120,7 +122,7 @@ void drawLegend(QPainter& p, const QPointF& at, const std::vector<plan::PlannerK
     for (auto k : kinds) {
         p.fillRect(QRectF(at.x(), y + 3, 18, 10), plannerColour(k));
         p.setPen(Qt::black);
-        p.drawText(QRectF(at.x() + 24, y, 120, 16), Qt::AlignLeft | Qt::AlignVCenter, plan::plannerName(k));
+        p.drawText(QRectF(at.x() + 24, y, 120, 16), Qt::AlignLeft | Qt::AlignVCenter, mission::plannerKindInfo(k).id);
         y += 18;
     }
 }

@@ -3,6 +3,7 @@
 #include "core/io/area_import.h"
 #include "core/io/catalog.h"
 #include "core/io/mission_file.h"
+#include "core/mission/aircraft_naming.h"
 #include "core/mission/planner_kinds.h"
 
 #include <algorithm>
@@ -27,7 +28,6 @@ std::vector<OptionSpec> missionOptionSpecs() {
 namespace {
 
 constexpr double kDefaultAltitudeM = 100.0;
-const char* const kColours[] = {"#e6194b", "#3cb44b", "#4363d8", "#f58231", "#911eb4", "#42d4f4", "#f032e6"};
 
 std::string num(double v) {
     char buf[64];
@@ -168,12 +168,12 @@ Status applyMissionFlags(const Args& args, MissionInput& in) {
                                         [&](const auto& b) { return b.model == m.aircraft[i].model; });
         if (!aircraftFlags.empty()) {
             if (same > 1) {
-                int k = 0;
-                for (std::size_t j = 0; j <= i; ++j)
-                    k += m.aircraft[j].model == m.aircraft[i].model;
-                m.aircraft[i].name = m.aircraft[i].model + " #" + std::to_string(k);
+                std::vector<std::string> taken;
+                for (std::size_t j = 0; j < i; ++j)
+                    taken.push_back(m.aircraft[j].name);
+                m.aircraft[i].name = mission::numberedAircraftName(m.aircraft[i].model, taken);
             }
-            m.aircraft[i].colour = kColours[i % (sizeof kColours / sizeof kColours[0])];
+            m.aircraft[i].colour = mission::aircraftColour(i);
         }
     }
 

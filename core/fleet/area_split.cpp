@@ -1,5 +1,7 @@
 #include "core/fleet/area_split.h"
 
+#include "core/fleet/subarea_polygons.h"
+
 #include "core/geo/polygon_ops.h"
 #include "core/grid/grid.h"
 
@@ -28,12 +30,12 @@ Result<AreaSplit> splitArea(const geo::Polygon& area, const std::vector<geo::Pol
     auto g = grid::Grid::build(area, noFly, go);
     if (!g)
         return g.error();
-    out.base = BaseGrid::fromGrid(*g);
+    out.base = std::move(g).value();
     auto p = partitionCells(out.base, out.shares);
     if (!p)
         return p.error();
     out.partition = std::move(p).value();
-    const geo::MultiPolygon& admissible = g->admissible();
+    const geo::MultiPolygon& admissible = out.base.admissible();
     if (estimate) {
         auto rep = balanceByTime(out.base, out.partition,
                                  [&](int k, const std::vector<int>& cells) -> Result<double> {

@@ -3,7 +3,9 @@
 
 #include "core/fleet/capability.h"
 #include "core/fleet/partition.h"
+#include "core/fleet/time_balance.h"
 #include "core/geo/types.h"
+#include "core/grid/grid.h"
 #include "core/result.h"
 
 #include <functional>
@@ -26,7 +28,7 @@ using RegionTimeEstimator = std::function<Result<double>(int aircraft, const geo
 struct AreaSplit {
     double baseCellSizeM = 0.0;
     std::vector<double> shares;             // capability shares (paper 001, section V.A)
-    BaseGrid base;
+    grid::Grid base;                         // the base grid the partition shares out
     Partition partition;
     std::vector<geo::MultiPolygon> subareas; // per aircraft, clipped to the admissible area
     std::optional<BalanceReport> balance;    // when an estimator was given

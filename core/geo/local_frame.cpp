@@ -1,5 +1,7 @@
 #include "core/geo/local_frame.h"
 
+#include "core/geo/polygon_ops.h"
+
 #include <ogr_spatialref.h>
 
 #include <algorithm>
@@ -147,6 +149,13 @@ std::string LocalFrame::projString() const {
     std::snprintf(buf, sizeof buf, "+proj=tmerc +lat_0=%.9f +lon_0=%.9f +k=1 +x_0=0 +y_0=0 +datum=WGS84 +units=m",
                   m_origin.lat, m_origin.lon);
     return buf;
+}
+
+double groundAreaM2(const GeoPolygon& poly) {
+    if (poly.outer.size() < 3)
+        return 0.0;
+    auto frame = LocalFrame::forArea(poly);
+    return frame ? area(frame->toLocal(poly)) : 0.0;
 }
 
 } // namespace pf::geo

@@ -45,4 +45,8 @@ private:
     std::unique_ptr<Impl> m_impl;
 };
 
+// The ground area of a WGS84 polygon in m² (holes subtracted), measured in its own local frame
+// (forArea); 0 for fewer than three vertices. What the GUI shows as an area's or a zone's size.
+double groundAreaM2(const GeoPolygon& poly);
+
 } // namespace pf::geo

@@ -25,8 +25,6 @@ constexpr Dir kDirs[4] = {Dir::East, Dir::North, Dir::West, Dir::South};
 constexpr int kDirDx[4] = {1, 0, -1, 0};
 constexpr int kDirDy[4] = {0, 1, 0, -1};
 constexpr Dir opposite(Dir d) { return static_cast<Dir>((static_cast<int>(d) + 2) % 4); }
-constexpr Dir leftOf(Dir d) { return static_cast<Dir>((static_cast<int>(d) + 1) % 4); }
-constexpr Dir rightOf(Dir d) { return static_cast<Dir>((static_cast<int>(d) + 3) % 4); }
 
 // Conventions (see grid.cpp for the reasons):
 // - The grid frame is the local frame rotated by angleDeg (counter-clockwise from east) about the centre

@@ -1,5 +1,6 @@
 // The camera and aircraft catalog: reading resources/catalog.json and the user's own catalog.
 #include "core/io/catalog.h"
+#include "core/io/json_reader.h"
 #include "core/io/json_util.h"
 
 #include "core/io/area_import.h"
@@ -47,78 +48,11 @@ bool isFile(const std::string& path) {
     return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
 }
 
-// Reads the catalog's fields; the first problem becomes "<file>: <entry>: <field>: <what>".
-class CatalogReader {
+// The catalog's entries on top of the checked JSON reader; the first problem becomes
+// "<file>: <entry>: <field>: <what>".
+class CatalogReader : public detail::JsonReader {
 public:
-    explicit CatalogReader(std::string file) : m_file(std::move(file)) {}
-    bool failed() const { return m_error.has_value(); }
-    Error error() const { return *m_error; }
-
-    void fail(const std::string& where, const std::string& what) {
-        if (!m_error)
-            m_error = makeError(ErrorCode::ParseError, m_file + ": " + (where.empty() ? "" : where + ": ") + what);
-    }
-
-    static bool isNumber(const CPLJSONObject& o) {
-        const auto t = o.GetType();
-        return t == CPLJSONObject::Type::Integer || t == CPLJSONObject::Type::Long ||
-               t == CPLJSONObject::Type::Double;
-    }
-
-    double number(const CPLJSONObject& entry, const std::string& where, const char* key, bool required,
-                  double def = 0.0) {
-        CPLJSONObject o = entry.GetObj(key);
-        if (!o.IsValid() || o.GetType() == CPLJSONObject::Type::Null) {
-            if (required)
-                fail(where, std::string(key) + ": missing required field");
-            return def;
-        }
-        if (!isNumber(o)) {
-            fail(where, std::string(key) + ": expected a number");
-            return def;
-        }
-        const double v = o.ToDouble();
-        if (!std::isfinite(v))
-            fail(where, std::string(key) + ": expected a finite number");
-        return v;
-    }
-
-    std::string string(const CPLJSONObject& entry, const std::string& where, const char* key, bool required) {
-        CPLJSONObject o = entry.GetObj(key);
-        if (!o.IsValid() || o.GetType() == CPLJSONObject::Type::Null) {
-            if (required)
-                fail(where, std::string(key) + ": missing required field");
-            return "";
-        }
-        if (o.GetType() != CPLJSONObject::Type::String) {
-            fail(where, std::string(key) + ": expected a string");
-            return "";
-        }
-        return o.ToString();
-    }
-
-    int pixels(const CPLJSONObject& entry, const std::string& where, const char* key) {
-        const double v = number(entry, where, key, true);
-        if (!failed() && (v != std::floor(v) || v < 1 || v > 1'000'000))
-            fail(where, std::string(key) + ": expected a whole number of pixels");
-        return failed() ? 0 : static_cast<int>(v);
-    }
-
-    // A misspelt optional field (default_camer) would otherwise be dropped without a word.
-    void checkKeys(const CPLJSONObject& entry, const std::string& where, std::initializer_list<const char*> known) {
-        if (failed())
-            return;
-        for (const auto& child : entry.GetChildren()) {
-            const std::string key = child.GetName();
-            bool ok = key == "note";
-            for (const char* k : known)
-                ok = ok || key == k;
-            if (!ok) {
-                fail(where, key + ": unknown field");
-                return;
-            }
-        }
-    }
+    explicit CatalogReader(std::string file) : JsonReader(std::move(file), ": ") {}
 
     // "cameras[3] ("Sony RX1R II")" once the name is known.
     static std::string entryLabel(const char* list, int i, const std::string& name) {
@@ -126,49 +60,20 @@ public:
         return name.empty() ? s : s + " (\"" + name + "\")";
     }
 
-    sensor::Camera camera(const CPLJSONObject& o, int i) {
-        sensor::Camera c;
-        std::string where = entryLabel("cameras", i, "");
-        if (o.GetType() != CPLJSONObject::Type::Object) {
-            fail(where, "expected an object");
-            return c;
-        }
-        c.name = string(o, where, "name", true);
-        where = entryLabel("cameras", i, c.name);
-        c.sensorWidthMm = number(o, where, "sensor_width_mm", false);
-        c.sensorHeightMm = number(o, where, "sensor_height_mm", false);
-        c.focalLengthMm = number(o, where, "focal_length_mm", false);
-        c.hfovDeg = number(o, where, "hfov_deg", false);
-        c.vfovDeg = number(o, where, "vfov_deg", false);
-        c.imageWidthPx = pixels(o, where, "image_width_px");
-        c.imageHeightPx = pixels(o, where, "image_height_px");
-        checkKeys(o, where, {"name", "sensor_width_mm", "sensor_height_mm", "focal_length_mm", "hfov_deg", "vfov_deg",
-                             "image_width_px", "image_height_px"});
-        if (!failed()) {
-            if (c.name.empty())
-                fail(where, "name: must not be empty");
-            else if (auto s = sensor::validate(c); !s)
-                fail(where, s.error().message);
-        }
-        return c;
-    }
-
     fleet::AircraftSpec aircraft(const CPLJSONObject& o, int i) {
         fleet::AircraftSpec a;
         std::string where = entryLabel("aircraft", i, "");
-        if (o.GetType() != CPLJSONObject::Type::Object) {
-            fail(where, "expected an object");
+        if (!expectType(o, where, o.GetType() == CPLJSONObject::Type::Object, "an object"))
             return a;
-        }
-        a.name = string(o, where, "name", true);
+        a.name = string(o, where, "name", "", true);
         where = entryLabel("aircraft", i, a.name);
-        a.cruiseSpeedMps = number(o, where, "cruise_speed_mps", true);
-        a.turnRateDegS = number(o, where, "turn_rate_deg_s", true);
-        a.accelerationMps2 = number(o, where, "acceleration_mps2", false, a.accelerationMps2);
-        a.enduranceMin = number(o, where, "endurance_min", true);
-        a.maxAltitudeM = number(o, where, "max_altitude_m", true);
-        a.defaultCamera = string(o, where, "default_camera", false);
-        a.notes = string(o, where, "note", false);
+        a.cruiseSpeedMps = number(o, where, "cruise_speed_mps", 0.0, true);
+        a.turnRateDegS = number(o, where, "turn_rate_deg_s", 0.0, true);
+        a.accelerationMps2 = number(o, where, "acceleration_mps2", a.accelerationMps2);
+        a.enduranceMin = number(o, where, "endurance_min", 0.0, true);
+        a.maxAltitudeM = number(o, where, "max_altitude_m", 0.0, true);
+        a.defaultCamera = string(o, where, "default_camera", "");
+        a.notes = string(o, where, "note", "");
         checkKeys(o, where, {"name", "cruise_speed_mps", "turn_rate_deg_s", "acceleration_mps2", "endurance_min",
                              "max_altitude_m", "default_camera"});
         if (failed())
@@ -207,14 +112,10 @@ public:
             CPLJSONObject o = root.GetObj(list);
             if (!o.IsValid())
                 continue; // a user catalog may hold only cameras or only aircraft
-            if (o.GetType() != CPLJSONObject::Type::Array) {
-                fail(list, "expected an array");
-                return cat;
-            }
-            CPLJSONArray a = o.ToArray();
+            CPLJSONArray a = array(o, list);
             for (int i = 0; i < a.Size() && !failed(); ++i) {
                 if (std::strcmp(list, "cameras") == 0) {
-                    auto c = camera(a[i], i);
+                    auto c = camera(a[i], entryLabel(list, i, ""), true);
                     if (!failed() && cat.findCamera(c.name))
                         fail(entryLabel(list, i, c.name), "a camera with this name is listed twice");
                     cat.cameras.push_back(std::move(c));
@@ -228,10 +129,6 @@ public:
         }
         return cat;
     }
-
-private:
-    std::string m_file;
-    std::optional<Error> m_error;
 };
 
 // The bundled data directories, most specific first.
@@ -288,16 +185,9 @@ Result<Catalog> loadCatalog(const std::string& path) {
         return makeError(ErrorCode::IoError, path + ": cannot open the catalog: " + std::strerror(errno));
     std::ostringstream ss;
     ss << in.rdbuf();
-    std::string text = ss.str();
-    if (text.size() >= 3 && text.compare(0, 3, "\xEF\xBB\xBF") == 0)
-        text.erase(0, 3); // a UTF-8 byte-order mark, as Windows editors write
     CPLJSONDocument doc;
-    {
-        detail::GdalErrorScope errors;
-        if (!doc.LoadMemory(text))
-            return makeError(ErrorCode::ParseError,
-                             path + ": not valid JSON: " + detail::describeJsonError(text, errors.firstError()));
-    }
+    if (auto st = detail::loadJsonText(doc, ss.str(), path); !st)
+        return st.error();
     CatalogReader reader(path);
     Catalog cat = reader.catalog(doc.GetRoot());
     if (reader.failed())

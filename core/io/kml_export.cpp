@@ -2,6 +2,7 @@
 
 #include "core/geo/geodesic.h"
 #include "core/io/waypoint_format_util.h"
+#include "core/mission/aircraft_naming.h"
 
 #include <ogr_spatialref.h>
 #include <ogrsf_frmts.h>
@@ -18,9 +19,6 @@ constexpr double kPi = 3.14159265358979323846;
 
 using detail::FeaturePtr;
 
-// Colours for routes whose aircraft has no valid colour of its own.
-const char* const kPalette[] = {"#e6194b", "#3cb44b", "#4363d8", "#f58231",
-                                "#911eb4", "#42d4f4", "#f032e6"};
 
 bool isColour(const std::string& c) {
     if (c.size() != 7 || c[0] != '#')
@@ -170,7 +168,7 @@ Status writeKml(const ExportContext& ctx, const std::vector<std::size_t>& routeI
         const auto* aircraft = ctx.aircraftFor(ri);
         const std::string colour = aircraft && isColour(aircraft->colour)
                                        ? aircraft->colour
-                                       : kPalette[n % (sizeof kPalette / sizeof *kPalette)];
+                                       : mission::aircraftColour(n); // no valid colour of its own
         ++n;
         if (auto st = w.folder(label); !st)
             return st;

@@ -20,9 +20,4 @@ Status checkWritable(const mission::Mission& m, const std::string& path);
 // Writes atomically: to a temporary file beside `path`, then renames it over `path`.
 Status writeMissionFile(const mission::Mission& m, const std::string& path);
 
-namespace detail {
-// Turns GDAL's JSON parser message ("... (at offset 11)") into words with a line and column.
-std::string describeJsonError(const std::string& text, const std::string& gdalMessage);
-} // namespace detail
-
 } // namespace pf::io

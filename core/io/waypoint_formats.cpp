@@ -210,12 +210,16 @@ Status exportCombined(const ExportContext& original, WaypointFormat format, cons
     }
 }
 
-std::string routeFileName(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat format) {
-    std::string name = ctx.routeLabel(routeIndex);
-    for (char& c : name)
+std::string fileNameSafe(const std::string& name) {
+    std::string out = name;
+    for (char& c : out)
         if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.'))
             c = '_';
-    return name + formatInfo(format).extension;
+    return out;
+}
+
+std::string routeFileName(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat format) {
+    return fileNameSafe(ctx.routeLabel(routeIndex)) + formatInfo(format).extension;
 }
 
 Result<std::vector<std::string>> exportAll(const ExportContext& ctx, WaypointFormat format,

@@ -65,7 +65,10 @@ Status exportRoute(const ExportContext& ctx, std::size_t routeIndex, WaypointFor
 Status exportCombined(const ExportContext& ctx, WaypointFormat format, const std::string& path,
                       const ExportOptions& options = {});
 
-// "<aircraft>.<ext>" with characters unsafe in file names replaced by '_' ("Route N" if unnamed).
+// `name` with every character but ASCII letters, digits, '-', '_' and '.' replaced by '_' (byte by
+// byte, so a non-ASCII letter becomes one '_' per UTF-8 byte): the rule of every exported file name.
+std::string fileNameSafe(const std::string& name);
+// "<aircraft>.<ext>" by fileNameSafe ("Route N" if unnamed).
 std::string routeFileName(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat format);
 // Writes "<dir>/<stem>-<aircraft>.<ext>" per route, plus "<dir>/<stem>.<ext>" with every route when
 // the format allows; returns the paths written (and the notes in `notes` if given).

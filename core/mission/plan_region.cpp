@@ -2,6 +2,7 @@
 
 #include "core/mission/planner_kinds.h"
 #include "core/mission/validation.h"
+#include "core/plan/best_candidate.h"
 #include "core/plan/lawnmower_planner.h"
 #include "core/plan/planner.h"
 #include "core/plan/sweep_planner.h"
@@ -20,15 +21,9 @@ namespace pf::mission {
 
 namespace {
 
+// The grid planner of a kind (the stride planner for the kinds that are not grid planners).
 plan::PlannerKind toPlanKind(PlannerKind k) {
-    switch (k) {
-    case PlannerKind::Raster:
-        return plan::PlannerKind::Raster;
-    case PlannerKind::Wavefront:
-        return plan::PlannerKind::Wavefront;
-    default:
-        return plan::PlannerKind::Stride;
-    }
+    return plannerKindInfo(k).gridPlanner.value_or(plan::PlannerKind::Stride);
 }
 
 double normaliseAngle(double a) {
@@ -129,8 +124,8 @@ Result<AircraftPlan> gridRegion(const geo::MultiPolygon& region, const std::vect
     std::optional<Error> firstError;
     int tried = 0;
     auto earlier = [](const plan::PathMetrics& x, const plan::PathMetrics& y) {
-        return x.estimatedTimeS < y.estimatedTimeS - 1e-9 ||
-               (std::fabs(x.estimatedTimeS - y.estimatedTimeS) <= 1e-9 && x.turns < y.turns);
+        return plan::sooner(x.estimatedTimeS, y.estimatedTimeS) ||
+               (plan::sameTime(x.estimatedTimeS, y.estimatedTimeS) && x.turns < y.turns);
     };
     for (double angle : angles) {
         grid::GridOptions gopt;
@@ -175,16 +170,14 @@ Result<AircraftPlan> gridRegion(const geo::MultiPolygon& region, const std::vect
         return makeError(e.code, a.who + ": " + e.message);
     }
     std::size_t chosen = 0;
-    double chosenT = std::numeric_limits<double>::infinity();
+    auto soonest = plan::soonestTime(); // on a tie the cell path flown sooner wins
     for (std::size_t i = 0; i < best.size(); ++i) {
         AircraftPlan& p = best[i];
         p.localWaypoints = route::photoWaypoints(p.grid, p.path, a.fp);
         route::straightenTransits(p.grid, p.localWaypoints);
         const double t = aloneRouteTimeS(surveyPart(p.localWaypoints), a.cfg, home, landing);
-        if (t < chosenT - 1e-9) {
-            chosenT = t;
+        if (soonest.offer(t))
             chosen = i;
-        }
     }
     AircraftPlan p = std::move(best[chosen]);
     p.anglesTried = tried;
@@ -352,7 +345,7 @@ Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vect
         // survey made safe (the detours a grid planner's jumps need) and the safe ways from home and back.
         const route::SafePathFinder finder(route::NoFlyField(noFly, options.safetyMarginM));
         std::string note;
-        double bestT = std::numeric_limits<double>::infinity();
+        auto soonest = plan::soonestTime(); // on a tie the planner listed first wins
         std::optional<Error> firstError;
         for (PlannerKind k : {PlannerKind::Sweep, PlannerKind::Stride, PlannerKind::Raster}) {
             auto p = planOne(region, noFly, *a, k, options, frame, home, landing);
@@ -365,10 +358,8 @@ Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vect
             }
             const double t = flownTimeS(surveyPart(p->localWaypoints), aircraft, home, landing, finder);
             note += std::string(note.empty() ? "" : ", ") + id + " " + minutes(t);
-            if (t < bestT - 1e-9) {
-                bestT = t;
+            if (soonest.offer(t))
                 out = std::move(p);
-            }
         }
         if (!out)
             return firstError ? *firstError : out.error();

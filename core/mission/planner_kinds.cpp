@@ -5,18 +5,22 @@ namespace pf::mission {
 const std::vector<PlannerKindInfo>& plannerKinds() {
     static const std::vector<PlannerKindInfo> kinds = {
         {PlannerKind::Auto, "auto", "Auto",
-         "per aircraft the plan that flies soonest of sweep, stride and raster (the default)"},
+         "per aircraft the plan that flies soonest of sweep, stride and raster (the default)", std::nullopt},
         {PlannerKind::Sweep, "sweep", "Sweep",
-         "straight lanes over the exact area, cell by cell round the no-fly zones, cells ordered by flight time"},
+         "straight lanes over the exact area, cell by cell round the no-fly zones, cells ordered by flight time",
+         std::nullopt},
         {PlannerKind::Stride, "stride", "Stride",
-         "long straight strides that follow the area's limits, few turns, no jumps"},
+         "long straight strides that follow the area's limits, few turns, no jumps", plan::PlannerKind::Stride},
         {PlannerKind::Raster, "raster", "Raster",
-         "row or column back-and-forth over the grid (the baseline), jumps where a row is cut"},
+         "row or column back-and-forth over the grid (the baseline), jumps where a row is cut",
+         plan::PlannerKind::Raster},
         {PlannerKind::Wavefront, "wavefront", "Wavefront",
-         "uphill on a distance map from the landing cell, 8-connected, the quickest of 8 candidates"},
+         "uphill on a distance map from the landing cell, 8-connected, the quickest of 8 candidates",
+         plan::PlannerKind::Wavefront},
         {PlannerKind::Lawnmower, "lawnmower", "Lawnmower (Survey)",
          "what a ground station's Survey flies: one angle, straight over the no-fly zones (a yardstick, "
-         "its crossings fail the route check)"},
+         "its crossings fail the route check)",
+         std::nullopt},
     };
     return kinds;
 }
@@ -35,12 +39,45 @@ std::optional<PlannerKind> plannerKindFromId(const std::string& id) {
     return std::nullopt;
 }
 
-std::string plannerKindIdList() {
-    const auto& kinds = plannerKinds();
+namespace {
+
+// "a, b or c".
+std::string idList(const std::vector<const char*>& ids) {
     std::string s;
-    for (std::size_t i = 0; i < kinds.size(); ++i)
-        s += std::string(i == 0 ? "" : i + 1 == kinds.size() ? " or " : ", ") + kinds[i].id;
+    for (std::size_t i = 0; i < ids.size(); ++i)
+        s += std::string(i == 0 ? "" : i + 1 == ids.size() ? " or " : ", ") + ids[i];
     return s;
+}
+
+} // namespace
+
+std::string plannerKindIdList() {
+    std::vector<const char*> ids;
+    for (const auto& k : plannerKinds())
+        ids.push_back(k.id);
+    return idList(ids);
+}
+
+const PlannerKindInfo& plannerKindInfo(plan::PlannerKind kind) {
+    for (const auto& k : plannerKinds())
+        if (k.gridPlanner == kind)
+            return k;
+    return plannerKindInfo(PlannerKind::Stride);
+}
+
+std::optional<plan::PlannerKind> gridPlannerFromId(const std::string& id) {
+    for (const auto& k : plannerKinds())
+        if (k.gridPlanner && id == k.id)
+            return k.gridPlanner;
+    return std::nullopt;
+}
+
+std::string gridPlannerIdList() {
+    std::vector<const char*> ids;
+    for (const auto& k : plannerKinds())
+        if (k.gridPlanner)
+            ids.push_back(k.id);
+    return idList(ids);
 }
 
 } // namespace pf::mission

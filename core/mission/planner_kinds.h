@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/mission/mission.h"
+#include "core/plan/planner.h"
 
 #include <optional>
 #include <string>
@@ -15,13 +16,21 @@ struct PlannerKindInfo {
     const char* id;      // in mission files and on the command line: "stride"
     const char* label;   // shown to the user: "Stride"
     const char* summary; // one sentence for tool tips and help
+    // The grid coverage planner behind the kind (plan::planCoverage), for stride, raster, wavefront.
+    std::optional<plan::PlannerKind> gridPlanner;
 };
 
 // Every planner kind, in the order lists show them.
 const std::vector<PlannerKindInfo>& plannerKinds();
 const PlannerKindInfo& plannerKindInfo(PlannerKind kind);
 std::optional<PlannerKind> plannerKindFromId(const std::string& id);
-// "stride, raster or wavefront", for messages that list what is accepted.
+// "auto, sweep, stride, raster, wavefront or lawnmower", for messages that list what is accepted.
 std::string plannerKindIdList();
+
+// The same table seen from the grid planners (plan::PlannerKind): their row, their name ("stride") on
+// the command line of `photoflight-cli eval` and in its reports, and the list "stride, raster or wavefront".
+const PlannerKindInfo& plannerKindInfo(plan::PlannerKind kind);
+std::optional<plan::PlannerKind> gridPlannerFromId(const std::string& id);
+std::string gridPlannerIdList();
 
 } // namespace pf::mission

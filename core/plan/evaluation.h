@@ -57,12 +57,4 @@ struct EvalSummary {
 };
 std::vector<EvalSummary> summarise(const std::vector<EvalRun>& runs, const std::vector<int>& lowerBounds = {});
 
-// One line per run: area,planner,start_cell,start_col,start_row,cells,visited,turns,turn_angle_deg,
-// distance_m,path_length_m,jumps,revisits,estimated_time_s,planning_ms.
-std::string evalCsv(const std::vector<EvalRun>& runs);
-
-// The summary table (one row per area and planner) and, when both are present, the ratios of the
-// stride planner to the raster baseline per area and averaged over the areas.
-std::string evalTable(const std::vector<EvalSummary>& summary);
-
 } // namespace pf::plan

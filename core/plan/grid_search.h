@@ -9,8 +9,17 @@
 
 namespace pf::plan {
 
-// Offset of the 4-neighbour in direction d, as an index difference (valid whenever canMove is true).
-inline int dirOffset(const grid::Grid& g, int d) { return grid::kDirDx[d] + grid::kDirDy[d] * g.cols(); }
+// The planners' moves: 0-3 are the grid's 4-moves (grid::Dir: E, N, W, S), 4-7 the diagonals
+// (NE, NW, SW, SE) that 8-connected planners add. Move k + 2 (mod 4 within each half) is k reversed.
+constexpr int kMoveDx[8] = {1, 0, -1, 0, 1, -1, -1, 1};
+constexpr int kMoveDy[8] = {0, 1, 0, -1, 1, 1, -1, -1};
+static_assert(kMoveDx[0] == grid::kDirDx[0] && kMoveDx[1] == grid::kDirDx[1] && kMoveDx[2] == grid::kDirDx[2] &&
+                  kMoveDx[3] == grid::kDirDx[3] && kMoveDy[0] == grid::kDirDy[0] && kMoveDy[1] == grid::kDirDy[1] &&
+                  kMoveDy[2] == grid::kDirDy[2] && kMoveDy[3] == grid::kDirDy[3],
+              "the first four moves are the grid's directions");
+
+// Offset of move d (0-7), as an index difference (valid whenever the move is allowed).
+inline int dirOffset(const grid::Grid& g, int d) { return kMoveDx[d] + kMoveDy[d] * g.cols(); }
 
 // Reusable scratch for repeated searches on one grid. Per-cell stamps avoid clearing arrays between
 // searches, so a search costs only what it explores: planners run thousands of small searches on

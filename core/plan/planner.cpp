@@ -9,25 +9,6 @@
 
 namespace pf::plan {
 
-const char* plannerName(PlannerKind kind) {
-    switch (kind) {
-    case PlannerKind::Stride:
-        return "stride";
-    case PlannerKind::Raster:
-        return "raster";
-    case PlannerKind::Wavefront:
-        return "wavefront";
-    }
-    return "?";
-}
-
-std::optional<PlannerKind> parsePlannerKind(const std::string& name) {
-    for (PlannerKind k : {PlannerKind::Stride, PlannerKind::Raster, PlannerKind::Wavefront})
-        if (name == plannerName(k))
-            return k;
-    return std::nullopt;
-}
-
 namespace {
 
 Status checkCell(const grid::Grid& g, int cell, const char* what) {

@@ -11,11 +11,9 @@
 
 namespace pf::plan {
 
+// The grid coverage planners; their names and descriptions are in the one table of planner kinds
+// (core/mission/planner_kinds).
 enum class PlannerKind { Stride, Raster, Wavefront };
-
-// Name used on the command line and in reports ("stride", "raster", "wavefront").
-const char* plannerName(PlannerKind kind);
-std::optional<PlannerKind> parsePlannerKind(const std::string& name);
 
 struct CoverageRequest {
     // Where the coverage path begins. -1: the take-off cell if set, else the first visitable cell in

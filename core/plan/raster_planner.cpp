@@ -4,6 +4,7 @@
 #include "core/plan/stride_planner.h"
 
 #include "core/plan/grid_search.h"
+#include "core/plan/nearest_cell.h"
 
 #include <climits>
 #include <cstdlib>
@@ -12,43 +13,6 @@
 namespace pf::plan {
 
 namespace {
-
-// The nearest visitable cell not yet `done` to cell c, by straight-line distance between cell centres,
-// then lowest index; -1 if none. Scans square rings of growing radius around c and stops once a ring
-// lies farther away than the best cell found, so a jump costs about the square of its length.
-int nearestFree(const grid::Grid& g, const std::vector<std::uint8_t>& done, int c) {
-    const int c0 = g.col(c), r0 = g.row(c);
-    const int maxK = std::max(g.cols(), g.rows());
-    long best2 = LONG_MAX;
-    int best = -1;
-    auto test = [&](int x, int y) {
-        const int i = g.index(x, y);
-        if (!g.needsVisit(i) || done[i])
-            return;
-        const long d2 = static_cast<long>(x - c0) * (x - c0) + static_cast<long>(y - r0) * (y - r0);
-        if (d2 < best2 || (d2 == best2 && i < best)) {
-            best2 = d2;
-            best = i;
-        }
-    };
-    for (int k = 1; k <= maxK && static_cast<long>(k) * k <= best2; ++k) {
-        const int x0 = std::max(0, c0 - k), x1 = std::min(g.cols() - 1, c0 + k);
-        if (r0 - k >= 0)
-            for (int x = x0; x <= x1; ++x)
-                test(x, r0 - k);
-        if (r0 + k < g.rows())
-            for (int x = x0; x <= x1; ++x)
-                test(x, r0 + k);
-        const int y0 = std::max(0, r0 - k + 1), y1 = std::min(g.rows() - 1, r0 + k - 1);
-        if (c0 - k >= 0)
-            for (int y = y0; y <= y1; ++y)
-                test(c0 - k, y);
-        if (c0 + k < g.cols())
-            for (int y = y0; y <= y1; ++y)
-                test(c0 + k, y);
-    }
-    return best;
-}
 
 } // namespace
 
@@ -122,7 +86,7 @@ CellPath rasterWalk(const grid::Grid& g, int start, bool byColumns) {
         }
         // Dead end: every neighbour is visited. The original algorithm had no safe path to the next
         // free cell and jumped to it.
-        cur = nearestFree(g, done, cur);
+        cur = nearestCell(g, cur, [&](int i) { return !done[i]; }, NearestBy::CellCentre);
         if (cur < 0)
             break; // cannot happen: remaining > 0 means a free cell exists
         visit(cur);

@@ -1,6 +1,8 @@
 #include "core/plan/stride_planner.h"
 
+#include "core/plan/best_candidate.h"
 #include "core/plan/grid_search.h"
+#include "core/plan/nearest_cell.h"
 #include "core/plan/metrics.h"
 
 #include <algorithm>
@@ -253,7 +255,7 @@ private:
         } else {
             // No allowed move leads to the remaining cells: they lie in a part of the area the grid's
             // moves do not connect. Jump to the nearest one; the route stage plans that transit.
-            target = nearestUnvisited(cur);
+            target = nearestCell(m_g, cur, [this](int c) { return !m_visited[c]; });
             m_targets.clear();
             ++m_path.jumps;
         }
@@ -274,22 +276,6 @@ private:
             if (m_g.canMove(a, static_cast<Dir>(d)) && a + dirOffset(m_g, d) == b)
                 return d;
         return -1;
-    }
-
-    int nearestUnvisited(int cur) const {
-        const geo::Vec2 p = m_g.flightPosition(cur);
-        int best = -1;
-        double bestD = std::numeric_limits<double>::infinity();
-        for (int i = 0; i < m_g.cellCount(); ++i) {
-            if (m_visited[i] || !m_g.needsVisit(i))
-                continue;
-            const double d = (m_g.flightPosition(i) - p).squaredNorm();
-            if (d < bestD) {
-                bestD = d;
-                best = i;
-            }
-        }
-        return best;
     }
 
     // The partition rule. Cells just visited can only split the free region if their free neighbours
@@ -668,18 +654,19 @@ Result<CellPath> planStrideVariant(const Grid& g, const CoverageRequest& req, co
 
 Result<CellPath> planStride(const Grid& g, const CoverageRequest& req, StrideTrace* trace, const StrideChoice& choice) {
     std::optional<CellPath> best;
-    PathMetrics bestM;
     MetricsOptions mo;
     mo.turnLowerBound = false;
     mo.time = choice.time;
-    auto better = [&](const PathMetrics& m) {
+    auto better = [&](const PathMetrics& m, const PathMetrics& kept) {
         if (choice.byTime) {
-            if (std::abs(m.estimatedTimeS - bestM.estimatedTimeS) > 1e-9)
-                return m.estimatedTimeS < bestM.estimatedTimeS;
-            return m.turns < bestM.turns;
+            if (!sameTime(m.estimatedTimeS, kept.estimatedTimeS))
+                return sooner(m.estimatedTimeS, kept.estimatedTimeS);
+            return m.turns < kept.turns;
         }
-        return m.turns < bestM.turns || (m.turns == bestM.turns && m.pathLengthM < bestM.pathLengthM);
+        return m.turns < kept.turns || (m.turns == kept.turns && m.pathLengthM < kept.pathLengthM);
     };
+    // The variants in strideVariants' order: on a tie the paper's rules (the first) win.
+    BestCandidate<PathMetrics, decltype(better)> keep(better);
     auto start = resolveStart(g, req);
     if (!start)
         return start.error();
@@ -689,9 +676,8 @@ Result<CellPath> planStride(const Grid& g, const CoverageRequest& req, StrideTra
         if (!p)
             return p.error();
         const PathMetrics m = computeMetrics(g, *p, mo);
-        if (!best || better(m)) {
+        if (keep.offer(m)) {
             best = std::move(*p);
-            bestM = m;
             if (trace)
                 *trace = std::move(t);
         }

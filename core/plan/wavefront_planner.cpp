@@ -1,6 +1,9 @@
 #include "core/plan/wavefront_planner.h"
 
+#include "core/plan/best_candidate.h"
+#include "core/plan/grid_search.h"
 #include "core/plan/metrics.h"
+#include "core/plan/nearest_cell.h"
 #include "core/plan/stride_planner.h"
 
 #include <algorithm>
@@ -11,10 +14,6 @@
 namespace pf::plan {
 
 namespace {
-
-// Moves in this order: E, N, W, S, NE, NW, SW, SE.
-constexpr int kDx[8] = {1, 0, -1, 0, 1, -1, -1, 1};
-constexpr int kDy[8] = {0, 1, 0, -1, 1, 1, -1, -1};
 
 // The moves of one grid: 4-moves from the grid, diagonal moves checked once for safety and cached.
 class Moves {
@@ -27,7 +26,7 @@ public:
             if (!g.needsVisit(i))
                 continue;
             for (int k = 4; k < 8; ++k) {
-                const int c = g.col(i) + kDx[k], r = g.row(i) + kDy[k];
+                const int c = g.col(i) + kMoveDx[k], r = g.row(i) + kMoveDy[k];
                 if (!g.inBounds(c, r))
                     continue;
                 const int j = g.index(c, r);
@@ -46,8 +45,8 @@ public:
     // Neighbour reached by move k, or -1 if the move is not allowed.
     int to(int i, int k) const {
         if (k < 4)
-            return m_g.canMove(i, static_cast<grid::Dir>(k)) ? i + kDx[k] + kDy[k] * m_g.cols() : -1;
-        return ((m_diag[i] >> (k - 4)) & 1u) ? i + kDx[k] + kDy[k] * m_g.cols() : -1;
+            return m_g.canMove(i, static_cast<grid::Dir>(k)) ? i + dirOffset(m_g, k) : -1;
+        return ((m_diag[i] >> (k - 4)) & 1u) ? i + dirOffset(m_g, k) : -1;
     }
 
 private:
@@ -59,7 +58,7 @@ private:
 double turnBetween(int k1, int k2) {
     if (k1 < 0)
         return 0.0;
-    const double a1 = std::atan2(kDy[k1], kDx[k1]), a2 = std::atan2(kDy[k2], kDx[k2]);
+    const double a1 = std::atan2(kMoveDy[k1], kMoveDx[k1]), a2 = std::atan2(kMoveDy[k2], kMoveDx[k2]);
     double d = std::fabs(a1 - a2);
     if (d > M_PI)
         d = 2 * M_PI - d;
@@ -113,16 +112,7 @@ public:
                 // Dead end: shortest safe path to the nearest unvisited cell.
                 const std::vector<int> p = pathToUnvisited(cur, visited);
                 if (p.empty()) { // a part no move reaches: jump to its nearest cell
-                    int bestCell = -1;
-                    double bestD = std::numeric_limits<double>::infinity();
-                    for (int i = 0; i < m_g.cellCount(); ++i)
-                        if (m_g.needsVisit(i) && !visited[i]) {
-                            const double d = (m_g.flightPosition(i) - m_g.flightPosition(cur)).squaredNorm();
-                            if (d < bestD) {
-                                bestD = d;
-                                bestCell = i;
-                            }
-                        }
+                    const int bestCell = nearestCell(m_g, cur, [&](int i) { return !visited[i]; });
                     ++path.jumps;
                     visit(bestCell, false);
                     cur = bestCell;
@@ -171,7 +161,7 @@ private:
                 m_from[n] = static_cast<std::uint8_t>(k);
                 if (!visited[n]) {
                     std::vector<int> p;
-                    for (int x = n; x != from; x -= kDx[m_from[x]] + kDy[m_from[x]] * m_g.cols())
+                    for (int x = n; x != from; x -= dirOffset(m_g, m_from[x]))
                         p.push_back(x);
                     return std::vector<int>(p.rbegin(), p.rend());
                 }
@@ -233,10 +223,12 @@ Result<CellPath> planWavefront(const grid::Grid& g, const CoverageRequest& req, 
 
     int ties = 0;
     CellPath best = ascent.run(*start, {}, &ties);
-    double bestT = computeMetrics(g, best, mo).estimatedTimeS;
+    // The path without branching first: on a tie it wins.
+    BestCandidate<double, bool (*)(double, double)> keep(&sooner);
+    keep.offer(computeMetrics(g, best, mo).estimatedTimeS);
     if (trace) {
         trace->tiePoints = ties;
-        trace->candidateTimes.assign(1, bestT);
+        trace->candidateTimes.assign(1, keep.score());
         trace->chosen = 0;
     }
     // Further candidates branch at recorded ties spread over the first path (early ties change the
@@ -248,11 +240,10 @@ Result<CellPath> planWavefront(const grid::Grid& g, const CoverageRequest& req, 
         const double t = computeMetrics(g, cand, mo).estimatedTimeS;
         if (trace)
             trace->candidateTimes.push_back(t);
-        if (t < bestT) {
-            bestT = t;
+        if (keep.offer(t)) {
             best = std::move(cand);
             if (trace)
-                trace->chosen = j + 1;
+                trace->chosen = keep.index();
         }
     }
     return withTakeoffAndLanding(g, req, *start, std::move(best));

@@ -2,6 +2,8 @@
 // several aircraft (time and makespan), coverage check, detours.
 #include "core/fleet/capability.h"
 #include "core/fleet/partition.h"
+#include "core/fleet/subarea_polygons.h"
+#include "core/fleet/time_balance.h"
 #include "core/geo/local_frame.h"
 #include "core/geo/polygon_ops.h"
 #include "core/grid/grid.h"
@@ -26,7 +28,7 @@ using namespace pf;
 namespace {
 
 // A square mask with notches and holes, reduced to nothing fancy: big enough to time the partition.
-fleet::BaseGrid bigMask(int n, unsigned seed) {
+grid::Grid bigMask(int n, unsigned seed) {
     std::mt19937 rng(seed);
     std::vector<std::uint8_t> mask(static_cast<std::size_t>(n * n), 1);
     auto cut = [&](int x0, int y0, int w, int h) {
@@ -39,7 +41,7 @@ fleet::BaseGrid bigMask(int n, unsigned seed) {
     std::uniform_int_distribution<int> pos(n / 8, n - n / 4);
     for (int i = 0; i < 6; ++i)        // holes
         cut(pos(rng), pos(rng), n / 16 + 1, n / 12 + 1);
-    return fleet::BaseGrid::fromMask(n, n, mask, 10.0);
+    return grid::Grid::fromMask(n, n, mask, 10.0);
 }
 
 void BM_PartitionCells(benchmark::State& state) {
@@ -49,7 +51,7 @@ void BM_PartitionCells(benchmark::State& state) {
         auto p = fleet::partitionCells(g, shares);
         benchmark::DoNotOptimize(p);
     }
-    state.counters["cells"] = static_cast<double>(std::accumulate(g.active.begin(), g.active.end(), 0));
+    state.counters["cells"] = static_cast<double>(g.visitCount());
 }
 BENCHMARK(BM_PartitionCells)->Arg(40)->Arg(120)->Arg(300)->Unit(benchmark::kMillisecond);
 
@@ -120,7 +122,7 @@ void BM_BalanceDemoWithStridePlanner(benchmark::State& state) {
     go.cellSize = base;
     go.safetyMarginM = 5;
     auto g = grid::Grid::build(d.area, d.noFly, go);
-    const auto b = fleet::BaseGrid::fromGrid(*g);
+    const grid::Grid& b = *g;
     mission::PlannerOptions po;
     po.gridAngleDeg = 0.0;
     po.safetyMarginM = 5;

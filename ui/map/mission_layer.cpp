@@ -79,12 +79,6 @@ std::optional<QPointF> labelPoint(const QVector<QPolygonF>& rings, const QVector
     return best;
 }
 
-double groundArea(const geo::GeoPolygon& poly) {
-    auto frame = geo::LocalFrame::forArea(poly);
-    if (!frame) return 0.0;
-    return geo::area(frame->toLocal(poly));
-}
-
 } // namespace
 
 // ---------------------------------------------------------------- ShapeItem
@@ -348,7 +342,7 @@ void MissionLayer::rebuild() {
         const QString problem = shapeProblem(m.area, tr("the area"));
         m_area->setProblem(problem);
         if (!problem.isEmpty()) problems << problem;
-        m_area->setLabel(problem.isEmpty() ? tr("Area · %1").arg(formatArea(groundArea(m.area))) : tr("Area (invalid)"));
+        m_area->setLabel(problem.isEmpty() ? tr("Area · %1").arg(formatArea(geo::groundAreaM2(m.area))) : tr("Area (invalid)"));
         QVector<QPolygonF> zones;
         for (std::size_t i = 0; i < m.noFlyZones.size(); ++i) zones << toScene(m.noFlyZones[i].polygon.outer);
         m_area->setLabelAnchor(labelPoint(sceneRings(ShapeRef::area()), zones));

@@ -1,6 +1,7 @@
 #include "ui/map/plan_layer.h"
 
 #include "core/geo/local_frame.h"
+#include "core/mission/aircraft_naming.h"
 #include "ui/geo_adapter.h"
 #include "ui/mission_document.h"
 #include "ui/planning/plan_controller.h"
@@ -23,9 +24,7 @@ QColor colourFromHex(const std::string& hex, int fallbackIndex) {
     QColor c(QString::fromStdString(hex));
     if (c.isValid())
         return c;
-    static const char* palette[] = {"#e6194b", "#3cb44b", "#4363d8",
-                                    "#f58231", "#911eb4", "#42d4f4"};
-    return QColor(palette[fallbackIndex % 6]);
+    return QColor(QString::fromStdString(mission::aircraftColour(static_cast<std::size_t>(std::max(0, fallbackIndex)))));
 }
 
 QPainterPath ringsPath(const geo::MultiPolygon& polys, const geo::LocalFrame& frame) {

@@ -1,5 +1,6 @@
 #include "ui/panels/aircraft_panel.h"
 
+#include "core/mission/aircraft_naming.h"
 #include "core/mission/validation.h"
 #include "core/sensor/camera.h"
 #include "ui/commands/add_aircraft_command.h"
@@ -26,9 +27,6 @@
 namespace pf::ui {
 
 namespace {
-
-// Distinct, colour-blind-friendly path colours for successive aircraft.
-const char* const kColours[] = {"#e6194b", "#3cb44b", "#4363d8", "#f58231", "#911eb4", "#42d4f4", "#f032e6", "#9a6324"};
 
 QIcon swatch(const QString& colour) {
     QPixmap pm(14, 14);
@@ -271,17 +269,13 @@ void AircraftPanel::setColour(const QColor& colour) {
 }
 
 QString AircraftPanel::nextName(const QString& base) const {
-    for (int n = 1;; ++n) {
-        const QString candidate = QStringLiteral("%1 #%2").arg(base).arg(n);
-        bool used = false;
-        for (const auto& a : m_doc->mission().aircraft) used = used || QString::fromStdString(a.name) == candidate;
-        if (!used) return candidate;
-    }
+    std::vector<std::string> taken;
+    for (const auto& a : m_doc->mission().aircraft) taken.push_back(a.name);
+    return QString::fromStdString(mission::numberedAircraftName(base.toStdString(), taken));
 }
 
 QString AircraftPanel::nextColour() const {
-    const std::size_t n = m_doc->mission().aircraft.size();
-    return QString::fromLatin1(kColours[n % (sizeof(kColours) / sizeof(kColours[0]))]);
+    return QString::fromStdString(mission::aircraftColour(m_doc->mission().aircraft.size()));
 }
 
 void AircraftPanel::addFromCatalog(const QString& aircraftName) {

@@ -11,14 +11,6 @@
 
 namespace pf::ui {
 
-namespace {
-double areaM2(const geo::GeoPolygon& p) {
-    if (p.outer.size() < 3) return 0;
-    auto frame = geo::LocalFrame::forArea(p);
-    return frame ? geo::area(frame->toLocal(p)) : 0.0;
-}
-} // namespace
-
 MissionPanel::MissionPanel(MissionDocument* doc, MissionLayer* layer, QWidget* parent)
     : QWidget(parent), m_doc(doc), m_layer(layer) {
     auto* l = new QVBoxLayout(this);
@@ -52,7 +44,7 @@ void MissionPanel::refresh() {
     if (m.area.outer.empty())
         s += tr("No area yet: draw one or import a file.");
     else
-        s += tr("Area %1 ha, %2 vertices").arg(areaM2(m.area) / 10000.0, 0, 'f', 2).arg(m.area.outer.size());
+        s += tr("Area %1 ha, %2 vertices").arg(geo::groundAreaM2(m.area) / 10000.0, 0, 'f', 2).arg(m.area.outer.size());
     s += QStringLiteral("<br>") + tr("%n no-fly zone(s)", nullptr, int(m.noFlyZones.size()));
     s += QStringLiteral("<br>") + (m.home ? tr("Home %1°, %2°").arg(m.home->lat, 0, 'f', 6).arg(m.home->lon, 0, 'f', 6)
                                           : tr("No home point"));
@@ -69,7 +61,7 @@ void MissionPanel::refresh() {
         auto* item = new QListWidgetItem(QIcon(QStringLiteral(":/icons/draw_nofly.svg")),
                                          tr("%1 (%2 m²)")
                                              .arg(QString::fromStdString(m.noFlyZones[i].name))
-                                             .arg(areaM2(m.noFlyZones[i].polygon), 0, 'f', 0));
+                                             .arg(geo::groundAreaM2(m.noFlyZones[i].polygon), 0, 'f', 0));
         item->setData(Qt::UserRole, int(i));
         m_shapes->addItem(item);
     }

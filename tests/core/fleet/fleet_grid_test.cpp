@@ -3,6 +3,8 @@
 #include "core/fleet/area_split.h"
 #include "core/fleet/capability.h"
 #include "core/fleet/partition.h"
+#include "core/fleet/subarea_polygons.h"
+#include "core/fleet/time_balance.h"
 #include "core/geo/polygon_ops.h"
 #include "core/grid/grid.h"
 #include "core/mission/plan_mission.h"
@@ -79,22 +81,25 @@ std::pair<geo::Polygon, std::vector<geo::Polygon>> generatedSite(std::mt19937& r
 
 } // namespace
 
-TEST(FleetOnGrid, BaseGridCellsMatchTheGridsOwnCorners) {
+TEST(FleetOnGrid, SubareaCellsAreTheGridsOwnCells) {
     const auto site = test::demoSite();
     grid::GridOptions opt;
     opt.cellSize = 15.0;
     opt.angleDeg = 27.0;
     auto g = grid::Grid::build(site.area, site.noFly, opt);
     ASSERT_TRUE(g.ok()) << g.error().message;
-    const auto b = BaseGrid::fromGrid(*g);
     for (int i = 0; i < g->cellCount(); i += 7) {
-        const auto mine = b.cellSquare(i);
-        const auto theirs = g->cellCorners(i);
-        ASSERT_EQ(theirs.size(), 4u);
-        for (int k = 0; k < 4; ++k)
-            EXPECT_NEAR((mine[static_cast<std::size_t>(k)] - theirs[static_cast<std::size_t>(k)]).norm(), 0.0, 1e-6);
-        EXPECT_NEAR((b.cellCenter(i) - g->cellCenter(i)).norm(), 0.0, 1e-6);
-        EXPECT_EQ(b.active[static_cast<std::size_t>(i)] != 0, g->needsVisit(i));
+        if (!g->needsVisit(i))
+            continue;
+        const auto poly = cellsPolygon(*g, {i}, {});
+        ASSERT_EQ(poly.size(), 1u);
+        EXPECT_NEAR(geo::area(poly), 15.0 * 15.0, 1e-6);
+        for (const auto& corner : g->cellCorners(i)) {
+            double nearest = 1e9;
+            for (const auto& v : poly.front().outer)
+                nearest = std::min(nearest, (v - corner).norm());
+            EXPECT_NEAR(nearest, 0.0, 1e-6);
+        }
     }
 }
 
@@ -119,7 +124,7 @@ TEST(FleetOnGrid, DemoSitePartitionAndAircraftGridsCoverTheArea) {
         opt.safetyMarginM = 5.0;
         auto g = grid::Grid::build(site.area, site.noFly, opt);
         ASSERT_TRUE(g.ok()) << g.error().message;
-        const auto b = BaseGrid::fromGrid(*g);
+        const grid::Grid& b = *g;
         auto p = partitionCells(b, *shares);
         ASSERT_TRUE(p.ok()) << p.error().message;
         EXPECT_EQ(p->disconnectedSubareas, 0) << "angle " << angle;
@@ -195,7 +200,7 @@ TEST(FleetOnGrid, BalanceWithTheStridePlannerWithinTenPercent) {
         go.safetyMarginM = 5;
         auto g = grid::Grid::build(area, noFly, go);
         ASSERT_TRUE(g.ok()) << g.error().message;
-        const auto b = BaseGrid::fromGrid(*g);
+        const grid::Grid& b = *g;
         auto p = partitionCells(b, *capabilityShares(caps, areaM2));
         ASSERT_TRUE(p.ok()) << p.error().message;
         mission::PlannerOptions po;
@@ -247,7 +252,7 @@ TEST(FleetOnGrid, DemoSiteEndToEndCoveredAndSafe) {
     go.safetyMarginM = margin;
     auto g = grid::Grid::build(site.area, site.noFly, go);
     ASSERT_TRUE(g.ok());
-    const auto b = BaseGrid::fromGrid(*g);
+    const grid::Grid& b = *g;
     auto p = partitionCells(b, *capabilityShares(caps, areaM2));
     ASSERT_TRUE(p.ok());
     const auto subareas = subareaPolygons(b, *p, g->admissible());

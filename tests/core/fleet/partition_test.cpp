@@ -1,5 +1,7 @@
 #include "core/fleet/capability.h"
 #include "core/fleet/partition.h"
+#include "core/fleet/subarea_polygons.h"
+#include "core/fleet/time_balance.h"
 #include "core/geo/polygon_ops.h"
 
 #include "tests/core/fleet/shapes.h"
@@ -17,12 +19,12 @@ using pf::fleet::test::generatedShape;
 
 namespace {
 
-BaseGrid rectangle(int cols, int rows) {
-    return BaseGrid::fromMask(cols, rows, std::vector<std::uint8_t>(static_cast<std::size_t>(cols * rows), 1), 10.0);
+grid::Grid rectangle(int cols, int rows) {
+    return grid::Grid::fromMask(cols, rows, std::vector<std::uint8_t>(static_cast<std::size_t>(cols * rows), 1), 10.0);
 }
 
 // Every active cell belongs to exactly one aircraft, inactive cells to none, lists match owners.
-void expectExactCover(const BaseGrid& g, const Partition& p) {
+void expectExactCover(const grid::Grid& g, const Partition& p) {
     std::vector<int> seen(static_cast<std::size_t>(g.cellCount()), -1);
     for (std::size_t k = 0; k < p.cells.size(); ++k)
         for (int c : p.cells[k]) {
@@ -31,7 +33,7 @@ void expectExactCover(const BaseGrid& g, const Partition& p) {
         }
     for (int c = 0; c < g.cellCount(); ++c) {
         EXPECT_EQ(seen[static_cast<std::size_t>(c)], p.owner[static_cast<std::size_t>(c)]);
-        EXPECT_EQ(p.owner[static_cast<std::size_t>(c)] >= 0, g.active[static_cast<std::size_t>(c)] != 0) << "cell " << c;
+        EXPECT_EQ(p.owner[static_cast<std::size_t>(c)] >= 0, g.needsVisit(c)) << "cell " << c;
     }
 }
 
@@ -53,19 +55,19 @@ std::vector<Capability> mixedFleet(std::mt19937& rng, int n) {
 
 // Analytic flight time of a back-and-forth survey of the cells' bounding box: photographed area
 // / across / speed plus one 180-degree turn per track (tracks along the box's long side).
-double analyticTime(const BaseGrid& g, const Capability& c, const std::vector<int>& cells) {
+double analyticTime(const grid::Grid& g, const Capability& c, const std::vector<int>& cells) {
     if (cells.empty())
         return 0.0;
-    int x0 = g.cols, x1 = -1, y0 = g.rows, y1 = -1;
+    int x0 = g.cols(), x1 = -1, y0 = g.rows(), y1 = -1;
     for (int i : cells) {
-        x0 = std::min(x0, i % g.cols);
-        x1 = std::max(x1, i % g.cols);
-        y0 = std::min(y0, i / g.cols);
-        y1 = std::max(y1, i / g.cols);
+        x0 = std::min(x0, i % g.cols());
+        x1 = std::max(x1, i % g.cols());
+        y0 = std::min(y0, i / g.cols());
+        y1 = std::max(y1, i / g.cols());
     }
-    const double shortSide = std::min(x1 - x0 + 1, y1 - y0 + 1) * g.cellSize;
+    const double shortSide = std::min(x1 - x0 + 1, y1 - y0 + 1) * g.cellSize();
     const double tracks = std::ceil(shortSide / c.footprint.acrossM);
-    const double length = cells.size() * g.cellSize * g.cellSize / c.footprint.acrossM;
+    const double length = cells.size() * g.cellSize() * g.cellSize() / c.footprint.acrossM;
     return length / c.time.speedMps + tracks * (180.0 / c.time.turnRateDegS + 2.0 * c.time.stopCostS() +
                                                 c.footprint.acrossM / c.time.speedMps);
 }
@@ -103,7 +105,7 @@ TEST(Partition, GeneratedShapesConnectedAndOnTarget) {
         std::mt19937 rng(seed);
         const int n = 2 + static_cast<int>(seed % 3);
         const auto fleet = mixedFleet(rng, n);
-        auto shares = capabilityShares(fleet, activeCount(g) * g.cellSize * g.cellSize);
+        auto shares = capabilityShares(fleet, activeCount(g) * g.cellSize() * g.cellSize());
         ASSERT_TRUE(shares.ok());
         auto p = partitionCells(g, *shares);
         ASSERT_TRUE(p.ok()) << "seed " << seed << ": " << p.error().message;
@@ -133,7 +135,7 @@ TEST(Partition, SeparatePiecesGetOneAircraftEach) {
     std::vector<std::uint8_t> mask(9 * 4, 1);
     for (int y = 0; y < 4; ++y)
         mask[static_cast<std::size_t>(y * 9 + 4)] = 0;
-    const auto g = BaseGrid::fromMask(9, 4, mask);
+    const auto g = grid::Grid::fromMask(9, 4, mask);
     auto p = partitionCells(g, {1.0, 1.0});
     ASSERT_TRUE(p.ok()) << p.error().message;
     expectExactCover(g, *p);
@@ -150,7 +152,7 @@ TEST(Partition, MorePiecesThanAircraftAreReportedAsDisconnected) {
         mask[static_cast<std::size_t>(y * 8 + 2)] = 0;
         mask[static_cast<std::size_t>(y * 8 + 5)] = 0;
     }
-    const auto g = BaseGrid::fromMask(8, 2, mask);
+    const auto g = grid::Grid::fromMask(8, 2, mask);
     auto p = partitionCells(g, {1.0, 1.0});
     ASSERT_TRUE(p.ok()) << p.error().message;
     expectExactCover(g, *p);
@@ -182,7 +184,7 @@ TEST(BalanceByTime, MakespanWithinTenPercentOfIdeal) {
         std::mt19937 rng(seed);
         const int n = 2 + static_cast<int>(seed % 3);
         const auto fleet = mixedFleet(rng, n);
-        auto shares = capabilityShares(fleet, activeCount(g) * g.cellSize * g.cellSize);
+        auto shares = capabilityShares(fleet, activeCount(g) * g.cellSize() * g.cellSize());
         ASSERT_TRUE(shares.ok());
         auto p = partitionCells(g, *shares);
         ASSERT_TRUE(p.ok());
@@ -227,7 +229,7 @@ TEST(SubareaPolygons, TileTheClippedAreaWithoutOverlap) {
         auto p = partitionCells(g, {1.0, 2.0, 1.5});
         ASSERT_TRUE(p.ok());
         // Clip to a disc-like octagon over the grid: the union must equal grid-cells ∩ clip.
-        const double cx = g.cols * 5.0, cy = g.rows * 5.0, r = 0.45 * std::min(g.cols, g.rows) * 10.0;
+        const double cx = g.cols() * 5.0, cy = g.rows() * 5.0, r = 0.45 * std::min(g.cols(), g.rows()) * 10.0;
         geo::Polygon clip;
         for (int i = 0; i < 8; ++i)
             clip.outer.emplace_back(cx + r * std::cos(i * M_PI / 4), cy + r * std::sin(i * M_PI / 4));
@@ -238,7 +240,7 @@ TEST(SubareaPolygons, TileTheClippedAreaWithoutOverlap) {
             sum += geo::area(mp);
         std::vector<int> all;
         for (int c = 0; c < g.cellCount(); ++c)
-            if (g.active[static_cast<std::size_t>(c)])
+            if (g.needsVisit(c))
                 all.push_back(c);
         const double expected = geo::area(cellsPolygon(g, all, {clip}));
         EXPECT_NEAR(sum, expected, 1e-6 * expected + 1e-6) << "seed " << seed;
@@ -250,12 +252,26 @@ TEST(SubareaPolygons, TileTheClippedAreaWithoutOverlap) {
 }
 
 TEST(SubareaPolygons, CellSquaresFollowTheGridRotation) {
-    BaseGrid g = rectangle(2, 1);
-    g.angleDeg = 90.0;
-    g.origin = geo::Vec2(100, 0);
-    const auto sq = g.cellSquare(1); // second column: one cell "east" in grid terms = north locally
-    EXPECT_NEAR(sq[0].x(), 100.0, 1e-9);
-    EXPECT_NEAR(sq[0].y(), 10.0, 1e-9);
-    EXPECT_NEAR(g.cellCenter(1).x(), 95.0, 1e-9);
-    EXPECT_NEAR(g.cellCenter(1).y(), 15.0, 1e-9);
+    // A 20 m square on a grid rotated by 90 degrees: its columns run north locally.
+    const geo::Polygon square{{geo::Vec2(100, 0), geo::Vec2(120, 0), geo::Vec2(120, 20), geo::Vec2(100, 20)}, {}};
+    grid::GridOptions opt;
+    opt.cellSize = 10.0;
+    opt.angleDeg = 90.0;
+    auto g = grid::Grid::build(square, {}, opt);
+    ASSERT_TRUE(g.ok()) << g.error().message;
+    ASSERT_EQ(g->cellCount(), 4);
+    // Second column of the first row: one cell "east" in grid terms = north locally.
+    EXPECT_NEAR(g->cellCenter(1).x(), 115.0, 1e-9);
+    EXPECT_NEAR(g->cellCenter(1).y(), 15.0, 1e-9);
+    for (int c = 0; c < g->cellCount(); ++c) {
+        const auto poly = cellsPolygon(*g, {c}, {});
+        ASSERT_EQ(poly.size(), 1u);
+        EXPECT_NEAR(geo::area(poly), 100.0, 1e-6) << "cell " << c;
+        for (const auto& corner : g->cellCorners(c)) {
+            double nearest = 1e9;
+            for (const auto& v : poly.front().outer)
+                nearest = std::min(nearest, (v - corner).norm());
+            EXPECT_NEAR(nearest, 0.0, 1e-6) << "cell " << c;
+        }
+    }
 }

@@ -1,7 +1,7 @@
-// Seeded synthetic base grids for the fleet tests: concave outlines with holes.
+// Seeded synthetic base grids (grid::Grid::fromMask) for the fleet tests: concave outlines with holes.
 #pragma once
 
-#include "core/fleet/partition.h"
+#include "core/grid/grid.h"
 
 #include <cstdint>
 #include <deque>
@@ -12,7 +12,7 @@ namespace pf::fleet::test {
 
 // A rectangle with notches cut from its edges and rectangular holes inside, reduced to its largest
 // 4-connected piece. Same seed, same shape.
-inline BaseGrid generatedShape(unsigned seed, double cellSize = 10.0) {
+inline grid::Grid generatedShape(unsigned seed, double cellSize = 10.0) {
     std::mt19937 rng(seed);
     auto uni = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
     const int cols = uni(16, 40), rows = uni(16, 40);
@@ -66,14 +66,9 @@ inline BaseGrid generatedShape(unsigned seed, double cellSize = 10.0) {
     }
     for (std::size_t i = 0; i < mask.size(); ++i)
         mask[i] = label[i] == best;
-    return BaseGrid::fromMask(cols, rows, mask, cellSize);
+    return grid::Grid::fromMask(cols, rows, mask, cellSize);
 }
 
-inline int activeCount(const BaseGrid& g) {
-    int n = 0;
-    for (auto a : g.active)
-        n += a;
-    return n;
-}
+inline int activeCount(const grid::Grid& g) { return g.visitCount(); }
 
 } // namespace pf::fleet::test

@@ -231,7 +231,7 @@ TEST(CatalogErrors, NotACatalog) {
 
 TEST(CatalogErrors, EntriesAreNamed) {
     EXPECT_EQ(errorOfText(catalogText(std::string(kCam) + R"(, {"name": "Bad", "sensor_width_mm": "wide"})", "")),
-              "c.json: cameras[1] (\"Bad\"): sensor_width_mm: expected a number");
+              "c.json: cameras[1] (\"Bad\"): sensor_width_mm: expected a number but found a string");
     EXPECT_EQ(errorOfText(catalogText(R"({"sensor_width_mm": 1})", "")),
               "c.json: cameras[0]: name: missing required field");
     EXPECT_EQ(errorOfText(catalogText(R"({"name": "Zero", "sensor_width_mm": 13.2, "sensor_height_mm": 0,
@@ -247,9 +247,10 @@ TEST(CatalogErrors, EntriesAreNamed) {
               "c.json: aircraft[0] (\"NoTime\"): endurance_min: missing required field");
     EXPECT_EQ(errorOfText(catalogText(kCam, R"({"name": "Typo", "cruise_speed_mps": 5, "turn_rate_deg_s": 90,
         "endurance_min": 25, "max_altitude_m": 120, "default_camer": "Cam"})")),
-              "c.json: aircraft[0] (\"Typo\"): default_camer: unknown field");
+              "c.json: aircraft[0] (\"Typo\"): default_camer: unknown field (known here: name, cruise_speed_mps, "
+              "turn_rate_deg_s, acceleration_mps2, endurance_min, max_altitude_m, default_camera)");
     EXPECT_EQ(errorOfText(R"({"format": "photoflight-catalog", "version": 1, "aircraft": {}})"),
-              "c.json: aircraft: expected an array");
+              "c.json: aircraft: expected an array but found an object");
 }
 
 // ---- photoflight-cli catalog ----

@@ -1,3 +1,5 @@
+#include "core/mission/evaluation_report.h"
+#include "core/mission/planner_kinds.h"
 #include "core/plan/evaluation.h"
 
 #include <gtest/gtest.h>
@@ -49,7 +51,7 @@ TEST(Evaluation, EveryRunCoversEveryCellAndStrideNeverJumps) {
         const auto runs = evaluateArea(name, *g, opt);
         EXPECT_EQ(runs.size(), 75u) << name;
         for (const auto& r : runs) {
-            EXPECT_TRUE(r.metrics.complete()) << name << " " << plannerName(r.planner) << " from " << r.startCell;
+            EXPECT_TRUE(r.metrics.complete()) << name << " " << mission::plannerKindInfo(r.planner).id << " from " << r.startCell;
             if (r.planner != PlannerKind::Raster) {
                 EXPECT_EQ(r.metrics.jumps, 0) << name << " from " << r.startCell;
             }
@@ -132,10 +134,10 @@ TEST(Evaluation, CsvAndTable) {
     EvalOptions opt;
     opt.maxStarts = 4;
     const auto runs = evaluateArea("L", *g, opt);
-    const std::string csv = evalCsv(runs);
+    const std::string csv = mission::evalCsv(runs);
     EXPECT_EQ(csv.rfind("area,planner,start_cell,start_col,start_row,cells,visited,turns,", 0), 0u);
     EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 9);
-    const std::string table = evalTable(summarise(runs));
+    const std::string table = mission::evalTable(summarise(runs));
     EXPECT_NE(table.find("stride / raster"), std::string::npos);
     EXPECT_NE(table.find("mean of areas"), std::string::npos);
 }

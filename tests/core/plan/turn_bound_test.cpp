@@ -1,5 +1,6 @@
 // The lower bound on turns (computeTurnBound): exact on rectangles, equal to a brute-force cover search,
 // and never above the turns of a planned path or of the best path found by exhaustive search.
+#include "core/mission/planner_kinds.h"
 #include "core/plan/metrics.h"
 
 #include "tests/core/plan/plan_test_util.h"
@@ -227,7 +228,7 @@ std::array<int, 3> checkPlannedPaths(const grid::Grid& g, const std::string& wha
                 const PathMetrics m = computeMetrics(g, *path);
                 if (m.complete() && m.jumps == 0) {
                     EXPECT_EQ(m.turnLowerBound, tb.turns) << what;
-                    EXPECT_LE(tb.turns, m.turns) << what << " " << plannerName(kind) << " from " << req.start;
+                    EXPECT_LE(tb.turns, m.turns) << what << " " << mission::plannerKindInfo(kind).id << " from " << req.start;
                     ++counted[k];
                 }
             }
