@@ -5,6 +5,7 @@
 #include "app/cli/mission_args.h"
 
 #include "core/io/waypoint_formats.h"
+#include "core/mission/plan_geojson.h"
 #include "core/mission/plan_mission.h"
 #include "core/mission/planner_kinds.h"
 #include "core/mission/route_check.h"
@@ -33,11 +34,14 @@ const char* const kPlanUsage =
     "sorties, turns) and the totals with the coverage and the makespan (the longest aircraft's time).\n"
     "\n"
     "With --out, writes into DIR:\n"
-    "  plan.geojson   WGS84 FeatureCollection: per aircraft a LineString of the flown path (home, every\n"
-    "                 waypoint, back home; properties aircraft, kind \"path\"), one Point per photo\n"
-    "                 (aircraft, kind \"photo\", seq, alt_m, heading_deg clockwise from north,\n"
-    "                 footprint_across_m, footprint_along_m: the real ground footprint), its subarea\n"
-    "                 (kind \"subarea\") and the uncovered patches (kind \"uncovered\", area_m2)\n"
+    "  plan.geojson   WGS84 FeatureCollection, one feature per line (written as a stream, about 190\n"
+    "                 bytes per photo): per aircraft a LineString of the flown path (home, every\n"
+    "                 waypoint, back home; kind \"path\", aircraft, alt_m, footprint_across_m,\n"
+    "                 footprint_along_m: the real ground footprint of its photos, photos, sorties),\n"
+    "                 one Point per photo (kind \"photo\", aircraft, seq, alt_m, heading_deg clockwise\n"
+    "                 from north), with --footprints one Polygon per photo (kind \"footprint\",\n"
+    "                 aircraft, seq), its subarea (kind \"subarea\") and the uncovered patches (kind\n"
+    "                 \"uncovered\", area_m2)\n"
     "  metrics.json   {\"aircraft\": [{\"name\", cells, photos, path_length_m, distance_m, turns, jumps,\n"
     "                 revisits, estimated_time_s, time_s (home to home, every sortie), sorties,\n"
     "                 photos_saved, detours, ...}], \"total\": {..., coverage_ratio, nofly_violations,\n"
@@ -50,6 +54,7 @@ const char* const kPlanUsage =
     "Options:\n"
     "  --out DIR                    output directory (created if missing)\n"
     "  --force                      write routes the route check finds errors in (see below)\n"
+    "  --footprints                 plan.geojson also holds every photo's ground footprint polygon\n"
     "  --format LIST                comma-separated waypoint formats to write (needs --out):\n"
     "                                 plan       QGroundControl .plan\n"
     "                                 waypoints  QGC WPL 110 .waypoints (Mission Planner)\n"
@@ -105,6 +110,7 @@ int runPlan(const std::vector<std::string>& argv) {
     specs.push_back({"out"});
     specs.push_back({"format"});
     specs.push_back({"force", false});
+    specs.push_back({"footprints", false});
     for (auto& s : exportOptionSpecs())
         specs.push_back(s);
     auto args = Args::parse(argv, specs);
@@ -146,10 +152,7 @@ int runPlan(const std::vector<std::string>& argv) {
 
     // The check every exported route passes (as in the desktop application): a route with an error is
     // refused unless the user insists.
-    std::vector<route::Route> planned;
-    for (const auto& a : plan->aircraft)
-        planned.push_back(a.route);
-    const auto routeProblems = mission::routeErrors(m, planned);
+    const auto routeProblems = mission::planRouteErrors(m, *plan);
     for (const auto& p : routeProblems)
         std::cerr << "photoflight-cli: " << (args->has("force") ? "warning: " : "error: ") << p << '\n';
     if (!routeProblems.empty() && !args->has("force"))
@@ -166,8 +169,10 @@ int runPlan(const std::vector<std::string>& argv) {
             return reportError(makeError(ErrorCode::IoError, "cannot create the output directory " + *out + ": " +
                                                                  ec.message()));
         const std::filesystem::path dir(*out);
-        if (int rc = writeFile(dir / "plan.geojson", mission::planToGeoJson(*plan)); rc != kExitOk)
-            return rc;
+        mission::PlanGeoJsonOptions gj;
+        gj.footprints = args->has("footprints");
+        if (auto st = mission::writePlanGeoJsonFile(*plan, (dir / "plan.geojson").string(), gj); !st)
+            return reportError(st.error());
         if (int rc = writeFile(dir / "metrics.json", mission::planMetricsJson(*plan, planner)); rc != kExitOk)
             return rc;
         written.push_back((dir / "plan.geojson").string());

@@ -6,6 +6,7 @@
 #include "core/geo/polygon_ops.h"
 #include "core/grid/grid.h"
 #include "core/sensor/camera.h"
+#include "core/mission/plan_geojson.h"
 #include "core/mission/plan_region.h"
 #include "core/mission/planner_kinds.h"
 #include "core/mission/validation.h"
@@ -23,6 +24,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 
 namespace pf::mission {
 
@@ -462,12 +464,16 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
                     {w.pos, w.headingDeg, ap.footprint.real.longSideM, ap.footprint.real.shortSideM});
         }
         ap.sortieRoutes.clear();
+        // Only the sortie's own waypoints are copied: a copy of the whole route per sortie (then cut)
+        // kept its full capacity, sorties x waypoints in all (3.3 GB for 158 sorties of 523,000).
+        std::vector<route::Waypoint> all = std::move(ap.route.waypoints);
+        ap.route.waypoints.clear();
         for (const auto& s : ap.sorties) {
-            route::Route r = ap.route;
-            r.waypoints.assign(ap.route.waypoints.begin() + s.firstWaypoint,
-                               ap.route.waypoints.begin() + s.lastWaypoint + 1);
+            route::Route r = ap.route; // everything but the waypoints
+            r.waypoints.assign(all.begin() + s.firstWaypoint, all.begin() + s.lastWaypoint + 1);
             ap.sortieRoutes.push_back(std::move(r));
         }
+        ap.route.waypoints = std::move(all);
         ap.metrics.photos = static_cast<int>(std::count_if(flown.begin(), flown.end(), [](const auto& w) {
             return w.kind == route::WaypointKind::Photo;
         }));
@@ -547,13 +553,6 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
 
 namespace {
 
-CPLJSONArray position(const geo::LonLat& p) {
-    CPLJSONArray a;
-    a.Add(p.lon);
-    a.Add(p.lat);
-    return a;
-}
-
 void addMetrics(CPLJSONObject& o, const plan::PathMetrics& m) {
     o.Add("visitable_cells", m.visitable);
     o.Add("cells", m.cells);
@@ -571,111 +570,12 @@ void addMetrics(CPLJSONObject& o, const plan::PathMetrics& m) {
     o.Add("turn_ratio", m.turnRatio);
 }
 
-CPLJSONArray ringCoords(const geo::Ring& r, const geo::LocalFrame& frame) {
-    CPLJSONArray a;
-    for (const auto& v : r)
-        a.Add(position(frame.toGeo(v)));
-    if (!r.empty())
-        a.Add(position(frame.toGeo(r.front()))); // GeoJSON rings are closed
-    return a;
-}
-
-// A local MultiPolygon as a WGS84 GeoJSON MultiPolygon geometry.
-CPLJSONObject multiPolygonGeometry(const geo::MultiPolygon& mp, const geo::LocalFrame& frame) {
-    CPLJSONObject g;
-    g.Add("type", "MultiPolygon");
-    CPLJSONArray polys;
-    for (const auto& poly : mp) {
-        CPLJSONArray rings;
-        rings.Add(ringCoords(poly.outer, frame));
-        for (const auto& h : poly.holes)
-            rings.Add(ringCoords(h, frame));
-        polys.Add(rings);
-    }
-    g.Add("coordinates", polys);
-    return g;
-}
-
 } // namespace
 
 std::string planToGeoJson(const MissionPlan& plan) {
-    CPLJSONDocument doc;
-    CPLJSONObject root = doc.GetRoot();
-    root.Add("type", "FeatureCollection");
-    CPLJSONArray features;
-    for (const auto& a : plan.aircraft) {
-        CPLJSONObject line;
-        line.Add("type", "Feature");
-        CPLJSONObject props;
-        props.Add("aircraft", a.aircraft);
-        props.Add("kind", "path");
-        line.Add("properties", props);
-        CPLJSONObject geom;
-        geom.Add("type", "LineString");
-        CPLJSONArray coords;
-        if (a.route.home)
-            coords.Add(position(*a.route.home));
-        for (std::size_t i = 0; i < a.route.waypoints.size(); ++i) {
-            coords.Add(position(a.route.waypoints[i].position));
-            // Between two sorties the aircraft lands at home for a fresh battery.
-            const bool sortieEnds = std::any_of(a.sorties.begin(), a.sorties.end() - (a.sorties.empty() ? 0 : 1),
-                                                [&](const SortieSummary& s) { return s.lastWaypoint == static_cast<int>(i); });
-            if (a.route.home && sortieEnds)
-                coords.Add(position(*a.route.home));
-        }
-        if (a.route.home)
-            coords.Add(position(*a.route.home));
-        geom.Add("coordinates", coords);
-        line.Add("geometry", geom);
-        features.Add(line);
-        int seq = 0;
-        for (const auto& w : a.route.waypoints) {
-            if (w.kind != route::WaypointKind::Photo)
-                continue;
-            CPLJSONObject f;
-            f.Add("type", "Feature");
-            CPLJSONObject p;
-            p.Add("aircraft", a.aircraft);
-            p.Add("seq", ++seq);
-            p.Add("alt_m", w.altitudeM);
-            p.Add("kind", "photo");
-            p.Add("heading_deg", w.headingDeg);
-            p.Add("footprint_across_m", a.footprint.real.longSideM);
-            p.Add("footprint_along_m", a.footprint.real.shortSideM);
-            f.Add("properties", p);
-            CPLJSONObject g;
-            g.Add("type", "Point");
-            g.Add("coordinates", position(w.position));
-            f.Add("geometry", g);
-            features.Add(f);
-        }
-    }
-    if (plan.frame) {
-        for (const auto& a : plan.aircraft) {
-            if (a.subarea.empty())
-                continue;
-            CPLJSONObject f;
-            f.Add("type", "Feature");
-            CPLJSONObject p;
-            p.Add("aircraft", a.aircraft);
-            p.Add("kind", "subarea");
-            f.Add("properties", p);
-            f.Add("geometry", multiPolygonGeometry(a.subarea, *plan.frame));
-            features.Add(f);
-        }
-        for (const auto& u : plan.uncovered) {
-            CPLJSONObject f;
-            f.Add("type", "Feature");
-            CPLJSONObject p;
-            p.Add("kind", "uncovered");
-            p.Add("area_m2", u.areaM2);
-            f.Add("properties", p);
-            f.Add("geometry", multiPolygonGeometry(u.shape, *plan.frame));
-            features.Add(f);
-        }
-    }
-    root.Add("features", features);
-    return doc.SaveAsString();
+    std::ostringstream out;
+    writePlanGeoJson(plan, out);
+    return out.str();
 }
 
 std::string planMetricsJson(const MissionPlan& plan, const std::string& plannerName) {

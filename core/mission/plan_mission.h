@@ -20,12 +20,8 @@
 
 namespace pf::mission {
 
-// The plan as a GeoJSON FeatureCollection in WGS84: per aircraft a LineString of the flown path (home,
-// every waypoint, landing) with the properties aircraft, kind "path", one Point per photo with
-// aircraft, kind "photo", seq (1-based, per aircraft), alt_m, heading_deg (clockwise from north),
-// footprint_across_m and footprint_along_m (the REAL ground footprint across and along the track), its
-// subarea (Polygon or MultiPolygon, kind "subarea", aircraft) and every uncovered patch listed in the
-// plan (kind "uncovered", area_m2).
+// The plan as GeoJSON text (writePlanGeoJson, default options): for tests and small plans; files are
+// written with writePlanGeoJsonFile, which streams.
 std::string planToGeoJson(const MissionPlan& plan);
 // The metrics as JSON: {"planner", "aircraft": [{"name", ...metrics, time_s, sorties, photos_saved}],
 // "total": {..., coverage_ratio, nofly_violations, makespan_s}, "coverage_ratio", "nofly_violations",
