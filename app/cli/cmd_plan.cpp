@@ -12,10 +12,13 @@
 #include "core/mission/validation.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+
+#include <unistd.h>
 
 namespace pf::cli {
 
@@ -55,6 +58,9 @@ const char* const kPlanUsage =
     "  --out DIR                    output directory (created if missing)\n"
     "  --force                      write routes the route check finds errors in (see below)\n"
     "  --footprints                 plan.geojson also holds every photo's ground footprint polygon\n"
+    "  --quiet                      no progress line on stderr (shown only when stderr is a terminal)\n"
+    "  --progress                   a progress line per stage on stderr, with the seconds since the\n"
+    "                               start, even when stderr is not a terminal (logs)\n"
     "  --format LIST                comma-separated waypoint formats to write (needs --out):\n"
     "                                 plan       QGroundControl .plan\n"
     "                                 waypoints  QGC WPL 110 .waypoints (Mission Planner)\n"
@@ -103,6 +109,43 @@ int writeFile(const std::filesystem::path& path, const std::string& text) {
     return kExitOk;
 }
 
+// Planning progress on stderr. On a terminal one line, rewritten in place at most 10 times a second
+// and cleared at the end; elsewhere nothing, unless asked (--progress): then a line per stage with the
+// seconds since the start (for logs).
+class PlanProgressPrinter {
+public:
+    PlanProgressPrinter(bool terminal, bool lines) : m_terminal(terminal), m_lines(lines) {}
+    ~PlanProgressPrinter() { clear(); }
+    void operator()(double f, const std::string& stage) {
+        const double now = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
+        if (m_lines) {
+            if (stage != m_stage)
+                std::fprintf(stderr, "photoflight-cli: %6.1f s %3d %% %s\n", now, static_cast<int>(f * 100.0),
+                             stage.c_str());
+        } else if (m_terminal && (stage != m_stage || now - m_shown >= 0.1)) {
+            std::fprintf(stderr, "\r\033[Kplanning: %3d %% %s", static_cast<int>(f * 100.0), stage.c_str());
+            std::fflush(stderr);
+            m_shown = now;
+            m_dirty = true;
+        }
+        m_stage = stage;
+    }
+    // Removes the progress line before other output.
+    void clear() {
+        if (m_dirty)
+            std::fprintf(stderr, "\r\033[K");
+        m_dirty = false;
+    }
+
+private:
+    bool m_terminal;
+    bool m_lines;
+    bool m_dirty = false;
+    std::string m_stage;
+    double m_shown = -1.0;
+    std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
+};
+
 } // namespace
 
 int runPlan(const std::vector<std::string>& argv) {
@@ -111,6 +154,8 @@ int runPlan(const std::vector<std::string>& argv) {
     specs.push_back({"format"});
     specs.push_back({"force", false});
     specs.push_back({"footprints", false});
+    specs.push_back({"quiet", false});
+    specs.push_back({"progress", false});
     for (auto& s : exportOptionSpecs())
         specs.push_back(s);
     auto args = Args::parse(argv, specs);
@@ -142,7 +187,10 @@ int runPlan(const std::vector<std::string>& argv) {
     std::vector<std::string> printed;
     if (!printValidationProblems(mission::validateMission(m), &printed))
         return kExitBadInput;
-    auto plan = mission::planMission(m);
+    PlanProgressPrinter printer(!args->has("quiet") && ::isatty(STDERR_FILENO) != 0, args->has("progress"));
+    Progress progress([&](double f, const std::string& stage) { printer(f, stage); });
+    auto plan = mission::planMission(m, &progress);
+    printer.clear();
     if (!plan)
         return reportError(plan.error());
     // The planner re-checks the grid and may repeat a validation warning: say each thing once.

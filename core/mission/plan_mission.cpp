@@ -6,6 +6,7 @@
 #include "core/geo/polygon_ops.h"
 #include "core/grid/grid.h"
 #include "core/sensor/camera.h"
+#include "core/job_scope.h"
 #include "core/mission/plan_geojson.h"
 #include "core/mission/plan_region.h"
 #include "core/mission/planner_kinds.h"
@@ -38,6 +39,8 @@ constexpr double kBalanceTarget = 1.10;
 } // namespace
 
 namespace {
+
+Error cancelledError() { return makeError(ErrorCode::Cancelled, "planning cancelled"); }
 
 std::string aircraftLabel(const AircraftConfig& a) {
     return a.name.empty() ? std::string("the aircraft") : "aircraft \"" + a.name + "\"";
@@ -176,12 +179,16 @@ Result<MissionPlan> planMissionWith(const Mission& m) {
         constexpr int kRounds = 3;
         for (int round = 0; round < kRounds; ++round) {
             const fleet::RegionTimeEstimator estimate = [&](int i, const geo::MultiPolygon& sub) -> Result<double> {
+                if (stopRequested())
+                    return cancelledError(); // the split stops at its next estimate
                 const std::size_t k = order[static_cast<std::size_t>(i)];
                 auto t = rawEstimate(k, sub);
                 if (!t)
                     return t;
                 return *t * factor[k];
             };
+            if (stopRequested())
+                return cancelledError();
             auto split = fleet::splitArea(geom->area, geom->noFly, ordered, so, estimate);
             if (!split)
                 return makeError(split.error().code,
@@ -219,6 +226,8 @@ Result<MissionPlan> planMissionWith(const Mission& m) {
     });
     std::optional<MissionPlan> first;
     for (const Candidate& c : candidates) {
+        if (stopRequested())
+            return cancelledError();
         auto chosen = buildPlan(m, opt, *geom, c.regions, homes, landing, true);
         if (!chosen)
             return chosen.error();
@@ -243,9 +252,15 @@ Result<MissionPlan> planMissionWith(const Mission& m) {
 // than the coverage target, or breaches a margin, loses to one that does not. The plans share
 // nothing and run in parallel, unless the grids are large: then one after the other, so that the
 // peak memory is that of the largest plan, not the sum of three.
-Result<MissionPlan> planMission(const Mission& m) {
+Result<MissionPlan> planMission(const Mission& m, Progress* progress) {
+    JobScope scope(progress);
+    auto checked = [](Result<MissionPlan> r) -> Result<MissionPlan> {
+        if (stopRequested())
+            return cancelledError(); // whatever a loop broken off left behind is dropped
+        return r;
+    };
     if (m.options.planner != PlannerKind::Auto)
-        return planMissionWith(m);
+        return checked(planMissionWith(m));
     const PlannerKind kinds[] = {PlannerKind::Sweep, PlannerKind::Stride, PlannerKind::Raster};
     // The cells of the grid planners over the whole area (bounding box at the mission's angle).
     double cells = 0.0;
@@ -263,11 +278,16 @@ Result<MissionPlan> planMission(const Mission& m) {
     constexpr double kParallelCells = 300'000.0; // about 100 MB of grid state per planner
     const bool parallel = cells <= kParallelCells;
     std::vector<std::future<Result<MissionPlan>>> runs;
-    for (PlannerKind k : kinds) {
+    for (std::size_t i = 0; i < std::size(kinds); ++i) {
         Mission mk = m;
-        mk.options.planner = k;
-        runs.push_back(std::async(parallel ? std::launch::async : std::launch::deferred,
-                                  [mk] { return planMissionWith(mk); }));
+        mk.options.planner = kinds[i];
+        const double lo = static_cast<double>(i) / std::size(kinds), hi = static_cast<double>(i + 1) / std::size(kinds);
+        const std::string prefix = std::string(plannerKindInfo(kinds[i]).id) + ": ";
+        runs.push_back(std::async(parallel ? std::launch::async : std::launch::deferred, [mk, progress, lo, hi, prefix] {
+            // In its own thread (or deferred, in this one): the candidate's share of the progress.
+            JobScope share(progress, lo, hi, prefix);
+            return planMissionWith(mk);
+        }));
     }
     std::optional<MissionPlan> best;
     std::string note, errors;
@@ -275,6 +295,12 @@ Result<MissionPlan> planMission(const Mission& m) {
     auto sound = [](const MissionPlan& p) { return p.coverageRatio >= kCoverageTarget && p.noFlyViolations == 0; };
     for (std::size_t i = 0; i < runs.size(); ++i) {
         auto p = runs[i].get();
+        if (stopRequested()) {
+            for (std::size_t j = i + 1; j < runs.size(); ++j)
+                if (parallel)
+                    runs[j].wait(); // they stop too; none outlives the call
+            return cancelledError();
+        }
         const char* id = plannerKindInfo(kinds[i]).id;
         if (!p) {
             note += std::string(note.empty() ? "" : ", ") + id + " failed: " + p.error().message;
@@ -317,6 +343,8 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
             return makeError(ErrorCode::InvalidInput,
                              aircraftLabel(m.aircraft[k]) + ": got no part of the area (too many aircraft for it)");
         auto ap = planRegion(regions[k], geom->noFly, m.aircraft[k], opt, frame, homes[k], landing);
+        if (stopRequested())
+            return cancelledError();
         if (!ap)
             return ap.error();
         ap->subarea = regions[k];
@@ -360,6 +388,10 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         const std::string who = aircraftLabel(cfg);
         for (const auto& w : ap.warnings)
             plan.warnings.push_back(who + ": " + w);
+        if (stopRequested())
+            return cancelledError();
+        reportProgress(check ? 0.6 + 0.25 * static_cast<double>(k) / static_cast<double>(n) : 0.6,
+                       "detours and sorties");
         const bool yardstick = ap.planner == PlannerKind::Lawnmower;
         const route::SafePathFinder& finder = yardstick ? straightFinder : safeFinder;
         std::vector<route::LocalWaypoint> survey = ap.surveyWaypoints;
@@ -391,6 +423,8 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         std::vector<geo::Vec2> path; // home, every waypoint, landing
         const auto& home = homes[k];
         if (home) {
+            if (stopRequested())
+                return cancelledError();
             auto sp = route::splitIntoSorties(survey, *home, finder, model,
                                               route::SortieOptions{cfg.enduranceMin, opt.batteryReserve}, cfg.name);
             if (!sp)
@@ -494,8 +528,14 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
     }
 
     // 6. The independent check: real footprints of every photo of every aircraft, margin breaches.
+    if (stopRequested())
+        return cancelledError();
     if (check) {
+        reportProgress(0.85, "coverage check");
+        JobScope stage(0.85, 1.0);
         auto cov = plan::checkCoverage(admissible, photoFootprints);
+        if (stopRequested())
+            return cancelledError();
         if (!cov)
             return makeError(cov.error().code, "checking the coverage: " + cov.error().message);
         plan.coverageRatio = cov->coveredFraction;

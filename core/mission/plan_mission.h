@@ -10,6 +10,7 @@
 #include "core/plan/cell_path.h"
 #include "core/plan/flight_time.h"
 #include "core/plan/metrics.h"
+#include "core/progress.h"
 #include "core/result.h"
 #include "core/route/waypoint.h"
 #include "core/sensor/camera.h"
@@ -45,6 +46,9 @@ std::string planMetricsJson(const MissionPlan& plan, const std::string& plannerN
 // altitudes are checked for separation (a warning per pair) and an independent check rasterises the
 // real footprints of every photo (coverage ratio, uncovered patches) and counts margin breaches.
 // Errors name the aircraft and the problem.
-Result<MissionPlan> planMission(const Mission& m);
+// With `progress`, every stage reports to it (its fraction of the whole and its name, "stride: grid"
+// with the automatic choice) and a cancel() makes the call return ErrorCode::Cancelled within a
+// fraction of a second (the loops check it through the JobScope this installs).
+Result<MissionPlan> planMission(const Mission& m, Progress* progress = nullptr);
 
 } // namespace pf::mission

@@ -1,5 +1,7 @@
 #include "core/plan/coverage_check.h"
 
+#include "core/job_scope.h"
+
 #include "core/geo/polygon_ops.h"
 #include "core/route/safety.h"
 
@@ -117,7 +119,13 @@ Result<CoverageReport> checkCoverage(const geo::MultiPolygon& admissible, const 
         for (int i = i0; i < i1; ++i)
             px[ras.index(i, j)] ^= 1; // even-odd across separate parts too
     });
-    for (const auto& photo : photos) {
+    for (std::size_t k = 0; k < photos.size(); ++k) {
+        if ((k & 0x3FFF) == 0) {
+            if (stopRequested())
+                return makeError(ErrorCode::Cancelled, "checking the coverage: cancelled");
+            reportProgress(static_cast<double>(k) / static_cast<double>(photos.size()), "coverage check");
+        }
+        const PhotoFootprint& photo = photos[k];
         const geo::Ring ring = footprintRing(photo);
         scanRings(ras, {&ring}, [&](int j, int i0, int i1) {
             for (int i = i0; i < i1; ++i) {
@@ -147,6 +155,8 @@ Result<CoverageReport> checkCoverage(const geo::MultiPolygon& admissible, const 
     std::vector<Comp> comps;
     std::vector<std::size_t> q;
     for (std::size_t s = 0; s < px.size(); ++s) {
+        if ((s & 0xFFFFF) == 0 && stopRequested())
+            return makeError(ErrorCode::Cancelled, "checking the coverage: cancelled");
         if (px[s] != 1)
             continue;
         Comp c;

@@ -1,5 +1,7 @@
 #include "core/route/sorties.h"
 
+#include "core/job_scope.h"
+
 #include "core/route/transit.h"
 
 #include <algorithm>
@@ -101,6 +103,8 @@ Result<SortiePlan> splitIntoSorties(const std::vector<LocalWaypoint>& survey, co
     };
 
     for (int i = 0; i < n;) {
+        if (stopRequested())
+            return makeError(ErrorCode::Cancelled, "cutting the flight into sorties: cancelled");
         auto out = outPath(i);
         if (!out)
             return out.error();
