@@ -7,6 +7,7 @@
 #include "core/grid/grid.h"
 #include "core/sensor/camera.h"
 #include "core/job_scope.h"
+#include "core/mission/memory_estimate.h"
 #include "core/mission/plan_geojson.h"
 #include "core/mission/plan_region.h"
 #include "core/mission/planner_kinds.h"
@@ -22,6 +23,7 @@
 
 #include <algorithm>
 #include <future>
+#include <new>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -252,15 +254,41 @@ Result<MissionPlan> planMissionWith(const Mission& m) {
 // than the coverage target, or breaches a margin, loses to one that does not. The plans share
 // nothing and run in parallel, unless the grids are large: then one after the other, so that the
 // peak memory is that of the largest plan, not the sum of three.
+namespace {
+
+Result<MissionPlan> planMissionChecked(const Mission& m, Progress* progress);
+
+} // namespace
+
 Result<MissionPlan> planMission(const Mission& m, Progress* progress) {
+    // The estimate refuses what cannot fit before anything large is allocated; should it be wrong,
+    // running out of memory is still a refusal with advice, not an internal error.
+    try {
+        return planMissionChecked(m, progress);
+    } catch (const std::bad_alloc&) {
+        const MemoryEstimate e = estimatePlanMemory(m);
+        return makeError(ErrorCode::TooLarge,
+                         "the plan ran out of memory (it needs about " + metres(e.bytes / 1e9, 1) + " GB for " +
+                             metres(e.cells) + " grid cells and about " + metres(e.photos) +
+                             " photos): fly higher, use a larger cell or split the area into parts");
+    }
+}
+
+namespace {
+
+Result<MissionPlan> planMissionChecked(const Mission& m, Progress* progress) {
     JobScope scope(progress);
+    const std::size_t budget = memoryBudgetBytes();
     auto checked = [](Result<MissionPlan> r) -> Result<MissionPlan> {
         if (stopRequested())
             return cancelledError(); // whatever a loop broken off left behind is dropped
         return r;
     };
-    if (m.options.planner != PlannerKind::Auto)
+    if (m.options.planner != PlannerKind::Auto) {
+        if (auto fits = checkPlanMemory(m, budget); !fits)
+            return fits.error();
         return checked(planMissionWith(m));
+    }
     const PlannerKind kinds[] = {PlannerKind::Sweep, PlannerKind::Stride, PlannerKind::Raster};
     // The cells of the grid planners over the whole area (bounding box at the mission's angle).
     double cells = 0.0;
@@ -276,7 +304,21 @@ Result<MissionPlan> planMission(const Mission& m, Progress* progress) {
         }
     }
     constexpr double kParallelCells = 300'000.0; // about 100 MB of grid state per planner
-    const bool parallel = cells <= kParallelCells;
+    const bool parallel = cells <= kParallelCells && checkPlanMemory(m, budget, 3).ok();
+    // In turn, two plans are held at once (the best so far and the next). Where even that does not
+    // fit but one plan does, the stride planner alone plans it (the one whose memory is the least
+    // spread over the stages), and the choice says why.
+    if (!parallel && !checkPlanMemory(m, budget, 2).ok()) {
+        if (auto fits = checkPlanMemory(m, budget); !fits)
+            return fits.error();
+        Mission one = m;
+        one.options.planner = PlannerKind::Stride;
+        auto p = checked(planMissionWith(one));
+        if (p)
+            p->plannerChoice = "stride alone: comparing planners would need more memory than this machine has (" +
+                               metres(2.0 * estimatePlanMemory(m).bytes / 1e9, 1) + " GB)";
+        return p;
+    }
     std::vector<std::future<Result<MissionPlan>>> runs;
     for (std::size_t i = 0; i < std::size(kinds); ++i) {
         Mission mk = m;
@@ -323,6 +365,8 @@ Result<MissionPlan> planMission(const Mission& m, Progress* progress) {
                           " finishes soonest (" + note + ")";
     return std::move(*best);
 }
+
+} // namespace
 
 namespace {
 
