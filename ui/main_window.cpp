@@ -35,6 +35,7 @@
 #include "ui/panels/statistics_panel.h"
 #include "ui/panels/waypoint_panel.h"
 #include "ui/planning/plan_controller.h"
+#include "ui/planning/plan_progress_widget.h"
 #include "core/io/waypoint_formats.h"
 
 #include <QAction>
@@ -818,14 +819,9 @@ void MainWindow::buildPlanning() {
     bar->addAction(m_keepInsideAct);
     bar->addAction(exportAct);
 
-    // Busy indicator and the notice of a plan waiting for the user.
-    m_busy = new QProgressBar;
-    m_busy->setRange(0, 0);
-    m_busy->setMaximumWidth(110);
-    m_busy->setMaximumHeight(14);
-    m_busy->setFormat(tr("planning"));
-    m_busy->hide();
-    statusBar()->insertPermanentWidget(0, m_busy);
+    // The running plan's progress with Cancel, and the notice of a plan waiting for the user.
+    m_progress = new PlanProgressWidget(m_planner);
+    statusBar()->insertPermanentWidget(0, m_progress);
     m_notice = new QWidget;
     auto* nl = new QHBoxLayout(m_notice);
     nl->setContentsMargins(6, 0, 6, 0);
@@ -845,7 +841,6 @@ void MainWindow::buildPlanning() {
     connect(keep, &QPushButton::clicked, m_planner, &PlanController::keepEditsWithPendingPlan);
     connect(m_planner, &PlanController::pendingPlanChanged, m_notice, &QWidget::setVisible);
     connect(m_planner, &PlanController::busyChanged, this, [this](bool busy) {
-        m_busy->setVisible(busy);
         m_cancelAct->setEnabled(busy);
     });
     connect(m_planner, &PlanController::message, this, [this](const QString& text) { statusBar()->showMessage(text, 8000); });

@@ -32,6 +32,7 @@ class MissionPanel;
 class MosaicController;
 class PlanController;
 class PlanLayer;
+class PlanProgressWidget;
 class ProblemsPanel;
 class StatisticsPanel;
 class WaypointPanel;
@@ -55,6 +56,7 @@ public:
     GroundStation* groundStation() const { return m_ground; }
     Autosave* autosave() const { return m_autosave.get(); }
     PlanController* planController() const { return m_planner; }
+    PlanProgressWidget* planProgress() const { return m_progress; }
     PlanLayer* planLayer() const { return m_planLayer; }
     WaypointPanel* waypointPanel() const { return m_waypoints; }
     StatisticsPanel* statisticsPanel() const { return m_statistics; }
@@ -144,7 +146,7 @@ private:
     ProblemsPanel* m_problemList = nullptr;
     QComboBox* m_plannerBox = nullptr;
     QDoubleSpinBox* m_angleBox = nullptr;
-    QProgressBar* m_busy = nullptr;
+    PlanProgressWidget* m_progress = nullptr;
     QAction* m_planAct = nullptr;
     QAction* m_cancelAct = nullptr;
     QAction* m_autoAct = nullptr;

@@ -5,16 +5,20 @@
 #include "app/cli/mission_args.h"
 
 #include "core/io/waypoint_formats.h"
+#include "core/mission/plan_geojson.h"
 #include "core/mission/plan_mission.h"
 #include "core/mission/planner_kinds.h"
 #include "core/mission/route_check.h"
 #include "core/mission/validation.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+
+#include <unistd.h>
 
 namespace pf::cli {
 
@@ -33,11 +37,14 @@ const char* const kPlanUsage =
     "sorties, turns) and the totals with the coverage and the makespan (the longest aircraft's time).\n"
     "\n"
     "With --out, writes into DIR:\n"
-    "  plan.geojson   WGS84 FeatureCollection: per aircraft a LineString of the flown path (home, every\n"
-    "                 waypoint, back home; properties aircraft, kind \"path\"), one Point per photo\n"
-    "                 (aircraft, kind \"photo\", seq, alt_m, heading_deg clockwise from north,\n"
-    "                 footprint_across_m, footprint_along_m: the real ground footprint), its subarea\n"
-    "                 (kind \"subarea\") and the uncovered patches (kind \"uncovered\", area_m2)\n"
+    "  plan.geojson   WGS84 FeatureCollection, one feature per line (written as a stream, about 190\n"
+    "                 bytes per photo): per aircraft a LineString of the flown path (home, every\n"
+    "                 waypoint, back home; kind \"path\", aircraft, alt_m, footprint_across_m,\n"
+    "                 footprint_along_m: the real ground footprint of its photos, photos, sorties),\n"
+    "                 one Point per photo (kind \"photo\", aircraft, seq, alt_m, heading_deg clockwise\n"
+    "                 from north), with --footprints one Polygon per photo (kind \"footprint\",\n"
+    "                 aircraft, seq), its subarea (kind \"subarea\") and the uncovered patches (kind\n"
+    "                 \"uncovered\", area_m2)\n"
     "  metrics.json   {\"aircraft\": [{\"name\", cells, photos, path_length_m, distance_m, turns, jumps,\n"
     "                 revisits, estimated_time_s, time_s (home to home, every sortie), sorties,\n"
     "                 photos_saved, detours, ...}], \"total\": {..., coverage_ratio, nofly_violations,\n"
@@ -51,6 +58,10 @@ const char* const kPlanUsage =
     "Options:\n"
     "  --out DIR                    output directory (created if missing)\n"
     "  --force                      write routes the route check finds errors in (see below)\n"
+    "  --footprints                 plan.geojson also holds every photo's ground footprint polygon\n"
+    "  --quiet                      no progress line on stderr (shown only when stderr is a terminal)\n"
+    "  --progress                   a progress line per stage on stderr, with the seconds since the\n"
+    "                               start, even when stderr is not a terminal (logs)\n"
     "  --format LIST                comma-separated waypoint formats to write (needs --out):\n"
     "                                 plan       QGroundControl .plan\n"
     "                                 waypoints  QGC WPL 110 .waypoints (Mission Planner)\n"
@@ -99,6 +110,43 @@ int writeFile(const std::filesystem::path& path, const std::string& text) {
     return kExitOk;
 }
 
+// Planning progress on stderr. On a terminal one line, rewritten in place at most 10 times a second
+// and cleared at the end; elsewhere nothing, unless asked (--progress): then a line per stage with the
+// seconds since the start (for logs).
+class PlanProgressPrinter {
+public:
+    PlanProgressPrinter(bool terminal, bool lines) : m_terminal(terminal), m_lines(lines) {}
+    ~PlanProgressPrinter() { clear(); }
+    void operator()(double f, const std::string& stage) {
+        const double now = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
+        if (m_lines) {
+            if (stage != m_stage)
+                std::fprintf(stderr, "photoflight-cli: %6.1f s %3d %% %s\n", now, static_cast<int>(f * 100.0),
+                             stage.c_str());
+        } else if (m_terminal && (stage != m_stage || now - m_shown >= 0.1)) {
+            std::fprintf(stderr, "\r\033[Kplanning: %3d %% %s", static_cast<int>(f * 100.0), stage.c_str());
+            std::fflush(stderr);
+            m_shown = now;
+            m_dirty = true;
+        }
+        m_stage = stage;
+    }
+    // Removes the progress line before other output.
+    void clear() {
+        if (m_dirty)
+            std::fprintf(stderr, "\r\033[K");
+        m_dirty = false;
+    }
+
+private:
+    bool m_terminal;
+    bool m_lines;
+    bool m_dirty = false;
+    std::string m_stage;
+    double m_shown = -1.0;
+    std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
+};
+
 } // namespace
 
 int runPlan(const std::vector<std::string>& argv) {
@@ -106,6 +154,9 @@ int runPlan(const std::vector<std::string>& argv) {
     specs.push_back({"out"});
     specs.push_back({"format"});
     specs.push_back({"force", false});
+    specs.push_back({"footprints", false});
+    specs.push_back({"quiet", false});
+    specs.push_back({"progress", false});
     for (auto& s : exportOptionSpecs())
         specs.push_back(s);
     auto args = Args::parse(argv, specs);
@@ -137,7 +188,10 @@ int runPlan(const std::vector<std::string>& argv) {
     std::vector<std::string> printed;
     if (!printValidationProblems(mission::validateMission(m), &printed))
         return kExitBadInput;
-    auto plan = mission::planMission(m);
+    PlanProgressPrinter printer(!args->has("quiet") && ::isatty(STDERR_FILENO) != 0, args->has("progress"));
+    Progress progress([&](double f, const std::string& stage) { printer(f, stage); });
+    auto plan = mission::planMission(m, &progress);
+    printer.clear();
     if (!plan)
         return reportError(plan.error());
     // The planner re-checks the grid and may repeat a validation warning: say each thing once.
@@ -147,10 +201,7 @@ int runPlan(const std::vector<std::string>& argv) {
 
     // The check every exported route passes (as in the desktop application): a route with an error is
     // refused unless the user insists.
-    std::vector<route::Route> planned;
-    for (const auto& a : plan->aircraft)
-        planned.push_back(a.route);
-    const auto routeProblems = mission::routeErrors(m, planned);
+    const auto routeProblems = mission::planRouteErrors(m, *plan);
     for (const auto& p : routeProblems)
         std::cerr << "photoflight-cli: " << (args->has("force") ? "warning: " : "error: ") << p << '\n';
     if (!routeProblems.empty() && !args->has("force"))
@@ -167,8 +218,10 @@ int runPlan(const std::vector<std::string>& argv) {
             return reportError(makeError(ErrorCode::IoError, "cannot create the output directory " + *out + ": " +
                                                                  ec.message()));
         const std::filesystem::path dir(*out);
-        if (int rc = writeFile(dir / "plan.geojson", mission::planToGeoJson(*plan)); rc != kExitOk)
-            return rc;
+        mission::PlanGeoJsonOptions gj;
+        gj.footprints = args->has("footprints");
+        if (auto st = mission::writePlanGeoJsonFile(*plan, (dir / "plan.geojson").string(), gj); !st)
+            return reportError(st.error());
         if (int rc = writeFile(dir / "metrics.json", mission::planMetricsJson(*plan, planner)); rc != kExitOk)
             return rc;
         written.push_back((dir / "plan.geojson").string());

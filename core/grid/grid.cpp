@@ -2,6 +2,8 @@
 // exact geometry only for the cells a boundary crosses.
 #include "core/grid/grid.h"
 
+#include "core/job_scope.h"
+
 #include "core/geo/ogr_adapter.h"
 
 #include <ogr_geometry.h>
@@ -439,6 +441,8 @@ Result<Grid> GridBuilder::build(const geo::MultiPolygon& area, const std::vector
     g.m_state.assign(static_cast<std::size_t>(n), static_cast<std::uint8_t>(CellState::Outside));
     g.m_moves.assign(static_cast<std::size_t>(n), 0);
     for (int i = 0; i < n; ++i) {
+        if ((i & 0x3FFF) == 0 && stopRequested())
+            return makeError(ErrorCode::Cancelled, "building the grid: cancelled");
         if (inArea[i] != kIn)
             continue;
         CellState st = CellState::Free;
@@ -494,6 +498,8 @@ Result<Grid> GridBuilder::build(const geo::MultiPolygon& area, const std::vector
     // Allowed moves: between two visitable 4-neighbours when the segment between flight positions is
     // safe. Two Free cells clear of every buffered zone are joined by a segment inside their own squares.
     for (int i = 0; i < n; ++i) {
+        if ((i & 0xFFFF) == 0 && stopRequested())
+            return makeError(ErrorCode::Cancelled, "building the grid: cancelled");
         if (!g.needsVisit(i))
             continue;
         for (Dir d : {Dir::East, Dir::North}) {

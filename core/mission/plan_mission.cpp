@@ -4,6 +4,9 @@
 #include "core/fleet/area_split.h"
 #include "core/fleet/photo_dedup.h"
 #include "core/geo/polygon_ops.h"
+#include "core/job_scope.h"
+#include "core/mission/memory_estimate.h"
+#include "core/mission/plan_geojson.h"
 #include "core/mission/plan_region.h"
 #include "core/mission/planner_kinds.h"
 #include "core/mission/validation.h"
@@ -17,9 +20,11 @@
 #include <cpl_json.h>
 
 #include <algorithm>
+#include <new>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 
 namespace pf::mission {
 
@@ -33,6 +38,8 @@ constexpr double kBalanceTarget = 1.10;
 } // namespace
 
 namespace {
+
+Error cancelledError() { return makeError(ErrorCode::Cancelled, "planning cancelled"); }
 
 std::string aircraftLabel(const AircraftConfig& a) {
     return a.name.empty() ? std::string("the aircraft") : "aircraft \"" + a.name + "\"";
@@ -184,12 +191,16 @@ Result<MissionPlan> planMissionWith(const Mission& m) {
         constexpr int kRounds = 3;
         for (int round = 0; round < kRounds; ++round) {
             const fleet::RegionTimeEstimator estimate = [&](int i, const geo::MultiPolygon& sub) -> Result<double> {
+                if (stopRequested())
+                    return cancelledError(); // the split stops at its next estimate
                 const std::size_t k = order[static_cast<std::size_t>(i)];
                 auto t = rawEstimate(k, sub);
                 if (!t)
                     return t;
                 return *t * factor[k];
             };
+            if (stopRequested())
+                return cancelledError();
             auto split = fleet::splitArea(geom->area, geom->noFly, ordered, so, estimate);
             if (!split)
                 return makeError(split.error().code,
@@ -236,6 +247,8 @@ Result<MissionPlan> planMissionWith(const Mission& m) {
     });
     std::optional<MissionPlan> first;
     for (const Candidate& c : candidates) {
+        if (stopRequested())
+            return cancelledError();
         auto chosen = buildPlan(m, opt, *geom, c.regions, homes, landing, true);
         if (!chosen)
             return chosen.error();
@@ -260,17 +273,57 @@ Result<MissionPlan> planMissionWith(const Mission& m) {
 // (see planMissionWith), so each aircraft flies no longer than stride would make it fly there; the
 // whole mission planned with each planner in turn was measured as well: on the demo the same
 // makespan (7.0 min) for 3.4 times the planning time (2.0 s against 0.59 s CPU).
-Result<MissionPlan> planMission(const Mission& m) {
-    auto plan = planMissionWith(m);
+namespace {
+
+Result<MissionPlan> planMissionChecked(const Mission& m, Progress* progress);
+
+} // namespace
+
+Result<MissionPlan> planMission(const Mission& m, Progress* progress) {
+    // The estimate refuses what cannot fit before anything large is allocated; should it be wrong,
+    // running out of memory is still a refusal with advice, not an internal error.
+    try {
+        return planMissionChecked(m, progress);
+    } catch (const std::bad_alloc&) {
+        const MemoryEstimate e = estimatePlanMemory(m);
+        return makeError(ErrorCode::TooLarge,
+                         "the plan ran out of memory (it needs about " + metres(e.bytes / 1e9, 1) + " GB for " +
+                             metres(e.cells) + " grid cells and about " + metres(e.photos) +
+                             " photos): fly higher, use a larger cell or split the area into parts");
+    }
+}
+
+namespace {
+
+Result<MissionPlan> planMissionChecked(const Mission& m, Progress* progress) {
+    JobScope scope(progress);
+    const std::size_t budget = memoryBudgetBytes();
+    if (auto fits = checkPlanMemory(m, budget); !fits)
+        return fits.error();
+    Mission one = m;
+    std::string why;
+    // The automatic choice holds two plans of a region at once (the soonest so far and the next);
+    // where only one fits, stride alone plans it, and the choice says why.
+    if (m.options.planner == PlannerKind::Auto && !checkPlanMemory(m, budget, 2).ok()) {
+        one.options.planner = PlannerKind::Stride;
+        why = "stride alone: comparing planners would need more memory than this machine has (" +
+              metres(2.0 * estimatePlanMemory(m).bytes / 1e9, 1) + " GB)";
+    }
+    auto plan = planMissionWith(one);
+    if (stopRequested())
+        return cancelledError(); // whatever a loop broken off left behind is dropped
     if (!plan || m.options.planner != PlannerKind::Auto)
         return plan;
-    std::string choice;
-    for (const auto& a : plan->aircraft)
-        choice += std::string(choice.empty() ? "" : "; ") + (plan->aircraft.size() > 1 ? a.aircraft + ": " : "") +
-                  (a.plannerChoice.empty() ? plannerKindInfo(a.planner).id : a.plannerChoice);
+    std::string choice = why;
+    if (choice.empty())
+        for (const auto& a : plan->aircraft)
+            choice += std::string(choice.empty() ? "" : "; ") + (plan->aircraft.size() > 1 ? a.aircraft + ": " : "") +
+                      (a.plannerChoice.empty() ? plannerKindInfo(a.planner).id : a.plannerChoice);
     plan->plannerChoice = choice;
     return plan;
 }
+
+} // namespace
 
 namespace {
 
@@ -291,6 +344,8 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
             return makeError(ErrorCode::InvalidInput,
                              aircraftLabel(m.aircraft[k]) + ": got no part of the area (too many aircraft for it)");
         auto ap = planRegion(regions[k], geom->noFly, m.aircraft[k], opt, frame, homes[k], landing);
+        if (stopRequested())
+            return cancelledError();
         if (!ap)
             return ap.error();
         ap->subarea = regions[k];
@@ -334,6 +389,10 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         const std::string who = aircraftLabel(cfg);
         for (const auto& w : ap.warnings)
             plan.warnings.push_back(who + ": " + w);
+        if (stopRequested())
+            return cancelledError();
+        reportProgress(check ? 0.6 + 0.25 * static_cast<double>(k) / static_cast<double>(n) : 0.6,
+                       "detours and sorties");
         const bool yardstick = ap.planner == PlannerKind::Lawnmower;
         const route::SafePathFinder& finder = yardstick ? straightFinder : safeFinder;
         std::vector<route::LocalWaypoint> survey = ap.surveyWaypoints;
@@ -367,6 +426,8 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         std::vector<geo::Vec2> path; // home, every waypoint, landing
         const auto& home = homes[k];
         if (home) {
+            if (stopRequested())
+                return cancelledError();
             auto sp = route::splitIntoSorties(survey, *home, finder, model,
                                               route::SortieOptions{cfg.enduranceMin, opt.batteryReserve}, cfg.name);
             if (!sp)
@@ -447,12 +508,16 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
                     {w.pos, w.headingDeg, ap.footprint.real.longSideM, ap.footprint.real.shortSideM});
         }
         ap.sortieRoutes.clear();
+        // Only the sortie's own waypoints are copied: a copy of the whole route per sortie (then cut)
+        // kept its full capacity, sorties x waypoints in all (3.3 GB for 158 sorties of 523,000).
+        std::vector<route::Waypoint> all = std::move(ap.route.waypoints);
+        ap.route.waypoints.clear();
         for (const auto& s : ap.sorties) {
-            route::Route r = ap.route;
-            r.waypoints.assign(ap.route.waypoints.begin() + s.firstWaypoint,
-                               ap.route.waypoints.begin() + s.lastWaypoint + 1);
+            route::Route r = ap.route; // everything but the waypoints
+            r.waypoints.assign(all.begin() + s.firstWaypoint, all.begin() + s.lastWaypoint + 1);
             ap.sortieRoutes.push_back(std::move(r));
         }
+        ap.route.waypoints = std::move(all);
         ap.metrics.photos = static_cast<int>(std::count_if(flown.begin(), flown.end(), [](const auto& w) {
             return w.kind == route::WaypointKind::Photo;
         }));
@@ -473,8 +538,14 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
     }
 
     // 6. The independent check: real footprints of every photo of every aircraft, margin breaches.
+    if (stopRequested())
+        return cancelledError();
     if (check) {
+        reportProgress(0.85, "coverage check");
+        JobScope stage(0.85, 1.0);
         auto cov = plan::checkCoverage(admissible, photoFootprints);
+        if (stopRequested())
+            return cancelledError();
         if (!cov)
             return makeError(cov.error().code, "checking the coverage: " + cov.error().message);
         plan.coverageRatio = cov->coveredFraction;
@@ -532,13 +603,6 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
 
 namespace {
 
-CPLJSONArray position(const geo::LonLat& p) {
-    CPLJSONArray a;
-    a.Add(p.lon);
-    a.Add(p.lat);
-    return a;
-}
-
 void addMetrics(CPLJSONObject& o, const plan::PathMetrics& m) {
     o.Add("visitable_cells", m.visitable);
     o.Add("cells", m.cells);
@@ -556,106 +620,12 @@ void addMetrics(CPLJSONObject& o, const plan::PathMetrics& m) {
     o.Add("turn_ratio", m.turnRatio);
 }
 
-CPLJSONArray ringCoords(const geo::Ring& r, const geo::LocalFrame& frame) {
-    CPLJSONArray a;
-    for (const auto& v : r)
-        a.Add(position(frame.toGeo(v)));
-    if (!r.empty())
-        a.Add(position(frame.toGeo(r.front()))); // GeoJSON rings are closed
-    return a;
-}
-
-// A local MultiPolygon as a WGS84 GeoJSON MultiPolygon geometry.
-CPLJSONObject multiPolygonGeometry(const geo::MultiPolygon& mp, const geo::LocalFrame& frame) {
-    CPLJSONObject g;
-    g.Add("type", "MultiPolygon");
-    CPLJSONArray polys;
-    for (const auto& poly : mp) {
-        CPLJSONArray rings;
-        rings.Add(ringCoords(poly.outer, frame));
-        for (const auto& h : poly.holes)
-            rings.Add(ringCoords(h, frame));
-        polys.Add(rings);
-    }
-    g.Add("coordinates", polys);
-    return g;
-}
-
 } // namespace
 
 std::string planToGeoJson(const MissionPlan& plan) {
-    CPLJSONDocument doc;
-    CPLJSONObject root = doc.GetRoot();
-    root.Add("type", "FeatureCollection");
-    CPLJSONArray features;
-    for (const auto& a : plan.aircraft) {
-        CPLJSONObject line;
-        line.Add("type", "Feature");
-        CPLJSONObject props;
-        props.Add("aircraft", a.aircraft);
-        props.Add("kind", "path");
-        line.Add("properties", props);
-        CPLJSONObject geom;
-        geom.Add("type", "LineString");
-        CPLJSONArray coords;
-        if (a.route.home)
-            coords.Add(position(*a.route.home));
-        // Between two sorties the route itself passes through home (a Transit waypoint there).
-        for (const auto& w : a.route.waypoints)
-            coords.Add(position(w.position));
-        if (a.route.home)
-            coords.Add(position(*a.route.home));
-        geom.Add("coordinates", coords);
-        line.Add("geometry", geom);
-        features.Add(line);
-        int seq = 0;
-        for (const auto& w : a.route.waypoints) {
-            if (w.kind != route::WaypointKind::Photo)
-                continue;
-            CPLJSONObject f;
-            f.Add("type", "Feature");
-            CPLJSONObject p;
-            p.Add("aircraft", a.aircraft);
-            p.Add("seq", ++seq);
-            p.Add("alt_m", w.altitudeM);
-            p.Add("kind", "photo");
-            p.Add("heading_deg", w.headingDeg);
-            p.Add("footprint_across_m", a.footprint.real.longSideM);
-            p.Add("footprint_along_m", a.footprint.real.shortSideM);
-            f.Add("properties", p);
-            CPLJSONObject g;
-            g.Add("type", "Point");
-            g.Add("coordinates", position(w.position));
-            f.Add("geometry", g);
-            features.Add(f);
-        }
-    }
-    if (plan.frame) {
-        for (const auto& a : plan.aircraft) {
-            if (a.subarea.empty())
-                continue;
-            CPLJSONObject f;
-            f.Add("type", "Feature");
-            CPLJSONObject p;
-            p.Add("aircraft", a.aircraft);
-            p.Add("kind", "subarea");
-            f.Add("properties", p);
-            f.Add("geometry", multiPolygonGeometry(a.subarea, *plan.frame));
-            features.Add(f);
-        }
-        for (const auto& u : plan.uncovered) {
-            CPLJSONObject f;
-            f.Add("type", "Feature");
-            CPLJSONObject p;
-            p.Add("kind", "uncovered");
-            p.Add("area_m2", u.areaM2);
-            f.Add("properties", p);
-            f.Add("geometry", multiPolygonGeometry(u.shape, *plan.frame));
-            features.Add(f);
-        }
-    }
-    root.Add("features", features);
-    return doc.SaveAsString();
+    std::ostringstream out;
+    writePlanGeoJson(plan, out);
+    return out.str();
 }
 
 std::string planMetricsJson(const MissionPlan& plan, const std::string& plannerName) {

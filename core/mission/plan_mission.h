@@ -10,6 +10,7 @@
 #include "core/plan/cell_path.h"
 #include "core/plan/flight_time.h"
 #include "core/plan/metrics.h"
+#include "core/progress.h"
 #include "core/result.h"
 #include "core/route/waypoint.h"
 #include "core/sensor/camera.h"
@@ -20,12 +21,8 @@
 
 namespace pf::mission {
 
-// The plan as a GeoJSON FeatureCollection in WGS84: per aircraft a LineString of the flown path (home,
-// every waypoint, landing) with the properties aircraft, kind "path", one Point per photo with
-// aircraft, kind "photo", seq (1-based, per aircraft), alt_m, heading_deg (clockwise from north),
-// footprint_across_m and footprint_along_m (the REAL ground footprint across and along the track), its
-// subarea (Polygon or MultiPolygon, kind "subarea", aircraft) and every uncovered patch listed in the
-// plan (kind "uncovered", area_m2).
+// The plan as GeoJSON text (writePlanGeoJson, default options): for tests and small plans; files are
+// written with writePlanGeoJsonFile, which streams.
 std::string planToGeoJson(const MissionPlan& plan);
 // The metrics as JSON: {"planner", "aircraft": [{"name", ...metrics, time_s, sorties, photos_saved}],
 // "total": {..., coverage_ratio, nofly_violations, makespan_s}, "coverage_ratio", "nofly_violations",
@@ -49,6 +46,9 @@ std::string planMetricsJson(const MissionPlan& plan, const std::string& plannerN
 // altitudes are checked for separation (a warning per pair) and an independent check rasterises the
 // real footprints of every photo (coverage ratio, uncovered patches) and counts margin breaches.
 // Errors name the aircraft and the problem.
-Result<MissionPlan> planMission(const Mission& m);
+// With `progress`, every stage reports to it (its fraction of the whole and its name, "stride: grid"
+// with the automatic choice) and a cancel() makes the call return ErrorCode::Cancelled within a
+// fraction of a second (the loops check it through the JobScope this installs).
+Result<MissionPlan> planMission(const Mission& m, Progress* progress = nullptr);
 
 } // namespace pf::mission

@@ -1,5 +1,6 @@
 #include "core/mission/plan_region.h"
 
+#include "core/job_scope.h"
 #include "core/mission/planner_kinds.h"
 #include "core/mission/validation.h"
 #include "core/plan/best_candidate.h"
@@ -127,7 +128,11 @@ Result<AircraftPlan> gridRegion(const geo::MultiPolygon& region, const std::vect
         return plan::sooner(x.estimatedTimeS, y.estimatedTimeS) ||
                (plan::sameTime(x.estimatedTimeS, y.estimatedTimeS) && x.turns < y.turns);
     };
-    for (double angle : angles) {
+    for (std::size_t ai = 0; ai < angles.size() && !stopRequested(); ++ai) {
+        const double angle = angles[ai];
+        const double f0 = 0.6 * static_cast<double>(ai) / static_cast<double>(angles.size());
+        const double f1 = 0.6 * static_cast<double>(ai + 1) / static_cast<double>(angles.size());
+        reportProgress(f0, "grid");
         grid::GridOptions gopt;
         gopt.cellSize = a.cellSizeM;
         gopt.angleDeg = angle;
@@ -144,7 +149,10 @@ Result<AircraftPlan> gridRegion(const geo::MultiPolygon& region, const std::vect
             req.takeoff = g->nearestVisitable(*home);
             req.landing = g->nearestVisitable(landing ? *landing : *home);
         }
+        reportProgress(f0 + 0.3 * (f1 - f0), "cell path");
         auto path = plan::planCoverage(*g, req, popt);
+        if (stopRequested())
+            break;
         if (!path) {
             if (!firstError)
                 firstError = path.error();
@@ -171,7 +179,8 @@ Result<AircraftPlan> gridRegion(const geo::MultiPolygon& region, const std::vect
     }
     std::size_t chosen = 0;
     auto soonest = plan::soonestTime(); // on a tie the cell path flown sooner wins
-    for (std::size_t i = 0; i < best.size(); ++i) {
+    reportProgress(0.6, "photo waypoints");
+    for (std::size_t i = 0; i < best.size() && !stopRequested(); ++i) {
         AircraftPlan& p = best[i];
         p.localWaypoints = route::photoWaypoints(p.grid, p.path, a.fp);
         route::straightenTransits(p.grid, p.localWaypoints);
@@ -201,7 +210,10 @@ Result<AircraftPlan> sweepRegion(const geo::MultiPolygon& region, const std::vec
     so.landing = landing;
     if (options.gridAngleDeg)
         so.anglesDeg = {*options.gridAngleDeg};
+    reportProgress(0.0, "lanes");
     auto sp = plan::planSweep(region, noFly, so);
+    if (stopRequested())
+        return makeError(ErrorCode::Cancelled, "planning cancelled");
     if (!sp)
         return makeError(sp.error().code, a.who + ": " + sp.error().message);
     AircraftPlan p;
@@ -348,6 +360,8 @@ Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vect
         auto soonest = plan::soonestTime(); // on a tie the planner listed first wins
         std::optional<Error> firstError;
         for (PlannerKind k : {PlannerKind::Sweep, PlannerKind::Stride, PlannerKind::Raster}) {
+            if (stopRequested())
+                return makeError(ErrorCode::Cancelled, "planning cancelled");
             auto p = planOne(region, noFly, *a, k, options, frame, home, landing);
             const char* id = plannerKindInfo(k).id;
             if (!p) {
@@ -366,6 +380,8 @@ Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vect
         out->plannerChoice = std::string(plannerKindInfo(out->planner).id) + " flies soonest (" + note +
                              ", home to home in one flight)";
     }
+    if (stopRequested())
+        return makeError(ErrorCode::Cancelled, "planning cancelled");
     if (!out)
         return out;
     out->metrics.planningMs =

@@ -92,21 +92,31 @@ RouteCheck checkRoute(const route::Route& route, const RouteLimits& limits) {
     auto frame = frameFor(route, limits);
     if (!frame)
         return out;
-    std::vector<geo::Vec2> local(n);
+    // One transformation for all waypoints (one call per point allocates inside PROJ each time).
+    geo::GeoRing geoPoints(n);
     for (std::size_t i = 0; i < n; ++i)
-        local[i] = frame->toLocal(route.waypoints[i].position);
+        geoPoints[i] = route.waypoints[i].position;
+    const std::vector<geo::Vec2> local = frame->toLocal(geoPoints);
 
     // One field per zone, so that a message names the zone. The check's threshold: margin less the
     // drawing tolerance, without the planner's slack (geo/no_fly_field.h).
     const double margin = limits.safetyMarginM;
     std::vector<geo::NoFlyField> fields;
-    for (const auto& z : limits.zones)
-        fields.push_back(geo::NoFlyField::forCheck(std::vector<geo::Polygon>{frame->toLocal(z.polygon)}, margin));
+    std::vector<geo::Polygon> localZones;
+    for (const auto& z : limits.zones) {
+        localZones.push_back(frame->toLocal(z.polygon));
+        fields.push_back(geo::NoFlyField::forCheck(std::vector<geo::Polygon>{localZones.back()}, margin));
+    }
+    // All zones at once answer "safe" fast (far zones skipped by their boxes); the zone by zone
+    // clearance that names the zone is measured only where that answer is no.
+    const geo::NoFlyField all = geo::NoFlyField::forCheck(localZones, margin);
     auto zoneName = [&](std::size_t z) {
         return limits.zones[z].name.empty() ? "no-fly zone " + std::to_string(z + 1)
                                             : "no-fly zone " + limits.zones[z].name;
     };
     auto pointProblem = [&](const geo::Vec2& p) -> std::string {
+        if (all.pointIsSafe(p))
+            return {};
         for (std::size_t z = 0; z < fields.size(); ++z) {
             const double c = fields[z].clearance(p);
             if (c <= 0.0)
@@ -117,6 +127,8 @@ RouteCheck checkRoute(const route::Route& route, const RouteLimits& limits) {
         return {};
     };
     auto legProblem = [&](const geo::Vec2& a, const geo::Vec2& b, const std::string& what) -> std::string {
+        if (all.segmentIsSafe(a, b))
+            return {};
         for (std::size_t z = 0; z < fields.size(); ++z) {
             const double c = fields[z].clearance(a, b);
             if (c <= 0.0)
@@ -133,6 +145,8 @@ RouteCheck checkRoute(const route::Route& route, const RouteLimits& limits) {
             ++out.noFly;
         }
     for (std::size_t i = 0; i + 1 < n; ++i) {
+        if (all.segmentIsSafe(local[i], local[i + 1]))
+            continue; // no message to build
         out.leg[i] = legProblem(local[i], local[i + 1], "the leg to waypoint " + std::to_string(i + 2));
         out.noFly += out.leg[i].empty() ? 0 : 1;
     }
@@ -192,6 +206,28 @@ std::vector<std::string> routeErrors(const Mission& m, const std::vector<route::
         const auto lines = checkRoute(r, routeLimits(m, r)).messages(r.aircraft.empty() ? "route " + std::to_string(i + 1)
                                                                                           : r.aircraft);
         out.insert(out.end(), lines.begin(), lines.end());
+    }
+    return out;
+}
+
+std::vector<std::string> planRouteErrors(const Mission& m, const MissionPlan& plan) {
+    std::vector<std::string> out;
+    for (std::size_t i = 0; i < plan.aircraft.size(); ++i) {
+        const auto& a = plan.aircraft[i];
+        const std::string label = a.route.aircraft.empty() ? "route " + std::to_string(i + 1) : a.route.aircraft;
+        if (a.sortieRoutes.size() < 2) {
+            const auto lines = checkRoute(a.route, routeLimits(m, a.route)).messages(label);
+            out.insert(out.end(), lines.begin(), lines.end());
+            continue;
+        }
+        for (std::size_t s = 0; s < a.sortieRoutes.size(); ++s) {
+            const auto& r = a.sortieRoutes[s];
+            RouteLimits limits = routeLimits(m, r);
+            if (s + 1 < a.sortieRoutes.size())
+                limits.landing.reset(); // every sortie but the last comes back home
+            const auto lines = checkRoute(r, limits).messages(label + ", sortie " + std::to_string(s + 1));
+            out.insert(out.end(), lines.begin(), lines.end());
+        }
     }
     return out;
 }

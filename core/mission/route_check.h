@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/mission/mission.h"
+#include "core/mission/mission_plan.h"
 #include "core/route/waypoint.h"
 
 #include <optional>
@@ -55,5 +56,9 @@ RouteLimits routeLimits(const Mission& m, const route::Route& route);
 
 // Checks every route against its limits in `m`; the lines of RouteCheck::messages, route after route.
 std::vector<std::string> routeErrors(const Mission& m, const std::vector<route::Route>& routes);
+// The same for a planned mission as it is flown: an aircraft needing several batteries is checked
+// sortie by sortie (each from home and back home), so the leg from one sortie's last waypoint to the
+// next one's first, never flown, is not reported; lines name the aircraft and the sortie.
+std::vector<std::string> planRouteErrors(const Mission& m, const MissionPlan& plan);
 
 } // namespace pf::mission

@@ -6,6 +6,7 @@
 #include <ogrsf_frmts.h>
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <filesystem>
 
@@ -58,6 +59,7 @@ Result<PlannedFlight> readPlannedFlight(const std::string& pathIn) {
     PlannedFlight flight;
     flight.source = path.filename().string();
     int featureNo = 0;
+    std::map<std::string, std::pair<double, double>> pathFootprint; // aircraft -> across, along
     layer->ResetReading();
     for (auto& f : *layer) {
         ++featureNo;
@@ -79,8 +81,14 @@ Result<PlannedFlight> readPlannedFlight(const std::string& pathIn) {
             p.position = {pt->getX(), pt->getY()};
             p.altitudeM = f->GetFieldAsDouble(alt);
             p.headingDeg = heading >= 0 ? f->GetFieldAsDouble(heading) : 0.0;
-            p.footprintAcrossM = across >= 0 ? f->GetFieldAsDouble(across) : 0.0;
-            p.footprintAlongM = along >= 0 ? f->GetFieldAsDouble(along) : 0.0;
+            // A photo without its own footprint has its aircraft's path's (plan.geojson gives it once).
+            const bool ownFootprint = across >= 0 && along >= 0 && f->IsFieldSetAndNotNull(across) &&
+                                      f->IsFieldSetAndNotNull(along);
+            const auto fp = pathFootprint.find(p.aircraft);
+            p.footprintAcrossM = ownFootprint ? f->GetFieldAsDouble(across)
+                                              : fp != pathFootprint.end() ? fp->second.first : 0.0;
+            p.footprintAlongM = ownFootprint ? f->GetFieldAsDouble(along)
+                                             : fp != pathFootprint.end() ? fp->second.second : 0.0;
             if (!std::isfinite(p.position.lon) || !std::isfinite(p.position.lat) ||
                 std::abs(p.position.lat) > 90 || std::abs(p.position.lon) > 180 ||
                 !std::isfinite(p.altitudeM) || !(p.altitudeM > 0))
@@ -88,6 +96,10 @@ Result<PlannedFlight> readPlannedFlight(const std::string& pathIn) {
                                  name + ": feature " + std::to_string(featureNo) +
                                      ": photo position or altitude out of range");
             flight.photos.push_back(p);
+        } else if (k == "path" && across >= 0 && along >= 0 && f->IsFieldSetAndNotNull(across) &&
+                   f->IsFieldSetAndNotNull(along)) {
+            pathFootprint[aircraft >= 0 ? f->GetFieldAsString(aircraft) : ""] = {
+                f->GetFieldAsDouble(across), f->GetFieldAsDouble(along)};
         } else if (k == "subarea" && g) {
             const std::string owner = aircraft >= 0 ? f->GetFieldAsString(aircraft) : "";
             for (const auto& poly : geo::detail::fromOgr(g)) {

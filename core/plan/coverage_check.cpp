@@ -1,12 +1,13 @@
 #include "core/plan/coverage_check.h"
 
+#include "core/job_scope.h"
+
 #include "core/geo/polygon_ops.h"
 #include "core/route/safety.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <deque>
 #include <limits>
 #include <numeric>
 
@@ -118,7 +119,13 @@ Result<CoverageReport> checkCoverage(const geo::MultiPolygon& admissible, const 
         for (int i = i0; i < i1; ++i)
             px[ras.index(i, j)] ^= 1; // even-odd across separate parts too
     });
-    for (const auto& photo : photos) {
+    for (std::size_t k = 0; k < photos.size(); ++k) {
+        if ((k & 0x3FFF) == 0) {
+            if (stopRequested())
+                return makeError(ErrorCode::Cancelled, "checking the coverage: cancelled");
+            reportProgress(static_cast<double>(k) / static_cast<double>(photos.size()), "coverage check");
+        }
+        const PhotoFootprint& photo = photos[k];
         const geo::Ring ring = footprintRing(photo);
         scanRings(ras, {&ring}, [&](int j, int i0, int i1) {
             for (int i = i0; i < i1; ++i) {
@@ -143,17 +150,21 @@ Result<CoverageReport> checkCoverage(const geo::MultiPolygon& admissible, const 
     struct Comp {
         std::vector<std::size_t> pixels;
     };
+    // A pixel found is marked 3 in place (no second raster); the search is depth first on a stack.
+    constexpr std::uint8_t kSeen = 3;
     std::vector<Comp> comps;
-    std::vector<std::uint8_t> seen(px.size(), 0);
+    std::vector<std::size_t> q;
     for (std::size_t s = 0; s < px.size(); ++s) {
-        if (px[s] != 1 || seen[s])
+        if ((s & 0xFFFFF) == 0 && stopRequested())
+            return makeError(ErrorCode::Cancelled, "checking the coverage: cancelled");
+        if (px[s] != 1)
             continue;
         Comp c;
-        std::deque<std::size_t> q{s};
-        seen[s] = 1;
+        q.assign(1, s);
+        px[s] = kSeen;
         while (!q.empty()) {
-            const std::size_t p = q.front();
-            q.pop_front();
+            const std::size_t p = q.back();
+            q.pop_back();
             c.pixels.push_back(p);
             const int i = static_cast<int>(p % static_cast<std::size_t>(ras.nx));
             const int j = static_cast<int>(p / static_cast<std::size_t>(ras.nx));
@@ -162,8 +173,8 @@ Result<CoverageReport> checkCoverage(const geo::MultiPolygon& admissible, const 
                 if (n[0] < 0 || n[1] < 0 || n[0] >= ras.nx || n[1] >= ras.ny)
                     continue;
                 const std::size_t k = ras.index(n[0], n[1]);
-                if (px[k] == 1 && !seen[k]) {
-                    seen[k] = 1;
+                if (px[k] == 1) {
+                    px[k] = kSeen;
                     q.push_back(k);
                 }
             }

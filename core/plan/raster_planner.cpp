@@ -1,5 +1,7 @@
 #include "core/plan/raster_planner.h"
 
+#include "core/job_scope.h"
+
 #include "core/plan/metrics.h"
 #include "core/plan/stride_planner.h"
 
@@ -65,7 +67,7 @@ CellPath rasterWalk(const grid::Grid& g, int start, bool byColumns) {
     visit(start);
     int cur = start;
     int heading = longerSide(cur);
-    while (remaining > 0) {
+    while (remaining > 0 && !stopRequested()) { // a cancelled job drops the partial path
         const int reverse = (heading + 2) % 4;
         int d = -1;
         if (isFree(cur, heading)) {

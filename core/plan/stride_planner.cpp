@@ -1,5 +1,6 @@
 #include "core/plan/stride_planner.h"
 
+#include "core/job_scope.h"
 #include "core/plan/best_candidate.h"
 #include "core/plan/grid_search.h"
 #include "core/plan/nearest_cell.h"
@@ -107,7 +108,7 @@ public:
         if (m_trace)
             m_trace->segmentEnds.push_back(1);
         std::vector<int> best, cand;
-        while (m_remaining > 0) {
+        while (m_remaining > 0 && !stopRequested()) { // a cancelled job drops the partial path
             const int cur = m_path.cells.back();
             // Steps 2-4: the longest stride towards each unvisited neighbour.
             int bestDir = -1;
@@ -671,6 +672,8 @@ Result<CellPath> planStride(const Grid& g, const CoverageRequest& req, StrideTra
     if (!start)
         return start.error();
     for (const StrideVariant& v : strideVariants(g, *start)) {
+        if (stopRequested())
+            return makeError(ErrorCode::Cancelled, "planning cancelled");
         StrideTrace t;
         auto p = planStrideVariant(g, req, v, trace ? &t : nullptr);
         if (!p)

@@ -1,5 +1,7 @@
 #include "core/plan/sweep_planner.h"
 
+#include "core/job_scope.h"
+
 #include "core/geo/no_fly_field.h"
 #include "core/geo/polygon_ops.h"
 #include "core/geo/visibility_graph.h"
@@ -553,6 +555,8 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     std::vector<DirectionPlan> dirs;
     geo::MultiPolygon shrunk;
     for (double a : angles) {
+        if (stopRequested())
+            return makeError(ErrorCode::Cancelled, "planning the sweep: cancelled");
         DirectionPlan dp;
         dp.angleDeg = a;
         auto dec = decompose(freeSpace, SweepFrame{a * M_PI / 180.0});
@@ -639,6 +643,8 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     std::unique_ptr<FullPlan> best;
     const int planned = std::min<int>(opt.plannedDirections, static_cast<int>(rank.size()));
     for (int r = 0; r < planned; ++r) {
+        if (stopRequested())
+            return makeError(ErrorCode::Cancelled, "planning the sweep: cancelled");
         const DirectionPlan& dp = dirs[rank[static_cast<std::size_t>(r)]];
         auto fp = std::make_unique<FullPlan>();
         fp->angleDeg = dp.angleDeg;
@@ -679,6 +685,8 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
             fp->landingPt = router.add(EndPoint{*landing, Vec2(0, 0)});
         // The order problem over the reachable cells: two ways each (first lane's direction).
         for (std::size_t ci = 0; ci < fp->cells.size(); ++ci) {
+            if (stopRequested())
+                return makeError(ErrorCode::Cancelled, "planning the sweep: cancelled");
             const auto& pc = fp->cells[ci];
             if (!pc.reachable)
                 continue;
@@ -727,6 +735,8 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         // of one cell between two of another (round a zone, say), where cell by cell cannot.
         fp->laneBase.assign(fp->cells.size(), -1);
         for (std::size_t ci = 0; ci < fp->cells.size(); ++ci) {
+            if (stopRequested())
+                return makeError(ErrorCode::Cancelled, "planning the sweep: cancelled");
             const auto& pc = fp->cells[ci];
             if (!pc.reachable)
                 continue;

@@ -1,5 +1,7 @@
 #include "core/route/photo_waypoints.h"
 
+#include "core/job_scope.h"
+
 #include "core/geo/polygon_ops.h"
 #include "core/plan/coverage_check.h"
 #include "core/route/lanes.h"
@@ -197,6 +199,8 @@ std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellP
     };
     std::size_t gi = 0;
     for (std::size_t i = 0; i < n; ++i) {
+        if ((i & 0xFFF) == 0 && stopRequested())
+            break; // a cancelled job drops the partial list
         const int c = path.cells[i];
         if (path.revisit[i]) {
             const Vec2 p = g.flightPosition(c);

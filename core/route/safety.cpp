@@ -1,5 +1,7 @@
 #include "core/route/safety.h"
 
+#include "core/job_scope.h"
+
 #include "core/geo/polygon_ops.h"
 #include "core/plan/coverage_check.h"
 
@@ -85,6 +87,8 @@ Result<std::vector<LocalWaypoint>> enforceNoFly(const std::vector<LocalWaypoint>
     std::vector<LocalWaypoint> out;
     out.reserve(moved.size());
     for (std::size_t i = 0; i < moved.size(); ++i) {
+        if ((i & 0x3FF) == 0 && stopRequested())
+            return makeError(ErrorCode::Cancelled, "making the route safe: cancelled");
         if (i > 0) {
             const Vec2 a = moved[i - 1].pos, b = moved[i].pos;
             auto path = finder.detour(a, b);

@@ -48,8 +48,12 @@ PlanController::PlanController(MissionDocument* doc, QObject* parent)
             m_debounce.start();
     });
     connect(m_doc, &MissionDocument::missionReset, this, [this] {
-        // A different mission: nothing of the old one's plans may appear.
+        // A different mission: nothing of the old one's plans may appear, and none goes on computing.
         ++m_generation;
+        m_queued.reset();
+        cancelWorker();
+        for (auto& t : m_compareTokens)
+            t->cancel();
         ++m_compareGeneration;
         m_comparing = 0;
         m_plan.reset();
@@ -66,7 +70,19 @@ PlanController::PlanController(MissionDocument* doc, QObject* parent)
     });
 }
 
-PlanController::~PlanController() = default;
+// Quit (the window and its controller go): every worker is told to stop and waited for, a fraction of
+// a second, so that no computation outlives the window or keeps the process busy.
+PlanController::~PlanController() {
+    m_queued.reset();
+    if (m_token)
+        m_token->cancel();
+    for (auto& t : m_compareTokens)
+        t->cancel();
+    if (m_worker)
+        m_worker->waitForFinished();
+    for (auto* w : m_compareWorkers)
+        w->waitForFinished();
+}
 
 void PlanController::setAutoPlan(bool on) {
     m_auto = on;
@@ -81,11 +97,18 @@ void PlanController::planNow(bool replaceEdited) {
 
 void PlanController::cancel() {
     m_debounce.stop();
+    m_queued.reset();
     if (!m_busy)
         return;
     ++m_generation;
+    cancelWorker();
     setBusy(false);
     emit message(tr("Planning cancelled."));
+}
+
+void PlanController::cancelWorker() {
+    if (m_token)
+        m_token->cancel();
 }
 
 void PlanController::setBusy(bool on) {
@@ -96,8 +119,23 @@ void PlanController::setBusy(bool on) {
 }
 
 void PlanController::start(bool userAsked, bool replaceEdited) {
+    if (m_worker) {
+        // The running plan is for an older mission: it stops, and this request waits for its slot
+        // (replacing any request waiting already: only the newest counts).
+        ++m_generation;
+        cancelWorker();
+        const bool replace = replaceEdited || (m_queued && m_queued->replaceEdited);
+        m_queued = Request{userAsked || (m_queued && m_queued->userAsked), replace};
+        setBusy(true);
+        return;
+    }
+    launch(Request{userAsked, replaceEdited});
+}
+
+void PlanController::launch(const Request& request) {
+    const bool userAsked = request.userAsked;
     const int generation = ++m_generation;
-    if (replaceEdited)
+    if (request.replaceEdited)
         m_replaceGeneration = generation;
     mission::Mission m = m_doc->mission();
     if (m.area.outer.size() < 3 || m.aircraft.empty()) {
@@ -112,11 +150,30 @@ void PlanController::start(bool userAsked, bool replaceEdited) {
     if (userAsked)
         emit message(tr("Planning…"));
     auto* watcher = new QFutureWatcher<std::shared_ptr<const Outcome>>(this);
+    m_worker = watcher;
+    // Reports come from the worker thread and are queued to this one; the destructor waits for the
+    // worker, so none arrives after it.
+    m_token = std::make_shared<Progress>([this, generation](double f, const std::string& stage) {
+        QMetaObject::invokeMethod(
+            this,
+            [this, generation, f, stage = QString::fromStdString(stage)] {
+                if (generation == m_generation && m_busy)
+                    emit progressChanged(f, stage);
+            },
+            Qt::QueuedConnection);
+    });
     connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] {
+        m_worker = nullptr;
+        m_token.reset();
         finished(watcher->result());
         watcher->deleteLater();
+        if (m_queued) {
+            const Request next = *m_queued;
+            m_queued.reset();
+            launch(next);
+        }
     });
-    watcher->setFuture(QtConcurrent::run([generation, m = std::move(m)] {
+    watcher->setFuture(QtConcurrent::run([generation, m = std::move(m), token = m_token] {
         auto out = std::make_shared<Outcome>();
         out->generation = generation;
         out->input = m;
@@ -133,7 +190,7 @@ void PlanController::start(bool userAsked, bool replaceEdited) {
             out->error = lines.join(QLatin1Char('\n'));
             return std::shared_ptr<const Outcome>(std::move(out));
         }
-        auto r = mission::planMission(m);
+        auto r = mission::planMission(m, token.get());
         out->wallMs = double(t.nsecsElapsed()) / 1e6;
         if (r)
             out->plan = std::move(r).value();
@@ -145,7 +202,7 @@ void PlanController::start(bool userAsked, bool replaceEdited) {
 
 void PlanController::finished(const std::shared_ptr<const Outcome>& outcome) {
     if (!outcome || outcome->generation != m_generation)
-        return; // superseded or cancelled
+        return; // superseded or cancelled (a queued request keeps the busy state)
     setBusy(false);
     m_wallMs = outcome->wallMs;
     if (!outcome->plan) {
@@ -225,6 +282,8 @@ void PlanController::discardPendingPlan() {
 }
 
 void PlanController::compare() {
+    for (auto& t : m_compareTokens)
+        t->cancel(); // an older comparison's rows would be dropped anyway
     const int generation = ++m_compareGeneration;
     const mission::Mission base = m_doc->mission();
     m_compareInput = base;
@@ -237,8 +296,15 @@ void PlanController::compare() {
         m.options.planner = kind;
         ++m_comparing;
         auto* watcher = new QFutureWatcher<PlannerComparisonRow>(this);
-        connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, generation] {
+        auto token = std::make_shared<Progress>();
+        m_compareTokens.push_back(token);
+        m_compareWorkers.push_back(watcher);
+        connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, generation, token] {
             watcher->deleteLater();
+            m_compareWorkers.erase(std::remove(m_compareWorkers.begin(), m_compareWorkers.end(), watcher),
+                                   m_compareWorkers.end());
+            m_compareTokens.erase(std::remove(m_compareTokens.begin(), m_compareTokens.end(), token),
+                                  m_compareTokens.end());
             if (generation != m_compareGeneration)
                 return;
             --m_comparing;
@@ -255,7 +321,7 @@ void PlanController::compare() {
                       [&](const auto& a, const auto& b) { return order(a.planner) < order(b.planner); });
             emit comparisonChanged();
         });
-        watcher->setFuture(QtConcurrent::run([kind, m = std::move(m)] {
+        watcher->setFuture(QtConcurrent::run([kind, m = std::move(m), token] {
             PlannerComparisonRow row;
             row.planner = kind;
             QElapsedTimer t;
@@ -265,7 +331,7 @@ void PlanController::compare() {
                 row.error = QString::fromStdString(report.errorSummary());
                 return row;
             }
-            auto r = mission::planMission(m);
+            auto r = mission::planMission(m, token.get());
             row.wallMs = double(t.nsecsElapsed()) / 1e6;
             if (!r) {
                 row.error = QString::fromStdString(r.error().message);
@@ -295,7 +361,7 @@ void PlanController::compare() {
 bool PlanController::waitForIdle(int timeoutMs) {
     QElapsedTimer t;
     t.start();
-    while (m_busy || m_comparing > 0 || m_debounce.isActive()) {
+    while (m_busy || m_worker || m_comparing > 0 || m_debounce.isActive()) {
         if (t.elapsed() > timeoutMs)
             return false;
         QCoreApplication::processEvents(QEventLoop::AllEvents, 20);

@@ -4,7 +4,10 @@
 
 #include "core/mission/plan_mission.h"
 
+#include "core/progress.h"
+
 #include <QElapsedTimer>
+#include <QFutureWatcherBase>
 #include <QObject>
 #include <QString>
 #include <QTimer>
@@ -44,11 +47,17 @@ public:
     // dropped. `replaceEdited`: the user agreed that this plan replaces routes edited by hand;
     // otherwise a plan finishing while routes are edited waits as the pending plan.
     void planNow(bool replaceEdited = false);
-    // Stops waiting for the running plan. The core has no cancel hook, so the computation finishes
-    // on its worker thread, but its result is dropped (generation numbers): no outdated plan is
-    // shown.
+    // Cancels the running plan: its worker stops within a fraction of a second (the core's cancel
+    // token) and its result, if any, is dropped (generation numbers): no outdated plan is shown.
+    // Every new plan (an edit's, the Plan button's) cancels the running one the same way; while the
+    // cancelled one winds down the newest request waits (never more than one), so a worker slot is
+    // never held by work nobody wants.
     void cancel();
     bool isBusy() const { return m_busy; }
+    // Whether a worker still computes (a cancelled one until it has stopped), and the plan request
+    // waiting for it.
+    bool isWorking() const { return m_worker != nullptr; }
+    bool hasQueuedPlan() const { return m_queued.has_value(); }
     // Replanning a short while after every edit of the mission.
     void setAutoPlan(bool on);
     bool autoPlan() const { return m_auto; }
@@ -87,6 +96,8 @@ public:
 
 signals:
     void busyChanged(bool busy);
+    // The running plan's progress: fraction of the whole in [0, 1] and the stage in words.
+    void progressChanged(double fraction, const QString& stage);
     // A plan was applied (plan() changed) or planning failed (lastError() not empty).
     void planChanged();
     void pendingPlanChanged(bool pending);
@@ -100,7 +111,21 @@ private:
     void apply(mission::MissionPlan plan, mission::Mission input, double wallMs, bool keepEdits = false);
     void setBusy(bool on);
 
+    struct Request {
+        bool userAsked = false;
+        bool replaceEdited = false;
+    };
+    void launch(const Request& request);
+    void cancelWorker();
+
     MissionDocument* m_doc;
+    // The running plan's worker and cancel token (null when none runs), the request waiting for it.
+    QFutureWatcherBase* m_worker = nullptr;
+    std::shared_ptr<Progress> m_token;
+    std::optional<Request> m_queued;
+    // Comparison runs, cancelled when the window closes.
+    std::vector<std::shared_ptr<Progress>> m_compareTokens;
+    std::vector<QFutureWatcherBase*> m_compareWorkers;
     QTimer m_debounce;
     bool m_auto = true;
     bool m_busy = false;

@@ -136,6 +136,38 @@ TEST(RouteCheck, RouteErrorsLabelsEveryRoute) {
     EXPECT_EQ(lines[3], "route 2, waypoint 2: altitude 0.5 m is below the minimum safe altitude of 2.0 m");
 }
 
+// A plan flown in two sorties: the jump from the first sortie's last waypoint (west of the zone) to
+// the second's first (east of it) crosses the zone but is never flown (the aircraft goes home between
+// them); checked sortie by sortie, the plan has no error, while the route as one flight has that leg.
+TEST(RouteCheck, PlanRouteErrorsChecksEachSortieFromHome) {
+    Site s;
+    MissionPlan plan;
+    AircraftPlan a;
+    a.route = s.route({{-40, 0}, {-40, 30}, {40, 30}, {40, 0}});
+    a.route.home = s.m.home;
+    a.sorties = {{0, 1, 2, 0, 0}, {2, 3, 2, 0, 0}};
+    for (const auto& so : a.sorties) {
+        route::Route r = a.route;
+        r.waypoints.assign(a.route.waypoints.begin() + so.firstWaypoint, a.route.waypoints.begin() + so.lastWaypoint + 1);
+        a.sortieRoutes.push_back(r);
+    }
+    // As one flight the leg from (-40, 30) to (40, 30) passes 20 m from the zone: fine; make it cross.
+    a.route.waypoints[1].position = s.frame.toGeo(geo::Vec2{-40, 0});
+    a.route.waypoints[2].position = s.frame.toGeo(geo::Vec2{40, 0});
+    a.sortieRoutes[0].waypoints[1].position = a.route.waypoints[1].position;
+    a.sortieRoutes[1].waypoints[0].position = a.route.waypoints[2].position;
+    plan.aircraft.push_back(a);
+    const auto whole = routeErrors(s.m, {a.route});
+    ASSERT_EQ(whole.size(), 1u);
+    EXPECT_EQ(whole[0], "Copter, waypoint 2: the leg to waypoint 3 crosses no-fly zone Mast");
+    EXPECT_TRUE(planRouteErrors(s.m, plan).empty());
+    // A real breach inside a sortie is still found, and named with its sortie.
+    plan.aircraft[0].sortieRoutes[1].waypoints[1].position = s.frame.toGeo(geo::Vec2{0, 0});
+    const auto lines = planRouteErrors(s.m, plan);
+    ASSERT_FALSE(lines.empty());
+    EXPECT_EQ(lines[0].rfind("Copter, sortie 2, waypoint", 0), 0u) << lines[0];
+}
+
 TEST(PlannerKinds, OneTableNamesEveryKindBothWays) {
     const auto& kinds = plannerKinds();
     ASSERT_GE(kinds.size(), 3u);

@@ -1,0 +1,92 @@
+#include "core/mission/memory_estimate.h"
+
+#include "core/geo/polygon_ops.h"
+#include "core/grid/grid.h"
+#include "core/mission/validation.h"
+#include "core/sensor/camera.h"
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace pf::mission {
+
+namespace {
+
+constexpr double kBaseBytes = 80e6;
+constexpr double kBytesPerCell = 64.0;
+constexpr double kBytesPerPhoto = 320.0;
+
+std::string gigabytes(double bytes) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.1f GB", bytes / 1e9);
+    return buf;
+}
+
+} // namespace
+
+MemoryEstimate estimatePlanMemory(const Mission& m) {
+    MemoryEstimate e;
+    auto geom = localGeometry(m);
+    if (!geom)
+        return e;
+    const geo::MultiPolygon area{geom->area};
+    const double areaM2 = std::abs(geo::signedArea(geom->area.outer));
+    for (const auto& a : m.aircraft) {
+        auto alt = resolvedAltitude(a);
+        if (!alt)
+            continue;
+        auto eff = sensor::effectiveFootprint(a.camera, *alt, a.overlap);
+        if (!eff || !(eff->acrossM > 0) || !(eff->alongM > 0))
+            continue;
+        e.cells += grid::Grid::sizeFor(area, sensor::cellSizeFor(*eff), m.options.gridAngleDeg.value_or(0.0)).cells();
+        // Several aircraft share the area: each photographs a part, the sum is the whole (at most).
+        e.photos = std::max(e.photos, areaM2 / (eff->acrossM * eff->alongM));
+    }
+    e.bytes = kBaseBytes + kBytesPerCell * e.cells + kBytesPerPhoto * e.photos;
+    return e;
+}
+
+std::size_t memoryBudgetBytes() {
+    double budget = 0.75 * static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGE_SIZE));
+    rlimit lim{};
+    if (::getrlimit(RLIMIT_AS, &lim) == 0 && lim.rlim_cur != RLIM_INFINITY)
+        budget = std::min(budget, 0.75 * static_cast<double>(lim.rlim_cur));
+    return budget > 0 ? static_cast<std::size_t>(budget) : static_cast<std::size_t>(1) << 30;
+}
+
+Status checkPlanMemory(const Mission& m, std::size_t budgetBytes, int plans) {
+    const MemoryEstimate e = estimatePlanMemory(m);
+    const double perPlan = e.bytes - kBaseBytes;
+    const double need = kBaseBytes + std::max(1, plans) * perPlan;
+    const double budget = static_cast<double>(budgetBytes);
+    if (need <= budget)
+        return {};
+    // Cells and photos both shrink with the square of the altitude (and of the cell size).
+    const double room = std::max(budget - kBaseBytes, 1e6) / std::max(1, plans);
+    const double scale = std::sqrt(perPlan / room) * 1.05;
+    std::string fits;
+    if (!m.aircraft.empty()) {
+        const auto& a = m.aircraft.front();
+        auto alt = resolvedAltitude(a);
+        auto eff = alt ? sensor::effectiveFootprint(a.camera, *alt, a.overlap) : Result<sensor::EffectiveFootprint>(alt.error());
+        if (alt && eff) {
+            char buf[200];
+            std::snprintf(buf, sizeof buf, "; an altitude of %.0f m or more (now %.1f m), or a cell of %.1f m or more (now %.1f m), fits",
+                          std::ceil(*alt * scale), *alt, std::ceil(sensor::cellSizeFor(*eff) * scale * 10.0) / 10.0,
+                          sensor::cellSizeFor(*eff));
+            fits = buf;
+        }
+    }
+    char counts[160];
+    std::snprintf(counts, sizeof counts, " (%.0f grid cells, about %.0f photos%s)", e.cells, e.photos,
+                  plans > 1 ? ", plans compared two at a time" : "");
+    return makeError(ErrorCode::TooLarge, "the plan would need about " + gigabytes(need) + " of memory" + counts +
+                                              ", more than the " + gigabytes(budget) +
+                                              " this machine can give it" + fits + "; or split the area into parts");
+}
+
+} // namespace pf::mission

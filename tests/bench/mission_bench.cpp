@@ -1,0 +1,152 @@
+// Benchmarks of the whole plan (what photoflight-cli plan does, without the files) on square sites with
+// 30 round no-fly zones at 5 m altitude (the big-area case): time and peak memory per site size, and
+// the latency of a cancel at several stages. Sites of 1.25 km and more are named "Big" and left out of
+// CI's smoke run (--benchmark_filter=-Big); run them by hand:
+//   build/tests/bench/pf_bench --benchmark_filter=Mission
+#include "core/geo/local_frame.h"
+#include "core/mission/plan_mission.h"
+#include "core/progress.h"
+
+#include <benchmark/benchmark.h>
+
+#include <sys/resource.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <random>
+#include <thread>
+
+namespace {
+
+using namespace pf;
+
+// A square site of `sideM` metres with 30 seeded round zones (radius 2 % of the side), home at the
+// south-west corner, one Falcon 8 at 5 m (60 x 45 degree camera, 70 % / 60 % overlap).
+mission::Mission squareSite(double sideM, mission::PlannerKind kind) {
+    const geo::LocalFrame frame = *geo::LocalFrame::create({8.33, 49.01});
+    mission::Mission m;
+    m.area = frame.toGeo(geo::Polygon{{{0, 0}, {sideM, 0}, {sideM, sideM}, {0, sideM}}, {}});
+    std::mt19937 rng(15);
+    std::uniform_real_distribution<double> at(0.1 * sideM, 0.9 * sideM);
+    const double r = 0.02 * sideM;
+    for (int z = 0; z < 30; ++z) {
+        const geo::Vec2 c(at(rng), at(rng));
+        geo::Polygon p;
+        for (int k = 0; k < 16; ++k)
+            p.outer.push_back(c + r * geo::Vec2(std::cos(k * M_PI / 8), std::sin(k * M_PI / 8)));
+        m.noFlyZones.push_back({"zone " + std::to_string(z + 1), frame.toGeo(p)});
+    }
+    m.home = frame.toGeo(geo::Vec2{-30, -30});
+    mission::AircraftConfig a;
+    a.name = "Falcon 8";
+    a.camera.name = "Falcon 8 camera";
+    a.camera.hfovDeg = 60;
+    a.camera.vfovDeg = 45;
+    a.camera.imageWidthPx = 4000;
+    a.camera.imageHeightPx = 3000;
+    a.altitudeM = 5.0;
+    a.overlap = {0.7, 0.6};
+    a.cruiseSpeedMps = 8;
+    a.turnRateDegS = 60;
+    a.enduranceMin = 40; // the far corner of a 5 km site and back within a battery
+    m.aircraft.push_back(a);
+    m.options.planner = kind;
+    m.options.gridAngleDeg = 0.0;
+    m.options.maxCells = 6'000'000;
+    return m;
+}
+
+double peakRssMb() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return static_cast<double>(u.ru_maxrss) / 1024.0;
+}
+
+void planSite(benchmark::State& state, mission::PlannerKind kind) {
+    const mission::Mission m = squareSite(static_cast<double>(state.range(0)), kind);
+    int photos = 0, cells = 0;
+    for (auto _ : state) {
+        auto plan = mission::planMission(m);
+        if (!plan) {
+            state.SkipWithError(plan.error().message.c_str());
+            return;
+        }
+        photos = plan->totals.photos;
+        cells = plan->totals.visitable;
+        benchmark::DoNotOptimize(plan->makespanS);
+    }
+    state.counters["cells"] = cells;
+    state.counters["photos"] = photos;
+    // The process's peak so far: run one size per process for a clean figure.
+    state.counters["peak_rss_mb"] = peakRssMb();
+}
+
+void BM_MissionStride(benchmark::State& state) { planSite(state, mission::PlannerKind::Stride); }
+void BM_MissionAuto(benchmark::State& state) { planSite(state, mission::PlannerKind::Auto); }
+BENCHMARK(BM_MissionStride)->Arg(250)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_MissionAuto)->Arg(250)->Unit(benchmark::kMillisecond)->Iterations(1);
+// 10^5 and 10^6 cells (790 m and 2.5 km): the growth target is at most 12 x in time and memory.
+void BM_MissionStrideBig(benchmark::State& state) { planSite(state, mission::PlannerKind::Stride); }
+void BM_MissionAutoBig(benchmark::State& state) { planSite(state, mission::PlannerKind::Auto); }
+BENCHMARK(BM_MissionStrideBig)->Arg(790)->Arg(1250)->Arg(2500)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_MissionAutoBig)->Arg(790)->Arg(1250)->Arg(2500)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// Cancel latency: the plan runs on a thread; when its progress passes range(1) % it is cancelled, and
+// the time from cancel() to planMission's return is measured (manual time). The stage it was in is
+// the label.
+void cancelAt(benchmark::State& state, mission::PlannerKind kind) {
+    const mission::Mission m = squareSite(static_cast<double>(state.range(0)), kind);
+    const double at = static_cast<double>(state.range(1)) / 100.0;
+    double worst = 0.0;
+    std::string stageSeen;
+    for (auto _ : state) {
+        std::atomic<bool> fired{false};
+        std::chrono::steady_clock::time_point cancelledAt;
+        std::string stage;
+        Progress* self = nullptr;
+        Progress progress([&](double f, const std::string& s) {
+            if (f >= at && !fired.exchange(true)) {
+                stage = s;
+                cancelledAt = std::chrono::steady_clock::now();
+                self->cancel();
+            }
+        });
+        self = &progress;
+        auto plan = mission::planMission(m, &progress);
+        const auto end = std::chrono::steady_clock::now();
+        if (!fired) {
+            state.SkipWithError("the plan finished before the cancel point");
+            return;
+        }
+        if (plan || plan.error().code != ErrorCode::Cancelled) {
+            state.SkipWithError("a cancelled plan did not return Cancelled");
+            return;
+        }
+        const double s = std::chrono::duration<double>(end - cancelledAt).count();
+        worst = std::max(worst, s);
+        state.SetIterationTime(s);
+        stageSeen = stage;
+    }
+    state.SetLabel(stageSeen);
+    state.counters["worst_latency_ms"] = 1000.0 * worst;
+}
+
+void BM_CancelStride(benchmark::State& state) { cancelAt(state, mission::PlannerKind::Stride); }
+void BM_CancelAuto(benchmark::State& state) { cancelAt(state, mission::PlannerKind::Auto); }
+BENCHMARK(BM_CancelStride)->Args({250, 10})->Args({250, 70})->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_CancelAuto)->Args({250, 30})->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(1);
+void BM_CancelStrideBig(benchmark::State& state) { cancelAt(state, mission::PlannerKind::Stride); }
+void BM_CancelAutoBig(benchmark::State& state) { cancelAt(state, mission::PlannerKind::Auto); }
+BENCHMARK(BM_CancelStrideBig)
+    ->ArgsProduct({{2500}, {1, 10, 30, 50, 60, 70, 86, 95}})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+BENCHMARK(BM_CancelAutoBig)
+    ->ArgsProduct({{2500}, {1, 20, 40, 70, 90}})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
+} // namespace

@@ -1,0 +1,93 @@
+// Tests of the memory estimate and the refusal of plans that would not fit.
+#include "core/geo/local_frame.h"
+#include "core/mission/memory_estimate.h"
+#include "core/mission/plan_mission.h"
+
+#include <gtest/gtest.h>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+using namespace pf;
+using namespace pf::mission;
+
+namespace {
+
+Mission squareAt(double sideM, double altitudeM) {
+    const geo::LocalFrame frame = *geo::LocalFrame::create({8.33, 49.01});
+    Mission m;
+    m.area = frame.toGeo(geo::Polygon{{{0, 0}, {sideM, 0}, {sideM, sideM}, {0, sideM}}, {}});
+    m.home = frame.toGeo(geo::Vec2{-10, -10});
+    AircraftConfig a;
+    a.name = "Falcon 8";
+    a.camera.name = "test";
+    a.camera.hfovDeg = 60;
+    a.camera.vfovDeg = 45;
+    a.camera.imageWidthPx = 4000;
+    a.camera.imageHeightPx = 3000;
+    a.altitudeM = altitudeM;
+    a.overlap = {0.7, 0.6};
+    m.aircraft.push_back(a);
+    m.options.planner = PlannerKind::Stride;
+    m.options.gridAngleDeg = 0.0;
+    m.options.maxCells = 20'000'000;
+    return m;
+}
+
+} // namespace
+
+TEST(MemoryEstimate, GrowsWithTheAreaAndFallsWithTheAltitude) {
+    const MemoryEstimate small = estimatePlanMemory(squareAt(500, 5));
+    const MemoryEstimate big = estimatePlanMemory(squareAt(1000, 5));
+    EXPECT_NEAR(big.cells / small.cells, 4.0, 0.1);
+    EXPECT_NEAR(big.photos / small.photos, 4.0, 0.01);
+    EXPECT_GT(big.bytes, small.bytes);
+    // The 2.5 km site of the issue: about 1.1 million cells; measured 0.8 GB.
+    const MemoryEstimate site = estimatePlanMemory(squareAt(2500, 5));
+    EXPECT_NEAR(site.cells, 1.17e6, 0.05e6);
+    EXPECT_GT(site.bytes, 0.6e9);
+    EXPECT_LT(site.bytes, 1.2e9);
+    // Four times the altitude: a sixteenth of the photos and cells.
+    const MemoryEstimate high = estimatePlanMemory(squareAt(1000, 20));
+    EXPECT_NEAR(high.photos / big.photos, 1.0 / 16.0, 0.002);
+    EXPECT_LT(high.bytes, big.bytes);
+}
+
+TEST(MemoryEstimate, RefusesWhatDoesNotFitWithAdvice) {
+    const Mission m = squareAt(5000, 5);
+    EXPECT_TRUE(checkPlanMemory(m, std::size_t(64) << 30).ok());
+    const Status s = checkPlanMemory(m, std::size_t(1) << 30);
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.error().code, ErrorCode::TooLarge);
+    const std::string& msg = s.error().message;
+    EXPECT_NE(msg.find("GB of memory"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("altitude of"), std::string::npos) << msg;
+    // The altitude it names fits indeed.
+    const auto at = msg.find("altitude of ");
+    const double alt = std::stod(msg.substr(at + 12));
+    EXPECT_GT(alt, 5.0);
+    EXPECT_TRUE(checkPlanMemory(squareAt(5000, alt), std::size_t(1) << 30).ok()) << msg;
+    // Comparing planners holds two plans: a budget for one is not enough for two.
+    const double one = estimatePlanMemory(m).bytes;
+    EXPECT_TRUE(checkPlanMemory(m, static_cast<std::size_t>(one * 1.01)).ok());
+    EXPECT_FALSE(checkPlanMemory(m, static_cast<std::size_t>(one * 1.01), 2).ok());
+}
+
+// Under an address-space limit (ulimit -v) too small for the plan, planMission refuses up front,
+// quickly, instead of failing on an allocation after minutes.
+TEST(MemoryEstimate, PlanMissionRefusesUnderALowLimit) {
+    const pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+        rlimit lim{};
+        lim.rlim_cur = lim.rlim_max = rlim_t(1500) << 20; // 1.5 GB: the 5 km site needs about 3 GB
+        setrlimit(RLIMIT_AS, &lim);
+        auto plan = planMission(squareAt(5000, 5));
+        _exit(!plan && plan.error().code == ErrorCode::TooLarge ? 0 : 1);
+    }
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 0);
+}
