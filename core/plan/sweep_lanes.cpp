@@ -549,35 +549,10 @@ int dropCoveredLanes(const Decomposition& d, std::vector<std::vector<CellLane>>&
     const double ha = 0.5 * realAlongM, hc = 0.5 * realAcrossM;
     const Vec2 u = d.frame.toWorld(Vec2(1, 0)); // every lane runs along u: footprints are aligned with it
     const double r = std::clamp(s / 20.0, 0.25, 1.5);
-    // The lanes by height (all run along u): a lane is redundant only if another one runs within half
-    // the real footprint's width of it (else nothing sees the ground on its own line), which most
-    // lanes of a plan lack; checking that first keeps long plans fast.
-    struct Span {
-        double y, lo, hi;
-        std::size_t index;
-    };
-    std::vector<Span> spans;
-    spans.reserve(all.size());
-    for (std::size_t i = 0; i < all.size(); ++i) {
-        const auto& ol = lanes[all[i].cell][all[i].lane];
-        const double a = ol.stripA.dot(u), b = ol.stripB.dot(u);
-        spans.push_back(Span{ol.y, std::min(a, b), std::max(a, b), i});
-    }
-    std::sort(spans.begin(), spans.end(), [](const Span& a, const Span& b) { return a.y < b.y; });
-    auto hasCloseNeighbour = [&](std::size_t ci, const CellLane& l) {
-        const double a = l.stripA.dot(u), b = l.stripB.dot(u), lo = std::min(a, b), hi = std::max(a, b);
-        auto it = std::lower_bound(spans.begin(), spans.end(), l.y - hc, [](const Span& sp, double y) { return sp.y < y; });
-        for (; it != spans.end() && it->y <= l.y + hc; ++it)
-            if (it->index != ci && !dropped[it->index] && it->hi > lo && it->lo < hi)
-                return true;
-        return false;
-    };
     int count = 0;
     for (const auto& cand : candidates) {
         const std::size_t ci = refIndex(cand);
         const CellLane& l = lanes[cand.cell][cand.lane];
-        if (!hasCloseNeighbour(ci, l))
-            continue;
         // the photos of the other lanes near it
         int x0, y0, x1, y1;
         cellRange(boxes[ci], x0, y0, x1, y1);

@@ -28,6 +28,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNoWayS = 1e7;
 // Lane ends the lane-level search considers joining, per end: the nearest this many.
 constexpr int kNeighbours = 10;
+// Lanes flown no longer than this many trigger distances are checked for being redundant.
+constexpr double kShortLanePhotos = 4.0;
 
 std::string fmt(double v, int decimals = 1) {
     char buf[64];
@@ -655,9 +657,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         std::vector<std::vector<CellLane>> laneSets(dp.merged.size());
         for (std::size_t mi = 0; mi < dp.merged.size(); ++mi)
             laneSets[mi] = cellLanes(dp.d, dp.merged[mi], dp.heights[mi], lp, ground, safeOutside);
-        // Every lane whose ground the others' photos see goes, not only short ones: beside a zone the
-        // lanes of the cells above, below and beside it often overlap along their whole length.
-        dropCoveredLanes(dp.d, laneSets, dp.pinned, lp, ground, realAcross, realAlong, kInf);
+        dropCoveredLanes(dp.d, laneSets, dp.pinned, lp, ground, realAcross, realAlong, kShortLanePhotos * ph);
         for (std::size_t mi = 0; mi < dp.merged.size(); ++mi) {
             PlannedCell pc;
             pc.merged = static_cast<int>(mi);
