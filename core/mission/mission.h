@@ -64,6 +64,23 @@ struct PlannerOptions {
     friend bool operator==(const PlannerOptions& a, const PlannerOptions& b);
 };
 
+// Terrain following (see the README's "Terrain"): off flies every altitude above the take-off point
+// over a flat world, as always; follow keeps each aircraft's altitude (or the one of its GSD) above
+// the ground under each waypoint, from a digital elevation model.
+enum class TerrainMode { Off, Follow };
+
+struct TerrainOptions {
+    TerrainMode mode = TerrainMode::Off;
+    std::string demPath;       // the DEM file; a relative path is relative to the mission file
+    double minClearanceM = 10.0; // no point of a leg closer to the ground (at most the height above ground)
+    std::optional<double> homeElevationM; // the take-off point's ground above sea level; from the DEM if unset
+    bool follows() const { return mode == TerrainMode::Follow; }
+    friend bool operator==(const TerrainOptions& a, const TerrainOptions& b) {
+        return a.mode == b.mode && a.demPath == b.demPath && a.minClearanceM == b.minClearanceM &&
+               a.homeElevationM == b.homeElevationM;
+    }
+};
+
 struct Mission {
     std::string name;
     geo::GeoPolygon area;
@@ -72,6 +89,7 @@ struct Mission {
     std::optional<geo::LonLat> landing; // landing point; home if unset
     std::vector<AircraftConfig> aircraft;
     PlannerOptions options;
+    TerrainOptions terrain;
     // Routes the operator changed by hand, kept with the mission so that saving never loses them.
     // Planning ignores them (a new plan is computed from the definition above); the desktop
     // application shows them instead of a fresh plan until the user agrees to replace them.
@@ -84,8 +102,9 @@ struct Mission {
 bool sameRoute(const route::Route& a, const route::Route& b);
 
 // Newest mission file format version: 2 added the optional "routes" (hand-edited routes), 3 the
-// aircraft's "acceleration_mps2". A file is written with the oldest version that holds what it
-// contains (version 1 without either), so that older releases keep reading it.
-constexpr int kMissionFileVersion = 3;
+// aircraft's "acceleration_mps2", 4 "terrain" (terrain following) and the routes' ground heights.
+// A file is written with the oldest version that holds what it contains (version 1 without any of
+// them), so that older releases keep reading it.
+constexpr int kMissionFileVersion = 4;
 
 } // namespace pf::mission

@@ -4,6 +4,7 @@
 #include "core/fleet/area_split.h"
 #include "core/fleet/photo_dedup.h"
 #include "core/geo/polygon_ops.h"
+#include "core/mission/terrain_stage.h"
 #include "core/mission/validation.h"
 #include "core/plan/coverage_check.h"
 #include "core/plan/planner.h"
@@ -226,12 +227,34 @@ double aloneRouteTimeS(const std::vector<route::LocalWaypoint>& survey, const Ai
 
 } // namespace
 
+namespace {
+Result<MissionPlan> planMissionOver(const Mission& m, const std::shared_ptr<const MissionTerrain>& terrain);
+} // namespace
+
+// Terrain following (issue 18, core/mission/terrain_stage.h): the DEM is read once, the footprints
+// are planned at the lowest height above ground each camera sees, and buildPlan's step 4b follows
+// the terrain. Without it the mission is planned exactly as before.
 Result<MissionPlan> planMission(const Mission& m) {
+    if (!m.terrain.follows())
+        return planMissionOver(m, nullptr);
+    auto geom = localGeometry(m);
+    if (!geom)
+        return geom.error();
+    auto terrain = loadMissionTerrain(m, *geom);
+    if (!terrain)
+        return terrain.error();
+    return planMissionOver(planningMission(m, **terrain), *terrain);
+}
+
+namespace {
+
+Result<MissionPlan> planMissionOver(const Mission& m, const std::shared_ptr<const MissionTerrain>& terrain) {
     if (m.aircraft.empty())
         return makeError(ErrorCode::InvalidInput, "the mission has no aircraft: add one to plan a flight");
     auto geom = localGeometry(m);
     if (!geom)
         return geom.error();
+    geom->terrain = terrain;
     const geo::LocalFrame& frame = geom->frame;
     const std::size_t n = m.aircraft.size();
     const PlannerOptions& opt = m.options;
@@ -390,8 +413,6 @@ Result<MissionPlan> planMission(const Mission& m) {
     }
     return std::move(*first);
 }
-
-namespace {
 
 Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const LocalGeometry& geomRef,
                               const std::vector<geo::MultiPolygon>& regions,
@@ -561,6 +582,15 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         flownPaths.push_back(std::move(path));
     }
 
+    // 4b. Terrain following (issue 18, core/mission/terrain_stage.h): altitudes from the ground under
+    // each waypoint, legs checked and waypoints inserted where the ground rises, sortie times with the
+    // climbs (after the sorties: the inserted waypoints lie on the legs already timed, the climbs add a
+    // little, and a sortie that no longer fits its battery gets a warning), footprints on the terrain.
+    std::vector<geo::Ring> terrainOutlines;
+    if (geom->terrain)
+        if (auto t = applyTerrain(plan, m, *geom->terrain, frame, homes, landing, photoFootprints, terrainOutlines); !t)
+            return t.error();
+
     // 5. Altitude separation between aircraft in the air together.
     if (n > 1) {
         std::vector<fleet::AltitudeSlot> slots;
@@ -575,7 +605,7 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
 
     // 6. The independent check: real footprints of every photo of every aircraft, margin breaches.
     if (check) {
-        auto cov = plan::checkCoverage(admissible, photoFootprints);
+        auto cov = plan::checkCoverage(admissible, photoFootprints, {}, geom->terrain ? &terrainOutlines : nullptr);
         if (!cov)
             return makeError(cov.error().code, "checking the coverage: " + cov.error().message);
         plan.coverageRatio = cov->coveredFraction;

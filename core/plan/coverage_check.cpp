@@ -71,7 +71,9 @@ geo::Ring footprintRing(const PhotoFootprint& f) {
 }
 
 Result<CoverageReport> checkCoverage(const geo::MultiPolygon& admissible, const std::vector<PhotoFootprint>& photos,
-                                     const CoverageCheckOptions& opt) {
+                                     const CoverageCheckOptions& opt, const std::vector<geo::Ring>* outlines) {
+    if (outlines && outlines->size() != photos.size())
+        return makeError(ErrorCode::Internal, "the coverage check got outlines for some photos only");
     if (opt.resolutionM < 0 || !std::isfinite(opt.resolutionM))
         return makeError(ErrorCode::InvalidInput, "The coverage check resolution must be a positive number of metres.");
     if (opt.maxPixels < 16)
@@ -118,8 +120,8 @@ Result<CoverageReport> checkCoverage(const geo::MultiPolygon& admissible, const 
         for (int i = i0; i < i1; ++i)
             px[ras.index(i, j)] ^= 1; // even-odd across separate parts too
     });
-    for (const auto& photo : photos) {
-        const geo::Ring ring = footprintRing(photo);
+    for (std::size_t k = 0; k < photos.size(); ++k) {
+        const geo::Ring ring = outlines ? (*outlines)[k] : footprintRing(photos[k]);
         scanRings(ras, {&ring}, [&](int j, int i0, int i1) {
             for (int i = i0; i < i1; ++i) {
                 auto& v = px[ras.index(i, j)];

@@ -16,13 +16,20 @@ enum class WaypointKind : unsigned char {
 };
 
 struct Waypoint {
+    Waypoint() = default;
+    Waypoint(geo::LonLat p, double altitude, double heading = 0.0, WaypointKind k = WaypointKind::Photo,
+             std::optional<double> ground = std::nullopt)
+        : position(p), altitudeM(altitude), headingDeg(heading), kind(k), groundM(ground) {}
     geo::LonLat position;
     double altitudeM = 0.0;  // above the take-off point
     double headingDeg = 0.0; // yaw, clockwise from north, [0, 360)
     WaypointKind kind = WaypointKind::Photo;
+    // The ground under the waypoint above mean sea level, when the route was planned over a terrain
+    // model (with Route::homeElevationM: above ground = home + altitude - ground).
+    std::optional<double> groundM;
     friend bool operator==(const Waypoint& a, const Waypoint& b) {
         return a.position == b.position && a.altitudeM == b.altitudeM &&
-               a.headingDeg == b.headingDeg && a.kind == b.kind;
+               a.headingDeg == b.headingDeg && a.kind == b.kind && a.groundM == b.groundM;
     }
 };
 
@@ -39,7 +46,19 @@ struct Route {
     std::string aircraft;
     std::optional<geo::LonLat> home;
     double cruiseSpeedMps = 10.0;
+    // The take-off point's ground above mean sea level, when known (a terrain model, or given): the
+    // waypoints' altitudes above take-off become altitudes above sea level.
+    std::optional<double> homeElevationM;
     std::vector<Waypoint> waypoints;
+    // Whether the route follows the terrain: a home elevation and the ground under every waypoint.
+    bool hasTerrain() const {
+        if (!homeElevationM || waypoints.empty())
+            return false;
+        for (const auto& w : waypoints)
+            if (!w.groundM)
+                return false;
+        return true;
+    }
 };
 
 } // namespace pf::route
