@@ -23,7 +23,8 @@ const char* const kPlanUsage =
     "\n"
     "Plans the mission end to end for every aircraft: with several aircraft the area is shared between\n"
     "them (balanced on the estimated flight times), each plans its part (grid of cells, coverage path,\n"
-    "photo waypoints; stride planner by default), photos another aircraft already takes are dropped,\n"
+    "photo waypoints; by default per aircraft the planner that flies soonest), photos another aircraft\n"
+    "already takes are dropped,\n"
     "waypoints keep out of every no-fly zone and its safety margin (detours), each flight gets its safe\n"
     "transit from and back to its home and is cut into sorties (batteries) that fit its endurance less a\n"
     "20 % reserve. Altitudes closer than 10 m between aircraft flying together give a warning. Finally an\n"
@@ -64,9 +65,14 @@ const char* const kPlanUsage =
     "  --aircraft \"Falcon 8:40\" --aircraft \"DJI Phantom 4 Pro:45\". Each aircraft flies from its own\n"
     "home if the mission file gives one, else from the mission's home (--home).\n"
     "\n"
-    "Planners: stride (long straight strides, few turns, no jumps), raster (row or column\n"
-    "boustrophedon, the paper's baseline, may jump over holes), wavefront (gradient ascent on a\n"
-    "navigation function, 8-connected, the candidate with the smallest completion time).\n"
+    "Planners: auto (the default: per aircraft the plan that flies soonest of sweep, stride and raster,\n"
+    "the choice and the times compared printed after the table), sweep (straight lanes over the exact\n"
+    "area, cell by cell round the no-fly zones), stride (long straight strides, few turns, no jumps),\n"
+    "raster (row or column boustrophedon, the paper's baseline, may jump over holes), wavefront\n"
+    "(gradient ascent on a navigation function, 8-connected, the candidate with the smallest completion\n"
+    "time), lawnmower (what a ground station's Survey flies: one angle, straight over the no-fly zones;\n"
+    "a yardstick whose crossings the route check refuses unless --force). Every grid planner's path is\n"
+    "flown as straight lanes: photos at the trigger distance, lanes ending where the area ends.\n"
     "--grid-angle auto tries 0, 5, ..., 175 degrees and the directions of the longest edges of each\n"
     "aircraft's part and keeps the plan with the smallest estimated time T = length / speed + turn\n"
     "angles / turn rate.\n"
@@ -206,7 +212,7 @@ int runPlan(const std::vector<std::string>& argv) {
     for (const auto& a : plan->aircraft) {
         const auto& mt = a.metrics;
         std::snprintf(line, sizeof line, "%-20.20s %-9s %6.1f %6.1f %6.1f %6d %6d %9.0f %8.1f %7d %6d %5d\n",
-                      a.aircraft.c_str(), planner, a.altitudeM, a.gridAngleDeg, a.cellSizeM, mt.photos, a.photosSaved,
+                      a.aircraft.c_str(), mission::plannerKindInfo(a.planner).id, a.altitudeM, a.gridAngleDeg, a.cellSizeM, mt.photos, a.photosSaved,
                       a.flightDistanceM, a.timeS / 60.0, static_cast<int>(a.sorties.size()), a.flight.turns, mt.jumps);
         std::cout << line;
     }
@@ -226,6 +232,8 @@ int runPlan(const std::vector<std::string>& argv) {
                   100.0 * plan->coverageRatio, plan->uncoveredAreaM2, plan->makespanS / 60.0, plan->idealS / 60.0,
                   plan->idealS > 0 ? plan->makespanS / plan->idealS : 1.0, plan->noFlyViolations);
     std::cout << line;
+    if (!plan->plannerChoice.empty())
+        std::cout << "planner: " << plan->plannerChoice << '\n';
     if (!written.empty()) {
         std::cout << "Wrote";
         for (const auto& w : written)

@@ -747,6 +747,15 @@ Result<BalanceReport> balanceByTime(const BaseGrid& g, Partition& p, const TimeE
         // Planned times are not smooth in the cells given (a grid of larger cells may not change at
         // all, a protruding cell may cost a whole extra stride), hence the search.
         Trial best;
+        // The best trial that makes the slowest subarea faster, whatever it does to the others: the
+        // kick below takes it (a trial that changes nothing for s would only spend a kick).
+        Trial kick;
+        const auto consider = [&](const Trial& t) {
+            if (t.worst < best.worst)
+                best = t;
+            if (!t.fresh.empty() && t.fresh.front() < ts - 1e-9 && t.worst < kick.worst)
+                kick = t;
+        };
         // A trial that brings both subareas within the tolerance is taken at once (saves estimates).
         const double goodEnough = (1.0 + opt.tolerance) * ideal;
         for (int r : neighbours) {
@@ -763,8 +772,7 @@ Result<BalanceReport> balanceByTime(const BaseGrid& g, Partition& p, const TimeE
                     Trial t{{s, r}, {m}, sweep, std::numeric_limits<double>::infinity(), {}};
                     if (auto st = evaluate(t); !st)
                         return st.error();
-                    if (t.worst < best.worst)
-                        best = t;
+                    consider(t);
                 }
         }
         // Otherwise through a neighbour: s gives to r, which passes as many on to its fastest other
@@ -784,19 +792,19 @@ Result<BalanceReport> balanceByTime(const BaseGrid& g, Partition& p, const TimeE
                     Trial t{{s, r, f}, {m, m}, true, std::numeric_limits<double>::infinity(), {}};
                     if (auto st = evaluate(t); !st)
                         return st.error();
-                    if (t.worst < best.worst)
-                        best = t;
+                    consider(t);
                 }
             }
         const bool accepted = best.worst < ts - 1e-9;
         if (accepted) {
             commit(best);
-        } else if (kicks < opt.maxKicks && std::isfinite(best.worst)) {
-            // Stuck in a local minimum of a rough landscape: take the least bad move anyway (the best
-            // partition seen is kept), and forbid handing the cells straight back next round.
+        } else if (kicks < opt.maxKicks && std::isfinite(kick.worst)) {
+            // Stuck in a local minimum of a rough landscape: take the least bad move that relieves
+            // the slowest subarea anyway (the best partition seen is kept), and forbid handing the
+            // cells straight back next round.
             ++kicks;
-            commit(best);
-            tabu = {best.chain[1], best.chain[0]};
+            commit(kick);
+            tabu = {kick.chain[1], kick.chain[0]};
             continue;
         }
         tabu = {-1, -1};

@@ -383,7 +383,7 @@ public:
         if (failed() || !o.IsValid())
             return opt;
         const std::string p = "planner";
-        const std::string kind = string(o, p, "planner", "stride");
+        const std::string kind = string(o, p, "planner", mission::plannerKindInfo(mission::PlannerOptions{}.planner).id);
         if (auto k = mission::plannerKindFromId(kind))
             opt.planner = *k;
         else if (!failed())
@@ -684,6 +684,10 @@ int requiredVersion(const mission::Mission& m) {
     for (const auto& a : m.aircraft)
         if (a.accelerationMps2 != plan::kDefaultAccelerationMps2)
             return 3;
+    // Older releases know only the three grid planners.
+    const auto k = m.options.planner;
+    if (k == mission::PlannerKind::Auto || k == mission::PlannerKind::Sweep || k == mission::PlannerKind::Lawnmower)
+        return 3;
     return m.editedRoutes.empty() ? 1 : 2;
 }
 

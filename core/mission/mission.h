@@ -48,12 +48,15 @@ AircraftConfig aircraftFromCatalog(const fleet::AircraftSpec& spec, const sensor
 // The one flight-time model with this aircraft's speed, turn rate and acceleration.
 plan::FlightTimeModel flightModel(const AircraftConfig& a);
 
-enum class PlannerKind { Stride, Raster, Wavefront };
+// Auto: per aircraft the fastest of sweep, stride and raster (the default). Lawnmower: the yardstick
+// operators know from their ground station's Survey; it ignores the no-fly zones, so it is never chosen
+// by itself and its routes fail the route check wherever they cross one.
+enum class PlannerKind { Auto, Sweep, Stride, Raster, Wavefront, Lawnmower };
 
 // Names, labels and the list of kinds: core/mission/planner_kinds.h.
 
 struct PlannerOptions {
-    PlannerKind planner = PlannerKind::Stride;
+    PlannerKind planner = PlannerKind::Auto;
     std::optional<double> gridAngleDeg; // unset: automatic search for the best angle
     double safetyMarginM = 5.0;         // keep-out distance around every no-fly zone
     bool keepInsideArea = false;        // move waypoints inside the area (plus insideMarginM)
@@ -102,9 +105,10 @@ struct Mission {
 bool sameRoute(const route::Route& a, const route::Route& b);
 
 // Newest mission file format version: 2 added the optional "routes" (hand-edited routes), 3 the
-// aircraft's "acceleration_mps2", 4 "terrain" (terrain following) and the routes' ground heights.
-// A file is written with the oldest version that holds what it contains (version 1 without any of
-// them), so that older releases keep reading it.
+// aircraft's "acceleration_mps2" and the planners "auto", "sweep" and "lawnmower", 4 "terrain"
+// (terrain following) and the routes' ground heights. A file is written with the oldest version
+// that holds what it contains (version 1 without any of them), so that older releases keep reading
+// it.
 constexpr int kMissionFileVersion = 4;
 
 } // namespace pf::mission

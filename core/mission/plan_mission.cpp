@@ -4,7 +4,11 @@
 #include "core/fleet/area_split.h"
 #include "core/fleet/photo_dedup.h"
 #include "core/geo/polygon_ops.h"
+#include "core/grid/grid.h"
+#include "core/mission/plan_region.h"
+#include "core/mission/planner_kinds.h"
 #include "core/mission/terrain_stage.h"
+#include "core/sensor/camera.h"
 #include "core/mission/validation.h"
 #include "core/plan/coverage_check.h"
 #include "core/plan/planner.h"
@@ -16,6 +20,7 @@
 #include <cpl_json.h>
 
 #include <algorithm>
+#include <future>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -24,167 +29,17 @@ namespace pf::mission {
 
 namespace {
 
-plan::PlannerKind toPlanKind(PlannerKind k) {
-    switch (k) {
-    case PlannerKind::Stride:
-        return plan::PlannerKind::Stride;
-    case PlannerKind::Raster:
-        return plan::PlannerKind::Raster;
-    case PlannerKind::Wavefront:
-        return plan::PlannerKind::Wavefront;
-    }
-    return plan::PlannerKind::Stride;
-}
-
 // The covered fraction of the admissible area below which a plan gets a warning.
 constexpr double kCoverageTarget = 0.995;
 // The makespan / ideal (total time / aircraft) a shared plan aims to stay within.
 constexpr double kBalanceTarget = 1.10;
 
-double normaliseAngle(double a) {
-    a = std::fmod(a, 180.0);
-    if (a < 0)
-        a += 180.0;
-    return a;
-}
-
 } // namespace
-
-std::vector<double> candidateAngles(const geo::MultiPolygon& region) {
-    std::vector<double> angles;
-    for (int a = 0; a < 180; a += 5)
-        angles.push_back(a);
-    // The directions of the two longest edges: areas are often drawn along a road or a field's side.
-    std::vector<std::pair<double, double>> edges; // length, angle
-    for (const auto& poly : region) {
-        const auto& r = poly.outer;
-        for (std::size_t i = 0; i < r.size(); ++i) {
-            const geo::Vec2 d = r[(i + 1) % r.size()] - r[i];
-            edges.push_back({d.norm(), normaliseAngle(std::atan2(d.y(), d.x()) * 180.0 / M_PI)});
-        }
-    }
-    std::sort(edges.begin(), edges.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-    for (std::size_t i = 0; i < edges.size() && i < 2; ++i) {
-        const double a = std::round(edges[i].second * 1000.0) / 1000.0;
-        bool known = false;
-        for (double b : angles)
-            known = known || std::fabs(a - b) < 1e-6;
-        if (!known)
-            angles.push_back(a);
-    }
-    return angles;
-}
-
-Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
-                                const AircraftConfig& aircraft, const PlannerOptions& options,
-                                const geo::LocalFrame& frame, const std::optional<geo::Vec2>& home,
-                                const std::optional<geo::Vec2>& landing) {
-    const auto t0 = std::chrono::steady_clock::now();
-    const std::string who = aircraft.name.empty() ? std::string("the aircraft") : "aircraft \"" + aircraft.name + "\"";
-    auto alt = resolvedAltitude(aircraft);
-    if (!alt)
-        return makeError(alt.error().code, who + ": " + alt.error().message);
-    auto eff = sensor::effectiveFootprint(aircraft.camera, *alt, aircraft.overlap);
-    if (!eff)
-        return makeError(eff.error().code, who + ": " + eff.error().message);
-    const double cell = sensor::cellSizeFor(*eff);
-
-    const std::vector<double> angles =
-        options.gridAngleDeg ? std::vector<double>{*options.gridAngleDeg} : candidateAngles(region);
-    plan::PlanOptions popt;
-    popt.kind = toPlanKind(options.planner);
-    const plan::FlightTimeModel model = flightModel(aircraft);
-    popt.wavefront.time = model;
-    popt.stride = {true, model}; // the variant flown soonest
-    plan::MetricsOptions mopt;
-    mopt.time = model;
-    mopt.diagonalSteps = popt.kind == plan::PlannerKind::Wavefront && popt.wavefront.moore;
-    mopt.turnLowerBound = false;
-
-    std::optional<AircraftPlan> best;
-    std::optional<Error> firstError;
-    int tried = 0;
-    for (double angle : angles) {
-        grid::GridOptions gopt;
-        gopt.cellSize = cell;
-        gopt.angleDeg = angle;
-        gopt.safetyMarginM = options.safetyMarginM;
-        gopt.maxCells = options.maxCells;
-        auto g = grid::Grid::build(region, noFly, gopt);
-        if (!g) {
-            if (!firstError)
-                firstError = g.error();
-            continue;
-        }
-        plan::CoverageRequest req;
-        if (home) {
-            req.takeoff = g->nearestVisitable(*home);
-            req.landing = g->nearestVisitable(landing ? *landing : *home);
-        }
-        auto path = plan::planCoverage(*g, req, popt);
-        if (!path) {
-            if (!firstError)
-                firstError = path.error();
-            continue;
-        }
-        ++tried;
-        plan::PathMetrics m = plan::computeMetrics(*g, *path, mopt);
-        const bool better = !best || m.estimatedTimeS < best->metrics.estimatedTimeS - 1e-9 ||
-                            (std::fabs(m.estimatedTimeS - best->metrics.estimatedTimeS) <= 1e-9 &&
-                             m.turns < best->metrics.turns);
-        if (!better)
-            continue;
-        AircraftPlan p;
-        p.gridAngleDeg = angle;
-        p.grid = std::move(*g);
-        p.path = std::move(*path);
-        p.metrics = m;
-        best = std::move(p);
-    }
-    if (!best) {
-        const Error e = firstError ? *firstError : makeError(ErrorCode::Internal, "no grid angle to try");
-        return makeError(e.code, who + ": " + e.message);
-    }
-    AircraftPlan& p = *best;
-    p.aircraft = aircraft.name;
-    p.altitudeM = *alt;
-    p.cellSizeM = cell;
-    p.footprint = *eff;
-    p.anglesTried = tried;
-    mopt.turnLowerBound = true;
-    p.metrics = plan::computeMetrics(p.grid, p.path, mopt);
-    p.localWaypoints = route::photoWaypoints(p.grid, p.path, *eff);
-    route::straightenTransits(p.grid, p.localWaypoints);
-    p.metrics.photos = static_cast<int>(std::count_if(p.localWaypoints.begin(), p.localWaypoints.end(), [](const auto& w) {
-        return w.kind == route::WaypointKind::Photo;
-    }));
-    p.route.aircraft = aircraft.name;
-    p.route.cruiseSpeedMps = aircraft.cruiseSpeedMps;
-    if (home)
-        p.route.home = frame.toGeo(*home);
-    p.route.waypoints.reserve(p.localWaypoints.size());
-    for (const auto& w : p.localWaypoints)
-        p.route.waypoints.push_back({frame.toGeo(w.pos), *alt, w.headingDeg, w.kind});
-    p.metrics.planningMs =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    return std::move(p);
-}
 
 namespace {
 
 std::string aircraftLabel(const AircraftConfig& a) {
     return a.name.empty() ? std::string("the aircraft") : "aircraft \"" + a.name + "\"";
-}
-
-// The survey part of a planned route: from the first photo to the last. The planner's own way from the
-// take-off cell and back to the landing cell is replaced by the shortest safe transit later.
-std::vector<route::LocalWaypoint> surveyPart(const std::vector<route::LocalWaypoint>& w) {
-    const auto isPhoto = [](const route::LocalWaypoint& x) { return x.kind == route::WaypointKind::Photo; };
-    const auto first = std::find_if(w.begin(), w.end(), isPhoto);
-    if (first == w.end())
-        return {};
-    const auto last = std::find_if(w.rbegin(), w.rend(), isPhoto).base();
-    return {first, last};
 }
 
 double polylineLength(const std::vector<geo::Vec2>& p) {
@@ -209,22 +64,6 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
                               const std::optional<geo::Vec2>& landing, bool check,
                               std::vector<double>* aloneTimes = nullptr);
 
-// The time of the route an aircraft would fly alone over its survey waypoints: from home along the
-// straight line to the first one, through all, and straight back (to the landing point if any), timed
-// as the final plan times it (length / speed + turn angles / turn rate).
-double aloneRouteTimeS(const std::vector<route::LocalWaypoint>& survey, const AircraftConfig& a,
-                       const std::optional<geo::Vec2>& home, const std::optional<geo::Vec2>& landing) {
-    std::vector<geo::Vec2> pts;
-    pts.reserve(survey.size() + 2);
-    if (home)
-        pts.push_back(*home);
-    for (const auto& w : survey)
-        pts.push_back(w.pos);
-    if (home)
-        pts.push_back(landing ? *landing : *home);
-    return route::flightTimeS(pts, flightModel(a));
-}
-
 } // namespace
 
 namespace {
@@ -248,7 +87,8 @@ Result<MissionPlan> planMission(const Mission& m) {
 
 namespace {
 
-Result<MissionPlan> planMissionOver(const Mission& m, const std::shared_ptr<const MissionTerrain>& terrain) {
+// planMission for one planner kind (never Auto).
+Result<MissionPlan> planMissionWith(const Mission& m, const std::shared_ptr<const MissionTerrain>& terrain) {
     if (m.aircraft.empty())
         return makeError(ErrorCode::InvalidInput, "the mission has no aircraft: add one to plan a flight");
     auto geom = localGeometry(m);
@@ -414,6 +254,67 @@ Result<MissionPlan> planMissionOver(const Mission& m, const std::shared_ptr<cons
     return std::move(*first);
 }
 
+// The automatic choice plans the whole mission with each candidate planner and keeps the one that
+// finishes soonest: so it is never slower than any planner it chose from, also with several
+// aircraft, whose split depends on the planner's times. A plan that leaves more of the area unseen
+// than the coverage target, or breaches a margin, loses to one that does not. The plans share
+// nothing and run in parallel, unless the grids are large: then one after the other, so that the
+// peak memory is that of the largest plan, not the sum of three.
+Result<MissionPlan> planMissionOver(const Mission& m, const std::shared_ptr<const MissionTerrain>& terrain) {
+    if (m.options.planner != PlannerKind::Auto)
+        return planMissionWith(m, terrain);
+    const PlannerKind kinds[] = {PlannerKind::Sweep, PlannerKind::Stride, PlannerKind::Raster};
+    // The cells of the grid planners over the whole area (bounding box at the mission's angle).
+    double cells = 0.0;
+    if (auto geom = localGeometry(m)) {
+        for (const auto& a : m.aircraft) {
+            auto alt = resolvedAltitude(a);
+            if (!alt)
+                continue;
+            if (auto eff = sensor::effectiveFootprint(a.camera, *alt, a.overlap))
+                cells += grid::Grid::sizeFor(geo::MultiPolygon{geom->area}, sensor::cellSizeFor(*eff),
+                                             m.options.gridAngleDeg.value_or(0.0))
+                             .cells();
+        }
+    }
+    constexpr double kParallelCells = 300'000.0; // about 100 MB of grid state per planner
+    const bool parallel = cells <= kParallelCells;
+    std::vector<std::future<Result<MissionPlan>>> runs;
+    for (PlannerKind k : kinds) {
+        Mission mk = m;
+        mk.options.planner = k;
+        runs.push_back(std::async(parallel ? std::launch::async : std::launch::deferred,
+                                  [mk, terrain] { return planMissionWith(mk, terrain); }));
+    }
+    std::optional<MissionPlan> best;
+    std::string note, errors;
+    std::optional<ErrorCode> firstCode;
+    auto sound = [](const MissionPlan& p) { return p.coverageRatio >= kCoverageTarget && p.noFlyViolations == 0; };
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        auto p = runs[i].get();
+        const char* id = plannerKindInfo(kinds[i]).id;
+        if (!p) {
+            note += std::string(note.empty() ? "" : ", ") + id + " failed: " + p.error().message;
+            errors += std::string(errors.empty() ? "" : "; ") + id + ": " + p.error().message;
+            if (!firstCode)
+                firstCode = p.error().code;
+            continue;
+        }
+        note += std::string(note.empty() ? "" : ", ") + id + " " + metres(p->makespanS / 60.0, 1) + " min";
+        if (!sound(*p))
+            note += " (" + std::string(p->noFlyViolations > 0 ? "breaches a margin" : "misses the coverage target") + ")";
+        const bool better = !best || (sound(*p) && !sound(*best)) ||
+                            (sound(*p) == sound(*best) && p->makespanS < best->makespanS - 1e-9);
+        if (better)
+            best = std::move(*p);
+    }
+    if (!best)
+        return makeError(*firstCode, "no planner could plan the mission: " + errors);
+    best->plannerChoice = std::string(plannerKindInfo(best->aircraft.front().planner).id) +
+                          " finishes soonest (" + note + ")";
+    return std::move(*best);
+}
+
 Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const LocalGeometry& geomRef,
                               const std::vector<geo::MultiPolygon>& regions,
                               const std::vector<std::optional<geo::Vec2>>& homes,
@@ -462,16 +363,23 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
     // 4. Safety, transit and sorties.
     const geo::MultiPolygon areaMp{geom->area};
     const geo::MultiPolygon admissible = geom->noFly.empty() ? areaMp : geo::difference(geom->area, geom->noFly);
-    const route::SafePathFinder finder(route::NoFlyField(geom->noFly, opt.safetyMarginM));
+    const route::SafePathFinder safeFinder(route::NoFlyField(geom->noFly, opt.safetyMarginM));
+    // The lawnmower flies what a ground station's Survey flies: straight over the zones, from and back
+    // to home too. Nothing makes it safe; the route check reports every crossing.
+    const route::SafePathFinder straightFinder;
     std::vector<std::vector<geo::Vec2>> flownPaths;
     std::vector<plan::PhotoFootprint> photoFootprints;
     for (std::size_t k = 0; k < n; ++k) {
         AircraftPlan& ap = plan.aircraft[k];
         const AircraftConfig& cfg = m.aircraft[k];
         const std::string who = aircraftLabel(cfg);
+        for (const auto& w : ap.warnings)
+            plan.warnings.push_back(who + ": " + w);
+        const bool yardstick = ap.planner == PlannerKind::Lawnmower;
+        const route::SafePathFinder& finder = yardstick ? straightFinder : safeFinder;
         std::vector<route::LocalWaypoint> survey = ap.surveyWaypoints;
         route::SafetyReport rep;
-        if (opt.keepInsideArea) {
+        if (opt.keepInsideArea && !yardstick) {
             const route::PhotoSides sides{ap.footprint.acrossM, ap.footprint.alongM, ap.footprint.real.longSideM,
                                           ap.footprint.real.shortSideM};
             auto inside = route::keepInsideArea(survey, areaMp, admissible, sides, opt.insideMarginM, finder, &rep);
@@ -479,10 +387,12 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
                 return makeError(inside.error().code, who + ": " + inside.error().message);
             survey = std::move(*inside);
         }
-        auto safe = route::enforceNoFly(survey, finder, &rep);
-        if (!safe)
-            return makeError(safe.error().code, who + ": " + safe.error().message);
-        survey = std::move(*safe);
+        if (!yardstick) {
+            auto safe = route::enforceNoFly(survey, finder, &rep);
+            if (!safe)
+                return makeError(safe.error().code, who + ": " + safe.error().message);
+            survey = std::move(*safe);
+        }
         route::dropNearDuplicates(survey);
         for (const auto& w : rep.warnings)
             plan.warnings.push_back(who + ": " + w);
@@ -798,10 +708,15 @@ std::string planMetricsJson(const MissionPlan& plan, const std::string& plannerN
     CPLJSONDocument doc;
     CPLJSONObject root = doc.GetRoot();
     root.Add("planner", plannerName);
+    if (!plan.plannerChoice.empty())
+        root.Add("planner_choice", plan.plannerChoice);
     CPLJSONArray list;
     for (const auto& a : plan.aircraft) {
         CPLJSONObject o;
         o.Add("name", a.aircraft);
+        o.Add("planner", mission::plannerKindInfo(a.planner).id);
+        if (!a.plannerChoice.empty())
+            o.Add("planner_choice", a.plannerChoice);
         o.Add("altitude_m", a.altitudeM);
         o.Add("cell_size_m", a.cellSizeM);
         o.Add("grid_angle_deg", a.gridAngleDeg);

@@ -4,12 +4,19 @@ namespace pf::mission {
 
 const std::vector<PlannerKindInfo>& plannerKinds() {
     static const std::vector<PlannerKindInfo> kinds = {
+        {PlannerKind::Auto, "auto", "Auto",
+         "per aircraft the plan that flies soonest of sweep, stride and raster (the default)"},
+        {PlannerKind::Sweep, "sweep", "Sweep",
+         "straight lanes over the exact area, cell by cell round the no-fly zones, cells ordered by flight time"},
         {PlannerKind::Stride, "stride", "Stride",
          "long straight strides that follow the area's limits, few turns, no jumps"},
         {PlannerKind::Raster, "raster", "Raster",
          "row or column back-and-forth over the grid (the baseline), jumps where a row is cut"},
         {PlannerKind::Wavefront, "wavefront", "Wavefront",
          "uphill on a distance map from the landing cell, 8-connected, the quickest of 8 candidates"},
+        {PlannerKind::Lawnmower, "lawnmower", "Lawnmower (Survey)",
+         "what a ground station's Survey flies: one angle, straight over the no-fly zones (a yardstick, "
+         "its crossings fail the route check)"},
     };
     return kinds;
 }

@@ -86,7 +86,7 @@ const BadInput kCorpus[] = {
     {"camera without field of view", "plan corpus/camera_zero_fov.json",
      "horizontal field of view must be between 0 and 180 degrees, exclusive (got 0 degrees)"},
     {"unknown planner", "plan corpus/unknown_planner.json",
-     "planner.planner: unknown planner \"spiral\" (expected stride, raster or wavefront)"},
+     "planner.planner: unknown planner \"spiral\" (expected auto, sweep, stride, raster, wavefront or lawnmower)"},
     {"negative cell budget", "plan corpus/max_cells_negative.json", "planner.max_cells: value -5 is out of range"},
     // --- hand-edited routes (version 2): the message names the route, its aircraft and the waypoint ---
     {"edited waypoint without altitude", "plan corpus/route_waypoint_no_altitude.json",

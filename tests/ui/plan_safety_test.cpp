@@ -353,21 +353,27 @@ TEST(PlanSafety, TheComparisonListsEveryKindAndUseMakesItTheMissionsPlanner) {
     ASSERT_TRUE(w->planController()->waitForIdle(180000));
     for (const auto& row : w->planController()->comparison()) {
         ASSERT_TRUE(row.ok) << row.error.toStdString();
-        EXPECT_EQ(row.noFlyCrossings, 0) << plannerName(row.planner).toStdString();
+        // Only the yardstick flies over the zones (that is what it is for): its crossings are shown.
+        if (row.planner == mission::PlannerKind::Lawnmower)
+            EXPECT_GT(row.noFlyCrossings, 0);
+        else
+            EXPECT_EQ(row.noFlyCrossings, 0) << plannerName(row.planner).toStdString();
     }
-    auto* stride = panel->useButton(mission::PlannerKind::Stride);
+    const auto inUse = doc->mission().options.planner; // the demo's: the automatic choice
+    auto* current = panel->useButton(inUse);
     auto* raster = panel->useButton(mission::PlannerKind::Raster);
-    ASSERT_TRUE(stride && raster);
-    EXPECT_FALSE(stride->isEnabled()); // the mission's planner
-    EXPECT_EQ(stride->text(), QStringLiteral("In use"));
+    ASSERT_TRUE(current && raster);
+    ASSERT_NE(inUse, mission::PlannerKind::Raster);
+    EXPECT_FALSE(current->isEnabled()); // the mission's planner
+    EXPECT_EQ(current->text(), QStringLiteral("In use"));
     QTest::mouseClick(raster, Qt::LeftButton);
     EXPECT_EQ(doc->mission().options.planner, mission::PlannerKind::Raster);
     EXPECT_EQ(panel->useButton(mission::PlannerKind::Raster)->text(), QStringLiteral("In use"));
-    EXPECT_TRUE(panel->useButton(mission::PlannerKind::Stride)->isEnabled());
-    EXPECT_TRUE(w->planController()->isOutdated()); // the plan shown was made with stride
+    EXPECT_TRUE(panel->useButton(inUse)->isEnabled());
+    EXPECT_TRUE(w->planController()->isOutdated()); // the plan shown was made with the other planner
     EXPECT_FALSE(w->planController()->isComparisonOutdated()); // it compared raster too
     doc->undoStack()->undo();
-    EXPECT_EQ(doc->mission().options.planner, mission::PlannerKind::Stride);
+    EXPECT_EQ(doc->mission().options.planner, inUse);
     EXPECT_FALSE(w->planController()->isOutdated());
 }
 

@@ -30,6 +30,9 @@ mission::Mission sampleMission() {
     m.name = "Routes";
     m.area = geo::GeoPolygon{{{8.3275, 49.0110}, {8.3315, 49.0110}, {8.3315, 49.0150}, {8.3275, 49.0150}}, {}};
     m.home = geo::LonLat{8.3270554, 49.010741};
+    // Only what version 1 of the file holds (the automatic planner choice came with version 3), so the
+    // version written tells whether edited routes went in.
+    m.options.planner = mission::PlannerKind::Stride;
     return m;
 }
 

@@ -47,7 +47,7 @@ TEST(CliEvalGenerate, BadOptionsExitWithTwo) {
 
 TEST(CliEvalSurvey, BadOptionsExitWithTwo) {
     expectBadInput("eval --survey", "no area given");
-    expectBadInput("eval --survey --planners foo " + sample("c_l_shape"), "--planners: unknown planner 'foo' (use stride");
+    expectBadInput("eval --survey --planners foo " + sample("c_l_shape"), "--planners: unknown planner 'foo' (use auto, sweep, stride");
     expectBadInput("eval --survey --planner stride " + sample("c_l_shape"), "the planners with --planners");
     expectBadInput("eval --survey --zones 3 " + sample("c_l_shape"), "--zones: goes with --generate N");
 }

@@ -93,7 +93,7 @@ TEST(CliValidate, FlagErrorsNameTheFlag) {
     expectBadInput(good + " --altitude abc", "option --altitude: 'abc' is not a number");
     expectBadInput(good + " --hfov 60", "--hfov: needs --hfov and --vfov together");
     expectBadInput(good + " --hfov 200 --vfov 50", "--hfov: must be between 0 and 180 degrees, exclusive (got 200)");
-    expectBadInput(good + " --planner spiral", "--planner: unknown planner 'spiral' (expected stride, raster or wavefront)");
+    expectBadInput(good + " --planner spiral", "--planner: unknown planner 'spiral' (expected auto, sweep, stride, raster, wavefront or lawnmower)");
     expectBadInput(good + " --grid-angle sideways", "--grid-angle: 'sideways' is neither a number of degrees nor 'auto'");
     expectBadInput(good + " --safety-margin -1", "--safety-margin: must be 0 m or more (got -1)");
     expectBadInput(good + " --max-cells 0", "--max-cells: must be a whole number from 1 to 2147483647 (got 0)");

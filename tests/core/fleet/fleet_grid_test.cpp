@@ -199,6 +199,7 @@ TEST(FleetOnGrid, BalanceWithTheStridePlannerWithinTenPercent) {
         auto p = partitionCells(b, *capabilityShares(caps, areaM2));
         ASSERT_TRUE(p.ok()) << p.error().message;
         mission::PlannerOptions po;
+        po.planner = mission::PlannerKind::Stride;
         po.gridAngleDeg = 0.0;
         po.safetyMarginM = 5;
         const geo::Vec2 home(-20, -20);

@@ -214,7 +214,7 @@ TEST(MissionFile, DemoMissionLoads) {
         EXPECT_EQ(a.overlap.front, 0.75);
         EXPECT_EQ(a.overlap.side, 0.65);
     }
-    EXPECT_EQ(m->options.planner, mission::PlannerKind::Stride);
+    EXPECT_EQ(m->options.planner, mission::PlannerKind::Auto);
     EXPECT_EQ(m->options.safetyMarginM, 5.0);
 
     // The aircraft carry exactly the catalog's cameras and figures.
@@ -423,7 +423,8 @@ TEST(MissionFileErrors, BadValues) {
     EXPECT_EQ(errorOf(with(kMinimal, "\"#3cb44b\"", "\"green\"")),
               "x.json: aircraft[1].colour: expected a colour like \"#e6194b\" but found \"green\"");
     EXPECT_EQ(errorOf(with(kMinimal, "\"planner\": \"stride\"", "\"planner\": \"spiral\"")),
-              "x.json: planner.planner: unknown planner \"spiral\" (expected stride, raster or wavefront)");
+              "x.json: planner.planner: unknown planner \"spiral\" (expected auto, sweep, stride, raster, wavefront or "
+              "lawnmower)");
     EXPECT_EQ(errorOf(with(kMinimal, "\"grid_angle_deg\": \"auto\"", "\"grid_angle_deg\": \"north\"")),
               "x.json: planner.grid_angle_deg: expected a number of degrees or \"auto\" but found \"north\"");
     EXPECT_EQ(errorOf(with(kMinimal, "\"hfov_deg\": 60.0", "\"hfov_deg\": 190.0")),

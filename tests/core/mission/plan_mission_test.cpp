@@ -50,6 +50,9 @@ Mission demoMission() {
     a.overlap = {0.6, 0.4};
     m.aircraft.push_back(a);
     m.options.gridAngleDeg = 0.0;
+    // The tests below are about the grid planners' chain (cells, cell paths, the angle search); the
+    // automatic choice and the sweep planner have their own tests at the end.
+    m.options.planner = PlannerKind::Stride;
     return m;
 }
 

@@ -122,5 +122,5 @@ TEST(PlannerKinds, OneTableNamesEveryKindBothWays) {
         EXPECT_GT(std::string(k.summary).size(), 10u);
     }
     EXPECT_FALSE(plannerKindFromId("zigzag").has_value());
-    EXPECT_EQ(plannerKindIdList(), "stride, raster or wavefront");
+    EXPECT_EQ(plannerKindIdList(), "auto, sweep, stride, raster, wavefront or lawnmower");
 }

@@ -1,0 +1,407 @@
+#include "core/mission/plan_region.h"
+
+#include "core/mission/planner_kinds.h"
+#include "core/mission/validation.h"
+#include "core/plan/lawnmower_planner.h"
+#include "core/plan/planner.h"
+#include "core/plan/sweep_planner.h"
+#include "core/route/photo_waypoints.h"
+#include "core/route/safety.h"
+#include "core/route/sorties.h"
+#include "core/route/transit.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace pf::mission {
+
+namespace {
+
+plan::PlannerKind toPlanKind(PlannerKind k) {
+    switch (k) {
+    case PlannerKind::Raster:
+        return plan::PlannerKind::Raster;
+    case PlannerKind::Wavefront:
+        return plan::PlannerKind::Wavefront;
+    default:
+        return plan::PlannerKind::Stride;
+    }
+}
+
+double normaliseAngle(double a) {
+    a = std::fmod(a, 180.0);
+    if (a < 0)
+        a += 180.0;
+    return a;
+}
+
+std::string label(const AircraftConfig& a) {
+    return a.name.empty() ? std::string("the aircraft") : "aircraft \"" + a.name + "\"";
+}
+
+// What every planner of a region needs about the aircraft.
+struct Aircraft {
+    const AircraftConfig& cfg;
+    std::string who;
+    double altitudeM = 0.0;
+    sensor::EffectiveFootprint fp;
+    double cellSizeM = 0.0;
+    plan::FlightTimeModel model;
+};
+
+Result<Aircraft> prepare(const AircraftConfig& cfg) {
+    Aircraft a{cfg, label(cfg), 0.0, {}, 0.0, flightModel(cfg)};
+    auto alt = resolvedAltitude(cfg);
+    if (!alt)
+        return makeError(alt.error().code, a.who + ": " + alt.error().message);
+    auto eff = sensor::effectiveFootprint(cfg.camera, *alt, cfg.overlap);
+    if (!eff)
+        return makeError(eff.error().code, a.who + ": " + eff.error().message);
+    a.altitudeM = *alt;
+    a.fp = *eff;
+    a.cellSizeM = sensor::cellSizeFor(*eff);
+    return a;
+}
+
+// The plan's identity and its route in WGS84 (every waypoint at the aircraft's altitude).
+void finish(AircraftPlan& p, const Aircraft& a, PlannerKind kind, const geo::LocalFrame& frame,
+            const std::optional<geo::Vec2>& home) {
+    p.aircraft = a.cfg.name;
+    p.planner = kind;
+    p.altitudeM = a.altitudeM;
+    p.cellSizeM = a.cellSizeM;
+    p.footprint = a.fp;
+    p.metrics.photos = static_cast<int>(std::count_if(p.localWaypoints.begin(), p.localWaypoints.end(),
+                                                      [](const auto& w) { return w.kind == route::WaypointKind::Photo; }));
+    p.route.aircraft = a.cfg.name;
+    p.route.cruiseSpeedMps = a.cfg.cruiseSpeedMps;
+    if (home)
+        p.route.home = frame.toGeo(*home);
+    p.route.waypoints.clear();
+    p.route.waypoints.reserve(p.localWaypoints.size());
+    for (const auto& w : p.localWaypoints)
+        p.route.waypoints.push_back({frame.toGeo(w.pos), a.altitudeM, w.headingDeg, w.kind});
+}
+
+// Metrics of a plan made without a grid (sweep, lawnmower): the flown survey's length and turns by the
+// one model; no cells.
+void routeMetrics(AircraftPlan& p, const plan::FlightTimeModel& model) {
+    std::vector<geo::Vec2> pts;
+    pts.reserve(p.localWaypoints.size());
+    for (const auto& w : p.localWaypoints)
+        pts.push_back(w.pos);
+    const plan::FlightTime t = plan::flightTime(pts, model);
+    p.metrics.pathLengthM = t.lengthM;
+    p.metrics.distanceM = t.lengthM;
+    p.metrics.turns = t.turns;
+    p.metrics.turnAngleDeg = t.turnAngleDeg;
+    p.metrics.estimatedTimeS = t.totalS;
+    p.metrics.occurrences = static_cast<int>(pts.size());
+}
+
+// Heading of the leg a -> b (north when a == b).
+double legHeading(const geo::Vec2& a, const geo::Vec2& b) { return route::headingDeg(b - a); }
+
+// Grid planners: the angle search (every candidate angle, or the mission's), the few angles whose cell
+// paths fly soonest turned into lanes, and the one whose lane route flies soonest kept. The cell path's
+// time misses where lanes end (inside their end cells, at the exact boundary), which can reorder close
+// angles; lanes for every angle would cost more than the rest of the search.
+constexpr std::size_t kLaneCandidates = 3;
+
+Result<AircraftPlan> gridRegion(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
+                                const Aircraft& a, PlannerKind kind, const PlannerOptions& options,
+                                const std::optional<geo::Vec2>& home, const std::optional<geo::Vec2>& landing) {
+    const std::vector<double> angles =
+        options.gridAngleDeg ? std::vector<double>{*options.gridAngleDeg} : candidateAngles(region);
+    plan::PlanOptions popt;
+    popt.kind = toPlanKind(kind);
+    popt.wavefront.time = a.model;
+    popt.stride = {true, a.model}; // the variant flown soonest
+    plan::MetricsOptions mopt;
+    mopt.time = a.model;
+    mopt.diagonalSteps = popt.kind == plan::PlannerKind::Wavefront && popt.wavefront.moore;
+    mopt.turnLowerBound = false;
+
+    std::vector<AircraftPlan> best; // the cell paths flown soonest, soonest first
+    std::optional<Error> firstError;
+    int tried = 0;
+    auto earlier = [](const plan::PathMetrics& x, const plan::PathMetrics& y) {
+        return x.estimatedTimeS < y.estimatedTimeS - 1e-9 ||
+               (std::fabs(x.estimatedTimeS - y.estimatedTimeS) <= 1e-9 && x.turns < y.turns);
+    };
+    for (double angle : angles) {
+        grid::GridOptions gopt;
+        gopt.cellSize = a.cellSizeM;
+        gopt.angleDeg = angle;
+        gopt.safetyMarginM = options.safetyMarginM;
+        gopt.maxCells = options.maxCells;
+        auto g = grid::Grid::build(region, noFly, gopt);
+        if (!g) {
+            if (!firstError)
+                firstError = g.error();
+            continue;
+        }
+        plan::CoverageRequest req;
+        if (home) {
+            req.takeoff = g->nearestVisitable(*home);
+            req.landing = g->nearestVisitable(landing ? *landing : *home);
+        }
+        auto path = plan::planCoverage(*g, req, popt);
+        if (!path) {
+            if (!firstError)
+                firstError = path.error();
+            continue;
+        }
+        ++tried;
+        plan::PathMetrics m = plan::computeMetrics(*g, *path, mopt);
+        if (best.size() == kLaneCandidates && !earlier(m, best.back().metrics))
+            continue;
+        AircraftPlan p;
+        p.gridAngleDeg = angle;
+        p.grid = std::move(*g);
+        p.path = std::move(*path);
+        p.metrics = m;
+        const auto at = std::upper_bound(best.begin(), best.end(), p,
+                                         [&](const AircraftPlan& x, const AircraftPlan& y) { return earlier(x.metrics, y.metrics); });
+        best.insert(at, std::move(p));
+        if (best.size() > kLaneCandidates)
+            best.pop_back();
+    }
+    if (best.empty()) {
+        const Error e = firstError ? *firstError : makeError(ErrorCode::Internal, "no grid angle to try");
+        return makeError(e.code, a.who + ": " + e.message);
+    }
+    std::size_t chosen = 0;
+    double chosenT = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < best.size(); ++i) {
+        AircraftPlan& p = best[i];
+        p.localWaypoints = route::photoWaypoints(p.grid, p.path, a.fp);
+        route::straightenTransits(p.grid, p.localWaypoints);
+        const double t = aloneRouteTimeS(surveyPart(p.localWaypoints), a.cfg, home, landing);
+        if (t < chosenT - 1e-9) {
+            chosenT = t;
+            chosen = i;
+        }
+    }
+    AircraftPlan p = std::move(best[chosen]);
+    p.anglesTried = tried;
+    mopt.turnLowerBound = true;
+    p.metrics = plan::computeMetrics(p.grid, p.path, mopt);
+    return p;
+}
+
+Result<AircraftPlan> sweepRegion(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
+                                 const Aircraft& a, const PlannerOptions& options, const std::optional<geo::Vec2>& home,
+                                 const std::optional<geo::Vec2>& landing) {
+    plan::SweepOptions so;
+    so.trackSpacingM = a.fp.acrossM;
+    so.photoSpacingM = a.fp.alongM;
+    so.realAcrossM = a.fp.real.longSideM;
+    so.realAlongM = a.fp.real.shortSideM;
+    so.safetyMarginM = options.safetyMarginM;
+    so.keepInside = options.keepInsideArea;
+    so.time = a.model;
+    so.home = home;
+    so.landing = landing;
+    if (options.gridAngleDeg)
+        so.anglesDeg = {*options.gridAngleDeg};
+    auto sp = plan::planSweep(region, noFly, so);
+    if (!sp)
+        return makeError(sp.error().code, a.who + ": " + sp.error().message);
+    AircraftPlan p;
+    p.gridAngleDeg = sp->stats.angleDeg;
+    p.anglesTried = sp->stats.directionsPlanned;
+    for (std::size_t i = 0; i < sp->lanes.size(); ++i) {
+        const plan::Lane& lane = sp->lanes[i];
+        for (const auto& ph : lane.photos)
+            p.localWaypoints.push_back({ph, lane.headingDeg, route::WaypointKind::Photo, -1});
+        if (i + 1 < sp->lanes.size()) {
+            const auto& link = sp->links[i];
+            for (std::size_t k = 0; k < link.size(); ++k) {
+                const geo::Vec2 next = k + 1 < link.size() ? link[k + 1] : sp->lanes[i + 1].photos.front();
+                p.localWaypoints.push_back({link[k], legHeading(link[k], next), route::WaypointKind::Transit, -1});
+            }
+        }
+    }
+    route::dropNearDuplicates(p.localWaypoints);
+    p.warnings = sp->warnings;
+    routeMetrics(p, a.model);
+    return p;
+}
+
+Result<AircraftPlan> lawnmowerRegion(const geo::MultiPolygon& region, const Aircraft& a,
+                                     const PlannerOptions& options, const std::optional<geo::Vec2>& home) {
+    plan::LawnmowerOptions lo;
+    lo.trackSpacingM = a.fp.acrossM;
+    lo.photoSpacingM = a.fp.alongM;
+    lo.time = a.model;
+    lo.home = home;
+    lo.angleDeg = options.gridAngleDeg;
+    lo.footprintAcrossM = a.fp.real.longSideM;
+    lo.footprintAlongM = a.fp.real.shortSideM;
+    auto lp = plan::planLawnmower(region, lo);
+    if (!lp)
+        return makeError(lp.error().code, a.who + ": " + lp.error().message);
+    AircraftPlan p;
+    p.gridAngleDeg = lp->angleDeg;
+    p.anglesTried = lp->anglesTried;
+    for (const auto& t : lp->transects) {
+        if (t.photos.empty())
+            continue;
+        const geo::Vec2 d = t.stripEnd - t.stripStart;
+        const geo::Vec2 u = d.norm() > 0 ? geo::Vec2(d.normalized()) : geo::Vec2(0, 1);
+        // The Survey flies each transect on from its turnaround before the entry to the one after the exit.
+        if (lo.turnaroundM > 0)
+            p.localWaypoints.push_back({t.stripStart - lo.turnaroundM * u, t.headingDeg, route::WaypointKind::Turn, -1});
+        for (const auto& ph : t.photos)
+            p.localWaypoints.push_back({ph, t.headingDeg, route::WaypointKind::Photo, -1});
+        if (lo.turnaroundM > 0)
+            p.localWaypoints.push_back({t.stripEnd + lo.turnaroundM * u, t.headingDeg, route::WaypointKind::Turn, -1});
+    }
+    route::dropNearDuplicates(p.localWaypoints);
+    routeMetrics(p, a.model);
+    return p;
+}
+
+// The time of one flight over `survey` as the mission will fly it: made safe (detours round the margins)
+// and from home and back by the safe transit; aloneRouteTimeS when any of that fails (the plan's own
+// stages then report why).
+double flownTimeS(const std::vector<route::LocalWaypoint>& survey, const AircraftConfig& cfg,
+                  const std::optional<geo::Vec2>& home, const std::optional<geo::Vec2>& landing,
+                  const route::SafePathFinder& finder) {
+    auto safe = route::enforceNoFly(survey, finder);
+    if (!safe)
+        return aloneRouteTimeS(survey, cfg, home, landing);
+    if (!home)
+        return aloneRouteTimeS(*safe, cfg, home, landing);
+    auto flown = route::withTransit(*safe, *home, finder, landing);
+    if (!flown)
+        return aloneRouteTimeS(*safe, cfg, home, landing);
+    return aloneRouteTimeS(*flown, cfg, home, landing);
+}
+
+std::string minutes(double s) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.1f min", s / 60.0);
+    return buf;
+}
+
+Result<AircraftPlan> planOne(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly, const Aircraft& a,
+                             PlannerKind kind, const PlannerOptions& options, const geo::LocalFrame& frame,
+                             const std::optional<geo::Vec2>& home, const std::optional<geo::Vec2>& landing) {
+    Result<AircraftPlan> p = makeError(ErrorCode::Internal, "no planner");
+    switch (kind) {
+    case PlannerKind::Sweep:
+        p = sweepRegion(region, noFly, a, options, home, landing);
+        break;
+    case PlannerKind::Lawnmower:
+        p = lawnmowerRegion(region, a, options, home);
+        break;
+    default:
+        p = gridRegion(region, noFly, a, kind, options, home, landing);
+        break;
+    }
+    if (p)
+        finish(*p, a, kind, frame, home);
+    return p;
+}
+
+} // namespace
+
+std::vector<double> candidateAngles(const geo::MultiPolygon& region) {
+    std::vector<double> angles;
+    for (int a = 0; a < 180; a += 5)
+        angles.push_back(a);
+    // The directions of the two longest edges: areas are often drawn along a road or a field's side.
+    std::vector<std::pair<double, double>> edges; // length, angle
+    for (const auto& poly : region) {
+        const auto& r = poly.outer;
+        for (std::size_t i = 0; i < r.size(); ++i) {
+            const geo::Vec2 d = r[(i + 1) % r.size()] - r[i];
+            edges.push_back({d.norm(), normaliseAngle(std::atan2(d.y(), d.x()) * 180.0 / M_PI)});
+        }
+    }
+    std::sort(edges.begin(), edges.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    for (std::size_t i = 0; i < edges.size() && i < 2; ++i) {
+        const double a = std::round(edges[i].second * 1000.0) / 1000.0;
+        bool known = false;
+        for (double b : angles)
+            known = known || std::fabs(a - b) < 1e-6;
+        if (!known)
+            angles.push_back(a);
+    }
+    return angles;
+}
+
+Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
+                                const AircraftConfig& aircraft, const PlannerOptions& options,
+                                const geo::LocalFrame& frame, const std::optional<geo::Vec2>& home,
+                                const std::optional<geo::Vec2>& landing) {
+    const auto t0 = std::chrono::steady_clock::now();
+    auto a = prepare(aircraft);
+    if (!a)
+        return a.error();
+    Result<AircraftPlan> out = makeError(ErrorCode::Internal, "no planner");
+    if (options.planner != PlannerKind::Auto) {
+        out = planOne(region, noFly, *a, options.planner, options, frame, home, landing);
+    } else {
+        // The candidates, each planned in full and compared on the route the aircraft would fly: its
+        // survey made safe (the detours a grid planner's jumps need) and the safe ways from home and back.
+        const route::SafePathFinder finder(route::NoFlyField(noFly, options.safetyMarginM));
+        std::string note;
+        double bestT = std::numeric_limits<double>::infinity();
+        std::optional<Error> firstError;
+        for (PlannerKind k : {PlannerKind::Sweep, PlannerKind::Stride, PlannerKind::Raster}) {
+            auto p = planOne(region, noFly, *a, k, options, frame, home, landing);
+            const char* id = plannerKindInfo(k).id;
+            if (!p) {
+                if (!firstError)
+                    firstError = p.error();
+                note += std::string(note.empty() ? "" : ", ") + id + " failed";
+                continue;
+            }
+            const double t = flownTimeS(surveyPart(p->localWaypoints), aircraft, home, landing, finder);
+            note += std::string(note.empty() ? "" : ", ") + id + " " + minutes(t);
+            if (t < bestT - 1e-9) {
+                bestT = t;
+                out = std::move(p);
+            }
+        }
+        if (!out)
+            return firstError ? *firstError : out.error();
+        out->plannerChoice = std::string(plannerKindInfo(out->planner).id) + " flies soonest (" + note +
+                             ", home to home in one flight)";
+    }
+    if (!out)
+        return out;
+    out->metrics.planningMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    return out;
+}
+
+std::vector<route::LocalWaypoint> surveyPart(const std::vector<route::LocalWaypoint>& w) {
+    const auto isPhoto = [](const route::LocalWaypoint& x) { return x.kind == route::WaypointKind::Photo; };
+    const auto first = std::find_if(w.begin(), w.end(), isPhoto);
+    if (first == w.end())
+        return {};
+    const auto last = std::find_if(w.rbegin(), w.rend(), isPhoto).base();
+    return {first, last};
+}
+
+double aloneRouteTimeS(const std::vector<route::LocalWaypoint>& survey, const AircraftConfig& a,
+                       const std::optional<geo::Vec2>& home, const std::optional<geo::Vec2>& landing) {
+    std::vector<geo::Vec2> pts;
+    pts.reserve(survey.size() + 2);
+    if (home)
+        pts.push_back(*home);
+    for (const auto& w : survey)
+        pts.push_back(w.pos);
+    if (home)
+        pts.push_back(landing ? *landing : *home);
+    return route::flightTimeS(pts, flightModel(a));
+}
+
+} // namespace pf::mission

@@ -1,0 +1,48 @@
+// Planning one aircraft over its region: the planner kinds (grid planners with their angle search, the
+// sweep planner, the lawnmower yardstick, the automatic choice) and what their plans are compared on.
+#pragma once
+
+#include "core/geo/local_frame.h"
+#include "core/geo/types.h"
+#include "core/mission/mission.h"
+#include "core/mission/mission_plan.h"
+#include "core/result.h"
+#include "core/route/waypoint.h"
+
+#include <optional>
+#include <vector>
+
+namespace pf::mission {
+
+// Plans ONE aircraft over `region` (local metres in `frame`, e.g. the subarea assigned to it), avoiding
+// `noFly` (local metres, un-buffered; the options' safety margin is applied), with options.planner:
+// - grid planners (stride, raster, wavefront): the take-off cell is the visitable cell nearest to `home`
+//   and the landing cell the one nearest to `landing` (home if unset); without a home the path starts
+//   at the grid's first cell. With no grid angle in the options, angles 0, 5, ..., 175 degrees and the
+//   directions of the region's longest edges are tried; the three whose cell paths fly soonest (then
+//   fewer turns) are turned into lanes and the one whose route flies soonest is kept;
+// - sweep: plan::planSweep on the exact polygon (the mission's grid angle, if set, as its only lane
+//   direction);
+// - lawnmower: plan::planLawnmower, the Survey pattern over the region, straight over the zones;
+// - auto: sweep, stride and raster are planned in full and the one whose route flies soonest (from home
+//   over its survey waypoints and back, aloneRouteTimeS) is kept; plannerChoice says which and why.
+// Errors name the aircraft and the problem.
+Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
+                                const AircraftConfig& aircraft, const PlannerOptions& options,
+                                const geo::LocalFrame& frame, const std::optional<geo::Vec2>& home,
+                                const std::optional<geo::Vec2>& landing = std::nullopt);
+
+// The angles the automatic search tries for a region.
+std::vector<double> candidateAngles(const geo::MultiPolygon& region);
+
+// The survey part of a planned route: from the first photo to the last. The planner's own way from the
+// take-off cell and back to the landing cell is replaced by the shortest safe transit later.
+std::vector<route::LocalWaypoint> surveyPart(const std::vector<route::LocalWaypoint>& w);
+
+// The time of the route an aircraft would fly alone over its survey waypoints: from home along the
+// straight line to the first one, through all, and straight back (to the landing point if any), by the
+// one flight-time model. What planners and splits are compared on before the final plan.
+double aloneRouteTimeS(const std::vector<route::LocalWaypoint>& survey, const AircraftConfig& a,
+                       const std::optional<geo::Vec2>& home, const std::optional<geo::Vec2>& landing);
+
+} // namespace pf::mission
