@@ -7,6 +7,7 @@
 #include "core/route/waypoint.h"
 #include "core/sensor/camera.h"
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -72,12 +73,22 @@ struct PlannerOptions {
 // the ground under each waypoint, from a digital elevation model.
 enum class TerrainMode { Off, Follow };
 
+struct MissionTerrain; // core/mission/terrain_stage.h
+constexpr double kDefaultMinClearanceM = 10.0;
+
 struct TerrainOptions {
     TerrainMode mode = TerrainMode::Off;
-    std::string demPath;       // the DEM file; a relative path is relative to the mission file
-    double minClearanceM = 10.0; // no point of a leg closer to the ground (at most the height above ground)
+    std::string demPath;       // the DEM file (a relative path in a mission file: beside the file)
+    double minClearanceM = kDefaultMinClearanceM; // no point of a leg closer to the ground (at most the height above ground)
     std::optional<double> homeElevationM; // the take-off point's ground above sea level; from the DEM if unset
+    // The DEM read over the area, set by the terrain stage on the mission it plans (planOverTerrain):
+    // derived data, neither saved nor compared.
+    std::shared_ptr<const MissionTerrain> prepared;
     bool follows() const { return mode == TerrainMode::Follow; }
+    // Whether the file must say anything about terrain (a DEM chosen, following on, or a value set).
+    bool isDefault() const {
+        return mode == TerrainMode::Off && demPath.empty() && minClearanceM == kDefaultMinClearanceM && !homeElevationM;
+    }
     friend bool operator==(const TerrainOptions& a, const TerrainOptions& b) {
         return a.mode == b.mode && a.demPath == b.demPath && a.minClearanceM == b.minClearanceM &&
                a.homeElevationM == b.homeElevationM;

@@ -5,10 +5,10 @@
 #include "core/fleet/photo_dedup.h"
 #include "core/geo/polygon_ops.h"
 #include "core/grid/grid.h"
+#include "core/sensor/camera.h"
 #include "core/mission/plan_region.h"
 #include "core/mission/planner_kinds.h"
 #include "core/mission/terrain_stage.h"
-#include "core/sensor/camera.h"
 #include "core/mission/validation.h"
 #include "core/plan/coverage_check.h"
 #include "core/plan/planner.h"
@@ -67,34 +67,14 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
 } // namespace
 
 namespace {
-Result<MissionPlan> planMissionOver(const Mission& m, const std::shared_ptr<const MissionTerrain>& terrain);
-} // namespace
-
-// Terrain following (issue 18, core/mission/terrain_stage.h): the DEM is read once, the footprints
-// are planned at the lowest height above ground each camera sees, and buildPlan's step 4b follows
-// the terrain. Without it the mission is planned exactly as before.
-Result<MissionPlan> planMission(const Mission& m) {
-    if (!m.terrain.follows())
-        return planMissionOver(m, nullptr);
-    auto geom = localGeometry(m);
-    if (!geom)
-        return geom.error();
-    auto terrain = loadMissionTerrain(m, *geom);
-    if (!terrain)
-        return terrain.error();
-    return planMissionOver(planningMission(m, **terrain), *terrain);
-}
-
-namespace {
 
 // planMission for one planner kind (never Auto).
-Result<MissionPlan> planMissionWith(const Mission& m, const std::shared_ptr<const MissionTerrain>& terrain) {
+Result<MissionPlan> planMissionWith(const Mission& m) {
     if (m.aircraft.empty())
         return makeError(ErrorCode::InvalidInput, "the mission has no aircraft: add one to plan a flight");
     auto geom = localGeometry(m);
     if (!geom)
         return geom.error();
-    geom->terrain = terrain;
     const geo::LocalFrame& frame = geom->frame;
     const std::size_t n = m.aircraft.size();
     const PlannerOptions& opt = m.options;
@@ -254,15 +234,19 @@ Result<MissionPlan> planMissionWith(const Mission& m, const std::shared_ptr<cons
     return std::move(*first);
 }
 
+} // namespace
+
 // The automatic choice plans the whole mission with each candidate planner and keeps the one that
 // finishes soonest: so it is never slower than any planner it chose from, also with several
 // aircraft, whose split depends on the planner's times. A plan that leaves more of the area unseen
 // than the coverage target, or breaches a margin, loses to one that does not. The plans share
 // nothing and run in parallel, unless the grids are large: then one after the other, so that the
 // peak memory is that of the largest plan, not the sum of three.
-Result<MissionPlan> planMissionOver(const Mission& m, const std::shared_ptr<const MissionTerrain>& terrain) {
+Result<MissionPlan> planMission(const Mission& m) {
+    if (needsTerrainStage(m)) // terrain following: the DEM read once, then planned over it (terrain_stage.h)
+        return planOverTerrain(m, planMission);
     if (m.options.planner != PlannerKind::Auto)
-        return planMissionWith(m, terrain);
+        return planMissionWith(m);
     const PlannerKind kinds[] = {PlannerKind::Sweep, PlannerKind::Stride, PlannerKind::Raster};
     // The cells of the grid planners over the whole area (bounding box at the mission's angle).
     double cells = 0.0;
@@ -284,7 +268,7 @@ Result<MissionPlan> planMissionOver(const Mission& m, const std::shared_ptr<cons
         Mission mk = m;
         mk.options.planner = k;
         runs.push_back(std::async(parallel ? std::launch::async : std::launch::deferred,
-                                  [mk, terrain] { return planMissionWith(mk, terrain); }));
+                                  [mk] { return planMissionWith(mk); }));
     }
     std::optional<MissionPlan> best;
     std::string note, errors;
@@ -314,6 +298,8 @@ Result<MissionPlan> planMissionOver(const Mission& m, const std::shared_ptr<cons
                           " finishes soonest (" + note + ")";
     return std::move(*best);
 }
+
+namespace {
 
 Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const LocalGeometry& geomRef,
                               const std::vector<geo::MultiPolygon>& regions,
@@ -492,13 +478,11 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         flownPaths.push_back(std::move(path));
     }
 
-    // 4b. Terrain following (issue 18, core/mission/terrain_stage.h): altitudes from the ground under
-    // each waypoint, legs checked and waypoints inserted where the ground rises, sortie times with the
-    // climbs (after the sorties: the inserted waypoints lie on the legs already timed, the climbs add a
-    // little, and a sortie that no longer fits its battery gets a warning), footprints on the terrain.
+    // 4b. Terrain following (terrain_stage.h): altitudes above the ground, legs checked, waypoints
+    // inserted where the ground rises, times with the climbs, each photo's footprint on the terrain.
     std::vector<geo::Ring> terrainOutlines;
-    if (geom->terrain)
-        if (auto t = applyTerrain(plan, m, *geom->terrain, frame, homes, landing, photoFootprints, terrainOutlines); !t)
+    if (m.terrain.prepared)
+        if (auto t = applyTerrain(plan, m, frame, homes, landing, photoFootprints, terrainOutlines); !t)
             return t.error();
 
     // 5. Altitude separation between aircraft in the air together.
@@ -515,7 +499,7 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
 
     // 6. The independent check: real footprints of every photo of every aircraft, margin breaches.
     if (check) {
-        auto cov = plan::checkCoverage(admissible, photoFootprints, {}, geom->terrain ? &terrainOutlines : nullptr);
+        auto cov = plan::checkCoverage(admissible, photoFootprints, {}, m.terrain.prepared ? &terrainOutlines : nullptr);
         if (!cov)
             return makeError(cov.error().code, "checking the coverage: " + cov.error().message);
         plan.coverageRatio = cov->coveredFraction;
@@ -664,6 +648,10 @@ std::string planToGeoJson(const MissionPlan& plan) {
             p.Add("aircraft", a.aircraft);
             p.Add("seq", ++seq);
             p.Add("alt_m", w.altitudeM);
+            if (w.groundM && a.route.homeElevationM) { // terrain following
+                p.Add("ground_m", *w.groundM);
+                p.Add("alt_amsl_m", *a.route.homeElevationM + w.altitudeM);
+            }
             p.Add("kind", "photo");
             p.Add("heading_deg", w.headingDeg);
             p.Add("footprint_across_m", a.footprint.real.longSideM);
@@ -744,6 +732,17 @@ std::string planMetricsJson(const MissionPlan& plan, const std::string& plannerN
         o.Add("kept_inside", a.keptInside);
         o.Add("footprint_across_m", a.footprint.real.longSideM);
         o.Add("footprint_along_m", a.footprint.real.shortSideM);
+        if (a.terrain.active) { // terrain following (terrain_stage.h)
+            CPLJSONObject t;
+            t.Add("height_above_ground_m", a.terrain.heightAboveGroundM);
+            t.Add("planning_height_m", a.terrain.planningHeightM);
+            t.Add("home_ground_m", a.terrain.homeGroundM);
+            t.Add("lowest_clearance_m", a.terrain.lowestClearanceM);
+            t.Add("waypoints_inserted", a.terrain.waypointsInserted);
+            t.Add("gsd_cm", a.terrain.gsdCm);
+            t.Add("coarsest_gsd_cm", a.terrain.coarsestGsdCm);
+            o.Add("terrain", t);
+        }
         list.Add(o);
     }
     root.Add("aircraft", list);

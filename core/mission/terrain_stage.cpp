@@ -141,18 +141,37 @@ Result<std::shared_ptr<const MissionTerrain>> loadMissionTerrain(const Mission& 
     return std::shared_ptr<const MissionTerrain>(std::move(t));
 }
 
-Mission planningMission(const Mission& m, const MissionTerrain& t) {
+Mission planningMission(const Mission& m, std::shared_ptr<const MissionTerrain> t) {
     Mission p = m;
-    for (std::size_t k = 0; k < p.aircraft.size() && k < t.planningHeightM.size(); ++k) {
-        p.aircraft[k].altitudeM = t.planningHeightM[k];
+    for (std::size_t k = 0; k < p.aircraft.size() && k < t->planningHeightM.size(); ++k) {
+        p.aircraft[k].altitudeM = t->planningHeightM[k];
         p.aircraft[k].gsdCm.reset();
     }
+    p.terrain.prepared = std::move(t);
     return p;
 }
 
-Status applyTerrain(MissionPlan& plan, const Mission& m, const MissionTerrain& t, const geo::LocalFrame& frame,
+bool needsTerrainStage(const Mission& m) { return m.terrain.follows() && !m.terrain.prepared; }
+
+Result<MissionPlan> planOverTerrain(const Mission& m,
+                                    const std::function<Result<MissionPlan>(const Mission&)>& plan) {
+    if (m.aircraft.empty())
+        return makeError(ErrorCode::InvalidInput, "the mission has no aircraft: add one to plan a flight");
+    auto geom = localGeometry(m);
+    if (!geom)
+        return geom.error();
+    auto terrain = loadMissionTerrain(m, *geom);
+    if (!terrain)
+        return terrain.error();
+    return plan(planningMission(m, *terrain));
+}
+
+Status applyTerrain(MissionPlan& plan, const Mission& m, const geo::LocalFrame& frame,
                     const std::vector<std::optional<geo::Vec2>>& homes, const std::optional<geo::Vec2>& landing,
                     std::vector<plan::PhotoFootprint>& footprints, std::vector<geo::Ring>& outlines) {
+    if (!m.terrain.prepared)
+        return makeError(ErrorCode::Internal, "terrain following without a terrain model read");
+    const MissionTerrain& t = *m.terrain.prepared;
     const terrain::HeightGrid& grid = *t.grid;
     footprints.clear();
     outlines.clear();

@@ -10,6 +10,7 @@
 #include "core/terrain/dem.h"
 #include "core/terrain/height_grid.h"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -43,16 +44,26 @@ Result<std::shared_ptr<const MissionTerrain>> loadMissionTerrain(const Mission& 
 // The mission as the planner plans it over terrain: each aircraft's altitude replaced by the lowest
 // height above ground its camera sees over the area (its height above ground minus the largest rise
 // of the ground within its footprint's half-diagonal of any point of the area), so that lanes and
-// photo spacing keep the overlaps wherever the ground comes closer.
-Mission planningMission(const Mission& m, const MissionTerrain& t);
+// photo spacing keep the overlaps wherever the ground comes closer; `terrain.prepared` set to `t`.
+Mission planningMission(const Mission& m, std::shared_ptr<const MissionTerrain> t);
 
-// Terrain following applied to every aircraft of a plan made with planningMission(m): waypoints at
+// Whether planMission must first run the terrain stage: the mission follows the terrain and its DEM
+// has not been read yet.
+bool needsTerrainStage(const Mission& m);
+// The terrain stage in front of a planner: reads the DEM over the mission (loadMissionTerrain) and
+// plans planningMission(m) with `plan` (planMission itself: its automatic choice then compares
+// planners over the same terrain). Errors: the DEM's, or the planner's.
+Result<MissionPlan> planOverTerrain(const Mission& m,
+                                    const std::function<Result<MissionPlan>(const Mission&)>& plan);
+
+// Terrain following applied to every aircraft of a plan of planningMission(m) (m.terrain.prepared
+// set): waypoints at
 // their height above the ground, legs checked every metre and waypoints inserted where the ground
 // rises (route::followTerrain), altitudes above take-off from the home's ground, sortie and flight
 // times with the 3D length of each leg, the photos in `footprints` and each one's footprint on the
 // terrain in `outlines` (parallel, for the coverage check), AircraftPlan::terrain filled. Warnings go
 // to plan.warnings.
-Status applyTerrain(MissionPlan& plan, const Mission& m, const MissionTerrain& t, const geo::LocalFrame& frame,
+Status applyTerrain(MissionPlan& plan, const Mission& m, const geo::LocalFrame& frame,
                     const std::vector<std::optional<geo::Vec2>>& homes, const std::optional<geo::Vec2>& landing,
                     std::vector<plan::PhotoFootprint>& footprints, std::vector<geo::Ring>& outlines);
 

@@ -161,7 +161,7 @@ Result<LocalGeometry> localGeometry(const Mission& m) {
     auto frame = geo::LocalFrame::forArea(area);
     if (!frame)
         return frame.error();
-    LocalGeometry g{*frame, frame->toLocal(area), {}, {}, nullptr};
+    LocalGeometry g{*frame, frame->toLocal(area), {}, {}};
     for (std::size_t i = 0; i < m.noFlyZones.size(); ++i) {
         const auto& z = m.noFlyZones[i];
         const auto problems = geo::validatePolygon(z.polygon, zoneName(z, i));
@@ -217,7 +217,7 @@ ValidationReport validateMission(const Mission& m) {
         if (!frame) {
             error(out, frame.error().message);
         } else {
-            geom = LocalGeometry{*frame, frame->toLocal(geo::cleanPolygon(m.area)), {}, {}, nullptr};
+            geom = LocalGeometry{*frame, frame->toLocal(geo::cleanPolygon(m.area)), {}, {}};
             r.areaM2 = geo::area(geom->area);
             for (std::size_t i = 0; i < m.noFlyZones.size(); ++i) {
                 const auto& z = m.noFlyZones[i];

@@ -10,7 +10,6 @@
 #include "core/sensor/camera.h"
 
 #include <optional>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -64,13 +63,11 @@ ValidationReport validateMission(const Mission& m);
 
 // The mission's geometry in its local planning frame (centred on the area), as the grid needs it.
 // No-fly zones that do not touch the area are left out. Errors name the first invalid polygon.
-struct MissionTerrain; // core/mission/terrain_stage.h
 struct LocalGeometry {
     geo::LocalFrame frame;
     geo::Polygon area;
     std::vector<geo::Polygon> noFly;
     std::vector<std::string> noFlyNames; // parallel to noFly
-    std::shared_ptr<const MissionTerrain> terrain; // set by planMission when the mission follows the terrain
 };
 Result<LocalGeometry> localGeometry(const Mission& m);
 

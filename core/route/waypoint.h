@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pf::route {
@@ -43,13 +44,18 @@ struct LocalWaypoint {
 
 // One aircraft's flight: the ordered waypoints of one sortie (take-off at home, land at home).
 struct Route {
+    Route() = default;
+    Route(std::string name, std::optional<geo::LonLat> homePoint, double speedMps, std::vector<Waypoint> points,
+          std::optional<double> homeElevation = std::nullopt)
+        : aircraft(std::move(name)), home(homePoint), cruiseSpeedMps(speedMps), waypoints(std::move(points)),
+          homeElevationM(homeElevation) {}
     std::string aircraft;
     std::optional<geo::LonLat> home;
     double cruiseSpeedMps = 10.0;
+    std::vector<Waypoint> waypoints;
     // The take-off point's ground above mean sea level, when known (a terrain model, or given): the
     // waypoints' altitudes above take-off become altitudes above sea level.
     std::optional<double> homeElevationM;
-    std::vector<Waypoint> waypoints;
     // Whether the route follows the terrain: a home elevation and the ground under every waypoint.
     bool hasTerrain() const {
         if (!homeElevationM || waypoints.empty())

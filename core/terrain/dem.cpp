@@ -72,6 +72,10 @@ struct Dem::Impl {
     GDALDatasetUniquePtr ds;
     DemInfo info;
     double scale = 1.0, offset = 0.0; // band scale and offset (before the unit)
+    // The horizontal CRS alone: the warper is given it as the source CRS, so that it never shifts
+    // the heights between vertical datums on its own (a compound CRS with EGM96 would otherwise be
+    // turned into ellipsoidal heights; the datum is handled here, once).
+    std::string horizontalWkt;
     mutable std::mutex mutex;         // GDAL datasets are not safe to read from two threads at once
 };
 
@@ -153,7 +157,16 @@ Result<Dem> Dem::open(const std::string& path) {
     OGRSpatialReference src = *srs;
     if (src.IsCompound())
         src.StripVertical();
+    if (src.GetAxesCount() == 3)
+        src.DemoteTo2D(nullptr);
     src.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+    {
+        char* wkt = nullptr;
+        const char* const wktOpts[] = {"FORMAT=WKT2_2019", nullptr};
+        if (src.exportToWkt(&wkt, wktOpts) == OGRERR_NONE && wkt)
+            impl->horizontalWkt = wkt;
+        CPLFree(wkt);
+    }
     OGRSpatialReference geo = wgs84();
     std::unique_ptr<OGRCoordinateTransformation> toGeo(OGRCreateCoordinateTransformation(&src, &geo));
     if (!toGeo)
@@ -205,6 +218,10 @@ Result<HeightGrid> Dem::resample(const std::string& srs, double x0, double y0, d
                                      "-ts", std::to_string(cols), std::to_string(rows), "-r", "bilinear",
                                      "-ot", "Float32", "-dstnodata", "nan", "-et", "0.01", "-wo",
                                      "INIT_DEST=NO_DATA", "-q"};
+    if (!m->horizontalWkt.empty()) {
+        args.push_back("-s_srs");
+        args.push_back(m->horizontalWkt);
+    }
     std::vector<char*> argv;
     for (auto& a : args)
         argv.push_back(a.data());
@@ -310,13 +327,19 @@ Result<HeightGrid> Dem::overRegion(const geo::LocalFrame& frame, const geo::Mult
         }
     if (inside == 0 || missing == 0)
         return grid;
-    if (missing == inside)
+    if (missing == inside) {
+        // Outside the DEM's bounds, or inside them on no-data pixels?
+        const geo::LonLat a = frame.toGeo(box.min), b = frame.toGeo(box.max);
+        const auto& sw = m->info.southWest;
+        const auto& ne = m->info.northEast;
+        const bool overlaps = std::max(a.lon, b.lon) >= sw.lon && std::min(a.lon, b.lon) <= ne.lon &&
+                              std::max(a.lat, b.lat) >= sw.lat && std::min(a.lat, b.lat) <= ne.lat;
         return makeError(ErrorCode::InvalidInput,
                          who + " has no heights over the area: " +
-                             (grid->range().first == grid->range().first
-                                  ? std::string("every pixel there is no-data")
-                                  : "it covers " + lonLatText(m->info.southWest) + " to " +
-                                        lonLatText(m->info.northEast) + ", the area lies elsewhere or is all no-data"));
+                             (overlaps ? std::string("every pixel there is no-data")
+                                       : "it covers " + lonLatText(sw) + " to " + lonLatText(ne) +
+                                             ", the area lies elsewhere"));
+    }
     const geo::Vec2 centre = (box.min + box.max) / 2;
     const double share = 100.0 * missing / inside;
     return makeError(ErrorCode::InvalidInput,

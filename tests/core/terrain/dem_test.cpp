@@ -146,7 +146,7 @@ TEST(Dem, SrtmHgtTileIsRead) {
     const auto f = frame();
     auto g = dem->overRegion(f, rect(-200, -150, 200, 150), 0.0);
     ASSERT_TRUE(g.ok()) << g.error().message;
-    for (const geo::Vec2 p : {geo::Vec2(0, 0), geo::Vec2(150, 100), geo::Vec2(-180, -120)}) {
+    for (const geo::Vec2& p : {geo::Vec2(0, 0), geo::Vec2(150, 100), geo::Vec2(-180, -120)}) {
         const geo::LonLat ll = f.toGeo(p);
         EXPECT_NEAR(*g->heightAt(p), 100 + (ll.lon - 8.0) * 1000.0, 0.6) << p.transpose();
     }
