@@ -15,6 +15,7 @@
 #include "ui/map/mission_layer.h"
 #include "ui/map/tile_layer.h"
 #include "ui/mission_document.h"
+#include "ui/terrain/terrain_controller.h"
 #include "ui/mission_files.h"
 #include "ui/panels/problems_panel.h"
 #include "core/mission/planner_kinds.h"
@@ -252,6 +253,9 @@ void MainWindow::buildActions() {
     // Mosaic (issue 19): the dialog, the map layer and the dock live in ui/mosaic/.
     m_mosaic = new MosaicController(this, m_view, m_scene, m_planner, &m_catalog);
     file->addAction(icon("map"), tr("Build &mosaic from photos…"), m_mosaic, &MosaicController::showDialog);
+    // Terrain following (issue 18): the DEM, follow or off, the clearance, the profile dock (ui/terrain/).
+    m_terrain = new TerrainController(this, m_doc, m_planner, m_interactive);
+    file->addMenu(m_terrain->menu());
     file->addSeparator();
     auto* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
@@ -898,6 +902,10 @@ void MainWindow::buildPlanning() {
     m_viewMenu->addAction(statsDock->toggleViewAction());
     m_viewMenu->addAction(wpDock->toggleViewAction());
     m_viewMenu->addAction(problemsDock->toggleViewAction());
+    addDockWidget(Qt::BottomDockWidgetArea, m_terrain->dock());
+    tabifyDockWidget(statsDock, m_terrain->dock());
+    statsDock->raise();
+    m_viewMenu->addAction(m_terrain->dock()->toggleViewAction());
     syncPlannerControls();
 }
 

@@ -30,6 +30,7 @@ class MissionDocument;
 class MissionLayer;
 class MissionPanel;
 class MosaicController;
+class TerrainController;
 class PlanController;
 class PlanLayer;
 class PlanProgressWidget;
@@ -62,6 +63,7 @@ public:
     StatisticsPanel* statisticsPanel() const { return m_statistics; }
     ProblemsPanel* problemsList() const { return m_problemList; }
     MosaicController* mosaicController() const { return m_mosaic; }
+    TerrainController* terrainController() const { return m_terrain; }
     // The bar saying a new plan waits because routes were edited by hand.
     bool planNoticeVisible() const;
     AbstractTool* tool(ToolId id) const;
@@ -154,6 +156,7 @@ private:
     QWidget* m_notice = nullptr;
     QLabel* m_noticeText = nullptr;
     MosaicController* m_mosaic = nullptr;
+    TerrainController* m_terrain = nullptr;
 };
 
 } // namespace pf::ui

@@ -176,6 +176,12 @@ void MissionDocument::setOptions(const mission::PlannerOptions& options) {
     emit changed();
 }
 
+void MissionDocument::setTerrain(const mission::TerrainOptions& terrain) {
+    m_mission.terrain = terrain;
+    emit optionsChanged();
+    emit changed();
+}
+
 QString MissionDocument::nextNoFlyZoneName(const QString& base) const {
     for (int n = 1;; ++n) {
         const std::string candidate = QStringLiteral("%1 %2").arg(base).arg(n).toStdString();

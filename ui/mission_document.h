@@ -62,6 +62,8 @@ public:
     void removeAircraft(int index);
     void setAircraft(int index, const mission::AircraftConfig& aircraft);
     void setOptions(const mission::PlannerOptions& options);
+    // Terrain following and its DEM (emits optionsChanged: planning reads them).
+    void setTerrain(const mission::TerrainOptions& terrain);
     // "<base> N" with the smallest N no zone is named after: each kind of zone counts on its own
     // ("Circle 1", "No-fly zone 1").
     QString nextNoFlyZoneName(const QString& base) const;

@@ -60,7 +60,8 @@ const char* const kMosaicUsage =
     "  --match-tolerance M     a photo further than this from every planned point is reported\n"
     "                          (default: 40 % of the planned photo spacing, at least 3 m)\n"
     "  --max-view-angle DEG    ground seen further than this from the vertical is not used (60)\n"
-    "  --dem FILE              terrain model: not supported yet (the mosaic uses flat ground)\n"
+    "  --dem FILE              refused: the mosaic projects the photos on flat ground at the take-off\n"
+    "                          height (terrain models are used by plan and validate to follow the terrain)\n"
     "  --vectors FILE.gpkg     footprints, seams, gaps, camera positions and missing photos "
     "(default:\n"
     "                          beside the mosaic, MOSAIC.gpkg)\n"
@@ -126,8 +127,8 @@ int runMosaic(const std::vector<std::string>& argv) {
         return reportError(args.error());
     if (args->has("dem"))
         return reportError(
-            "--dem: terrain models are not supported by the mosaic yet; it projects the photos on "
-            "flat ground at the take-off height (run without --dem)");
+            "--dem: the mosaic does not use terrain models: it projects the photos on flat ground at the "
+            "take-off height (run without --dem; plan and validate take --dem to follow the terrain)");
     if (!args->value("out"))
         return reportError("mosaic needs --out FILE.tif (see photoflight-cli mosaic --help)");
     if (args->positionals().empty())

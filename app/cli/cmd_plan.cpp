@@ -89,6 +89,14 @@ const char* const kPlanUsage =
     "aircraft's part and keeps the plan with the smallest estimated time T = length / speed + turn\n"
     "angles / turn rate.\n"
     "\n"
+    "Terrain following (--dem FILE, --terrain follow|off, --min-clearance M): every photo at its altitude\n"
+    "above the ground under it (constant GSD), lanes and photo spacing for the closest ground a camera\n"
+    "sees, every leg checked every metre against the DEM (waypoints inserted where the ground rises),\n"
+    "coverage checked with each photo's footprint on the terrain. The MAVLink files then carry altitudes\n"
+    "above sea level (--altitude-frame), KML absolute altitudes, GPX elevations above sea level, Litchi\n"
+    "altitudes above take-off. A DEM that does not cover the area, holds only no-data there or cannot be\n"
+    "read exits with code 2.\n"
+    "\n"
     "Route check: every planned route is checked as the desktop application checks it before export:\n"
     "no waypoint or leg (home legs included) within a no-fly zone's safety margin, no waypoint above\n"
     "the aircraft's maximum altitude or below the minimum safe altitude (2 m). A route with an error\n"
@@ -288,6 +296,17 @@ int runPlan(const std::vector<std::string>& argv) {
     std::cout << line;
     if (!plan->plannerChoice.empty())
         std::cout << "planner: " << plan->plannerChoice << '\n';
+    for (const auto& a : plan->aircraft) {
+        if (!a.terrain.active)
+            continue;
+        const auto& t = a.terrain;
+        std::snprintf(line, sizeof line,
+                      "terrain: %s %.1f m above the ground (lanes for %.1f m), take-off ground %.1f m, lowest "
+                      "clearance %.1f m, %d waypoint(s) inserted, GSD %.2f cm/px (edges down to %.2f)\n",
+                      a.aircraft.c_str(), t.heightAboveGroundM, t.planningHeightM, t.homeGroundM, t.lowestClearanceM,
+                      t.waypointsInserted, t.gsdCm, t.coarsestGsdCm);
+        std::cout << line;
+    }
     if (!written.empty()) {
         std::cout << "Wrote";
         for (const auto& w : written)

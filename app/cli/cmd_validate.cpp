@@ -3,6 +3,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/mission_args.h"
 
+#include "core/mission/terrain_stage.h"
 #include "core/mission/validation.h"
 
 #include <cstdio>
@@ -50,6 +51,8 @@ const char* const kValidateUsage =
     "\n"
     "Options (they override the mission file):\n"
     PF_CLI_MISSION_OPTIONS_HELP
+    "  --home-elevation M           the take-off point's ground above sea level, for --terrain follow\n"
+    "                               (default: the DEM's height there)\n"
     "\n"
     "Without a mission file or --aircraft the catalog's first aircraft is used, and without --altitude or\n"
     "--gsd 100 m (or the aircraft's maximum if lower); the output says so. With --grid-angle auto the\n"
@@ -59,7 +62,9 @@ const char* const kValidateUsage =
     "Example: photoflight-cli validate field.kml --nofly buildings.geojson --camera \"Sony RX1R II\" --gsd 1.5\n";
 
 int runValidate(const std::vector<std::string>& argv) {
-    auto args = Args::parse(argv, missionOptionSpecs());
+    auto specs = missionOptionSpecs();
+    specs.push_back({"home-elevation"});
+    auto args = Args::parse(argv, specs);
     if (!args)
         return reportError(args.error());
     auto input = missionFromArgs(*args);
@@ -116,10 +121,40 @@ int runValidate(const std::vector<std::string>& argv) {
             os << "  cells           " << grouped(static_cast<double>(f.cols)) << " x "
                << grouped(static_cast<double>(f.rows)) << " grid (not built: see the errors below)\n";
     }
+    // Terrain following: the DEM is read over the area as planning reads it, so that a DEM that does
+    // not cover the area, holds only no-data there or cannot be read is an error here too.
+    std::vector<geo::Problem> problems = r.problems;
+    if (m.terrain.follows() && !r.hasErrors()) {
+        os << "Terrain:          following the terrain, minimum clearance " << fmt("%.1f m", m.terrain.minClearanceM)
+           << '\n';
+        auto geom = mission::localGeometry(m);
+        auto t = geom ? mission::loadMissionTerrain(m, *geom)
+                      : Result<std::shared_ptr<const mission::MissionTerrain>>(geom.error());
+        if (!t) {
+            problems.push_back({geo::Severity::Error, t.error().message});
+        } else {
+            const auto& info = (*t)->info;
+            const auto range = (*t)->grid->range();
+            os << "  DEM             " << info.path << " (" << info.driver << ", " << info.widthPx << " x "
+               << info.heightPx << " px of " << fmt("%.1f m", info.pixelSizeM) << ", " << info.crs << ")"
+               << (info.synthetic ? " SYNTHETIC" : "") << '\n';
+            os << "  heights         " << info.verticalDatum << "; over the area and around it " << fmt("%.1f", range.first)
+               << " to " << fmt("%.1f m", range.second) << '\n';
+            if ((*t)->homeGroundM)
+                os << "  take-off ground " << fmt("%.1f m", *(*t)->homeGroundM)
+                   << (m.terrain.homeElevationM ? " (given)" : " (from the DEM)") << '\n';
+            for (std::size_t k = 0; k < m.aircraft.size() && k < (*t)->planningHeightM.size(); ++k)
+                os << "  \"" << m.aircraft[k].name << "\": " << fmt("%.1f m", (*t)->heightAboveGroundM[k])
+                   << " above the ground under every photo; lanes and photo spacing for "
+                   << fmt("%.1f m", (*t)->planningHeightM[k]) << " (the closest ground its camera sees)\n";
+        }
+    } else if (!m.terrain.demPath.empty() && !m.terrain.follows()) {
+        os << "Terrain:          off (DEM " << m.terrain.demPath << " not used for planning)\n";
+    }
     int errors = 0, warnings = 0;
-    if (!r.problems.empty())
+    if (!problems.empty())
         os << "Problems:\n";
-    for (const auto& p : r.problems) {
+    for (const auto& p : problems) {
         const bool isError = p.severity == geo::Severity::Error;
         (isError ? errors : warnings)++;
         os << "  " << (isError ? "error: " : "warning: ") << p.message << '\n';
@@ -129,7 +164,7 @@ int runValidate(const std::vector<std::string>& argv) {
     os.flush();
     // Errors also on stderr, for scripts; warnings are in the report above only (no second copy on the
     // terminal).
-    for (const auto& p : r.problems)
+    for (const auto& p : problems)
         if (p.severity == geo::Severity::Error)
             std::cerr << "photoflight-cli: error: " << p.message << '\n';
     return errors ? kExitBadInput : kExitOk;

@@ -5,7 +5,7 @@
 namespace pf::cli {
 
 std::vector<OptionSpec> exportOptionSpecs() {
-    return {{"firmware"}, {"end"}, {"capture"}, {"gimbal"}, {"trigger"}, {"hover-speed"}, {"home-elevation"}};
+    return {{"firmware"}, {"end"}, {"capture"}, {"gimbal"}, {"trigger"}, {"hover-speed"}, {"home-elevation"}, {"altitude-frame"}};
 }
 
 namespace {
@@ -66,6 +66,16 @@ Result<io::ExportOptions> exportOptionsFromArgs(const Args& args) {
             return makeError(ErrorCode::InvalidInput,
                              "--home-elevation: expected metres above sea level between -9000 and 9000");
         opt.homeElevationM = **elevation;
+    }
+    if (auto f = args.value("altitude-frame")) {
+        if (*f == "relative")
+            opt.altitudeFrame = io::AltitudeFrame::RelativeToHome;
+        else if (*f == "amsl")
+            opt.altitudeFrame = io::AltitudeFrame::AboveSeaLevel;
+        else if (*f == "terrain")
+            opt.altitudeFrame = io::AltitudeFrame::AboveTerrain;
+        else if (*f != "auto")
+            return badChoice("altitude-frame", "auto, relative, amsl or terrain", *f);
     }
     return opt;
 }

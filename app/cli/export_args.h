@@ -1,5 +1,5 @@
 // The options that shape MAVLink missions and waypoint files, shared by plan, convert and upload:
-// --firmware, --end, --capture, --gimbal, --trigger, --hover-speed, --home-elevation.
+// --firmware, --end, --capture, --gimbal, --trigger, --hover-speed, --home-elevation, --altitude-frame.
 #pragma once
 
 #include "app/cli/args.h"
@@ -21,7 +21,12 @@
     "                        (.plan, .waypoints and upload)\n" \
     "  --hover-speed M/S     the .plan hoverSpeed (default: the route's cruise speed)\n" \
     "  --home-elevation M    ground elevation of the home above sea level, for the planned home of a\n" \
-    "                        .plan and the home line of a .waypoints (default 0: unknown)\n"
+    "                        .plan and the home line of a .waypoints (default 0: unknown; over a\n" \
+    "                        terrain model, from the DEM), and the take-off ground for --terrain follow\n" \
+    "  --altitude-frame F    altitudes of .plan, .waypoints and upload: auto (amsl over a terrain model,\n" \
+    "                        else relative), relative (to home, frame 3), amsl (above sea level, frame 0,\n" \
+    "                        QGroundControl AltitudeMode 2), terrain (above the ground, frame 10\n" \
+    "                        GLOBAL_TERRAIN_ALT, AltitudeMode 4: the vehicle follows its terrain data)\n"
 
 namespace pf::cli {
 

@@ -22,7 +22,7 @@ std::vector<OptionSpec> missionOptionSpecs() {
     return {{"area"},     {"nofly", true, true}, {"camera"},      {"hfov"},    {"vfov"},
             {"altitude"}, {"gsd"},               {"overlap"},     {"front"},   {"side"},
             {"planner"},  {"grid-angle"},        {"home"},        {"aircraft", true, true},
-            {"safety-margin"}, {"max-cells"}};
+            {"safety-margin"}, {"max-cells"}, {"dem"}, {"terrain"}, {"min-clearance"}};
 }
 
 namespace {
@@ -294,6 +294,37 @@ Status applyMissionFlags(const Args& args, MissionInput& in) {
         if (std::floor(**cells) != **cells)
             return flagError("max-cells", "must be a whole number of cells (got " + num(**cells) + ")");
         m.options.maxCells = static_cast<std::size_t>(**cells);
+    }
+
+    // 5. Terrain: a DEM alone turns following on (what a user giving one wants); --terrain off keeps
+    // the flat world with the DEM known.
+    if (auto d = args.value("dem")) {
+        if (d->empty())
+            return flagError("dem", "needs the path of a terrain model (GeoTIFF, SRTM .hgt, VRT, ...)");
+        m.terrain.demPath = *d;
+        if (!args.has("terrain"))
+            m.terrain.mode = mission::TerrainMode::Follow;
+    }
+    if (auto t = args.value("terrain")) {
+        if (*t == "follow")
+            m.terrain.mode = mission::TerrainMode::Follow;
+        else if (*t == "off")
+            m.terrain.mode = mission::TerrainMode::Off;
+        else
+            return flagError("terrain", "expected follow or off but got '" + *t + "'");
+        if (m.terrain.follows() && m.terrain.demPath.empty())
+            return flagError("terrain", "follow needs a terrain model: give --dem FILE");
+    }
+    auto clearance = numberIn(args, "min-clearance", 0, false, 1e4, false, "0 m or more");
+    if (!clearance)
+        return clearance.error();
+    if (clearance->has_value())
+        m.terrain.minClearanceM = **clearance;
+    // The export option --home-elevation is also the take-off point's ground for terrain following.
+    if (args.has("home-elevation")) {
+        auto e = args.number("home-elevation");
+        if (e && *e && m.terrain.follows())
+            m.terrain.homeElevationM = **e;
     }
     return {};
 }

@@ -20,6 +20,9 @@
 //                                   altitude (repeatable; replaces the mission's aircraft)
 //   --safety-margin M               keep-out distance around every no-fly zone
 //   --max-cells N                   grid cell budget
+//   --dem FILE                      terrain model; turns terrain following on unless --terrain off
+//   --terrain follow|off            terrain following
+//   --min-clearance M               minimum clearance of every leg above the ground
 //
 // Without a mission file and without --aircraft, the first aircraft of the catalog is used, and
 // without --altitude or --gsd an altitude of 100 m (or the aircraft's maximum if lower); the defaults
@@ -50,7 +53,11 @@
     "  --aircraft NAME[:ALT_M]      a catalog aircraft with its default camera and optionally its own\n" \
     "                               altitude (repeatable; replaces the mission's aircraft)\n" \
     "  --safety-margin M            keep-out distance around every no-fly zone in metres (default 5)\n" \
-    "  --max-cells N                grid cell budget (default 4000000)\n"
+    "  --max-cells N                grid cell budget (default 4000000)\n" \
+    "  --dem FILE                   terrain model (GeoTIFF, SRTM .hgt, VRT, any CRS): follow the terrain\n" \
+    "  --terrain follow|off         fly every photo at its altitude above the ground under it (follow,\n" \
+    "                               the default with --dem) or above the take-off point (off)\n" \
+    "  --min-clearance M            no leg closer to the ground than M metres (default 10)\n"
 
 namespace pf::cli {
 

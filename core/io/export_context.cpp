@@ -102,4 +102,16 @@ ExportContext contextFromImport(const ImportedWaypoints& imported) {
     return ctx;
 }
 
+std::optional<double> homeElevation(const route::Route& route, const ExportOptions& options) {
+    if (route.homeElevationM)
+        return route.homeElevationM;
+    return options.homeElevationM;
+}
+
+std::optional<double> altitudeAmsl(const route::Route& route, const route::Waypoint& w, const ExportOptions& options) {
+    if (auto h = homeElevation(route, options))
+        return *h + w.altitudeM;
+    return std::nullopt;
+}
+
 } // namespace pf::io

@@ -39,6 +39,15 @@ enum class CameraTrigger {
     Distance, // MAV_CMD_DO_SET_CAM_TRIGG_DIST: only the lane ends, the camera fires every d metres
 };
 
+// Which altitudes the MAVLink missions (.plan, .waypoints, upload) carry.
+enum class AltitudeFrame {
+    Auto,           // above sea level for a route planned over a terrain model, else relative to home
+    RelativeToHome, // MAV_FRAME_GLOBAL_RELATIVE_ALT (3): above the take-off point
+    AboveSeaLevel,  // MAV_FRAME_GLOBAL (0): the home's elevation plus the altitude above take-off
+    AboveTerrain,   // MAV_FRAME_GLOBAL_TERRAIN_ALT (10): the height above the ground under each
+                    // waypoint, the vehicle following its own terrain data between them
+};
+
 struct ExportOptions {
     QgcFirmware firmware = QgcFirmware::ArduPilot;
     MissionEnd end = MissionEnd::ReturnToLaunch;
@@ -49,7 +58,16 @@ struct ExportOptions {
     // Ground elevation of the home point above mean sea level, for the .plan's planned home and the
     // .waypoints home line (both AMSL); 0 when unknown (a connected vehicle replaces it with its own).
     std::optional<double> homeElevationM;
+    AltitudeFrame altitudeFrame = AltitudeFrame::Auto;
 };
+
+// The home's elevation above sea level for a route: its own (planned over a terrain model: the
+// altitudes and the ground heights are measured from it), else the options' (given by the user);
+// nothing when neither knows it.
+std::optional<double> homeElevation(const route::Route& route, const ExportOptions& options);
+// A waypoint's altitude above sea level (the home's elevation plus its altitude above take-off), or
+// nothing without a home elevation.
+std::optional<double> altitudeAmsl(const route::Route& route, const route::Waypoint& w, const ExportOptions& options);
 
 // Everything an export can draw on. `routes[i]` is flown by the aircraft of the mission whose name
 // is `routes[i].aircraft` (if any). The parallel vectors may be shorter than `routes` (missing

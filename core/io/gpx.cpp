@@ -11,6 +11,9 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
+#include <cstdlib>
+#include <cstring>
 
 namespace pf::io {
 
@@ -80,6 +83,21 @@ Status writeGpx(const ExportContext& ctx, const std::vector<std::size_t>& routeI
         if (auto st = addField(wpts, f, std::string(f) == "heading" ? OFTReal : OFTString, path);
             !st)
             return st;
+    // Over a terrain model <ele> is what GPX means by it, metres above sea level (the home's elevation
+    // plus the altitude above take-off); without one, the altitude above take-off as before.
+    bool amsl = !routeIndices.empty();
+    for (auto ri : routeIndices)
+        amsl = amsl && ctx.routes[ri].hasTerrain();
+    auto base = [&](const route::Route& r) { return amsl ? *r.homeElevationM : 0.0; };
+    std::optional<double> sharedHome;
+    bool oneHome = amsl;
+    for (auto ri : routeIndices) {
+        if (!amsl)
+            break;
+        if (sharedHome && std::abs(*sharedHome - *ctx.routes[ri].homeElevationM) > 1e-6)
+            oneHome = false;
+        sharedHome = ctx.routes[ri].homeElevationM;
+    }
     for (auto ri : routeIndices) {
         const auto& r = ctx.routes[ri];
         const std::string label = ctx.routeLabel(ri);
@@ -88,7 +106,7 @@ Status writeGpx(const ExportContext& ctx, const std::vector<std::size_t>& routeI
             FeaturePtr f(OGRFeature::CreateFeature(wpts->GetLayerDefn()));
             OGRPoint pt(w.position.lon, w.position.lat);
             f->SetGeometry(&pt);
-            f->SetField("ele", w.altitudeM);
+            f->SetField("ele", w.altitudeM + base(r));
             setIfField(*f, "name", pointName(label, i));
             setIfField(*f, "type", detail::kindName(w.kind));
             f->SetField("heading", detail::normaliseHeading(w.headingDeg));
@@ -115,7 +133,7 @@ Status writeGpx(const ExportContext& ctx, const std::vector<std::size_t>& routeI
             f->SetGeometry(&pt);
             f->SetField("route_fid", routeFid);
             setIfField(*f, "route_name", label);
-            f->SetField("ele", w.altitudeM);
+            f->SetField("ele", w.altitudeM + base(r));
             setIfField(*f, "name", pointName(label, i));
             setIfField(*f, "type", detail::kindName(w.kind));
             f->SetField("heading", detail::normaliseHeading(w.headingDeg));
@@ -135,7 +153,13 @@ Status writeGpx(const ExportContext& ctx, const std::vector<std::size_t>& routeI
         return text.error();
     const std::string meta = "<name>" +
                              xmlEscape(ctx.mission.name.empty() ? "Photoflight mission" : ctx.mission.name) +
-                             "</name><desc>" + std::string(kGpxElevationNote) + "</desc>";
+                             "</name><desc>" +
+                             (amsl ? std::string(kGpxAmslNote) +
+                                         (oneHome ? " " + std::string(kGpxTakeOffMarker) +
+                                                        detail::formatNumber(*sharedHome, 3) + " m."
+                                                  : std::string())
+                                   : std::string(kGpxElevationNote)) +
+                             "</desc>";
     const auto open = text->find("<gpx");
     const auto gpxEnd = open == std::string::npos ? open : text->find('>', open);
     if (gpxEnd == std::string::npos)
@@ -292,6 +316,15 @@ Result<ImportedWaypoints> readGpx(const std::string& path) {
         return makeError(ErrorCode::ParseError, path + ": the file has no route and no waypoint");
     for (std::size_t i = 0; i < out.routes.size(); ++i)
         fillHeadings(out.routes[i], headings[i]);
+    // A file written over a terrain model holds elevations above sea level and names the take-off's.
+    if (const auto at = text->find(kGpxTakeOffMarker); at != std::string::npos) {
+        const double home = std::strtod(text->c_str() + at + std::strlen(kGpxTakeOffMarker), nullptr);
+        for (auto& r : out.routes) {
+            r.homeElevationM = home;
+            for (auto& w : r.waypoints)
+                w.altitudeM -= home;
+        }
+    }
     return out;
 }
 

@@ -15,6 +15,11 @@ namespace pf::io {
 constexpr const char* kGpxElevationNote =
     "Altitude reference: every ele is the flight height in metres above the take-off (home) point, "
     "not above mean sea level.";
+// The note of a file planned over a terrain model, followed by kGpxTakeOffMarker and the take-off
+// point's elevation when every route shares it (the reader subtracts it again).
+constexpr const char* kGpxAmslNote =
+    "Altitude reference: every ele is metres above mean sea level (the flight follows the terrain).";
+constexpr const char* kGpxTakeOffMarker = "Take-off point elevation above mean sea level: ";
 
 // Writes the given routes of ctx (one route: a per-aircraft file; all: the combined file).
 Status writeGpx(const ExportContext& ctx, const std::vector<std::size_t>& routeIndices,

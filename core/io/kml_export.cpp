@@ -10,6 +10,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 namespace pf::io {
 
@@ -38,6 +39,8 @@ public:
         m_srs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
     }
 
+    void absolute(bool on) { m_absolute = on; }
+
     Status folder(const std::string& name) {
         // LIBKML writes a layer as a nested <Document> unless asked for a <Folder>.
         const char* const opts[] = {"FOLDER=YES", nullptr};
@@ -60,13 +63,14 @@ public:
     }
 
     // A placemark; `inAir` ones are drawn at their altitude above the ground (the heights are
-    // above take-off, which is the ground at home), `extrude` ones with a curtain down to it.
+    // above take-off, which is the ground at home) or, after absolute(true), above sea level (a
+    // route over a terrain model), `extrude` ones with a curtain down to the ground.
     Status add(const OGRGeometry& g, const std::string& name, const std::string& description,
                const std::string& style, bool inAir = false, bool extrude = false) {
         FeaturePtr f(OGRFeature::CreateFeature(m_layer->GetLayerDefn()));
         f->SetGeometry(&g);
         if (m_libkml) {
-            f->SetField("altitudeMode", inAir ? "relativeToGround" : "clampToGround");
+            f->SetField("altitudeMode", !inAir ? "clampToGround" : m_absolute ? "absolute" : "relativeToGround");
             f->SetField("extrude", extrude ? 1 : 0);
         }
         if (!name.empty())
@@ -87,6 +91,7 @@ private:
     GDALDataset* m_ds;
     std::string m_path;
     bool m_libkml;
+    bool m_absolute = false;
     OGRSpatialReference m_srs;
     OGRLayer* m_layer = nullptr;
 };
@@ -105,9 +110,14 @@ double nearestAltitude(const route::Route& r, geo::LonLat p) {
     return alt;
 }
 
-std::string describe(const route::Waypoint& w) {
+std::string describe(const route::Waypoint& w, std::optional<double> homeElevation) {
+    const std::string ground =
+        homeElevation && w.groundM
+            ? " (" + detail::formatNumber(*homeElevation + w.altitudeM - *w.groundM, 2) + " m above the ground, " +
+                  detail::formatNumber(*homeElevation + w.altitudeM, 2) + " m above sea level)"
+            : std::string();
     return std::string(detail::kindName(w.kind)) + ", altitude " +
-           detail::formatNumber(w.altitudeM, 2) + " m above take-off, heading " +
+           detail::formatNumber(w.altitudeM, 2) + " m above take-off" + ground + ", heading " +
            detail::formatNumber(detail::normaliseHeading(w.headingDeg), 2) + " deg";
 }
 
@@ -132,12 +142,17 @@ Status writeKml(const ExportContext& ctx, const std::vector<std::size_t>& routeI
                              "there is no route " + std::to_string(i + 1) + " to export");
     GDALAllRegister();
     const bool libkml = GetGDALDriverManager()->GetDriverByName("LIBKML") != nullptr;
+    // Routes over a terrain model are drawn at their altitudes above sea level (absolute), so that
+    // they stand at their real height over any terrain the viewer shows.
+    bool anyTerrain = false;
+    for (auto i : routeIndices)
+        anyTerrain = anyTerrain || ctx.routes[i].hasTerrain();
     // The plain KML driver has one altitude mode for the whole file: relative to the ground, so
     // the flight is in the air and the ground shapes (height 0) stay on the ground.
     auto ds = libkml ? detail::createVectorDataset("LIBKML", path)
                      : detail::createVectorDataset("KML", path,
                                                    {"NameField=name", "DescriptionField=description",
-                                                    "AltitudeMode=relativeToGround"});
+                                                    anyTerrain ? "AltitudeMode=absolute" : "AltitudeMode=relativeToGround"});
     if (!ds)
         return ds.error();
     KmlWriter w(ds->get(), path, libkml);
@@ -172,17 +187,22 @@ Status writeKml(const ExportContext& ctx, const std::vector<std::size_t>& routeI
         ++n;
         if (auto st = w.folder(label); !st)
             return st;
+        const bool terrain = r.hasTerrain();
+        w.absolute(terrain);
+        const double base = terrain ? *r.homeElevationM : 0.0; // heights above take-off -> above sea level
         OGRLineString line;
         for (const auto& wp : r.waypoints)
-            line.addPoint(wp.position.lon, wp.position.lat, wp.altitudeM);
-        if (auto st = w.add(line, label + " path", "waypoint path, heights above take-off",
+            line.addPoint(wp.position.lon, wp.position.lat, base + wp.altitudeM);
+        if (auto st = w.add(line, label + " path",
+                            terrain ? "waypoint path, heights above sea level (terrain following)"
+                                    : "waypoint path, heights above take-off",
                             "PEN(c:" + colour + ",w:2px)", true, true);
             !st)
             return st;
         if (ri < ctx.trajectories.size() && ctx.trajectories[ri].size() >= 2) {
             OGRLineString traj;
             for (const auto& p : ctx.trajectories[ri])
-                traj.addPoint(p.lon, p.lat, nearestAltitude(r, p));
+                traj.addPoint(p.lon, p.lat, base + nearestAltitude(r, p));
             if (auto st = w.add(traj, label + " trajectory", "smoothed flight trajectory",
                                 "PEN(c:" + colour + ",w:1px,p:\"4px 4px\")", true, false);
                 !st)
@@ -197,8 +217,8 @@ Status writeKml(const ExportContext& ctx, const std::vector<std::size_t>& routeI
             ++photo;
             char name[32];
             std::snprintf(name, sizeof name, "Photo %zu", photo);
-            OGRPoint p(wp.position.lon, wp.position.lat, wp.altitudeM);
-            if (auto st = w.add(p, name, describe(wp), "SYMBOL(c:" + colour + ",s:0.6)", true, false);
+            OGRPoint p(wp.position.lon, wp.position.lat, base + wp.altitudeM);
+            if (auto st = w.add(p, name, describe(wp, r.homeElevationM), "SYMBOL(c:" + colour + ",s:0.6)", true, false);
                 !st)
                 return st;
             if (fp) {

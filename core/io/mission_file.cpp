@@ -9,6 +9,7 @@
 
 #include <cpl_json.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cctype>
 #include <cerrno>
@@ -16,6 +17,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <initializer_list>
 #include <optional>
@@ -73,6 +75,8 @@ CPLJSONObject jsonRoute(const route::Route& r) {
     if (r.home)
         o.Add("home", jsonPosition(*r.home));
     o.Add("cruise_speed_mps", jsonNumber(r.cruiseSpeedMps));
+    if (r.homeElevationM)
+        o.Add("home_elevation_m", jsonNumber(*r.homeElevationM));
     CPLJSONArray wps;
     for (const auto& w : r.waypoints) {
         CPLJSONObject wo;
@@ -80,6 +84,8 @@ CPLJSONObject jsonRoute(const route::Route& r) {
         wo.Add("altitude_m", jsonNumber(w.altitudeM));
         wo.Add("heading_deg", jsonNumber(w.headingDeg));
         wo.Add("kind", kindName(w.kind));
+        if (w.groundM)
+            wo.Add("ground_m", jsonNumber(*w.groundM));
         wps.Add(wo);
     }
     o.Add("waypoints", wps);
@@ -209,7 +215,9 @@ public:
                     fail(field("kind"), "unknown kind \"" + k + "\" (expected photo, turn or transit)");
             }
         }
-        checkKeys(o, wp, {"position", "altitude_m", "heading_deg", "kind"}, ": ");
+        if (CPLJSONObject ground = member(o, "ground_m"); ground.IsValid() && !failed())
+            w.groundM = number(ground, field("ground_m"));
+        checkKeys(o, wp, {"position", "altitude_m", "heading_deg", "kind", "ground_m"}, ": ");
         return w;
     }
 
@@ -236,8 +244,42 @@ public:
             for (int i = 0; i < a.Size() && !failed(); ++i)
                 r.waypoints.push_back(waypoint(a[i], label + ": waypoint " + std::to_string(i + 1)));
         }
-        checkKeys(o, label, {"aircraft", "home", "cruise_speed_mps", "waypoints"});
+        r.homeElevationM = optionalNumber(o, label, "home_elevation_m");
+        checkKeys(o, label, {"aircraft", "home", "cruise_speed_mps", "waypoints", "home_elevation_m"});
+        if (!failed() && m_version < 4 && (r.homeElevationM || std::any_of(r.waypoints.begin(), r.waypoints.end(),
+                                                                          [](const auto& w) { return w.groundM.has_value(); })))
+            fail(label, "heights of the ground (home_elevation_m, ground_m) need version 4 of the mission file, but "
+                        "the file says version " + std::to_string(m_version));
         return r;
+    }
+
+    mission::TerrainOptions terrain(const CPLJSONObject& root) {
+        mission::TerrainOptions t;
+        if (failed() || !member(root, "terrain").IsValid()) // object() gives an empty object when absent
+            return t;
+        CPLJSONObject o = object(root, "", "terrain", false);
+        if (failed())
+            return t;
+        const std::string p = "terrain";
+        if (m_version < 4) {
+            fail(p, "terrain following needs version 4 of the mission file, but the file says version " +
+                        std::to_string(m_version));
+            return t;
+        }
+        const std::string mode = string(o, p, "mode", "off");
+        if (mode == "follow")
+            t.mode = mission::TerrainMode::Follow;
+        else if (mode != "off" && !failed())
+            fail("terrain.mode", "unknown terrain mode \"" + mode + "\" (expected off or follow)");
+        t.demPath = string(o, p, "dem", "");
+        t.minClearanceM = number(o, p, "min_clearance_m", t.minClearanceM);
+        if (!failed() && !(t.minClearanceM >= 0))
+            fail("terrain.min_clearance_m", "the minimum clearance must be 0 m or more");
+        t.homeElevationM = optionalNumber(o, p, "home_elevation_m");
+        if (!failed() && t.follows() && t.demPath.empty())
+            fail("terrain.dem", "terrain following needs a terrain model (DEM) file");
+        checkKeys(o, p, {"mode", "dem", "min_clearance_m", "home_elevation_m"});
+        return t;
     }
 
     std::vector<route::Route> editedRoutes(const CPLJSONObject& root, long long version) {
@@ -287,6 +329,7 @@ public:
                                 std::to_string(mission::kMissionFileVersion) + ")");
             return m;
         }
+        m_version = version;
 
         m.name = string(root, "", "name", "");
         m.area = polygon(root, "", "area");
@@ -319,12 +362,16 @@ public:
         if (!failed())
             m.options = planner(root);
         if (!failed())
+            m.terrain = terrain(root);
+        if (!failed())
             m.editedRoutes = editedRoutes(root, version);
         checkKeys(root, "", {"format", "version", "name", "area", "no_fly_zones", "home", "landing", "aircraft",
-                             "planner", "routes"});
+                             "planner", "terrain", "routes"});
         return m;
     }
 
+private:
+    long long m_version = mission::kMissionFileVersion;
 };
 
 } // namespace
@@ -384,6 +431,10 @@ std::optional<std::string> firstNonFinite(const mission::Mission& m) {
     for (const auto& [name, v] : opts)
         if (bad(v))
             return std::string("planner.") + name;
+    if (bad(m.terrain.minClearanceM))
+        return std::string("terrain.min_clearance_m");
+    if (m.terrain.homeElevationM && bad(*m.terrain.homeElevationM))
+        return std::string("terrain.home_elevation_m");
     return std::nullopt;
 }
 
@@ -400,6 +451,8 @@ std::optional<std::string> firstUnreadableRoute(const mission::Mission& m) {
             return label + ": the home is not a valid longitude/latitude";
         if (!std::isfinite(r.cruiseSpeedMps) || !(r.cruiseSpeedMps > 0.0))
             return label + ": the cruise speed is not a number greater than 0";
+        if (r.homeElevationM && !std::isfinite(*r.homeElevationM))
+            return label + ": the home elevation is not a finite number";
         for (std::size_t k = 0; k < r.waypoints.size(); ++k) {
             const auto& w = r.waypoints[k];
             const std::string wp = label + ": waypoint " + std::to_string(k + 1);
@@ -409,6 +462,8 @@ std::optional<std::string> firstUnreadableRoute(const mission::Mission& m) {
                 return wp + ": the altitude is not a finite number";
             if (!std::isfinite(w.headingDeg))
                 return wp + ": the heading is not a finite number";
+            if (w.groundM && !std::isfinite(*w.groundM))
+                return wp + ": the ground height is not a finite number";
         }
     }
     return std::nullopt;
@@ -416,15 +471,26 @@ std::optional<std::string> firstUnreadableRoute(const mission::Mission& m) {
 
 // The oldest file version that holds everything in `m`, so that older releases (which refuse
 // unknown fields) keep opening files that use nothing newer.
+// Each feature raises the version to the one that introduced it; the file gets the highest.
 int requiredVersion(const mission::Mission& m) {
+    int v = m.editedRoutes.empty() ? 1 : 2;
     for (const auto& a : m.aircraft)
         if (a.accelerationMps2 != plan::kDefaultAccelerationMps2)
-            return 3;
+            v = std::max(v, 3);
     // Older releases know only the three grid planners.
     const auto k = m.options.planner;
     if (k == mission::PlannerKind::Auto || k == mission::PlannerKind::Sweep || k == mission::PlannerKind::Lawnmower)
-        return 3;
-    return m.editedRoutes.empty() ? 1 : 2;
+        v = std::max(v, 3);
+    if (!m.terrain.isDefault())
+        v = std::max(v, 4);
+    for (const auto& r : m.editedRoutes) {
+        if (r.homeElevationM)
+            v = std::max(v, 4);
+        for (const auto& w : r.waypoints)
+            if (w.groundM)
+                v = std::max(v, 4);
+    }
+    return v;
 }
 
 } // namespace
@@ -485,6 +551,15 @@ std::string missionToJson(const mission::Mission& m) {
     planner.Add("battery_reserve", jsonNumber(m.options.batteryReserve));
     planner.Add("max_cells", static_cast<GInt64>(m.options.maxCells));
     root.Add("planner", planner);
+    if (!m.terrain.isDefault()) {
+        CPLJSONObject t;
+        t.Add("mode", m.terrain.follows() ? "follow" : "off");
+        t.Add("dem", m.terrain.demPath);
+        t.Add("min_clearance_m", jsonNumber(m.terrain.minClearanceM));
+        if (m.terrain.homeElevationM)
+            t.Add("home_elevation_m", jsonNumber(*m.terrain.homeElevationM));
+        root.Add("terrain", t);
+    }
     if (!m.editedRoutes.empty()) {
         CPLJSONArray routes;
         for (const auto& r : m.editedRoutes)
@@ -515,7 +590,17 @@ Result<mission::Mission> readMissionFile(const std::string& path) {
     ss << in.rdbuf();
     if (in.bad())
         return makeError(ErrorCode::IoError, path + ": cannot read the mission file: " + std::strerror(errno));
-    return parseMissionJson(ss.str(), path);
+    auto m = parseMissionJson(ss.str(), path);
+    // A relative DEM path names a file beside the mission file (as the mission was saved); a bare name
+    // not found there is left for the terrain stage to look up among the bundled maps (the demo's).
+    if (m && !m->terrain.demPath.empty()) {
+        const std::filesystem::path dem(m->terrain.demPath);
+        const std::filesystem::path beside = std::filesystem::path(path).parent_path() / dem;
+        std::error_code ec;
+        if (dem.is_relative() && std::filesystem::exists(beside, ec))
+            m->terrain.demPath = beside.lexically_normal().string();
+    }
+    return m;
 }
 
 Status checkWritable(const mission::Mission& m, const std::string& path) {

@@ -15,8 +15,45 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kMavlinkMinSpacingM = 0.1;
 
-MissionItem nav(int command, double yaw, geo::LonLat at, double alt, double p1 = 0) {
-    return {command, mav::kFrameGlobalRelativeAlt, {p1, 0, 0, yaw, at.lat, at.lon, alt}};
+MissionItem nav(int command, double yaw, geo::LonLat at, double alt, double p1 = 0,
+                int frame = mav::kFrameGlobalRelativeAlt) {
+    return {command, frame, {p1, 0, 0, yaw, at.lat, at.lon, alt}};
+}
+
+// The frame a route's waypoints are written in, and each waypoint's altitude in it.
+struct Altitudes {
+    int frame = mav::kFrameGlobalRelativeAlt;
+    double home = 0.0; // the home's elevation (above sea level)
+    double of(const route::Waypoint& w) const {
+        if (frame == mav::kFrameGlobal)
+            return home + w.altitudeM;
+        if (frame == mav::kFrameGlobalTerrainAlt)
+            return home + w.altitudeM - w.groundM.value_or(home);
+        return w.altitudeM;
+    }
+};
+
+Result<Altitudes> altitudesFor(const ExportContext& ctx, std::size_t routeIndex, const ExportOptions& options) {
+    const route::Route& r = ctx.routes[routeIndex];
+    AltitudeFrame f = options.altitudeFrame;
+    if (f == AltitudeFrame::Auto)
+        f = r.hasTerrain() ? AltitudeFrame::AboveSeaLevel : AltitudeFrame::RelativeToHome;
+    Altitudes a;
+    a.home = homeElevation(r, options).value_or(0.0);
+    if (f == AltitudeFrame::AboveSeaLevel) {
+        if (!homeElevation(r, options))
+            return makeError(ErrorCode::InvalidInput,
+                             ctx.routeLabel(routeIndex) + ": altitudes above sea level need the home's elevation "
+                                                          "(--home-elevation M, or plan over a terrain model)");
+        a.frame = mav::kFrameGlobal;
+    } else if (f == AltitudeFrame::AboveTerrain) {
+        if (!r.hasTerrain())
+            return makeError(ErrorCode::InvalidInput,
+                             ctx.routeLabel(routeIndex) + ": altitudes above terrain need a route planned over a "
+                                                          "terrain model (--dem FILE --terrain follow)");
+        a.frame = mav::kFrameGlobalTerrainAlt;
+    }
+    return a;
 }
 
 MissionItem action(int command, std::array<double, 7> params) {
@@ -56,9 +93,14 @@ Result<std::vector<MissionItem>> missionItems(const ExportContext& ctx, std::siz
     const geo::LonLat home = ctx.homeFor(routeIndex).value_or(wps.front().position);
     const geo::LonLat landing = ctx.landingFor(routeIndex).value_or(home);
 
+    auto alt = altitudesFor(ctx, routeIndex, options);
+    if (!alt)
+        return alt.error();
     std::vector<MissionItem> items;
     const route::Waypoint& first = wps.front();
-    items.push_back(nav(mav::kNavTakeoff, first.headingDeg, home, first.altitudeM));
+    // The climb at home goes to the first waypoint's altitude (above home, or above sea level; above
+    // the terrain: the height over the first waypoint's ground, reached over home's ground).
+    items.push_back(nav(mav::kNavTakeoff, first.headingDeg, home, alt->of(first), 0, alt->frame));
     // Ground speed (param 1 = 1) to the planned cruise speed, throttle unchanged (-1).
     items.push_back(action(mav::kDoChangeSpeed, {1, r.cruiseSpeedMps, -1, 0, 0, 0, 0}));
     if (options.gimbal == GimbalCommand::MountControl)
@@ -75,7 +117,7 @@ Result<std::vector<MissionItem>> missionItems(const ExportContext& ctx, std::siz
     for (std::size_t i = 0; i < wps.size(); ++i) {
         const auto& w = wps[i];
         items.push_back(nav(mav::kNavWaypoint, detail::normaliseHeading(w.headingDeg), w.position,
-                            w.altitudeM));
+                            alt->of(w), 0, alt->frame));
         if (lane < lanes.size() && lanes[lane].first == i) {
             // The camera fires here at once and then every spacing; at the lane's last photo the
             // trigger is switched off with one last photo. A vehicle counts the last waypoint as
@@ -84,7 +126,7 @@ Result<std::vector<MissionItem>> missionItems(const ExportContext& ctx, std::siz
             items.push_back(triggerDistance(lanes[lane].spacingM, true));
             const auto& end = wps[lanes[lane].last];
             items.push_back(nav(mav::kNavWaypoint, detail::normaliseHeading(end.headingDeg),
-                                end.position, end.altitudeM));
+                                end.position, alt->of(end), 0, alt->frame));
             items.push_back(triggerDistance(0, true));
             i = lanes[lane].last;
             ++lane;
@@ -107,7 +149,9 @@ MissionItem homeItem(const ExportContext& ctx, std::size_t routeIndex, const Exp
     else if (routeIndex < ctx.routes.size() && !ctx.routes[routeIndex].waypoints.empty())
         home = ctx.routes[routeIndex].waypoints.front().position;
     return {mav::kNavWaypoint, mav::kFrameGlobal,
-            {0, 0, 0, 0, home.lat, home.lon, options.homeElevationM.value_or(0.0)}};
+            {0, 0, 0, 0, home.lat, home.lon,
+             routeIndex < ctx.routes.size() ? homeElevation(ctx.routes[routeIndex], options).value_or(0.0)
+                                            : options.homeElevationM.value_or(0.0)}};
 }
 
 std::vector<MissionItem> fenceItems(const ExportContext& ctx) {

@@ -29,10 +29,11 @@ constexpr int kRallyPoint = 5100;           // MAV_CMD_NAV_RALLY_POINT
 constexpr int kFrameGlobal = 0;             // altitude above mean sea level
 constexpr int kFrameMission = 2;            // command without a position
 constexpr int kFrameGlobalRelativeAlt = 3;  // altitude above home
+constexpr int kFrameGlobalTerrainAlt = 10;  // altitude above the terrain under the position
 } // namespace mav
 
 // One item as the formats write it: params 5-7 are latitude, longitude and altitude for items
-// with a position (frame 0 or 3), zero otherwise. A NaN param means "not used" (written as null in
+// with a position (frame 0, 3 or 10), zero otherwise. A NaN param means "not used" (written as null in
 // a .plan).
 struct MissionItem {
     int command = mav::kNavWaypoint;
@@ -44,11 +45,13 @@ struct MissionItem {
 // The route's mission: take-off at home, speed, gimbal straight down, the waypoints (a capture after
 // each photo, or with CameraTrigger::Distance only the lane ends with the trigger distance), and
 // return to launch or land. Without the home item (see homeItem()). Waypoints closer than 0.1 m
-// are merged first.
+// are merged first. Altitudes in options.altitudeFrame (Auto: above sea level for a route over a
+// terrain model); errors: above sea level without a home elevation, above terrain for a route not
+// planned over a terrain model.
 Result<std::vector<MissionItem>> missionItems(const ExportContext& ctx, std::size_t routeIndex,
                                               const ExportOptions& options = {});
 // The home position as MAVLink item 0 of ArduPilot and Mission Planner: a waypoint in frame 0 at the
-// home's elevation above sea level (ExportOptions::homeElevationM, else 0).
+// home's elevation above sea level (homeElevation(): the route's, the options', else 0).
 MissionItem homeItem(const ExportContext& ctx, std::size_t routeIndex,
                      const ExportOptions& options = {});
 // Every no-fly zone as an exclusion polygon: one vertex item per corner (param 1 = the count).

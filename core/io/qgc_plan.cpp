@@ -59,8 +59,12 @@ public:
         if (it.hasPosition()) {
             // The three altitude keys are written together (QGroundControl rejects an item with
             // only some of them); a command without a position has none of them.
+            // AltitudeMode as QGroundControl numbers it: 1 relative to home, 2 above sea level
+            // (frame 0), 4 terrain frame (frame 10, the vehicle follows its terrain data).
             item.Add("Altitude", it.params[6]);
-            item.Add("AltitudeMode", 1); // relative to home
+            item.Add("AltitudeMode", it.frame == mav::kFrameGlobal              ? 2
+                                     : it.frame == mav::kFrameGlobalTerrainAlt ? 4
+                                                                               : 1);
             item.AddNull("AMSLAltAboveTerrain");
         }
         m_items.Add(item);
@@ -272,6 +276,10 @@ public:
                     return keyError(key + ".params", "latitude or longitude out of range");
                 if (mi.frame == mav::kFrameGlobal)
                     mi.params[6] -= homeAlt;
+                else if (mi.frame == mav::kFrameGlobalTerrainAlt)
+                    return keyError(key + ".frame",
+                                    "frame 10 (altitude above terrain) cannot be read back without the terrain "
+                                    "model: export with altitudes above sea level or relative to home");
                 else if (mi.frame != mav::kFrameGlobalRelativeAlt && mi.frame != 6 /* relative int */)
                     return keyError(key + ".frame",
                                     "frame " + std::to_string(mi.frame) +

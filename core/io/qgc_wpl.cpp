@@ -138,6 +138,10 @@ Result<ImportedWaypoints> parseQgcWpl(const std::string& text, const std::string
                 return lineError(source, lineNo, "latitude or longitude out of range");
             if (frame == mav::kFrameGlobal)
                 it.params[6] = alt - homeAlt;
+            else if (frame == mav::kFrameGlobalTerrainAlt)
+                return lineError(source, lineNo,
+                                 "frame 10 (altitude above terrain) cannot be read back without the terrain model: "
+                                 "export with altitudes above sea level or relative to home");
             else if (frame != mav::kFrameGlobalRelativeAlt && frame != 6)
                 return lineError(source, lineNo,
                                  "frame " + std::to_string(frame) +

@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <vector>
 
 namespace pf::io {
 
@@ -52,7 +54,16 @@ Status writeWaypointGeoJson(const ExportContext& ctx, const std::vector<std::siz
     const std::pair<const char*, OGRFieldType> fields[] = {
         {"kind", OFTString},   {"name", OFTString},     {"aircraft", OFTString},
         {"index", OFTInteger}, {"altitude_m", OFTReal}, {"heading_deg", OFTReal}};
-    for (const auto& [name, type] : fields) {
+    // Routes over a terrain model also give, per waypoint, the ground under it above sea level, its
+    // altitude above sea level and its height above the ground.
+    bool terrain = false;
+    for (auto ri : routeIndices)
+        terrain = terrain || ctx.routes[ri].hasTerrain();
+    std::vector<std::pair<const char*, OGRFieldType>> all(std::begin(fields), std::end(fields));
+    if (terrain)
+        for (const char* f : {"ground_m", "altitude_amsl_m", "height_above_ground_m"})
+            all.push_back({f, OFTReal});
+    for (const auto& [name, type] : all) {
         OGRFieldDefn def(name, type);
         if (layer->CreateField(&def) != OGRERR_NONE)
             return makeError(ErrorCode::IoError,
@@ -109,6 +120,12 @@ Status writeWaypointGeoJson(const ExportContext& ctx, const std::vector<std::siz
             (*f)->SetField("index", static_cast<int>(i + 1));
             (*f)->SetField("altitude_m", w.altitudeM);
             (*f)->SetField("heading_deg", detail::normaliseHeading(w.headingDeg));
+            if (r.hasTerrain() && w.groundM) {
+                const double amsl = *r.homeElevationM + w.altitudeM;
+                (*f)->SetField("ground_m", *w.groundM);
+                (*f)->SetField("altitude_amsl_m", amsl);
+                (*f)->SetField("height_above_ground_m", amsl - *w.groundM);
+            }
             if (auto st = commit(*f); !st)
                 return st;
         }

@@ -43,7 +43,7 @@ bool operator==(const PlannerOptions& a, const PlannerOptions& b) {
 
 bool sameRoute(const route::Route& a, const route::Route& b) {
     return a.aircraft == b.aircraft && a.home == b.home && a.cruiseSpeedMps == b.cruiseSpeedMps &&
-           a.waypoints == b.waypoints;
+           a.homeElevationM == b.homeElevationM && a.waypoints == b.waypoints;
 }
 
 bool operator==(const Mission& a, const Mission& b) {
@@ -53,7 +53,7 @@ bool operator==(const Mission& a, const Mission& b) {
         if (!sameRoute(a.editedRoutes[i], b.editedRoutes[i]))
             return false;
     return a.name == b.name && a.area == b.area && a.noFlyZones == b.noFlyZones && a.home == b.home &&
-           a.landing == b.landing && a.aircraft == b.aircraft && a.options == b.options;
+           a.landing == b.landing && a.aircraft == b.aircraft && a.options == b.options && a.terrain == b.terrain;
 }
 
 } // namespace pf::mission

@@ -7,6 +7,7 @@
 #include "core/route/waypoint.h"
 #include "core/sensor/camera.h"
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -67,6 +68,33 @@ struct PlannerOptions {
     friend bool operator==(const PlannerOptions& a, const PlannerOptions& b);
 };
 
+// Terrain following (see the README's "Terrain"): off flies every altitude above the take-off point
+// over a flat world, as always; follow keeps each aircraft's altitude (or the one of its GSD) above
+// the ground under each waypoint, from a digital elevation model.
+enum class TerrainMode { Off, Follow };
+
+struct MissionTerrain; // core/mission/terrain_stage.h
+constexpr double kDefaultMinClearanceM = 10.0;
+
+struct TerrainOptions {
+    TerrainMode mode = TerrainMode::Off;
+    std::string demPath;       // the DEM file (a relative path in a mission file: beside the file)
+    double minClearanceM = kDefaultMinClearanceM; // no point of a leg closer to the ground (at most the height above ground)
+    std::optional<double> homeElevationM; // the take-off point's ground above sea level; from the DEM if unset
+    // The DEM read over the area, set by the terrain stage on the mission it plans (planOverTerrain):
+    // derived data, neither saved nor compared.
+    std::shared_ptr<const MissionTerrain> prepared;
+    bool follows() const { return mode == TerrainMode::Follow; }
+    // Whether the file must say anything about terrain (a DEM chosen, following on, or a value set).
+    bool isDefault() const {
+        return mode == TerrainMode::Off && demPath.empty() && minClearanceM == kDefaultMinClearanceM && !homeElevationM;
+    }
+    friend bool operator==(const TerrainOptions& a, const TerrainOptions& b) {
+        return a.mode == b.mode && a.demPath == b.demPath && a.minClearanceM == b.minClearanceM &&
+               a.homeElevationM == b.homeElevationM;
+    }
+};
+
 struct Mission {
     std::string name;
     geo::GeoPolygon area;
@@ -75,6 +103,7 @@ struct Mission {
     std::optional<geo::LonLat> landing; // landing point; home if unset
     std::vector<AircraftConfig> aircraft;
     PlannerOptions options;
+    TerrainOptions terrain;
     // Routes the operator changed by hand, kept with the mission so that saving never loses them.
     // Planning ignores them (a new plan is computed from the definition above); the desktop
     // application shows them instead of a fresh plan until the user agrees to replace them.
@@ -87,8 +116,10 @@ struct Mission {
 bool sameRoute(const route::Route& a, const route::Route& b);
 
 // Newest mission file format version: 2 added the optional "routes" (hand-edited routes), 3 the
-// aircraft's "acceleration_mps2" and the planners "auto", "sweep" and "lawnmower". A file is written with the oldest version that holds what it
-// contains (version 1 without either), so that older releases keep reading it.
-constexpr int kMissionFileVersion = 3;
+// aircraft's "acceleration_mps2" and the planners "auto", "sweep" and "lawnmower", 4 "terrain"
+// (terrain following) and the routes' ground heights. A file is written with the oldest version
+// that holds what it contains (version 1 without any of them), so that older releases keep reading
+// it.
+constexpr int kMissionFileVersion = 4;
 
 } // namespace pf::mission

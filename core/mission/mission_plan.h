@@ -11,11 +11,28 @@
 #include "core/route/waypoint.h"
 #include "core/sensor/camera.h"
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+namespace pf::terrain {
+class HeightGrid;
+}
+
 namespace pf::mission {
+
+// What terrain following (core/mission/terrain_stage.h) did to one aircraft's flight.
+struct TerrainSummary {
+    bool active = false;
+    double heightAboveGroundM = 0.0;  // every waypoint this high above the ground under it
+    double planningHeightM = 0.0;     // the lowest height above ground its camera sees: lanes and spacing
+    double homeGroundM = 0.0;         // its take-off point's ground above sea level
+    double lowestClearanceM = 0.0;    // along every leg, sampled every metre
+    int waypointsInserted = 0;        // where the ground rises between two waypoints
+    double gsdCm = 0.0;               // at every photo's centre
+    double coarsestGsdCm = 0.0;       // at the farthest ground any photo sees (its edges)
+};
 
 // One battery's flight: a run of AircraftPlan::route.waypoints from home back to home.
 struct SortieSummary {
@@ -64,6 +81,7 @@ struct AircraftPlan {
     int detours = 0;              // legs replaced by a detour around a no-fly margin
     int waypointsMoved = 0;       // waypoints pushed out of a no-fly margin
     int keptInside = 0;           // waypoints moved inside the area (options.keepInsideArea)
+    TerrainSummary terrain;       // terrain following, when the mission asks for it
 };
 
 struct PlanTotals {
@@ -99,6 +117,8 @@ struct MissionPlan {
     int altitudeConflicts = 0;     // pairs in the air together closer than altitudeSeparationM
     // With the automatic planner choice: which planner made the plan, and the makespans compared.
     std::string plannerChoice;
+    // The terrain the plan follows (heights in the local frame, above sea level), when it does.
+    std::shared_ptr<const terrain::HeightGrid> terrain;
 };
 
 } // namespace pf::mission

@@ -153,9 +153,14 @@ bool writePlanGeoJson(const MissionPlan& plan, std::ostream& out, const PlanGeoJ
         for (const auto& wp : a.route.waypoints) {
             if (wp.kind != route::WaypointKind::Photo)
                 continue;
-            char props[160];
-            std::snprintf(props, sizeof props, ",\"seq\":%d,\"alt_m\":%.2f,\"heading_deg\":%.1f", ++seq, wp.altitudeM,
-                          wp.headingDeg);
+            char props[224];
+            int len = std::snprintf(props, sizeof props, ",\"seq\":%d,\"alt_m\":%.2f,\"heading_deg\":%.1f", ++seq,
+                                    wp.altitudeM, wp.headingDeg);
+            if (wp.groundM && a.route.homeElevationM && len > 0 && len < static_cast<int>(sizeof props))
+                // terrain following: the ground under the photo and its height above sea level
+                std::snprintf(props + len, sizeof props - static_cast<std::size_t>(len),
+                              ",\"ground_m\":%.2f,\"alt_amsl_m\":%.2f", *wp.groundM,
+                              *a.route.homeElevationM + wp.altitudeM);
             w.begin("\"kind\":\"photo\"," + who + props, "Point");
             w.position(wp.position);
             w.end();

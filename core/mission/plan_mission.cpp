@@ -9,6 +9,7 @@
 #include "core/mission/plan_geojson.h"
 #include "core/mission/plan_region.h"
 #include "core/mission/planner_kinds.h"
+#include "core/mission/terrain_stage.h"
 #include "core/mission/validation.h"
 #include "core/plan/coverage_check.h"
 #include "core/plan/planner.h"
@@ -296,6 +297,9 @@ Result<MissionPlan> planMission(const Mission& m, Progress* progress) {
 namespace {
 
 Result<MissionPlan> planMissionChecked(const Mission& m, Progress* progress) {
+    // Terrain following: the DEM read once, then planned over it (terrain_stage.h).
+    if (needsTerrainStage(m))
+        return planOverTerrain(m, [progress](const Mission& over) { return planMissionChecked(over, progress); });
     JobScope scope(progress);
     const std::size_t budget = memoryBudgetBytes();
     if (auto fits = checkPlanMemory(m, budget); !fits)
@@ -525,6 +529,13 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         flownPaths.push_back(std::move(path));
     }
 
+    // 4b. Terrain following (terrain_stage.h): altitudes above the ground, legs checked, waypoints
+    // inserted where the ground rises, times with the climbs, each photo's footprint on the terrain.
+    std::vector<geo::Ring> terrainOutlines;
+    if (m.terrain.prepared)
+        if (auto t = applyTerrain(plan, m, frame, homes, landing, photoFootprints, terrainOutlines); !t)
+            return t.error();
+
     // 5. Altitude separation between aircraft in the air together.
     if (n > 1) {
         std::vector<fleet::AltitudeSlot> slots;
@@ -543,7 +554,7 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
     if (check) {
         reportProgress(0.85, "coverage check");
         JobScope stage(0.85, 1.0);
-        auto cov = plan::checkCoverage(admissible, photoFootprints);
+        auto cov = plan::checkCoverage(admissible, photoFootprints, {}, m.terrain.prepared ? &terrainOutlines : nullptr);
         if (stopRequested())
             return cancelledError();
         if (!cov)
@@ -668,6 +679,17 @@ std::string planMetricsJson(const MissionPlan& plan, const std::string& plannerN
         o.Add("kept_inside", a.keptInside);
         o.Add("footprint_across_m", a.footprint.real.longSideM);
         o.Add("footprint_along_m", a.footprint.real.shortSideM);
+        if (a.terrain.active) { // terrain following (terrain_stage.h)
+            CPLJSONObject t;
+            t.Add("height_above_ground_m", a.terrain.heightAboveGroundM);
+            t.Add("planning_height_m", a.terrain.planningHeightM);
+            t.Add("home_ground_m", a.terrain.homeGroundM);
+            t.Add("lowest_clearance_m", a.terrain.lowestClearanceM);
+            t.Add("waypoints_inserted", a.terrain.waypointsInserted);
+            t.Add("gsd_cm", a.terrain.gsdCm);
+            t.Add("coarsest_gsd_cm", a.terrain.coarsestGsdCm);
+            o.Add("terrain", t);
+        }
         list.Add(o);
     }
     root.Add("aircraft", list);

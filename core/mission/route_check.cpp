@@ -79,12 +79,17 @@ RouteCheck checkRoute(const route::Route& route, const RouteLimits& limits) {
     out.waypoint.resize(n);
     out.leg.resize(n > 0 ? n - 1 : 0);
     for (std::size_t i = 0; i < n; ++i) {
-        const double alt = route.waypoints[i].altitudeM;
+        // Over a terrain model the limits hold above the ground under the waypoint (a legal ceiling
+        // and a safe height are heights above ground), not above the take-off point.
+        const auto& w = route.waypoints[i];
+        const bool agl = route.homeElevationM && w.groundM;
+        const double alt = agl ? *route.homeElevationM + w.altitudeM - *w.groundM : w.altitudeM;
+        const std::string what = agl ? "height above ground " : "altitude ";
         if (!std::isfinite(alt) || alt < limits.minAltitudeM)
-            add(out.waypoint[i], "altitude " + num(alt) + " m is below the minimum safe altitude of " +
+            add(out.waypoint[i], what + num(alt) + " m is below the minimum safe altitude of " +
                                      num(limits.minAltitudeM) + " m");
         else if (limits.maxAltitudeM && alt > *limits.maxAltitudeM)
-            add(out.waypoint[i], "altitude " + num(alt) + " m is above the aircraft's maximum of " +
+            add(out.waypoint[i], what + num(alt) + " m is above the aircraft's maximum of " +
                                      num(*limits.maxAltitudeM) + " m");
     }
     if (n == 0)

@@ -1,4 +1,4 @@
-// GDAL helpers shared by the mosaic stage. Internal: include from core/mosaic .cpp files only.
+// GDAL helpers shared by the mosaic and terrain stages. Internal: include from core .cpp files only.
 #pragma once
 
 #include <cpl_error.h>

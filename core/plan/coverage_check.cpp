@@ -72,7 +72,9 @@ geo::Ring footprintRing(const PhotoFootprint& f) {
 }
 
 Result<CoverageReport> checkCoverage(const geo::MultiPolygon& admissible, const std::vector<PhotoFootprint>& photos,
-                                     const CoverageCheckOptions& opt) {
+                                     const CoverageCheckOptions& opt, const std::vector<geo::Ring>* outlines) {
+    if (outlines && outlines->size() != photos.size())
+        return makeError(ErrorCode::Internal, "the coverage check got outlines for some photos only");
     if (opt.resolutionM < 0 || !std::isfinite(opt.resolutionM))
         return makeError(ErrorCode::InvalidInput, "The coverage check resolution must be a positive number of metres.");
     if (opt.maxPixels < 16)
@@ -125,8 +127,7 @@ Result<CoverageReport> checkCoverage(const geo::MultiPolygon& admissible, const 
                 return makeError(ErrorCode::Cancelled, "checking the coverage: cancelled");
             reportProgress(static_cast<double>(k) / static_cast<double>(photos.size()), "coverage check");
         }
-        const PhotoFootprint& photo = photos[k];
-        const geo::Ring ring = footprintRing(photo);
+        const geo::Ring ring = outlines ? (*outlines)[k] : footprintRing(photos[k]);
         scanRings(ras, {&ring}, [&](int j, int i0, int i1) {
             for (int i = i0; i < i1; ++i) {
                 auto& v = px[ras.index(i, j)];

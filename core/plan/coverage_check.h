@@ -53,8 +53,11 @@ struct CoverageReport {
 // Rasterises the admissible area and every photo's REAL footprint (not the effective one) and
 // measures what the photos leave uncovered. The admissible area is the area minus the no-fly zones
 // (what must appear on the images). Errors: a footprint side not positive, options out of range.
+// `outlines`, when given, holds each photo's real outline (its footprint on the terrain, see
+// core/terrain), checked instead of its rectangle; the rectangles still set the resolution.
 Result<CoverageReport> checkCoverage(const geo::MultiPolygon& admissible, const std::vector<PhotoFootprint>& photos,
-                                     const CoverageCheckOptions& opt = {});
+                                     const CoverageCheckOptions& opt = {},
+                                     const std::vector<geo::Ring>* outlines = nullptr);
 
 struct NoFlyViolations {
     int waypoints = 0; // waypoints closer to a no-fly zone than the margin (inside one included)

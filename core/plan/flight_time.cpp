@@ -27,15 +27,21 @@ double turnCostS(double thetaDeg, const FlightTimeModel& model) {
     return thetaDeg / model.turnRateDegS + model.stopCostS();
 }
 
-void FlightTimeAccumulator::add(const geo::Vec2& p) {
+void FlightTimeAccumulator::add(const geo::Vec2& p) { add(p, m_lastZ); }
+
+void FlightTimeAccumulator::add(const geo::Vec2& p, double altitudeM) {
+    const double dz = altitudeM - m_lastZ;
+    m_lastZ = altitudeM;
     if (m_points++ == 0) {
         m_last = p;
         return;
     }
     const geo::Vec2 d = p - m_last;
     const double len = d.norm();
-    if (len == 0.0)
+    if (len == 0.0) {
+        m_t.lengthM += std::fabs(dz); // a vertical leg: no direction, no turn
         return;
+    }
     const geo::Vec2 dir = d / len;
     if (m_prevDir.squaredNorm() > 0) {
         const double cross = m_prevDir.x() * dir.y() - m_prevDir.y() * dir.x();
@@ -44,7 +50,7 @@ void FlightTimeAccumulator::add(const geo::Vec2& p) {
         if (theta > kTurnThresholdDeg)
             ++m_t.turns;
     }
-    m_t.lengthM += len;
+    m_t.lengthM += dz == 0.0 ? len : std::hypot(len, dz);
     m_prevDir = dir;
     m_last = p;
 }
@@ -62,6 +68,16 @@ FlightTime flightTime(const std::vector<geo::Vec2>& polyline, const FlightTimeMo
     FlightTimeAccumulator acc(model);
     for (const auto& p : polyline)
         acc.add(p);
+    return acc.result();
+}
+
+FlightTime flightTime(const std::vector<geo::Vec2>& polyline, const std::vector<double>& altitudesM,
+                      const FlightTimeModel& model) {
+    if (altitudesM.size() != polyline.size())
+        return flightTime(polyline, model);
+    FlightTimeAccumulator acc(model);
+    for (std::size_t i = 0; i < polyline.size(); ++i)
+        acc.add(polyline[i], altitudesM[i]);
     return acc.result();
 }
 

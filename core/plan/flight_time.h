@@ -47,6 +47,12 @@ double turnAngleDeg(const geo::Vec2& a, const geo::Vec2& b, const geo::Vec2& c);
 
 // Time to fly the polyline from rest to rest (legs of zero length are skipped when finding turns).
 FlightTime flightTime(const std::vector<geo::Vec2>& polyline, const FlightTimeModel& model);
+// The same for a flight that climbs and descends (terrain following): `altitudesM[i]` is the
+// altitude at polyline[i]; each leg counts its 3D length sqrt(d^2 + dz^2) at the cruise speed (a
+// multirotor's climb rate is rarely the limit at survey slopes), turns are the changes of horizontal
+// direction as above. Without altitudes (an empty or short vector) it is the 2D time.
+FlightTime flightTime(const std::vector<geo::Vec2>& polyline, const std::vector<double>& altitudesM,
+                      const FlightTimeModel& model);
 
 // The cost of one vertex of a flight: theta / omega plus a stop when theta is a turn.
 double turnCostS(double thetaDeg, const FlightTimeModel& model);
@@ -56,6 +62,8 @@ class FlightTimeAccumulator {
 public:
     explicit FlightTimeAccumulator(const FlightTimeModel& model) : m_model(model) {}
     void add(const geo::Vec2& p);
+    // A point at an altitude: the leg to it counts its 3D length.
+    void add(const geo::Vec2& p, double altitudeM);
     FlightTime result() const;
 
 private:
@@ -63,6 +71,7 @@ private:
     FlightTime m_t;
     int m_points = 0;
     geo::Vec2 m_last{0, 0};
+    double m_lastZ = 0.0;
     geo::Vec2 m_prevDir{0, 0}; // unit direction of the last non-empty leg, zero before it
 };
 

@@ -561,7 +561,7 @@ TEST(MissionFileRoutes, BadRoutesNameTheRouteAndTheWaypoint) {
               "x.json: routes[1] (\"Falcon 8\"): waypoint 1: position: missing required field");
     EXPECT_EQ(errorOf(with(t, "\"heading_deg\": 90.0, \"kind\": \"photo\"", "\"heading_deg\": 90.0, \"kind\": \"photo\", \"gimbal\": -90")),
               "x.json: routes[1] (\"Falcon 8\"): waypoint 2: gimbal: unknown field (known here: position, altitude_m, "
-              "heading_deg, kind)");
+              "heading_deg, kind, ground_m)");
     EXPECT_EQ(errorOf(with(t, "{\"position\": [8.0007, 49.0005], \"altitude_m\": 41.0, \"kind\": \"turn\"}", "[8.0007, 49.0005]")),
               "x.json: routes[1] (\"Falcon 8\"): waypoint 3: expected an object but found an array");
     EXPECT_EQ(errorOf(with(t, "\"aircraft\": \"Falcon 8\", ", "")), "x.json: routes[1].aircraft: missing required field");
@@ -573,7 +573,7 @@ TEST(MissionFileRoutes, BadRoutesNameTheRouteAndTheWaypoint) {
               "x.json: routes[0] (\"A\").waypoints: expected an array but found an object");
     EXPECT_EQ(errorOf(with(t, "\"home\": [8.0, 49.0]", "\"hom\": [8.0, 49.0]")),
               "x.json: routes[1] (\"Falcon 8\").hom: unknown field (known here: aircraft, home, cruise_speed_mps, "
-              "waypoints)");
+              "waypoints, home_elevation_m)");
     EXPECT_EQ(errorOf(with(t, "{\"aircraft\": \"A\", \"cruise_speed_mps\": 8.0, \"waypoints\": []}", "7")),
               "x.json: routes[0]: expected an object but found a number");
     // A version 1 file cannot hold routes: the releases reading version 1 refuse the field.

@@ -87,7 +87,7 @@ TEST(MosaicCli, BadInputExitsWithTwoAndSaysWhy) {
     expectBadInput("mosaic " + photos, "mosaic needs --out FILE.tif");
     expectBadInput("mosaic" + out, "mosaic needs photos");
     expectBadInput("mosaic " + photos + out + " --dem dem.tif",
-                   "--dem: terrain models are not supported by the mosaic yet");
+                   "--dem: the mosaic does not use terrain models");
     expectBadInput("mosaic " + photos + out + " --gsd 0",
                    "--gsd: expected a positive number but got 0");
     expectBadInput("mosaic " + photos + out + " --camera 'No Such Cam'",
