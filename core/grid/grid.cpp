@@ -2,6 +2,8 @@
 // exact geometry only for the cells a boundary crosses.
 #include "core/grid/grid.h"
 
+#include "core/geo/half_plane_clip.h"
+
 #include "core/job_scope.h"
 
 #include "core/geo/ogr_adapter.h"
@@ -87,33 +89,6 @@ std::vector<URing> makeURings(const geo::MultiPolygon& mp, const Frame& f) {
     return out;
 }
 
-// Sutherland-Hodgman clip of a ring against the half-plane coord(axis) >= v (keepAbove) or <= v. The
-// result may hold degenerate edges along the clip line, but its signed area is exactly the signed area
-// of the ring's part inside the half-plane, which is all we use it for.
-void clipHalf(const std::vector<Vec2>& in, std::vector<Vec2>& out, int axis, double v, bool keepAbove) {
-    out.clear();
-    const std::size_t n = in.size();
-    if (n == 0)
-        return;
-    auto inside = [&](const Vec2& p) { return keepAbove ? p[axis] >= v : p[axis] <= v; };
-    Vec2 prev = in[n - 1];
-    bool prevIn = inside(prev);
-    for (std::size_t i = 0; i < n; ++i) {
-        const Vec2& cur = in[i];
-        const bool curIn = inside(cur);
-        if (curIn != prevIn) {
-            const double t = (v - prev[axis]) / (cur[axis] - prev[axis]);
-            Vec2 x = prev + t * (cur - prev);
-            x[axis] = v;
-            out.push_back(x);
-        }
-        if (curIn)
-            out.push_back(cur);
-        prev = cur;
-        prevIn = curIn;
-    }
-}
-
 // Marks every cell whose closed square an edge of the rings touches as kEdge, then fills the remaining
 // cells row by row: a cell no edge touches is entirely inside or entirely outside, which the even-odd
 // rule at its centre decides.
@@ -197,8 +172,8 @@ void resolveEdgeCells(std::vector<std::uint8_t>& mark, const std::vector<URing>&
         for (const auto& ring : rings) {
             if (ring.maxY < r || ring.minY > r + 1)
                 continue;
-            clipHalf(ring.pts, tmp, 1, r, true);
-            clipHalf(tmp, tmp2, 1, r + 1.0, false);
+            geo::clipHalfPlane(ring.pts, tmp, 1, r, true);
+            geo::clipHalfPlane(tmp, tmp2, 1, r + 1.0, false);
             if (tmp2.size() < 3)
                 continue;
             const geo::Box b = geo::bounds(tmp2);
@@ -211,8 +186,8 @@ void resolveEdgeCells(std::vector<std::uint8_t>& mark, const std::vector<URing>&
             for (const auto& band : bands) {
                 if (band.maxX < c || band.minX > c + 1)
                     continue;
-                clipHalf(band.pts, tmp, 0, c, true);
-                clipHalf(tmp, tmp2, 0, c + 1.0, false);
+                geo::clipHalfPlane(band.pts, tmp, 0, c, true);
+                geo::clipHalfPlane(tmp, tmp2, 0, c + 1.0, false);
                 a += band.sign * geo::signedArea(tmp2);
             }
             row[c] = a > kSliverFraction ? kIn : kOut;

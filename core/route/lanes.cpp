@@ -1,5 +1,7 @@
 #include "core/route/lanes.h"
 
+#include "core/geo/half_plane_clip.h"
+
 #include "core/geo/polygon_ops.h"
 #include "core/geo/prepared_region.h"
 
@@ -145,7 +147,7 @@ private:
                 a.emplace_back((p - centre).dot(u), (p - centre).dot(v));
             for (int axis = 0; axis < 2 && !a.empty(); ++axis)
                 for (double side : {-1.0, 1.0}) {
-                    clip(a, b, axis, side * h, side < 0);
+                    geo::clipHalfPlane(a, b, axis, side * h, side < 0);
                     a.swap(b);
                 }
             for (const auto& q : a) {
@@ -156,29 +158,6 @@ private:
         if (!(lo <= hi))
             return {-h, h};
         return {std::max(-h, lo), std::min(h, hi)};
-    }
-
-    // Sutherland-Hodgman clip of a ring against coord(axis) >= v (keepAbove) or <= v.
-    static void clip(const std::vector<Vec2>& in, std::vector<Vec2>& out, int axis, double v, bool keepAbove) {
-        out.clear();
-        if (in.empty())
-            return;
-        auto inside = [&](const Vec2& p) { return keepAbove ? p[axis] >= v : p[axis] <= v; };
-        Vec2 prev = in.back();
-        bool prevIn = inside(prev);
-        for (const auto& cur : in) {
-            const bool curIn = inside(cur);
-            if (curIn != prevIn) {
-                const double t = (v - prev[axis]) / (cur[axis] - prev[axis]);
-                Vec2 x = prev + t * (cur - prev);
-                x[axis] = v;
-                out.push_back(x);
-            }
-            if (curIn)
-                out.push_back(cur);
-            prev = cur;
-            prevIn = curIn;
-        }
     }
 
     void emit(const Piece& p, std::vector<PathGroup>& out) const {
