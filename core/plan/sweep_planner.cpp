@@ -8,6 +8,7 @@
 #include "core/plan/cell_order.h"
 #include "core/plan/coverage_check.h"
 #include "core/plan/decomposition.h"
+#include "core/plan/lane_trim.h"
 #include "core/plan/sweep_lanes.h"
 
 #include <algorithm>
@@ -658,6 +659,16 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         for (std::size_t mi = 0; mi < dp.merged.size(); ++mi)
             laneSets[mi] = cellLanes(dp.d, dp.merged[mi], dp.heights[mi], lp, ground, safeOutside);
         dropCoveredLanes(dp.d, laneSets, dp.pinned, lp, ground, realAcross, realAlong, kShortLanePhotos * ph);
+        if (opt.trimLanes) {
+            // Cells in a pocket no safe path reaches are not flown: their lanes see nothing.
+            std::vector<char> flownCells(laneSets.size(), 1);
+            for (std::size_t mi = 0; mi < laneSets.size(); ++mi)
+                if (!laneSets[mi].empty()) {
+                    const auto& ml = laneSets[mi][laneSets[mi].size() / 2];
+                    flownCells[mi] = pockets.of(0.5 * (ml.flyA + ml.flyB)) == anchor ? 1 : 0;
+                }
+            trimCoveredLanes(dp.d, laneSets, lp, ground, 1.0, &flownCells);
+        }
         for (std::size_t mi = 0; mi < dp.merged.size(); ++mi) {
             PlannedCell pc;
             pc.merged = static_cast<int>(mi);

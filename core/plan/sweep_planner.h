@@ -38,6 +38,8 @@ struct SweepOptions {
     // Also start the lane-level search from the lanes row by row across the area (as a Survey flies
     // its lines, a cut line's pieces one after the other round the zones), keeping the faster result.
     bool rowStart = true;
+    // Shorten lanes to the ground only they photograph (plan::trimCoveredLanes), at the overlap set.
+    bool trimLanes = true;
     // Segments per quarter circle of the margin polygon the lanes end at and transitions turn around:
     // few segments, few turns (each a stop) on a transition. >= 1.
     int quadrantSegments = 2;
