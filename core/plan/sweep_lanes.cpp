@@ -106,6 +106,7 @@ namespace {
 struct Window {
     double lo, hi;
     bool optional = false; // for time only (a lane may fly out over an outline's step instead)
+    bool coversUp = false; // its lane's strip must reach up to a boundary above (else down to one below)
 };
 
 // Lanes at most s apart with one in every window, greedily from the bottom (each as high as the
@@ -243,7 +244,7 @@ std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, con
         return {};
     const double et = to - yhi;
     w.push_back(Window{ylo + eps, from + 0.5 * s});
-    w.push_back(Window{to - 0.5 * s, yhi - eps});
+    w.push_back(Window{to - 0.5 * s, yhi - eps, false, true});
     for (std::size_t i = 1; i < m.parts.size(); ++i) {
         const auto& lo = d.cells[static_cast<std::size_t>(m.parts[i - 1])];
         const auto& up = d.cells[static_cast<std::size_t>(m.parts[i])];
@@ -254,7 +255,7 @@ std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, con
         if (need == Need::None)
             continue;
         if (narrowing)
-            w.push_back(Window{c - 0.5 * s + ec, c - eps, need == Need::ForTime});
+            w.push_back(Window{c - 0.5 * s + ec, c - eps, need == Need::ForTime, true});
         else
             w.push_back(Window{c + eps, c + 0.5 * s - ec, need == Need::ForTime});
     }
@@ -279,15 +280,20 @@ std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, con
                 if (wideAbove)
                     w.push_back(Window{h + eps, h + 0.5 * s - e, optional});
                 else
-                    w.push_back(Window{h - 0.5 * s + e, h - eps, optional});
+                    w.push_back(Window{h - 0.5 * s + e, h - eps, optional, true});
             }
         }
     }
     for (double y : fixed)
         w.push_back(Window{y, y});
     if (m.parts.size() == 1 && w[0].hi >= w[1].lo && fixed.empty()) {
-        // One lane does: in the middle of what it may take.
+        // One lane does: in the middle of what it may take (on a shared line when one lies there).
         const double lo = std::max(ylo + eps, w[1].lo), hi = std::min(yhi - eps, w[0].hi);
+        if (p.latticeY0 && lo <= hi) {
+            const double y = *p.latticeY0 + std::ceil((lo - *p.latticeY0) / s) * s;
+            if (y <= hi)
+                return {y};
+        }
         return {lo <= hi ? 0.5 * (lo + hi) : 0.5 * (ylo + yhi)};
     }
     for (auto& win : w) {
@@ -295,6 +301,30 @@ std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, con
         win.hi = std::clamp(win.hi, ylo + eps, yhi - eps);
         if (win.lo > win.hi)
             win.lo = win.hi;
+    }
+    if (p.latticeY0) {
+        // The shared lines within the cell, then, for every window no lane meets yet (by their upper
+        // ends, as the greedy choice that meets all with the fewest lanes goes), a lane at the end
+        // farthest from the boundary its strip must reach. Lines are s apart, so the spacing holds;
+        // the outer windows keep the cell's edges covered.
+        const double y0 = *p.latticeY0;
+        std::vector<double> ys;
+        for (double k = std::ceil((ylo + eps - y0) / s);; k += 1.0) {
+            const double y = y0 + k * s;
+            if (y > yhi - eps)
+                break;
+            ys.push_back(y);
+        }
+        std::vector<Window> need;
+        for (const auto& x : w)
+            if (!x.optional)
+                need.push_back(x);
+        std::sort(need.begin(), need.end(), [](const Window& a, const Window& b) { return a.hi < b.hi; });
+        for (const auto& x : need)
+            if (std::none_of(ys.begin(), ys.end(), [&](double y) { return y >= x.lo - 1e-12 && y <= x.hi + 1e-12; }))
+                ys.push_back(x.coversUp ? x.lo : x.hi);
+        std::sort(ys.begin(), ys.end());
+        return ys;
     }
     // Windows kept for time only are dropped when that saves a lane.
     const std::vector<double> all = place(w, ylo, yhi, et, s, eps);

@@ -55,6 +55,12 @@ struct SweepLaneParams {
     // How far into a neighbour lane's strip the real footprint reaches ((real across - spacing) / 2):
     // that part of a half band is the neighbour's, not a wedge of this lane.
     double neighbourReachM = 0.0;
+    // Lanes on shared lines: given, a cell's lanes lie at latticeY0 + k * trackSpacingM (frame y), with
+    // a lane of its own only in a window no line meets (the ground along a zone's edge that the lines
+    // beside it leave; plan::trimCoveredLanes then shortens it to that stretch), so that the lanes of
+    // cells side by side continue one another as a Survey's transects do round a zone. Unset: each
+    // cell spaces its lanes on its own (fewest lanes for the cell, neighbours' lines not aligned).
+    std::optional<double> latticeY0;
 };
 
 // One lane of a cell, left to right in the sweep frame (world coordinates).

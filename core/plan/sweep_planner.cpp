@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <deque>
 #include <limits>
 #include <memory>
 #include <unordered_map>
@@ -284,10 +285,13 @@ bool leftToRight(std::size_t j, int parity) { return (j + static_cast<std::size_
 struct DirectionPlan {
     double angleDeg = 0.0;
     double estimateS = 0.0;
-    Decomposition d;
-    std::vector<MergedCell> merged;
+    std::shared_ptr<const Decomposition> dec;           // shared by the lane-height variants of a direction
+    std::shared_ptr<const std::vector<MergedCell>> mc;
+    std::optional<double> latticeY0;                    // the variant's shared lines (SweepLaneParams)
     std::vector<std::vector<double>> heights;
     std::vector<std::vector<char>> pinned; // lanes that neighbours lean on
+    const Decomposition& d() const { return *dec; }
+    const std::vector<MergedCell>& merged() const { return *mc; }
 };
 
 struct FullPlan {
@@ -555,44 +559,24 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     lp.neighbourReachM = std::max(0.0, 0.5 * (realAcross - s));
     lp.reachAlongM = 0.5 * realAlong;
     const double uTurnS = 2.0 * turnCostS(90.0, opt.time) + s / opt.time.speedMps;
-    std::vector<DirectionPlan> dirs;
-    geo::MultiPolygon shrunk;
-    for (double a : angles) {
-        if (stopRequested())
-            return makeError(ErrorCode::Cancelled, "planning the sweep: cancelled");
-        DirectionPlan dp;
-        dp.angleDeg = a;
-        auto dec = decompose(freeSpace, SweepFrame{a * M_PI / 180.0});
-        if (!dec.ok()) // a degenerate order of vertices: a hair's rotation resolves it
-            dec = decompose(freeSpace, SweepFrame{a * M_PI / 180.0 + 1e-7});
-        if (!dec.ok()) { // rings touching at a point: 5 mm less free space parts them
-            if (shrunk.empty())
-                shrunk = geo::buffer(freeSpace, -0.005, 2);
-            dec = decompose(shrunk, SweepFrame{a * M_PI / 180.0});
-        }
-        if (!dec.ok())
-            continue;
-        dp.d = std::move(*dec);
-        if (opt.mergeCells) {
-            dp.merged = mergeCells(dp.d);
-        } else {
-            for (std::size_t i = 0; i < dp.d.cells.size(); ++i)
-                dp.merged.push_back(MergedCell{{static_cast<int>(i)}});
-        }
+    // Lane heights of a variant and its quick estimate: lanes, turns, cell changes.
+    auto estimate = [&](DirectionPlan& dp) {
         double est = 0.0;
         std::vector<std::pair<Vec2, Vec2>> ends;
-        dp.heights = allLaneHeights(dp.d, dp.merged, lp, ground, &dp.pinned);
-        for (std::size_t mi = 0; mi < dp.merged.size(); ++mi) {
-            const auto& m = dp.merged[mi];
+        SweepLaneParams vp = lp;
+        vp.latticeY0 = dp.latticeY0;
+        dp.heights = allLaneHeights(dp.d(), dp.merged(), vp, ground, &dp.pinned);
+        for (std::size_t mi = 0; mi < dp.merged().size(); ++mi) {
+            const auto& m = dp.merged()[mi];
             const auto& hs = dp.heights[mi];
             if (hs.empty())
                 continue;
             std::size_t part = 0;
             Vec2 first(0, 0), last(0, 0);
             for (std::size_t j = 0; j < hs.size(); ++j) {
-                while (part + 1 < m.parts.size() && hs[j] > dp.d.cells[static_cast<std::size_t>(m.parts[part])].yhi)
+                while (part + 1 < m.parts.size() && hs[j] > dp.d().cells[static_cast<std::size_t>(m.parts[part])].yhi)
                     ++part;
-                const auto& c = dp.d.cells[static_cast<std::size_t>(m.parts[part])];
+                const auto& c = dp.d().cells[static_cast<std::size_t>(m.parts[part])];
                 const double w = c.xRight(hs[j]) - c.xLeft(hs[j]);
                 est += std::max(0.0, w - ph) / opt.time.speedMps;
                 const Vec2 mid(0.5 * (c.xRight(hs[j]) + c.xLeft(hs[j])), hs[j]);
@@ -627,7 +611,36 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
                 est += best / opt.time.speedMps + 2.0 * turnCostS(90.0, opt.time);
             }
         }
-        dp.estimateS = est;
+        return est;
+    };
+    std::vector<DirectionPlan> dirs;
+    geo::MultiPolygon shrunk;
+    for (double a : angles) {
+        if (stopRequested())
+            return makeError(ErrorCode::Cancelled, "planning the sweep: cancelled");
+        DirectionPlan dp;
+        dp.angleDeg = a;
+        auto dec = decompose(freeSpace, SweepFrame{a * M_PI / 180.0});
+        if (!dec.ok()) // a degenerate order of vertices: a hair's rotation resolves it
+            dec = decompose(freeSpace, SweepFrame{a * M_PI / 180.0 + 1e-7});
+        if (!dec.ok()) { // rings touching at a point: 5 mm less free space parts them
+            if (shrunk.empty())
+                shrunk = geo::buffer(freeSpace, -0.005, 2);
+            dec = decompose(shrunk, SweepFrame{a * M_PI / 180.0});
+        }
+        if (!dec.ok())
+            continue;
+        auto decomposition = std::make_shared<const Decomposition>(std::move(*dec));
+        auto merged = std::make_shared<std::vector<MergedCell>>();
+        if (opt.mergeCells) {
+            *merged = mergeCells(*decomposition);
+        } else {
+            for (std::size_t i = 0; i < decomposition->cells.size(); ++i)
+                merged->push_back(MergedCell{{static_cast<int>(i)}});
+        }
+        dp.dec = decomposition;
+        dp.mc = merged;
+        dp.estimateS = estimate(dp);
         dirs.push_back(std::move(dp));
     }
     plan.stats.directionsEstimated = static_cast<int>(dirs.size());
@@ -645,20 +658,45 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     auto safeOutside = [&](const Vec2& a, const Vec2& b) { return field.segmentIsSafe(a, b); };
     std::unique_ptr<FullPlan> best;
     const int planned = std::min<int>(opt.plannedDirections, static_cast<int>(rank.size()));
+    // Each planned direction also with its lanes on shared lines (SweepLaneParams::latticeY0), laid
+    // from the free space's lowest edge and from its highest: the fastest plan is kept.
+    std::deque<DirectionPlan> variants;
+    std::vector<const DirectionPlan*> toPlan;
     for (int r = 0; r < planned; ++r) {
+        const DirectionPlan& base = dirs[rank[static_cast<std::size_t>(r)]];
+        toPlan.push_back(&base);
+        if (!opt.sharedLines || base.d().cells.empty())
+            continue;
+        double ymin = kInf, ymax = -kInf;
+        for (const auto& c : base.d().cells) {
+            ymin = std::min(ymin, c.ylo);
+            ymax = std::max(ymax, c.yhi);
+        }
+        for (const double y0 : {ymin + 0.5 * s - 0.02}) {
+            DirectionPlan v;
+            v.angleDeg = base.angleDeg;
+            v.dec = base.dec;
+            v.mc = base.mc;
+            v.latticeY0 = y0;
+            v.estimateS = estimate(v);
+            variants.push_back(std::move(v));
+            toPlan.push_back(&variants.back());
+        }
+    }
+    for (const DirectionPlan* planning : toPlan) {
         if (stopRequested())
             return makeError(ErrorCode::Cancelled, "planning the sweep: cancelled");
-        const DirectionPlan& dp = dirs[rank[static_cast<std::size_t>(r)]];
+        const DirectionPlan& dp = *planning;
         auto fp = std::make_unique<FullPlan>();
         fp->angleDeg = dp.angleDeg;
         fp->dir = &dp;
         fp->router = std::make_unique<Router>(opt.time, routeGraphs);
         Router& router = *fp->router;
-        const Vec2 u = dp.d.frame.toWorld(Vec2(1, 0));
-        std::vector<std::vector<CellLane>> laneSets(dp.merged.size());
-        for (std::size_t mi = 0; mi < dp.merged.size(); ++mi)
-            laneSets[mi] = cellLanes(dp.d, dp.merged[mi], dp.heights[mi], lp, ground, safeOutside);
-        dropCoveredLanes(dp.d, laneSets, dp.pinned, lp, ground, realAcross, realAlong, kShortLanePhotos * ph);
+        const Vec2 u = dp.d().frame.toWorld(Vec2(1, 0));
+        std::vector<std::vector<CellLane>> laneSets(dp.merged().size());
+        for (std::size_t mi = 0; mi < dp.merged().size(); ++mi)
+            laneSets[mi] = cellLanes(dp.d(), dp.merged()[mi], dp.heights[mi], lp, ground, safeOutside);
+        dropCoveredLanes(dp.d(), laneSets, dp.pinned, lp, ground, realAcross, realAlong, kShortLanePhotos * ph);
         if (opt.trimLanes) {
             // Cells in a pocket no safe path reaches are not flown: their lanes see nothing.
             std::vector<char> flownCells(laneSets.size(), 1);
@@ -667,9 +705,9 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
                     const auto& ml = laneSets[mi][laneSets[mi].size() / 2];
                     flownCells[mi] = pockets.of(0.5 * (ml.flyA + ml.flyB)) == anchor ? 1 : 0;
                 }
-            trimCoveredLanes(dp.d, laneSets, lp, ground, 1.0, &flownCells);
+            trimCoveredLanes(dp.d(), laneSets, lp, ground, 1.0, &flownCells);
         }
-        for (std::size_t mi = 0; mi < dp.merged.size(); ++mi) {
+        for (std::size_t mi = 0; mi < dp.merged().size(); ++mi) {
             PlannedCell pc;
             pc.merged = static_cast<int>(mi);
             pc.lanes = std::move(laneSets[mi]);
@@ -723,7 +761,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
             auto key = [&](int k) {
                 const auto& pc = fp->cells[static_cast<std::size_t>(fp->orderCellOf[static_cast<std::size_t>(k)])];
                 const auto& l = pc.lanes.front();
-                return std::make_pair(l.y, dp.d.frame.toFrame(l.flyA).x());
+                return std::make_pair(l.y, dp.d().frame.toFrame(l.flyA).x());
             };
             std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key(a) < key(b); });
             fp->problem.sweepOrder = order;
@@ -801,7 +839,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
             // A second start: the lanes row by row across the area, as a Survey flies its lines, each
             // row's pieces one after the other round the zones between them (the search then moves
             // pieces where a cell of their own pays).
-            const auto rows = !opt.rowStart ? std::vector<OrderStep>{} : rowOrders(fp->laneProblem, fp->laneRef, fp->cells, dp.d.frame, s);
+            const auto rows = !opt.rowStart ? std::vector<OrderStep>{} : rowOrders(fp->laneProblem, fp->laneRef, fp->cells, dp.d().frame, s);
             if (!rows.empty()) {
                 OrderResult rr = improveOrder(fp->laneProblem, rows, lo);
                 if (rr.costS < lr.costS) {
@@ -841,16 +879,16 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     Router& router = *fp.router;
     const DirectionPlan& dp = *fp.dir;
     plan.stats.angleDeg = fp.angleDeg;
-    plan.stats.cellsBeforeMerge = static_cast<int>(dp.d.cells.size());
-    plan.stats.cellsAfterMerge = static_cast<int>(dp.merged.size());
+    plan.stats.cellsBeforeMerge = static_cast<int>(dp.d().cells.size());
+    plan.stats.cellsAfterMerge = static_cast<int>(dp.merged().size());
     plan.stats.orderRounds = fp.order.rounds;
     plan.stats.orderMoves = fp.order.moves + fp.laneMoves;
     plan.stats.linkEvaluations = fp.order.linkEvaluations;
     plan.stats.rowStart = fp.rowStart;
-    for (const auto& m : dp.merged) {
+    for (const auto& m : dp.merged()) {
         geo::Polygon poly;
-        for (const auto& p : mergedRing(dp.d, m))
-            poly.outer.push_back(dp.d.frame.toWorld(p));
+        for (const auto& p : mergedRing(dp.d(), m))
+            poly.outer.push_back(dp.d().frame.toWorld(p));
         plan.cells.push_back(std::move(poly));
     }
 
@@ -929,7 +967,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     plan.links = std::move(flown.links);
     plan.stats.laneSegments = static_cast<int>(flown.lanes.size());
     plan.lanes.reserve(flown.lanes.size());
-    const Vec2 u = dp.d.frame.toWorld(Vec2(1, 0));
+    const Vec2 u = dp.d().frame.toWorld(Vec2(1, 0));
     const double reach = 0.5 * realAlong;
     std::vector<std::vector<Vec2>> links;
     for (std::size_t i = 0; i < flown.lanes.size(); ++i) {

@@ -40,6 +40,10 @@ struct SweepOptions {
     bool rowStart = true;
     // Shorten lanes to the ground only they photograph (plan::trimCoveredLanes), at the overlap set.
     bool trimLanes = true;
+    // Also plan the best directions with their lanes on lines shared by all cells (as a Survey's
+    // transects; a cell adds lanes only where the lines beside a zone leave ground), keeping the
+    // faster plan.
+    bool sharedLines = true;
     // Segments per quarter circle of the margin polygon the lanes end at and transitions turn around:
     // few segments, few turns (each a stop) on a transition. >= 1.
     int quadrantSegments = 2;
