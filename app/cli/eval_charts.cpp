@@ -4,6 +4,7 @@
 
 #ifdef PF_CLI_HAS_QT
 #include <QColor>
+#include <QByteArray>
 #include <QGuiApplication>
 #include <QImage>
 #include <QPainter>
@@ -16,6 +17,12 @@
 #include <cstdlib>
 #include <map>
 #include <memory>
+#include <string>
+
+#ifdef PF_CLI_HAS_QT
+#include <sys/stat.h>
+#include <unistd.h>
+#endif
 
 namespace pf::cli {
 
@@ -134,6 +141,15 @@ void ensureHeadlessGui() {
         return;
     if (!std::getenv("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
+    if (!std::getenv("XDG_RUNTIME_DIR")) {
+        // The platform asks for the runtime directory and warns on the output when the variable is
+        // unset (a root shell, CI): the directory Qt would fall back to, made private, given it.
+        const std::string dir = "/tmp/runtime-" + std::to_string(static_cast<unsigned long>(::getuid()));
+        ::mkdir(dir.c_str(), 0700);
+        struct stat st {};
+        if (::stat(dir.c_str(), &st) == 0 && st.st_uid == ::getuid() && (st.st_mode & 0777) == 0700)
+            qputenv("XDG_RUNTIME_DIR", QByteArray::fromStdString(dir));
+    }
     static int argc = 1;
     static char arg0[] = "photoflight-cli";
     static char* argv[] = {arg0, nullptr};
