@@ -258,9 +258,13 @@ int runPlan(const std::vector<std::string>& argv) {
                         const std::string ext = io::formatInfo(fmt).extension;
                         name = name.substr(0, name.size() - ext.size()) + "-sortie" + std::to_string(s + 1) + ext;
                         const std::string path = (dir / ("mission-" + name)).string();
-                        if (auto st = io::exportRoute(sctx, s, fmt, path, *exportOptions); !st)
-                            return reportError(st.error());
-                        written.push_back(path);
+                        auto report = io::exportRouteFiles(sctx, s, fmt, path, *exportOptions);
+                        if (!report)
+                            return reportError(report.error());
+                        // A sortie over the format's waypoint limit is written in parts: name those.
+                        for (const auto& n : report->notes)
+                            std::cerr << "photoflight-cli: note: sortie " << (s + 1) << ": " << n << '\n';
+                        written.insert(written.end(), report->files.begin(), report->files.end());
                     }
                 }
             }
