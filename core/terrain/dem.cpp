@@ -257,6 +257,24 @@ Result<Dem> Dem::open(const std::string& path) {
     return Dem(std::move(impl));
 }
 
+bool Dem::looksLikeDem(const std::string& path) {
+    const auto dot = path.find_last_of('.');
+    std::string ext = dot == std::string::npos ? std::string() : path.substr(dot + 1);
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (ext == "hgt" || ext == "dem")
+        return true;
+    if (ext != "tif" && ext != "tiff" && ext != "vrt")
+        return false;
+    mosaic::detail::ensureGdalRegistered();
+    GdalErrorCapture errors;
+    GDALDatasetUniquePtr ds = mosaic::detail::openRaster(path);
+    if (!ds || ds->GetRasterCount() != 1 || !ds->GetSpatialRef())
+        return false;
+    double gt[6];
+    GDALRasterBand* band = ds->GetRasterBand(1);
+    return ds->GetGeoTransform(gt) == CE_None && band->GetRasterDataType() != GDT_Byte && !band->GetColorTable();
+}
+
 Result<HeightGrid> Dem::resample(const std::string& srs, double x0, double y0, double spacingM, int cols,
                                  int rows) const {
     const std::string who = "the terrain model \"" + m->info.path + "\"";
