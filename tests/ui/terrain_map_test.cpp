@@ -67,16 +67,26 @@ int shadeAt(const ShadedRelief& r, const geo::LonLat& p) {
     return qRed(r.image.pixel(x, y));
 }
 
+// The window on the demo mission (flat: no terrain model yet), planning by hand only.
+std::unique_ptr<MainWindow> demoWindow() {
+    auto w = test::makeWindow();
+    w->planController()->setAutoPlan(false);
+    QString error;
+    if (!w->openDemoMission(&error)) {
+        ADD_FAILURE() << error.toStdString();
+        return nullptr;
+    }
+    return w;
+}
+
 } // namespace
 
 TEST(TerrainMap, DroppingADemOnTheMapMakesItTheTerrainModel) {
     const QString dem = QString::fromStdString(mission::demoDemPath());
     if (dem.isEmpty())
         GTEST_SKIP() << "no demo DEM built";
-    auto w = test::makeWindow();
-    w->planController()->setAutoPlan(false);
-    QString error;
-    ASSERT_TRUE(w->openDemoMission(&error)) << error.toStdString();
+    auto w = demoWindow();
+    ASSERT_TRUE(w);
     MissionDocument* doc = w->document();
     ASSERT_FALSE(doc->mission().terrain.follows());
     const int undoBefore = doc->undoStack()->count();
@@ -123,10 +133,8 @@ TEST(TerrainMap, HillshadeShowsTheDemUnderThePlanAndToggles) {
     const QString dem = QString::fromStdString(mission::demoDemPath());
     if (dem.isEmpty())
         GTEST_SKIP() << "no demo DEM built";
-    auto w = test::makeWindow();
-    w->planController()->setAutoPlan(false);
-    QString error;
-    ASSERT_TRUE(w->openDemoMission(&error)) << error.toStdString();
+    auto w = demoWindow();
+    ASSERT_TRUE(w);
     auto* layer = w->findChild<HillshadeLayer*>();
     ASSERT_NE(layer, nullptr);
     QAction* toggle = viewAction(w.get(), QStringLiteral("HillshadeAction"));

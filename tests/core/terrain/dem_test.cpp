@@ -221,5 +221,51 @@ TEST(Dem, AllNoDataAnUnreadableFileAndAnotherPlaceAreRefused) {
     EXPECT_NE(d4.error().message.find("missing.tif\" cannot be read"), std::string::npos) << d4.error().message;
 }
 
+TEST(Dem, AGridCoarserThanTheDemReadsItAveragedDown) {
+    const auto f = frame();
+    const std::string path = tmp("fine.tif");
+    test::DemSpec spec;
+    spec.pixel = 0.5;
+    ASSERT_EQ(test::writeDem(path, f, kTerrain, spec), "");
+    auto dem = Dem::open(path);
+    ASSERT_TRUE(dem.ok()) << dem.error().message;
+    // 10 DEM pixels per grid step: read averaged down (5 m blocks), then bilinear on the 5 m grid,
+    // which smooths the 40 m hill's top (curvature 40 / 60² per metre) by about a decimetre.
+    auto g = dem->overRegion(f, rect(-200, -150, 200, 150), 20.0, 5.0);
+    ASSERT_TRUE(g.ok()) << g.error().message;
+    EXPECT_DOUBLE_EQ(g->spacingM(), 5.0);
+    EXPECT_LT(maxError(*g, kTerrain), 0.2);
+    // The same nodes read at the DEM's own resolution agree as closely.
+    auto fine = dem->overRegion(f, rect(-200, -150, 200, 150), 20.0, 0.5);
+    ASSERT_TRUE(fine.ok()) << fine.error().message;
+    for (const geo::Vec2& p : {geo::Vec2(0, 0), geo::Vec2(30, -20), geo::Vec2(-150, 100), geo::Vec2(180, -130)})
+        EXPECT_NEAR(*g->heightAt(p), *fine->heightAt(p), 0.15) << p.transpose();
+}
+
+TEST(Dem, OneBandOfHeightsLooksLikeADemAPictureDoesNot) {
+    const auto f = frame();
+    const std::string heights = tmp("heights.tif");
+    ASSERT_EQ(test::writeDem(heights, f, kTerrain, {}), "");
+    EXPECT_TRUE(Dem::looksLikeDem(heights));
+    // An 8-bit georeferenced picture (a base map).
+    const std::string picture = tmp("picture.tif");
+    {
+        GDALDatasetUniquePtr ds(
+            GetGDALDriverManager()->GetDriverByName("GTiff")->Create(picture.c_str(), 16, 16, 3, GDT_Byte, nullptr));
+        ASSERT_TRUE(ds);
+        double gt[6] = {8.33, 1e-5, 0, 49.012, 0, -1e-5};
+        ds->SetGeoTransform(gt);
+        OGRSpatialReference srs;
+        srs.importFromEPSG(4326);
+        ds->SetSpatialRef(&srs);
+    }
+    EXPECT_FALSE(Dem::looksLikeDem(picture));
+    // .hgt and .dem by their names (opening them says what is wrong), nothing else.
+    EXPECT_TRUE(Dem::looksLikeDem(tmp("N49E008.HGT")));
+    EXPECT_TRUE(Dem::looksLikeDem(tmp("site.dem")));
+    EXPECT_FALSE(Dem::looksLikeDem(tmp("junk.tif"))); // not a raster
+    EXPECT_FALSE(Dem::looksLikeDem(tmp("area.geojson")));
+}
+
 } // namespace
 } // namespace pf::terrain
