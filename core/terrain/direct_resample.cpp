@@ -96,16 +96,18 @@ double latticeError(const Mapper& map, const Lattice& l) {
 
 } // namespace
 
-Result<bool> resampleDirect(const SourceRaster& src, const std::string& srs, double x0, double y0, double spacingM,
-                            int cols, int rows, std::vector<float>& out) {
+Result<bool> resampleDirect(const SourceRaster& src, const std::string& srs, double x0, double y0,
+                            double spacingM, int cols, int rows, std::vector<float>& out) {
     if (!src.band || !src.invGeoTransform || src.horizontalWkt.empty() || cols < 1 || rows < 1)
         return false;
     OGRSpatialReference dst, source;
-    if (dst.SetFromUserInput(srs.c_str()) != OGRERR_NONE || source.importFromWkt(src.horizontalWkt.c_str()) != OGRERR_NONE)
+    if (dst.SetFromUserInput(srs.c_str()) != OGRERR_NONE ||
+        source.importFromWkt(src.horizontalWkt.c_str()) != OGRERR_NONE)
         return false;
     dst.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
     source.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-    std::unique_ptr<OGRCoordinateTransformation> ct(OGRCreateCoordinateTransformation(&dst, &source));
+    std::unique_ptr<OGRCoordinateTransformation> ct(
+        OGRCreateCoordinateTransformation(&dst, &source));
     if (!ct)
         return false;
     const Mapper map(*ct, src.invGeoTransform, x0, y0, spacingM);
@@ -138,11 +140,14 @@ Result<bool> resampleDirect(const SourceRaster& src, const std::string& srs, dou
     const int winW = wx1 - wx0, winH = wy1 - wy0;
     double ratio = std::numeric_limits<double>::infinity(); // source pixels per grid spacing
     if (l.lc > 1)
-        ratio = std::min(ratio, std::hypot(l.px[1] - l.px[0], l.py[1] - l.py[0]) / (l.col(1) - l.col(0)));
+        ratio = std::min(ratio,
+                         std::hypot(l.px[1] - l.px[0], l.py[1] - l.py[0]) / (l.col(1) - l.col(0)));
     if (l.lr > 1)
-        ratio = std::min(ratio, std::hypot(l.px[l.lc] - l.px[0], l.py[l.lc] - l.py[0]) / (l.row(1) - l.row(0)));
+        ratio = std::min(ratio, std::hypot(l.px[l.lc] - l.px[0], l.py[l.lc] - l.py[0]) /
+                                    (l.row(1) - l.row(0)));
     int factor = std::isfinite(ratio) && ratio >= 2.0 ? static_cast<int>(std::floor(ratio)) : 1;
-    while (static_cast<std::size_t>((winW + factor - 1) / factor) * static_cast<std::size_t>((winH + factor - 1) / factor) >
+    while (static_cast<std::size_t>((winW + factor - 1) / factor) *
+               static_cast<std::size_t>((winH + factor - 1) / factor) >
            kMaxBufferPx)
         ++factor;
     const int bw = (winW + factor - 1) / factor, bh = (winH + factor - 1) / factor;
@@ -150,7 +155,8 @@ Result<bool> resampleDirect(const SourceRaster& src, const std::string& srs, dou
     GDALRasterIOExtraArg extra;
     INIT_RASTERIO_EXTRA_ARG(extra);
     extra.eResampleAlg = factor > 1 ? GRIORA_Average : GRIORA_NearestNeighbour;
-    if (src.band->RasterIO(GF_Read, wx0, wy0, winW, winH, buf.data(), bw, bh, GDT_Float32, 0, 0, &extra) != CE_None)
+    if (src.band->RasterIO(GF_Read, wx0, wy0, winW, winH, buf.data(), bw, bh, GDT_Float32, 0, 0,
+                           &extra) != CE_None)
         return makeError(ErrorCode::IoError, "its heights cannot be read");
     if (src.noData) {
         const float nd = static_cast<float>(*src.noData);
@@ -161,7 +167,8 @@ Result<bool> resampleDirect(const SourceRaster& src, const std::string& srs, dou
     if (src.maskBand) {
         std::vector<GByte> mask(buf.size());
         GDALRasterBand* mb = src.band->GetMaskBand();
-        if (!mb || mb->RasterIO(GF_Read, wx0, wy0, winW, winH, mask.data(), bw, bh, GDT_Byte, 0, 0, nullptr) != CE_None)
+        if (!mb || mb->RasterIO(GF_Read, wx0, wy0, winW, winH, mask.data(), bw, bh, GDT_Byte, 0, 0,
+                                nullptr) != CE_None)
             return makeError(ErrorCode::IoError, "its no-data mask cannot be read");
         for (std::size_t i = 0; i < buf.size(); ++i)
             if (!mask[i])
@@ -172,7 +179,8 @@ Result<bool> resampleDirect(const SourceRaster& src, const std::string& srs, dou
     const double sx = static_cast<double>(winW) / bw, sy = static_cast<double>(winH) / bh;
     const double isx = 1.0 / sx, isy = 1.0 / sy;
     auto edgeSample = [&](double fx, double fy) -> float {
-        const int hx = std::clamp(static_cast<int>(fx), 0, bw - 1), hy = std::clamp(static_cast<int>(fy), 0, bh - 1);
+        const int hx = std::clamp(static_cast<int>(fx), 0, bw - 1),
+                  hy = std::clamp(static_cast<int>(fy), 0, bh - 1);
         if (std::isnan(buf[static_cast<std::size_t>(hy) * bw + hx]))
             return kNaN;
         const double bx = fx - 0.5, by = fy - 0.5;
@@ -189,7 +197,8 @@ Result<bool> resampleDirect(const SourceRaster& src, const std::string& srs, dou
                     wsum += w;
                 }
             }
-        return wsum > 1e-9 ? static_cast<float>(sum / wsum) : buf[static_cast<std::size_t>(hy) * bw + hx];
+        return wsum > 1e-9 ? static_cast<float>(sum / wsum)
+                           : buf[static_cast<std::size_t>(hy) * bw + hx];
     };
     auto sample = [&](double px, double py) -> float {
         if (!(px >= 0 && py >= 0 && px <= W && py <= H))
@@ -202,7 +211,8 @@ Result<bool> resampleDirect(const SourceRaster& src, const std::string& srs, dou
             if (i0 + 1 < bw && j0 + 1 < bh) {
                 const float* q = buf.data() + static_cast<std::size_t>(j0) * bw + i0;
                 const double tx = bx - i0, ty = by - j0;
-                const double v = (q[0] * (1 - tx) + q[1] * tx) * (1 - ty) + (q[bw] * (1 - tx) + q[bw + 1] * tx) * ty;
+                const double v = (q[0] * (1 - tx) + q[1] * tx) * (1 - ty) +
+                                 (q[bw] * (1 - tx) + q[bw + 1] * tx) * ty;
                 if (!std::isnan(v))
                     return static_cast<float>(v);
             }
@@ -218,7 +228,8 @@ Result<bool> resampleDirect(const SourceRaster& src, const std::string& srs, dou
             const std::size_t k0 = static_cast<std::size_t>(b) * l.lc + a;
             const std::size_t k1 = l.lr > 1 ? k0 + l.lc : k0;
             const std::size_t a1 = l.lc > 1 ? 1 : 0;
-            const double lx0 = l.px[k0] + (l.px[k1] - l.px[k0]) * ty, ly0 = l.py[k0] + (l.py[k1] - l.py[k0]) * ty;
+            const double lx0 = l.px[k0] + (l.px[k1] - l.px[k0]) * ty,
+                         ly0 = l.py[k0] + (l.py[k1] - l.py[k0]) * ty;
             const double lx1 = l.px[k0 + a1] + (l.px[k1 + a1] - l.px[k0 + a1]) * ty;
             const double ly1 = l.py[k0 + a1] + (l.py[k1 + a1] - l.py[k0 + a1]) * ty;
             const int c0 = l.col(a), c1 = l.lc > 1 ? l.col(a + 1) : c0;

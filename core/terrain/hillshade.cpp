@@ -7,7 +7,8 @@ namespace pf::terrain {
 
 std::vector<std::uint8_t> hillshade(const HeightGrid& grid, const HillshadeOptions& o) {
     const int cols = grid.cols(), rows = grid.rows();
-    std::vector<std::uint8_t> out(static_cast<std::size_t>(cols) * static_cast<std::size_t>(rows), 0);
+    std::vector<std::uint8_t> out(static_cast<std::size_t>(cols) * static_cast<std::size_t>(rows),
+                                  0);
     if (grid.empty())
         return out;
     const double zenith = (90.0 - o.altitudeDeg) * M_PI / 180.0;
@@ -17,7 +18,8 @@ std::vector<std::uint8_t> hillshade(const HeightGrid& grid, const HillshadeOptio
     const double cell = grid.spacingM() * o.groundMetresPerUnit;
     const double scale = o.zFactor / (8.0 * cell);
     auto at = [&](int c, int r) {
-        return static_cast<double>(grid.node(std::clamp(c, 0, cols - 1), std::clamp(r, 0, rows - 1)));
+        return static_cast<double>(
+            grid.node(std::clamp(c, 0, cols - 1), std::clamp(r, 0, rows - 1)));
     };
     for (int r = 0; r < rows; ++r)
         for (int c = 0; c < cols; ++c) {
@@ -33,8 +35,10 @@ std::vector<std::uint8_t> hillshade(const HeightGrid& grid, const HillshadeOptio
             const double slope = std::atan(std::hypot(dzdx, dzdy));
             // The aspect: the direction the slope faces (downhill), counter-clockwise from east.
             const double aspect = std::atan2(-dzdy, -dzdx);
-            const double v = 255.0 * (cosZ * std::cos(slope) + sinZ * std::sin(slope) * std::cos(azimuth - aspect));
-            out[static_cast<std::size_t>(r) * cols + c] = static_cast<std::uint8_t>(std::clamp(std::lround(v), 1L, 255L));
+            const double v = 255.0 * (cosZ * std::cos(slope) +
+                                      sinZ * std::sin(slope) * std::cos(azimuth - aspect));
+            out[static_cast<std::size_t>(r) * cols + c] =
+                static_cast<std::uint8_t>(std::clamp(std::lround(v), 1L, 255L));
         }
     return out;
 }

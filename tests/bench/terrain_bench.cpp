@@ -3,11 +3,11 @@
 // each camera sees, then every waypoint put at its height above the ground, every leg checked every
 // metre and every photo's footprint traced on the terrain).
 //
-// The DEM is a tiled Float32 GeoTIFF in UTM (1 m pixels, gentle hills) written by the benchmark into
-// a temporary directory and deleted afterwards; the plan (one aircraft over a square in the DEM's
-// middle) is planned once, outside the timing. BM_TerrainSampling (a 1000 x 1000 px DEM, a few
-// hundred photos) always runs (CI smoke-runs it); BM_TerrainSamplingBig is the target case, a plan of
-// about 10^4 photos on a 10000 x 10000 px (10^8 px, 400 MB) DEM, left out of the smoke run:
+// The DEM is a tiled Float32 GeoTIFF in UTM (1 m pixels, gentle hills) written by the benchmark
+// into a temporary directory and deleted afterwards; the plan (one aircraft over a square in the
+// DEM's middle) is planned once, outside the timing. BM_TerrainSampling (a 1000 x 1000 px DEM, a
+// few hundred photos) always runs (CI smoke-runs it); BM_TerrainSamplingBig is the target case, a
+// plan of about 10^4 photos on a 10000 x 10000 px (10^8 px, 400 MB) DEM, left out of the smoke run:
 //   build/tests/bench/pf_bench --benchmark_filter=TerrainSampling
 #include "core/geo/local_frame.h"
 #include "core/mission/plan_mission.h"
@@ -36,7 +36,8 @@ constexpr double kCentreLon = 8.33, kCentreLat = 49.01;
 struct ScratchDir {
     std::filesystem::path path;
     ScratchDir() {
-        path = std::filesystem::temp_directory_path() / ("pf_terrain_bench_" + std::to_string(::getpid()));
+        path = std::filesystem::temp_directory_path() /
+               ("pf_terrain_bench_" + std::to_string(::getpid()));
         std::filesystem::create_directories(path);
     }
     ~ScratchDir() {
@@ -56,8 +57,10 @@ std::string writeDem(const std::filesystem::path& dir, int sidePx, std::string& 
     GDALAllRegister();
     const std::string path = (dir / ("dem_" + std::to_string(sidePx) + ".tif")).string();
     GDALDriver* gtiff = GetGDALDriverManager()->GetDriverByName("GTiff");
-    const char* opts[] = {"TILED=YES", "BLOCKXSIZE=256", "BLOCKYSIZE=256", "BIGTIFF=IF_SAFER", nullptr};
-    GDALDatasetUniquePtr ds(gtiff->Create(path.c_str(), sidePx, sidePx, 1, GDT_Float32, const_cast<char**>(opts)));
+    const char* opts[] = {"TILED=YES", "BLOCKXSIZE=256", "BLOCKYSIZE=256", "BIGTIFF=IF_SAFER",
+                          nullptr};
+    GDALDatasetUniquePtr ds(
+        gtiff->Create(path.c_str(), sidePx, sidePx, 1, GDT_Float32, const_cast<char**>(opts)));
     if (!ds) {
         error = "cannot create " + path + ": " + CPLGetLastErrorMsg();
         return {};
@@ -67,7 +70,8 @@ std::string writeDem(const std::filesystem::path& dir, int sidePx, std::string& 
     geo.SetWellKnownGeogCS("WGS84");
     utm.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
     geo.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-    std::unique_ptr<OGRCoordinateTransformation> toUtm(OGRCreateCoordinateTransformation(&geo, &utm));
+    std::unique_ptr<OGRCoordinateTransformation> toUtm(
+        OGRCreateCoordinateTransformation(&geo, &utm));
     double e0 = kCentreLon, n0 = kCentreLat;
     toUtm->Transform(1, &e0, &n0);
     e0 = std::round(e0);
@@ -86,8 +90,8 @@ std::string writeDem(const std::filesystem::path& dir, int sidePx, std::string& 
             for (int c = 0; c < sidePx; ++c)
                 strip[static_cast<std::size_t>(r) * sidePx + c] =
                     static_cast<float>(groundAt(c + 0.5 - half, half - (r0 + r + 0.5)));
-        if (band->RasterIO(GF_Write, 0, r0, sidePx, rows, strip.data(), sidePx, rows, GDT_Float32, 0, 0, nullptr) !=
-            CE_None) {
+        if (band->RasterIO(GF_Write, 0, r0, sidePx, rows, strip.data(), sidePx, rows, GDT_Float32,
+                           0, 0, nullptr) != CE_None) {
             error = "cannot write " + path + ": " + CPLGetLastErrorMsg();
             return {};
         }
@@ -95,7 +99,8 @@ std::string writeDem(const std::filesystem::path& dir, int sidePx, std::string& 
     return path;
 }
 
-// One aircraft over a square of `sideM` metres centred on the DEM, following the terrain at `heightM`.
+// One aircraft over a square of `sideM` metres centred on the DEM, following the terrain at
+// `heightM`.
 mission::Mission site(double sideM, double heightM, const std::string& dem) {
     const geo::LocalFrame frame = *geo::LocalFrame::create({kCentreLon, kCentreLat});
     const double h = sideM / 2;
@@ -148,7 +153,8 @@ void terrainSampling(benchmark::State& state, int demSidePx, double siteM, doubl
         state.SkipWithError(plan.error().message.c_str());
         return;
     }
-    std::vector<std::optional<geo::Vec2>> homes(plan->aircraft.size(), geom->frame.toLocal(*m.home));
+    std::vector<std::optional<geo::Vec2>> homes(plan->aircraft.size(),
+                                                geom->frame.toLocal(*m.home));
     std::size_t photos = 0, outlines = 0;
     double readS = 0.0, followS = 0.0;
     for (auto _ : state) {
@@ -162,8 +168,8 @@ void terrainSampling(benchmark::State& state, int demSidePx, double siteM, doubl
         mission::MissionPlan p = *plan;
         std::vector<plan::PhotoFootprint> footprints;
         std::vector<geo::Ring> rings;
-        if (auto s = mission::applyTerrain(p, mission::planningMission(m, *t), geom->frame, homes, std::nullopt,
-                                           footprints, rings);
+        if (auto s = mission::applyTerrain(p, mission::planningMission(m, *t), geom->frame, homes,
+                                           std::nullopt, footprints, rings);
             !s) {
             state.SkipWithError(s.error().message.c_str());
             return;
@@ -174,22 +180,27 @@ void terrainSampling(benchmark::State& state, int demSidePx, double siteM, doubl
         outlines = rings.size();
         benchmark::DoNotOptimize(rings.data());
     }
-    // Wall-clock seconds per iteration of the two halves: the DEM read over the area (and the lowest
-    // height above ground), then terrain following and the footprints.
+    // Wall-clock seconds per iteration of the two halves: the DEM read over the area (and the
+    // lowest height above ground), then terrain following and the footprints.
     state.counters["read_s"] = readS / static_cast<double>(state.iterations());
     state.counters["follow_s"] = followS / static_cast<double>(state.iterations());
     state.counters["photos"] = static_cast<double>(photos);
     state.counters["outlines"] = static_cast<double>(outlines);
     state.counters["dem_px"] = static_cast<double>(demSidePx) * demSidePx;
-    state.counters["grid_nodes"] =
-        static_cast<double>((*terrain)->grid->cols()) * static_cast<double>((*terrain)->grid->rows());
+    state.counters["grid_nodes"] = static_cast<double>((*terrain)->grid->cols()) *
+                                   static_cast<double>((*terrain)->grid->rows());
 }
 
-void BM_TerrainSampling(benchmark::State& state) { terrainSampling(state, 1000, 400.0, 40.0); }
+void BM_TerrainSampling(benchmark::State& state) {
+    terrainSampling(state, 1000, 400.0, 40.0);
+}
 BENCHMARK(BM_TerrainSampling)->Unit(benchmark::kMillisecond)->Iterations(1);
 
-// About 10^4 photos: a 3 km square at 88 m above ground (0.46 H between lanes, 0.25 H between photos).
-void BM_TerrainSamplingBig(benchmark::State& state) { terrainSampling(state, 10000, 3000.0, 88.0); }
+// About 10^4 photos: a 3 km square at 88 m above ground (0.46 H between lanes, 0.25 H between
+// photos).
+void BM_TerrainSamplingBig(benchmark::State& state) {
+    terrainSampling(state, 10000, 3000.0, 88.0);
+}
 BENCHMARK(BM_TerrainSamplingBig)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 } // namespace

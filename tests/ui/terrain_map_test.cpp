@@ -57,13 +57,16 @@ QAction* viewAction(MainWindow* w, const QString& objectName) {
 
 // The demo DEM's hill: 35 m, 80 m sigma, 150 m west and 90 m north of (8.3300, 49.0120).
 geo::LonLat nearHill(double eastM, double northM) {
-    return {8.3300 + (-150 + eastM) / (111'320.0 * std::cos(49.012 * M_PI / 180)), 49.0120 + (90 + northM) / 111'200.0};
+    return {8.3300 + (-150 + eastM) / (111'320.0 * std::cos(49.012 * M_PI / 180)),
+            49.0120 + (90 + northM) / 111'200.0};
 }
 
 int shadeAt(const ShadedRelief& r, const geo::LonLat& p) {
     const QPointF s = mercator::toScene(p.lon, p.lat);
-    const int x = static_cast<int>((s.x() - r.sceneRect.left()) / r.sceneRect.width() * r.image.width());
-    const int y = static_cast<int>((s.y() - r.sceneRect.top()) / r.sceneRect.height() * r.image.height());
+    const int x =
+        static_cast<int>((s.x() - r.sceneRect.left()) / r.sceneRect.width() * r.image.width());
+    const int y =
+        static_cast<int>((s.y() - r.sceneRect.top()) / r.sceneRect.height() * r.image.height());
     return qRed(r.image.pixel(x, y));
 }
 

@@ -52,7 +52,8 @@ HillshadeLayer::HillshadeLayer(MissionDocument* doc, QGraphicsScene* scene, QObj
     m_action = new QAction(tr("&Hillshade of the terrain model"), this);
     m_action->setObjectName(QStringLiteral("HillshadeAction"));
     m_action->setCheckable(true);
-    m_action->setToolTip(tr("Shaded relief of the mission's DEM, lit from the north-west, under the plan"));
+    m_action->setToolTip(
+        tr("Shaded relief of the mission's DEM, lit from the north-west, under the plan"));
     m_action->setChecked(QSettings().value(kSetting, true).toBool());
     connect(m_action, &QAction::toggled, this, [this](bool on) {
         QSettings().setValue(kSetting, on);
@@ -65,10 +66,16 @@ HillshadeLayer::HillshadeLayer(MissionDocument* doc, QGraphicsScene* scene, QObj
     onMissionChanged();
 }
 
-HillshadeLayer::~HillshadeLayer() { m_watcher.waitForFinished(); }
+HillshadeLayer::~HillshadeLayer() {
+    m_watcher.waitForFinished();
+}
 
-void HillshadeLayer::setShown(bool on) { m_action->setChecked(on); }
-bool HillshadeLayer::isShown() const { return m_action->isChecked(); }
+void HillshadeLayer::setShown(bool on) {
+    m_action->setChecked(on);
+}
+bool HillshadeLayer::isShown() const {
+    return m_action->isChecked();
+}
 
 void HillshadeLayer::onMissionChanged() {
     const auto& m = m_doc->mission();
@@ -95,7 +102,8 @@ void HillshadeLayer::start() {
         return;
     }
     m_running = true;
-    m_watcher.setFuture(QtConcurrent::run(&HillshadeLayer::compute, m_wanted, areaRect(m_doc->mission())));
+    m_watcher.setFuture(
+        QtConcurrent::run(&HillshadeLayer::compute, m_wanted, areaRect(m_doc->mission())));
 }
 
 void HillshadeLayer::onFinished() {
@@ -156,7 +164,8 @@ ShadedRelief HillshadeLayer::compute(const QString& demPath, const QRectF& area)
         rect = whole;
     const double lat = mercator::toLonLat(rect.center()).y();
     const double ground = mercator::groundScale(lat); // ground metres per scene metre
-    double spacing = std::max(info.pixelSizeM / ground, std::max(rect.width(), rect.height()) / kMaxSidePx);
+    double spacing =
+        std::max(info.pixelSizeM / ground, std::max(rect.width(), rect.height()) / kMaxSidePx);
     const int cols = std::max(2, static_cast<int>(std::ceil(rect.width() / spacing)));
     const int rows = std::max(2, static_cast<int>(std::ceil(rect.height() / spacing)));
     // Node (0, 0) at the centre of the top-left pixel; EPSG:3857 northing = -scene y.

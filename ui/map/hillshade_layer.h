@@ -18,9 +18,9 @@ class MissionDocument;
 
 // The shaded picture and where it lies in the scene (Web Mercator metres, y down).
 struct ShadedRelief {
-    QImage image;    // grey, transparent where the DEM has no data
+    QImage image; // grey, transparent where the DEM has no data
     QRectF sceneRect;
-    QString path;    // the DEM it shows
+    QString path;         // the DEM it shows
     bool cropped = false; // the DEM reaches beyond the picture
     QString error;
 };
@@ -48,8 +48,8 @@ public:
     static constexpr int kMaxSidePx = 2048;
 
     // The relief of `demPath` (as the mission names it) around `area` (scene rectangle; empty: the
-    // whole DEM, cropped to about 40 km): the DEM's pixel size, or coarser to stay within kMaxSidePx
-    // a side. Plain function, safe off the GUI thread.
+    // whole DEM, cropped to about 40 km): the DEM's pixel size, or coarser to stay within
+    // kMaxSidePx a side. Plain function, safe off the GUI thread.
     static ShadedRelief compute(const QString& demPath, const QRectF& area);
 
 signals:
@@ -66,7 +66,7 @@ private:
     QAction* m_action;
     QFutureWatcher<ShadedRelief> m_watcher;
     ShadedRelief m_relief;
-    QString m_wanted;      // the DEM the picture should show ("" for none)
+    QString m_wanted;       // the DEM the picture should show ("" for none)
     bool m_pending = false; // a newer request waits for the running one
     bool m_running = false; // until its result is taken (finished() may still be queued)
 };

@@ -12,7 +12,8 @@ using terrain::HeightGrid;
 
 namespace {
 
-// A 9 x 9 grid of `spacing` whose heights rise by `east` and `north` metres per metre (of the grid).
+// A 9 x 9 grid of `spacing` whose heights rise by `east` and `north` metres per metre (of the
+// grid).
 HeightGrid plane(double east, double north, double spacing = 2.0) {
     std::vector<float> h;
     for (int r = 0; r < 9; ++r)
@@ -21,11 +22,15 @@ HeightGrid plane(double east, double north, double spacing = 2.0) {
     return HeightGrid(0.0, 0.0, spacing, 9, 9, std::move(h));
 }
 
-int centre(const std::vector<std::uint8_t>& v) { return v[4 * 9 + 4]; }
+int centre(const std::vector<std::uint8_t>& v) {
+    return v[4 * 9 + 4];
+}
 
-double expected(double slopeRad, double aspectMathRad, double azimuthDeg = 315, double altitudeDeg = 45) {
+double expected(double slopeRad, double aspectMathRad, double azimuthDeg = 315,
+                double altitudeDeg = 45) {
     const double z = (90 - altitudeDeg) * M_PI / 180, az = (90 - azimuthDeg) * M_PI / 180;
-    return std::max(1.0, 255 * (std::cos(z) * std::cos(slopeRad) + std::sin(z) * std::sin(slopeRad) * std::cos(az - aspectMathRad)));
+    return std::max(1.0, 255 * (std::cos(z) * std::cos(slopeRad) +
+                                std::sin(z) * std::sin(slopeRad) * std::cos(az - aspectMathRad)));
 }
 
 } // namespace
@@ -33,7 +38,7 @@ double expected(double slopeRad, double aspectMathRad, double azimuthDeg = 315, 
 TEST(Hillshade, FlatGroundIsLitBySinOfTheAltitude) {
     const auto v = terrain::hillshade(plane(0, 0));
     for (auto b : v)
-        EXPECT_EQ(b, 180); // 255 sin 45°
+        EXPECT_EQ(b, 180);                                                    // 255 sin 45°
     EXPECT_EQ(centre(terrain::hillshade(plane(0, 0), {315, 30, 1, 1})), 128); // 255 sin 30° = 127.5
 }
 
@@ -43,11 +48,14 @@ TEST(Hillshade, SlopesFacingTheLightAreBrightAndAwayFromItDark) {
     EXPECT_EQ(centre(terrain::hillshade(plane(k, -k))), 255);
     // Rising to the north-west: facing away, the light grazes at 90° to the normal.
     EXPECT_EQ(centre(terrain::hillshade(plane(-k, k))), 1);
-    // Facing north-east (rising to the south-west) at 30°: across the light, cos(slope) cos(zenith).
+    // Facing north-east (rising to the south-west) at 30°: across the light, cos(slope)
+    // cos(zenith).
     const double t = std::tan(M_PI / 6) / std::sqrt(2.0);
-    EXPECT_NEAR(centre(terrain::hillshade(plane(-t, -t))), expected(M_PI / 6, M_PI / 4), 0.5 + 1e-9);
+    EXPECT_NEAR(centre(terrain::hillshade(plane(-t, -t))), expected(M_PI / 6, M_PI / 4),
+                0.5 + 1e-9);
     // A gentle slope facing south (rising to the north), 10 %.
-    EXPECT_NEAR(centre(terrain::hillshade(plane(0, 0.1))), expected(std::atan(0.1), -M_PI / 2), 0.5 + 1e-9);
+    EXPECT_NEAR(centre(terrain::hillshade(plane(0, 0.1))), expected(std::atan(0.1), -M_PI / 2),
+                0.5 + 1e-9);
     // The light from the south instead: that slope is now brighter than flat ground.
     EXPECT_GT(centre(terrain::hillshade(plane(0, 0.1), {180, 45, 1, 1})), 180);
     // A plane is shaded the same at every node inside the border.
@@ -58,8 +66,8 @@ TEST(Hillshade, SlopesFacingTheLightAreBrightAndAwayFromItDark) {
 }
 
 TEST(Hillshade, GroundMetresPerUnitAndTheZFactorScaleTheSlope) {
-    // A grid in Web Mercator metres at 60° N: 2 grid units are 1 ground metre, so the 22.5 % the grid
-    // shows is a 45 % slope on the ground.
+    // A grid in Web Mercator metres at 60° N: 2 grid units are 1 ground metre, so the 22.5 % the
+    // grid shows is a 45 % slope on the ground.
     const auto merc = terrain::hillshade(plane(0.225, 0), {315, 45, 0.5, 1});
     EXPECT_NEAR(centre(merc), expected(std::atan(0.45), M_PI), 0.5 + 1e-9);
     EXPECT_EQ(centre(merc), centre(terrain::hillshade(plane(0.45, 0))));
