@@ -70,26 +70,26 @@ int shadeAt(const ShadedRelief& r, const geo::LonLat& p) {
     return qRed(r.image.pixel(x, y));
 }
 
-// The window on the demo mission (flat: no terrain model yet), planning by hand only.
-std::unique_ptr<MainWindow> demoWindow() {
-    auto w = test::makeWindow();
-    w->planController()->setAutoPlan(false);
-    QString error;
-    if (!w->openDemoMission(&error)) {
-        ADD_FAILURE() << error.toStdString();
-        return nullptr;
+// On the demo mission (flat: no terrain model yet), planning by hand only, with the demo DEM at
+// hand.
+class TerrainMap : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dem = QString::fromStdString(mission::demoDemPath());
+        if (dem.isEmpty())
+            GTEST_SKIP() << "no demo DEM built";
+        w = test::makeWindow();
+        w->planController()->setAutoPlan(false);
+        QString error;
+        ASSERT_TRUE(w->openDemoMission(&error)) << error.toStdString();
     }
-    return w;
-}
+    QString dem;
+    std::unique_ptr<MainWindow> w;
+};
 
 } // namespace
 
-TEST(TerrainMap, DroppingADemOnTheMapMakesItTheTerrainModel) {
-    const QString dem = QString::fromStdString(mission::demoDemPath());
-    if (dem.isEmpty())
-        GTEST_SKIP() << "no demo DEM built";
-    auto w = demoWindow();
-    ASSERT_TRUE(w);
+TEST_F(TerrainMap, DroppingADemOnTheMapMakesItTheTerrainModel) {
     MissionDocument* doc = w->document();
     ASSERT_FALSE(doc->mission().terrain.follows());
     const int undoBefore = doc->undoStack()->count();
@@ -132,12 +132,7 @@ TEST(TerrainMap, DroppingADemOnTheMapMakesItTheTerrainModel) {
     EXPECT_EQ(QString::fromStdString(doc->mission().terrain.demPath), dem);
 }
 
-TEST(TerrainMap, HillshadeShowsTheDemUnderThePlanAndToggles) {
-    const QString dem = QString::fromStdString(mission::demoDemPath());
-    if (dem.isEmpty())
-        GTEST_SKIP() << "no demo DEM built";
-    auto w = demoWindow();
-    ASSERT_TRUE(w);
+TEST_F(TerrainMap, HillshadeShowsTheDemUnderThePlanAndToggles) {
     auto* layer = w->findChild<HillshadeLayer*>();
     ASSERT_NE(layer, nullptr);
     QAction* toggle = viewAction(w.get(), QStringLiteral("HillshadeAction"));

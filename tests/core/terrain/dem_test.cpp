@@ -222,13 +222,18 @@ TEST(Dem, AllNoDataAnUnreadableFileAndAnotherPlaceAreRefused) {
     EXPECT_NE(d4.error().message.find("missing.tif\" cannot be read"), std::string::npos) << d4.error().message;
 }
 
+// kTerrain written to `path` by `spec` around frame(), then opened.
+Result<Dem> writtenDem(const std::string& path, const test::DemSpec& spec) {
+    if (const std::string why = test::writeDem(path, frame(), kTerrain, spec); !why.empty())
+        return makeError(ErrorCode::IoError, why);
+    return Dem::open(path);
+}
+
 TEST(Dem, AGridCoarserThanTheDemReadsItAveragedDown) {
     const auto f = frame();
-    const std::string path = tmp("fine.tif");
     test::DemSpec spec;
     spec.pixel = 0.5;
-    ASSERT_EQ(test::writeDem(path, f, kTerrain, spec), "");
-    auto dem = Dem::open(path);
+    auto dem = writtenDem(tmp("fine.tif"), spec);
     ASSERT_TRUE(dem.ok()) << dem.error().message;
     // 10 DEM pixels per grid step: read averaged down (5 m blocks), then bilinear on the 5 m grid,
     // which smooths the 40 m hill's top (curvature 40 / 60² per metre) by about a decimetre.
@@ -278,8 +283,7 @@ TEST(Dem, TheWindowReadAgreesWithGdalsWarper) {
         spec.pixel = srs == "EPSG:4326" ? 2.0e-5 : 2.0;
         if (srs == "hole")
             spec.hasData = [](const geo::Vec2& p) { return (p - geo::Vec2(40, 10)).norm() > 35.0; };
-        ASSERT_EQ(test::writeDem(path, f, kTerrain, spec), "");
-        auto dem = Dem::open(path);
+        auto dem = writtenDem(path, spec);
         ASSERT_TRUE(dem.ok()) << dem.error().message;
         auto g = srs == "hole" ? dem->resample(f.projString(), -220, 170, 2.0, 221, 171)
                                : dem->overRegion(f, rect(-200, -150, 200, 150), 20.0);
@@ -305,7 +309,7 @@ TEST(Dem, TheWindowReadAgreesWithGdalsWarper) {
 TEST(Dem, OneBandOfHeightsLooksLikeADemAPictureDoesNot) {
     const auto f = frame();
     const std::string heights = tmp("heights.tif");
-    ASSERT_EQ(test::writeDem(heights, f, kTerrain, {}), "");
+    ASSERT_TRUE(writtenDem(heights, {}).ok());
     EXPECT_TRUE(Dem::looksLikeDem(heights));
     // An 8-bit georeferenced picture (a base map).
     const std::string picture = tmp("picture.tif");
