@@ -11,6 +11,7 @@
 #include "ui/geo_adapter.h"
 #include "ui/ground_station.h"
 #include "ui/map/base_maps.h"
+#include "ui/map/hillshade_layer.h"
 #include "ui/map/map_view.h"
 #include "ui/map/mission_layer.h"
 #include "ui/map/tile_layer.h"
@@ -255,6 +256,7 @@ void MainWindow::buildActions() {
     file->addAction(icon("map"), tr("Build &mosaic from photos…"), m_mosaic, &MosaicController::showDialog);
     // Terrain following (issue 18): the DEM, follow or off, the clearance, the profile dock (ui/terrain/).
     m_terrain = new TerrainController(this, m_doc, m_planner, m_interactive);
+    connect(m_view, &MapView::demDropped, m_terrain, &TerrainController::useDem);
     file->addMenu(m_terrain->menu());
     file->addSeparator();
     auto* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
@@ -898,6 +900,7 @@ void MainWindow::buildPlanning() {
         const auto p = part;
         connect(a, &QAction::toggled, this, [this, p](bool on) { m_planLayer->setVisible(p, on); });
     }
+    m_viewMenu->addAction((new HillshadeLayer(m_doc, m_scene, this))->toggleAction());
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(statsDock->toggleViewAction());
     m_viewMenu->addAction(wpDock->toggleViewAction());

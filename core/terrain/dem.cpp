@@ -2,6 +2,7 @@
 
 #include "core/geo/polygon_ops.h"
 #include "core/mosaic/gdal_util.h"
+#include "core/terrain/direct_resample.h"
 
 #include <gdal_utils.h>
 #include <ogr_spatialref.h>
@@ -76,8 +77,53 @@ struct Dem::Impl {
     // the heights between vertical datums on its own (a compound CRS with EGM96 would otherwise be
     // turned into ellipsoidal heights; the datum is handled here, once).
     std::string horizontalWkt;
+    double invGt[6] = {0, 1, 0, 0, 0, 1}; // georeferenced coordinates -> pixel coordinates
+    std::optional<double> noData;
+    bool maskBand = false;            // validity from a mask band (not a nodata value)
     mutable std::mutex mutex;         // GDAL datasets are not safe to read from two threads at once
 };
+
+namespace {
+
+// The grid through GDAL's warper (bilinear, error threshold 1 % of a pixel): the general case, for
+// what readDirect declines. Called under the dataset's lock.
+Status warpGrid(const Dem::Impl& m, const std::string& who, const std::string& srs, double x0, double y0,
+                double spacingM, int cols, int rows, std::vector<float>& h) {
+    std::vector<std::string> args = {"-of", "MEM", "-t_srs", srs, "-te",
+                                     num(x0 - spacingM / 2, 6), num(y0 - (rows - 0.5) * spacingM, 6),
+                                     num(x0 + (cols - 0.5) * spacingM, 6), num(y0 + spacingM / 2, 6),
+                                     "-ts", std::to_string(cols), std::to_string(rows), "-r", "bilinear",
+                                     "-ot", "Float32", "-dstnodata", "nan", "-et", "0.01", "-wo",
+                                     "INIT_DEST=NO_DATA", "-q"};
+    if (!m.horizontalWkt.empty()) {
+        args.push_back("-s_srs");
+        args.push_back(m.horizontalWkt);
+    }
+    std::vector<char*> argv;
+    for (auto& a : args)
+        argv.push_back(a.data());
+    argv.push_back(nullptr);
+    {
+        GdalErrorCapture errors;
+        GDALWarpAppOptions* opts = GDALWarpAppOptionsNew(argv.data(), nullptr);
+        if (!opts)
+            return makeError(ErrorCode::Internal, "the terrain resampling options were refused: " + errors.message());
+        GDALDatasetH src = GDALDataset::ToHandle(m.ds.get());
+        int usageError = 0;
+        GDALDatasetH out = GDALWarp("", nullptr, 1, &src, opts, &usageError);
+        GDALWarpAppOptionsFree(opts);
+        if (!out)
+            return makeError(ErrorCode::InvalidInput,
+                             who + " cannot be resampled onto the planning grid: " + errors.message());
+        GDALDatasetUniquePtr outDs(GDALDataset::FromHandle(out));
+        if (outDs->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, cols, rows, h.data(), cols, rows, GDT_Float32, 0, 0,
+                                              nullptr) != CE_None)
+            return makeError(ErrorCode::IoError, who + " cannot be read: " + errors.message());
+    }
+    return {};
+}
+
+} // namespace
 
 Dem::Dem(std::unique_ptr<Impl> impl) : m(std::move(impl)) {}
 Dem::Dem(Dem&&) noexcept = default;
@@ -124,6 +170,13 @@ Result<Dem> Dem::open(const std::string& path) {
     impl->scale = has ? sc : 1.0;
     const double off = band->GetOffset(&has);
     impl->offset = has ? off : 0.0;
+    const double nd = band->GetNoDataValue(&has);
+    if (has)
+        impl->noData = nd;
+    const int maskFlags = band->GetMaskFlags();
+    impl->maskBand = !(maskFlags & GMF_ALL_VALID) && !(maskFlags & GMF_NODATA);
+    if (!GDALInvGeoTransform(gt, impl->invGt))
+        return makeError(ErrorCode::InvalidInput, who + " has a geotransform that cannot be inverted");
 
     // Vertical datum: a compound CRS names its vertical part; a geographic or projected 3D CRS means
     // heights above the ellipsoid.
@@ -204,6 +257,24 @@ Result<Dem> Dem::open(const std::string& path) {
     return Dem(std::move(impl));
 }
 
+bool Dem::looksLikeDem(const std::string& path) {
+    const auto dot = path.find_last_of('.');
+    std::string ext = dot == std::string::npos ? std::string() : path.substr(dot + 1);
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (ext == "hgt" || ext == "dem")
+        return true;
+    if (ext != "tif" && ext != "tiff" && ext != "vrt")
+        return false;
+    mosaic::detail::ensureGdalRegistered();
+    GdalErrorCapture errors;
+    GDALDatasetUniquePtr ds = mosaic::detail::openRaster(path);
+    if (!ds || ds->GetRasterCount() != 1 || !ds->GetSpatialRef())
+        return false;
+    double gt[6];
+    GDALRasterBand* band = ds->GetRasterBand(1);
+    return ds->GetGeoTransform(gt) == CE_None && band->GetRasterDataType() != GDT_Byte && !band->GetColorTable();
+}
+
 Result<HeightGrid> Dem::resample(const std::string& srs, double x0, double y0, double spacingM, int cols,
                                  int rows) const {
     const std::string who = "the terrain model \"" + m->info.path + "\"";
@@ -212,38 +283,18 @@ Result<HeightGrid> Dem::resample(const std::string& srs, double x0, double y0, d
     if (static_cast<std::size_t>(cols) * static_cast<std::size_t>(rows) > 4 * kMaxNodes)
         return makeError(ErrorCode::TooLarge, "a terrain grid of " + std::to_string(cols) + " x " +
                                                   std::to_string(rows) + " nodes is too large");
-    std::vector<std::string> args = {"-of", "MEM", "-t_srs", srs, "-te",
-                                     num(x0 - spacingM / 2, 6), num(y0 - (rows - 0.5) * spacingM, 6),
-                                     num(x0 + (cols - 0.5) * spacingM, 6), num(y0 + spacingM / 2, 6),
-                                     "-ts", std::to_string(cols), std::to_string(rows), "-r", "bilinear",
-                                     "-ot", "Float32", "-dstnodata", "nan", "-et", "0.01", "-wo",
-                                     "INIT_DEST=NO_DATA", "-q"};
-    if (!m->horizontalWkt.empty()) {
-        args.push_back("-s_srs");
-        args.push_back(m->horizontalWkt);
-    }
-    std::vector<char*> argv;
-    for (auto& a : args)
-        argv.push_back(a.data());
-    argv.push_back(nullptr);
     std::vector<float> h(static_cast<std::size_t>(cols) * rows, std::numeric_limits<float>::quiet_NaN());
     {
         std::lock_guard<std::mutex> lock(m->mutex);
         GdalErrorCapture errors;
-        GDALWarpAppOptions* opts = GDALWarpAppOptionsNew(argv.data(), nullptr);
-        if (!opts)
-            return makeError(ErrorCode::Internal, "the terrain resampling options were refused: " + errors.message());
-        GDALDatasetH src = GDALDataset::ToHandle(m->ds.get());
-        int usageError = 0;
-        GDALDatasetH out = GDALWarp("", nullptr, 1, &src, opts, &usageError);
-        GDALWarpAppOptionsFree(opts);
-        if (!out)
-            return makeError(ErrorCode::InvalidInput,
-                             who + " cannot be resampled onto the planning grid: " + errors.message());
-        GDALDatasetUniquePtr outDs(GDALDataset::FromHandle(out));
-        if (outDs->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, cols, rows, h.data(), cols, rows, GDT_Float32, 0, 0,
-                                              nullptr) != CE_None)
+        const detail::SourceRaster source{m->ds->GetRasterBand(1), m->info.widthPx, m->info.heightPx, m->invGt,
+                                          m->noData, m->maskBand, m->horizontalWkt};
+        auto direct = detail::resampleDirect(source, srs, x0, y0, spacingM, cols, rows, h);
+        if (!direct)
             return makeError(ErrorCode::IoError, who + " cannot be read: " + errors.message());
+        if (!*direct)
+            if (auto warped = warpGrid(*m, who, srs, x0, y0, spacingM, cols, rows, h); !warped)
+                return warped.error();
     }
     const double s = m->scale * m->info.unitToMetres, o = m->offset * m->info.unitToMetres;
     if (s != 1.0 || o != 0.0)

@@ -40,6 +40,11 @@ public:
     // unsupported height unit, ellipsoidal heights without a geoid model to convert them.
     static Result<Dem> open(const std::string& path);
 
+    // Whether a file is a terrain model rather than a picture (what dropping it on the map does):
+    // .hgt and .dem always; .tif, .tiff and .vrt when GDAL reads them as georeferenced rasters of one
+    // band of heights (not 8-bit, no colour table). Other names: false.
+    static bool looksLikeDem(const std::string& path);
+
     Dem(Dem&&) noexcept;
     Dem& operator=(Dem&&) noexcept;
     ~Dem();

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <limits>
 #include <vector>
 
@@ -10,24 +9,47 @@ namespace pf::terrain {
 
 namespace {
 
-// out[i] = max of in[i - r .. i + r] (NaN ignored; NaN if all are NaN), `stride` apart.
-void runningMax(const float* in, float* out, int n, int stride, int r) {
-    std::deque<int> q; // indices of decreasing values
-    int next = 0;
+constexpr float kLow = -std::numeric_limits<float>::infinity();
+
+// The running maximum over windows of w = 2r + 1 values (van Herk / Gil-Werman): with the input
+// padded by r lows on either side and cut into blocks of w, every window spans at most two blocks, so
+// its maximum is the suffix maximum of its first block's part and the prefix maximum of the second's.
+// `at(i)` gives value i of the padded sequence (n + 2r values) as whole lines of `width` floats; out
+// line i (`outStride` floats apart) = max of padded lines i .. i + 2r. Lines let the same code run
+// along rows (width 1) and down strips of columns (every column of the strip at once: sequential
+// memory, vectorised).
+template <int kFixedWidth = 0, typename At>
+void runningMax(At at, int n, int lineWidth, int r, std::vector<float>& prefix, std::vector<float>& suffix, float* out,
+                std::size_t outStride) {
+    const int width = kFixedWidth ? kFixedWidth : lineWidth; // a constant along rows: tight loops
+    const int w = 2 * r + 1, padded = n + 2 * r;
+    prefix.resize(static_cast<std::size_t>(padded) * width);
+    suffix.resize(prefix.size());
+    auto line = [width](std::vector<float>& v, int i) { return v.data() + static_cast<std::size_t>(i) * width; };
+    for (int i = 0, inBlock = 0; i < padded; ++i, inBlock = inBlock + 1 == w ? 0 : inBlock + 1) {
+        const float* x = at(i);
+        float* p = line(prefix, i);
+        if (inBlock == 0)
+            std::copy(x, x + width, p);
+        else
+            for (int k = 0; k < width; ++k)
+                p[k] = std::max(p[k - width], x[k]);
+    }
+    for (int i = padded - 1, inBlock = (padded - 1) % w; i >= 0; --i, inBlock = inBlock == 0 ? w - 1 : inBlock - 1) {
+        const float* x = at(i);
+        float* s = line(suffix, i);
+        if (inBlock == w - 1 || i == padded - 1)
+            std::copy(x, x + width, s);
+        else
+            for (int k = 0; k < width; ++k)
+                s[k] = std::max(s[k + width], x[k]);
+    }
     for (int i = 0; i < n; ++i) {
-        const int hi = std::min(n - 1, i + r);
-        for (; next <= hi; ++next) {
-            const float v = in[static_cast<std::size_t>(next) * stride];
-            if (std::isnan(v))
-                continue;
-            while (!q.empty() && in[static_cast<std::size_t>(q.back()) * stride] <= v)
-                q.pop_back();
-            q.push_back(next);
-        }
-        while (!q.empty() && q.front() < i - r)
-            q.pop_front();
-        out[static_cast<std::size_t>(i) * stride] =
-            q.empty() ? std::numeric_limits<float>::quiet_NaN() : in[static_cast<std::size_t>(q.front()) * stride];
+        const float* s = line(suffix, i);
+        const float* p = line(prefix, i + 2 * r);
+        float* o = out + i * outStride;
+        for (int k = 0; k < width; ++k)
+            o[k] = std::max(s[k], p[k]);
     }
 }
 
@@ -38,19 +60,31 @@ double maxRiseWithin(const HeightGrid& grid, double radiusM, const std::function
         return 0.0;
     const int cols = grid.cols(), rows = grid.rows();
     const int r = std::max(0, static_cast<int>(std::ceil(radiusM / grid.spacingM())));
+    // No data counts as a low (never a rise); the heights along each row, then down the columns.
     std::vector<float> h(static_cast<std::size_t>(cols) * rows), tmp(h.size()), mx(h.size());
     for (int j = 0; j < rows; ++j)
-        for (int i = 0; i < cols; ++i)
-            h[static_cast<std::size_t>(j) * cols + i] = grid.node(i, j);
-    for (int j = 0; j < rows; ++j)
-        runningMax(&h[static_cast<std::size_t>(j) * cols], &tmp[static_cast<std::size_t>(j) * cols], cols, 1, r);
-    for (int i = 0; i < cols; ++i)
-        runningMax(&tmp[i], &mx[i], rows, cols, r);
+        for (int i = 0; i < cols; ++i) {
+            const float v = grid.node(i, j);
+            h[static_cast<std::size_t>(j) * cols + i] = std::isnan(v) ? kLow : v;
+        }
+    std::vector<float> prefix, suffix, padded(static_cast<std::size_t>(cols) + 2 * r, kLow);
+    for (int j = 0; j < rows; ++j) {
+        std::copy_n(&h[static_cast<std::size_t>(j) * cols], cols, padded.begin() + r);
+        runningMax<1>([&](int i) { return &padded[static_cast<std::size_t>(i)]; }, cols, 1, r, prefix, suffix,
+                   &tmp[static_cast<std::size_t>(j) * cols], 1);
+    }
+    constexpr int kStrip = 256;
+    const std::vector<float> lowLine(kStrip, kLow);
+    for (int c0 = 0; c0 < cols; c0 += kStrip) {
+        const int width = std::min(kStrip, cols - c0);
+        runningMax([&](int j) { return j < r || j >= rows + r ? lowLine.data() : &tmp[static_cast<std::size_t>(j - r) * cols + c0]; },
+                   rows, width, r, prefix, suffix, &mx[static_cast<std::size_t>(c0)], static_cast<std::size_t>(cols));
+    }
     double rise = 0.0;
     for (int j = 0; j < rows; ++j)
         for (int i = 0; i < cols; ++i) {
             const std::size_t k = static_cast<std::size_t>(j) * cols + i;
-            if (std::isnan(h[k]) || std::isnan(mx[k]) || !(mx[k] - h[k] > rise))
+            if (h[k] == kLow || !(mx[k] - h[k] > rise))
                 continue;
             if (inside(grid.nodePosition(i, j)))
                 rise = mx[k] - h[k];

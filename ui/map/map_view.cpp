@@ -1,6 +1,7 @@
 #include "ui/map/map_view.h"
 
 #include "core/geo/geodesic.h"
+#include "core/terrain/dem.h"
 #include "ui/geo_adapter.h"
 #include "ui/map/web_mercator.h"
 #include "ui/tools/abstract_tool.h"
@@ -253,7 +254,11 @@ void MapView::dropEvent(QDropEvent* e) {
         if (url.isLocalFile()) paths << url.toLocalFile();
     if (paths.isEmpty()) return;
     e->acceptProposedAction();
-    emit filesDropped(paths);
+    QStringList others;
+    for (const QString& p : paths)
+        if (terrain::Dem::looksLikeDem(p.toStdString())) emit demDropped(p);
+        else others << p;
+    if (!others.isEmpty()) emit filesDropped(others);
 }
 
 void MapView::drawForeground(QPainter* painter, const QRectF&) {

@@ -40,8 +40,11 @@ signals:
     void cursorMoved(const geo::LonLat& p);
     void cursorLeft();
     void viewChanged();
-    // Files dropped on the map (the main window imports them).
+    // Files dropped on the map (the main window imports them), terrain models left out.
     void filesDropped(const QStringList& paths);
+    // A terrain model (DEM) dropped on the map (terrain::Dem::looksLikeDem): it becomes the
+    // mission's, as File > Terrain model does.
+    void demDropped(const QString& path);
 
 protected:
     void wheelEvent(QWheelEvent* e) override;

@@ -3,6 +3,7 @@
 
 #include "tests/core/terrain/terrain_test_util.h"
 
+#include <gdal_utils.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -219,6 +220,115 @@ TEST(Dem, AllNoDataAnUnreadableFileAndAnotherPlaceAreRefused) {
     auto d4 = Dem::open(tmp("missing.tif"));
     ASSERT_FALSE(d4.ok());
     EXPECT_NE(d4.error().message.find("missing.tif\" cannot be read"), std::string::npos) << d4.error().message;
+}
+
+// kTerrain written to `path` by `spec` around frame(), then opened.
+Result<Dem> writtenDem(const std::string& path, const test::DemSpec& spec) {
+    if (const std::string why = test::writeDem(path, frame(), kTerrain, spec); !why.empty())
+        return makeError(ErrorCode::IoError, why);
+    return Dem::open(path);
+}
+
+TEST(Dem, AGridCoarserThanTheDemReadsItAveragedDown) {
+    const auto f = frame();
+    test::DemSpec spec;
+    spec.pixel = 0.5;
+    auto dem = writtenDem(tmp("fine.tif"), spec);
+    ASSERT_TRUE(dem.ok()) << dem.error().message;
+    // 10 DEM pixels per grid step: read averaged down (5 m blocks), then bilinear on the 5 m grid,
+    // which smooths the 40 m hill's top (curvature 40 / 60² per metre) by about a decimetre.
+    auto g = dem->overRegion(f, rect(-200, -150, 200, 150), 20.0, 5.0);
+    ASSERT_TRUE(g.ok()) << g.error().message;
+    EXPECT_DOUBLE_EQ(g->spacingM(), 5.0);
+    EXPECT_LT(maxError(*g, kTerrain), 0.2);
+    // The same nodes read at the DEM's own resolution agree as closely.
+    auto fine = dem->overRegion(f, rect(-200, -150, 200, 150), 20.0, 0.5);
+    ASSERT_TRUE(fine.ok()) << fine.error().message;
+    for (const geo::Vec2& p : {geo::Vec2(0, 0), geo::Vec2(30, -20), geo::Vec2(-150, 100), geo::Vec2(180, -130)})
+        EXPECT_NEAR(*g->heightAt(p), *fine->heightAt(p), 0.15) << p.transpose();
+}
+
+// The grid GDAL's warper makes of `path` for the nodes of `g` (bilinear, 1 % of a pixel).
+std::vector<float> warped(const std::string& path, const std::string& srs, const HeightGrid& g) {
+    const double s = g.spacingM();
+    auto fmt = [](double v) { return std::to_string(v); };
+    std::vector<std::string> args = {"-of", "MEM", "-t_srs", srs, "-te", fmt(g.x0() - s / 2),
+                                     fmt(g.y0() - (g.rows() - 0.5) * s), fmt(g.x0() + (g.cols() - 0.5) * s),
+                                     fmt(g.y0() + s / 2), "-ts", std::to_string(g.cols()), std::to_string(g.rows()),
+                                     "-r", "bilinear", "-ot", "Float32", "-dstnodata", "nan", "-et", "0.01", "-q"};
+    std::vector<char*> argv;
+    for (auto& a : args)
+        argv.push_back(a.data());
+    argv.push_back(nullptr);
+    GDALDatasetUniquePtr src(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER));
+    GDALWarpAppOptions* opts = GDALWarpAppOptionsNew(argv.data(), nullptr);
+    GDALDatasetH h = GDALDataset::ToHandle(src.get());
+    GDALDatasetUniquePtr out(GDALDataset::FromHandle(GDALWarp("", nullptr, 1, &h, opts, nullptr)));
+    GDALWarpAppOptionsFree(opts);
+    std::vector<float> v(static_cast<std::size_t>(g.cols()) * g.rows());
+    if (!out || out->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, g.cols(), g.rows(), v.data(), g.cols(), g.rows(),
+                                                GDT_Float32, 0, 0, nullptr) != CE_None)
+        v.clear();
+    return v;
+}
+
+TEST(Dem, TheWindowReadAgreesWithGdalsWarper) {
+    // A UTM and a geographic DEM, and one with a no-data hole, read into the local frame: node for
+    // node as GDAL's warper.
+    const auto f = frame();
+    for (const std::string srs : {"EPSG:32632", "EPSG:4326", "hole"}) {
+        const std::string path = tmp("agree_" + srs.substr(srs.size() - 4) + ".tif");
+        test::DemSpec spec;
+        spec.srs = srs == "hole" ? "EPSG:32632" : srs;
+        spec.pixel = srs == "EPSG:4326" ? 2.0e-5 : 2.0;
+        if (srs == "hole")
+            spec.hasData = [](const geo::Vec2& p) { return (p - geo::Vec2(40, 10)).norm() > 35.0; };
+        auto dem = writtenDem(path, spec);
+        ASSERT_TRUE(dem.ok()) << dem.error().message;
+        auto g = srs == "hole" ? dem->resample(f.projString(), -220, 170, 2.0, 221, 171)
+                               : dem->overRegion(f, rect(-200, -150, 200, 150), 20.0);
+        ASSERT_TRUE(g.ok()) << g.error().message;
+        const std::vector<float> w = warped(path, f.projString(), *g);
+        ASSERT_EQ(w.size(), static_cast<std::size_t>(g->cols()) * g->rows());
+        double worst = 0.0;
+        int both = 0;
+        for (int r = 0; r < g->rows(); ++r)
+            for (int c = 0; c < g->cols(); ++c) {
+                const float a = g->node(c, r), b = w[static_cast<std::size_t>(r) * g->cols() + c];
+                EXPECT_EQ(std::isnan(a), std::isnan(b)) << srs << " node " << c << ", " << r;
+                if (!std::isnan(a) && !std::isnan(b)) {
+                    worst = std::max(worst, static_cast<double>(std::fabs(a - b)));
+                    ++both;
+                }
+            }
+        EXPECT_GT(both, g->cols() * g->rows() / 2);
+        EXPECT_LT(worst, 0.01) << srs;
+    }
+}
+
+TEST(Dem, OneBandOfHeightsLooksLikeADemAPictureDoesNot) {
+    const auto f = frame();
+    const std::string heights = tmp("heights.tif");
+    ASSERT_TRUE(writtenDem(heights, {}).ok());
+    EXPECT_TRUE(Dem::looksLikeDem(heights));
+    // An 8-bit georeferenced picture (a base map).
+    const std::string picture = tmp("picture.tif");
+    {
+        GDALDatasetUniquePtr ds(
+            GetGDALDriverManager()->GetDriverByName("GTiff")->Create(picture.c_str(), 16, 16, 3, GDT_Byte, nullptr));
+        ASSERT_TRUE(ds);
+        double gt[6] = {8.33, 1e-5, 0, 49.012, 0, -1e-5};
+        ds->SetGeoTransform(gt);
+        OGRSpatialReference srs;
+        srs.importFromEPSG(4326);
+        ds->SetSpatialRef(&srs);
+    }
+    EXPECT_FALSE(Dem::looksLikeDem(picture));
+    // .hgt and .dem by their names (opening them says what is wrong), nothing else.
+    EXPECT_TRUE(Dem::looksLikeDem(tmp("N49E008.HGT")));
+    EXPECT_TRUE(Dem::looksLikeDem(tmp("site.dem")));
+    EXPECT_FALSE(Dem::looksLikeDem(tmp("junk.tif"))); // not a raster
+    EXPECT_FALSE(Dem::looksLikeDem(tmp("area.geojson")));
 }
 
 } // namespace
