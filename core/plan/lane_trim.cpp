@@ -52,16 +52,15 @@ LaneTrimStats trimCoveredLanes(const Decomposition& d, std::vector<std::vector<C
     for (std::size_t k = 0; k < byY.size(); ++k)
         ys[k] = rects[byY[k]].y;
 
-    // Five lines across the band, and two beyond it as far as the real footprint sees past the band
-    // (ground there, in a margin say, that the neighbour lane does not fly over, only this lane sees).
+    // Lines a step apart across the band and on beyond it as far as the real footprint sees past the
+    // band (ground there, in a margin say, that the neighbour lane does not fly over, only this lane
+    // sees); the lane's own line first: in an open field it alone shows the lane needed end to end.
     const double beyond = p.neighbourReachM > 0.1 ? 0.5 * s + p.neighbourReachM - 0.05 : 0.5 * s - 0.02;
-    std::vector<double> offsets;
+    std::vector<double> offsets{0.0, -0.5 * s + 0.02, 0.5 * s - 0.02};
     {
         const int n = std::max(4, static_cast<int>(std::ceil(2.0 * beyond / h)));
         for (int i = 0; i <= n; ++i)
             offsets.push_back(-beyond + 2.0 * beyond * i / n);
-        offsets.push_back(-0.5 * s + 0.02);
-        offsets.push_back(0.5 * s - 0.02);
     }
     // What others leave uncovered of line y over [a, b]: sorted disjoint intervals.
     auto uncovered = [&](std::size_t self, double y, double a, double b) {
@@ -116,6 +115,8 @@ LaneTrimStats trimCoveredLanes(const Decomposition& d, std::vector<std::vector<C
             }
         }
         for (double o : probes) {
+            if (lo <= rects[k].x0 + h && hi >= rects[k].x1 - h)
+                break; // needed from end to end: nothing to shorten
             const double y = l.y + o;
             const auto gaps = uncovered(k, y, a, b);
             // from the left: the first needing point

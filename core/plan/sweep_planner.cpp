@@ -32,6 +32,10 @@ constexpr double kNoWayS = 1e7;
 constexpr int kNeighbours = 10;
 // Lanes flown no longer than this many trigger distances are checked for being redundant.
 constexpr double kShortLanePhotos = 4.0;
+// A direction's lanes on shared lines are planned in full when their quick estimate is at most this
+// many times that of its own lanes.
+constexpr double kSharedLinesEstimateRatio = 1.1;
+constexpr std::size_t kSharedLinesMaxLanes = 600;
 
 std::string fmt(double v, int decimals = 1) {
     char buf[64];
@@ -679,6 +683,14 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
             v.mc = base.mc;
             v.latticeY0 = y0;
             v.estimateS = estimate(v);
+            // Planned in full for the best direction, for the others only when the quick estimate
+            // (which does not see the trim) puts it near the direction's own lanes; not on large
+            // areas (many lanes), where the zones are few for the lanes and the time would double.
+            std::size_t laneCount = 0;
+            for (const auto& hs : v.heights)
+                laneCount += hs.size();
+            if (laneCount > kSharedLinesMaxLanes || (r > 0 && v.estimateS > kSharedLinesEstimateRatio * base.estimateS))
+                continue;
             variants.push_back(std::move(v));
             toPlan.push_back(&variants.back());
         }
