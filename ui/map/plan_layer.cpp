@@ -7,6 +7,7 @@
 #include "ui/planning/plan_controller.h"
 
 #include <QGraphicsScene>
+#include <QMenu>
 #include <QPainter>
 #include <QtMath>
 
@@ -478,6 +479,21 @@ void PlanLayer::setVisible(Part part, bool on) {
 
 bool PlanLayer::isVisible(Part part) const {
     return m_show[int(part)];
+}
+
+void PlanLayer::addPartActions(QMenu* menu) {
+    const std::pair<Part, QString> parts[] = {
+        {Part::Paths, tr("Flight &paths")},       {Part::Photos, tr("P&hoto points")},
+        {Part::Footprints, tr("Photo &footprints")}, {Part::Partition, tr("&Partition of the area")},
+        {Part::Grid, tr("&Grid cells")},          {Part::Sorties, tr("&Sorties (batteries)")},
+        {Part::Uncovered, tr("&Uncovered patches")}};
+    for (const auto& [part, text] : parts) {
+        auto* a = menu->addAction(text);
+        a->setCheckable(true);
+        a->setChecked(isVisible(part));
+        const auto p = part;
+        connect(a, &QAction::toggled, this, [this, p](bool on) { setVisible(p, on); });
+    }
 }
 
 void PlanLayer::setMetresPerPixel(double mpp) {
