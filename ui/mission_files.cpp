@@ -80,6 +80,12 @@ void MissionFiles::showError(const QString& title, const QString& message) {
     reportError(m_window, m_interactive, title, message);
 }
 
+bool MissionFiles::fail(QString* error, const QString& title, const QString& why) {
+    if (error) *error = why;
+    showError(title, why);
+    return false;
+}
+
 void MissionFiles::showStatus(const QString& message, int timeoutMs) {
     m_window->statusBar()->showMessage(message, timeoutMs);
 }
@@ -160,11 +166,8 @@ void MissionFiles::startup(const QString& missionPath) {
 
 bool MissionFiles::openMission(const QString& path, QString* error) {
     QString why;
-    if (!m_doc->load(path, &why)) {
-        if (error) *error = why;
-        showError(tr("Open mission"), why);
-        return false;
-    }
+    if (!m_doc->load(path, &why))
+        return fail(error, tr("Open mission"), why);
     addRecentFile(m_doc->filePath());
     emit missionShown();
     showStatus(tr("Opened %1").arg(QFileInfo(path).fileName()), 5000);
@@ -176,16 +179,11 @@ bool MissionFiles::openDemoMission(QString* error) {
     const QString path = data + QStringLiteral("/demo/demo_mission.json");
     if (data.isEmpty() || !QFileInfo::exists(path)) {
         const QString why = tr("The demo mission was not found (looked for demo/demo_mission.json in the data directory).");
-        if (error) *error = why;
-        showError(tr("Open demo mission"), why);
-        return false;
+        return fail(error, tr("Open demo mission"), why);
     }
     QString why;
-    if (!m_doc->load(path, &why)) {
-        if (error) *error = why;
-        showError(tr("Open demo mission"), why);
-        return false;
-    }
+    if (!m_doc->load(path, &why))
+        return fail(error, tr("Open demo mission"), why);
     // The bundled file is read-only data: saving asks for a new place.
     m_doc->reset(m_doc->missionWithEditedRoutes(), QString());
     emit missionShown();
@@ -196,11 +194,8 @@ bool MissionFiles::saveMission(const QString& chosen, QString* error) {
     // Every mission file gets its extension, so that File > Open shows it again.
     const QString path = withMissionExtension(chosen);
     QString why;
-    if (!m_doc->save(path, &why)) {
-        if (error) *error = why;
-        showError(tr("Save mission"), why);
-        return false;
-    }
+    if (!m_doc->save(path, &why))
+        return fail(error, tr("Save mission"), why);
     addRecentFile(m_doc->filePath());
     showStatus(tr("Saved %1").arg(QFileInfo(path).fileName()), 5000);
     return true;
@@ -251,9 +246,7 @@ bool MissionFiles::maybeSave() {
 int MissionFiles::importAreas(const QString& path, ImportRole role, QString* error) {
     auto imported = io::importPolygons(path.toStdString());
     if (!imported) {
-        const QString why = QString::fromStdString(imported.error().message);
-        if (error) *error = why;
-        showError(tr("Import"), why);
+        fail(error, tr("Import"), QString::fromStdString(imported.error().message));
         return 0;
     }
     std::vector<io::ImportedPolygon> polys = std::move(imported).value();
@@ -315,13 +308,10 @@ int MissionFiles::importAreas(const QString& path, ImportRole role, QString* err
     return count;
 }
 
-
 int MissionFiles::openWaypointFile(const QString& path, int assignTo, QString* error) {
     auto imported = io::importWaypoints(path.toStdString());
     if (!imported) {
-        const QString why = QString::fromStdString(imported.error().message);
-        if (error) *error = why;
-        showError(tr("Open waypoint file"), why);
+        fail(error, tr("Open waypoint file"), QString::fromStdString(imported.error().message));
         return 0;
     }
     const io::ImportedWaypoints file = std::move(imported).value();
@@ -330,8 +320,7 @@ int MissionFiles::openWaypointFile(const QString& path, int assignTo, QString* e
         if (!r.home) r.home = file.home;
     if (routes.empty()) {
         const QString why = tr("%1 holds no waypoints.").arg(QFileInfo(path).fileName());
-        if (error) *error = why;
-        showError(tr("Open waypoint file"), why);
+        fail(error, tr("Open waypoint file"), why);
         return 0;
     }
     const auto& existing = m_doc->routes();

@@ -75,6 +75,8 @@ signals:
 private:
     void addRecentFile(const QString& path);
     void showError(const QString& title, const QString& message);
+    // `why` into *error (when asked for) and shown; false, what the caller then returns.
+    bool fail(QString* error, const QString& title, const QString& why);
     void showStatus(const QString& message, int timeoutMs);
 
     QMainWindow* m_window;
