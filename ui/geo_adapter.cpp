@@ -2,6 +2,8 @@
 
 #include "ui/map/web_mercator.h"
 
+#include <cmath>
+
 namespace pf::ui {
 
 QGeoCoordinate toQGeo(const geo::LonLat& p) { return QGeoCoordinate(p.lat, p.lon); }
@@ -50,6 +52,14 @@ geo::GeoRing ringFromScene(const QPolygonF& poly) {
     out.reserve(std::size_t(poly.size()));
     for (const auto& p : poly) out.push_back(fromScene(p));
     return out;
+}
+
+QString formatLonLat(const geo::LonLat& p) {
+    return QStringLiteral("%1° %2, %3° %4")
+        .arg(std::abs(p.lat), 0, 'f', 6)
+        .arg(p.lat >= 0 ? QLatin1Char('N') : QLatin1Char('S'))
+        .arg(std::abs(p.lon), 0, 'f', 6)
+        .arg(p.lon >= 0 ? QLatin1Char('E') : QLatin1Char('W'));
 }
 
 } // namespace pf::ui

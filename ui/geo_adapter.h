@@ -7,6 +7,7 @@
 #include <QGeoPolygon>
 #include <QPointF>
 #include <QPolygonF>
+#include <QString>
 
 namespace pf::ui {
 
@@ -22,5 +23,8 @@ QPointF toScene(const geo::LonLat& p);
 geo::LonLat fromScene(const QPointF& p);
 QPolygonF toScene(const geo::GeoRing& ring);
 geo::GeoRing ringFromScene(const QPolygonF& poly);
+
+// "49.012345° N, 8.330000° E": a position as the status bar shows it (six decimals, about 0.1 m).
+QString formatLonLat(const geo::LonLat& p);
 
 } // namespace pf::ui

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/io/catalog.h"
+#include "ui/mission_files.h"
 
 #include <QMainWindow>
 
@@ -10,14 +11,10 @@
 
 class QAction;
 class QActionGroup;
-class QComboBox;
-class QDoubleSpinBox;
+class QDockWidget;
 class QGraphicsScene;
 class QLabel;
-class QListWidget;
 class QMenu;
-class QProgressBar;
-class QPushButton;
 
 namespace pf::ui {
 
@@ -34,6 +31,7 @@ class TerrainController;
 class PlanController;
 class PlanLayer;
 class PlanProgressWidget;
+class PlanningToolBar;
 class ProblemsPanel;
 class StatisticsPanel;
 class WaypointPanel;
@@ -69,30 +67,24 @@ public:
     AbstractTool* tool(ToolId id) const;
     void setTool(ToolId id);
 
-    // What to show at start: a recovered autosave (asks), the given mission, or on first start the demo.
+    // File work is MissionFiles' (see there); these forward to it.
     void startup(const QString& missionPath);
     bool openMission(const QString& path, QString* error = nullptr);
     bool openDemoMission(QString* error = nullptr);
     bool saveMission(const QString& path, QString* error = nullptr);
     void newMission();
 
-    enum class ImportRole { Ask, Area, NoFlyZones };
-    // Imports polygons: with no area yet, the largest becomes the area and the others no-fly zones;
-    // otherwise the user is asked (Ask) or `role` decides. One undo step. Returns polygons imported.
+    using ImportRole = pf::ui::ImportRole;
     int importAreas(const QString& path, ImportRole role = ImportRole::Ask, QString* error = nullptr);
 
     // "demo", "osm" or a raster file path.
     bool setBaseMap(const QString& id, QString* error = nullptr);
     QString baseMapId() const { return m_baseMapId; }
 
-    // Plan button / F5: plans now; when routes were edited by hand, asks first (interactive windows)
-    // and otherwise keeps the edits until the user replaces them from the notice.
+    // Plan button / F5 (see PlanningToolBar::planNow).
     void planNow();
     // The new plan that waited for the user replaces the edited routes.
     void replaceEditedPaths();
-    // Reads an exported (and maybe edited) waypoint file and puts its routes beside the mission:
-    // route k of the file goes to the document's route `assignTo + k` (-1: matched by aircraft name or
-    // file name, else asked, else appended). One undo step. Returns the number of routes loaded.
     int openWaypointFile(const QString& path, int assignTo = -1, QString* error = nullptr);
     void showExportDialog();
 
@@ -109,15 +101,13 @@ protected:
 private:
     void buildActions();
     void buildDocks();
+    // A dock (object name `name`) holding `widget`, added to `area`.
+    QDockWidget* addDock(const QString& title, const QString& name, QWidget* widget, Qt::DockWidgetArea area);
     void updateTitle();
-    void addRecentFile(const QString& path);
-    void rebuildRecentMenu();
-    bool maybeSave();
     void showError(const QString& title, const QString& message);
     void openDropped(const QStringList& paths);
     void onViewChanged();
     void buildPlanning();
-    void syncPlannerControls();
 
     bool m_interactive;
     MissionDocument* m_doc;
@@ -127,6 +117,7 @@ private:
     MissionLayer* m_layer;
     GroundStation* m_ground;
     std::unique_ptr<Autosave> m_autosave;
+    MissionFiles* m_files = nullptr;
     io::Catalog m_catalog;
     AircraftPanel* m_aircraft = nullptr;
     MissionPanel* m_missionPanel = nullptr;
@@ -146,15 +137,8 @@ private:
     WaypointPanel* m_waypoints = nullptr;
     StatisticsPanel* m_statistics = nullptr;
     ProblemsPanel* m_problemList = nullptr;
-    QComboBox* m_plannerBox = nullptr;
-    QDoubleSpinBox* m_angleBox = nullptr;
+    PlanningToolBar* m_planning = nullptr;
     PlanProgressWidget* m_progress = nullptr;
-    QAction* m_planAct = nullptr;
-    QAction* m_cancelAct = nullptr;
-    QAction* m_autoAct = nullptr;
-    QAction* m_keepInsideAct = nullptr;
-    QWidget* m_notice = nullptr;
-    QLabel* m_noticeText = nullptr;
     MosaicController* m_mosaic = nullptr;
     TerrainController* m_terrain = nullptr;
 };

@@ -1,7 +1,7 @@
 #include "core/fleet/photo_dedup.h"
 
 #include "core/geo/polygon_ops.h"
-#include "core/plan/coverage_check.h"
+#include "core/sensor/footprint.h"
 
 #include <algorithm>
 #include <cmath>
@@ -84,7 +84,7 @@ Result<DedupReport> dropDuplicatePhotos(std::vector<AircraftPhotos>& fleet) {
             if (w.kind != route::WaypointKind::Photo)
                 continue;
             Photo p{static_cast<int>(k), static_cast<int>(i),
-                    geo::Polygon{plan::footprintRing({w.pos, w.headingDeg, fleet[k].realAcrossM, fleet[k].realAlongM}), {}},
+                    geo::Polygon{sensor::footprintRing({w.pos, w.headingDeg, fleet[k].realAcrossM, fleet[k].realAlongM}), {}},
                     {}};
             p.box = geo::bounds(p.real);
             idOf[k][i] = static_cast<int>(photos.size());
@@ -106,7 +106,7 @@ Result<DedupReport> dropDuplicatePhotos(std::vector<AircraftPhotos>& fleet) {
                 continue;
             const auto& w = fleet[k].waypoints[i];
             const geo::Polygon eff{
-                plan::footprintRing({w.pos, w.headingDeg, fleet[k].effectiveAcrossM, fleet[k].effectiveAlongM}), {}};
+                sensor::footprintRing({w.pos, w.headingDeg, fleet[k].effectiveAcrossM, fleet[k].effectiveAlongM}), {}};
             const geo::Box effBox = geo::bounds(eff);
             geo::MultiPolygon cover;
             std::vector<int> coverIds;

@@ -72,25 +72,6 @@ double pointSegDist2(const Vec2& p, const Vec2& a, const Vec2& b) {
     return (a + t * ab - p).squaredNorm();
 }
 
-// The nearest point to p on any ring of polys.
-Vec2 nearestOnBoundary(const geo::MultiPolygon& polys, const Vec2& p) {
-    Vec2 best = p;
-    double bestD = std::numeric_limits<double>::infinity();
-    for (const auto& poly : polys)
-        forEachEdge(poly, [&](const Vec2& a, const Vec2& b) {
-            const Vec2 ab = b - a;
-            const double len2 = ab.squaredNorm();
-            const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-            const Vec2 q = a + t * ab;
-            const double d = (q - p).squaredNorm();
-            if (d < bestD) {
-                bestD = d;
-                best = q;
-            }
-        });
-    return best;
-}
-
 std::string fmt(double v, int decimals = 1) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.*f", decimals, v);

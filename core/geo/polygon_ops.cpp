@@ -168,6 +168,31 @@ double distanceToBoundary(const Polygon& poly, const Vec2& p) {
     return d;
 }
 
+Vec2 nearestOnBoundary(const MultiPolygon& polys, const Vec2& p) {
+    Vec2 best = p;
+    double bestD = std::numeric_limits<double>::infinity();
+    auto ring = [&](const Ring& r) {
+        for (std::size_t i = 0; i < r.size(); ++i) {
+            const Vec2& a = r[i];
+            const Vec2 ab = r[(i + 1) % r.size()] - a;
+            const double len2 = ab.squaredNorm();
+            const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+            const Vec2 q = a + t * ab;
+            const double d = (q - p).squaredNorm();
+            if (d < bestD) {
+                bestD = d;
+                best = q;
+            }
+        }
+    };
+    for (const auto& poly : polys) {
+        ring(poly.outer);
+        for (const auto& h : poly.holes)
+            ring(h);
+    }
+    return best;
+}
+
 double distanceTo(const Polygon& poly, const Vec2& p) {
     return contains(poly, p) ? 0.0 : distanceToBoundary(poly, p);
 }

@@ -18,6 +18,9 @@ bool contains(const MultiPolygon& polys, const Vec2& p);
 // Distance from p to the nearest edge of any ring of the polygon (>= 0, inside or outside).
 double distanceToBoundary(const Polygon& poly, const Vec2& p);
 
+// The nearest point to p on any ring (outer or hole) of polys; p itself when polys is empty.
+Vec2 nearestOnBoundary(const MultiPolygon& polys, const Vec2& p);
+
 // Distance from p to the polygon (0 inside).
 double distanceTo(const Polygon& poly, const Vec2& p);
 double distanceTo(const MultiPolygon& polys, const Vec2& p);

@@ -29,16 +29,21 @@ std::string describeJsonError(const std::string& text, const std::string& gdalMe
     if (pos == std::string::npos)
         return msg;
     const std::size_t offset = std::strtoul(msg.c_str() + pos + marker.size(), nullptr, 10);
-    std::size_t line = 1, col = 1;
+    const TextPosition at = textPositionAt(text, offset);
+    return msg.substr(0, pos) + "at line " + std::to_string(at.line) + ", column " + std::to_string(at.column);
+}
+
+TextPosition textPositionAt(const std::string& text, std::size_t offset) {
+    TextPosition at;
     for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
         if (text[i] == '\n') {
-            ++line;
-            col = 1;
+            ++at.line;
+            at.column = 1;
         } else {
-            ++col;
+            ++at.column;
         }
     }
-    return msg.substr(0, pos) + "at line " + std::to_string(line) + ", column " + std::to_string(col);
+    return at;
 }
 
 void JsonReader::fail(const std::string& path, const std::string& what) {

@@ -9,6 +9,7 @@
 
 #include <cpl_json.h>
 
+#include <cstddef>
 #include <initializer_list>
 #include <optional>
 #include <string>
@@ -21,6 +22,13 @@ Status loadJsonText(CPLJSONDocument& doc, const std::string& text, const std::st
 
 // Turns GDAL's JSON parser message ("... (at offset 11)") into words with a line and column.
 std::string describeJsonError(const std::string& text, const std::string& gdalMessage);
+
+// The line and column (both from 1) of byte `offset` of `text`, as people who edit the file count.
+struct TextPosition {
+    std::size_t line = 1;
+    std::size_t column = 1;
+};
+TextPosition textPositionAt(const std::string& text, std::size_t offset);
 
 // Reads fields of one document; readers of a format derive from it and add their own objects.
 class JsonReader {

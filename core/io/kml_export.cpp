@@ -1,6 +1,5 @@
 #include "core/io/kml_export.h"
 
-#include "core/geo/geodesic.h"
 #include "core/io/waypoint_format_util.h"
 #include "core/mission/aircraft_naming.h"
 
@@ -122,17 +121,6 @@ std::string describe(const route::Waypoint& w, std::optional<double> homeElevati
 }
 
 } // namespace
-
-geo::GeoRing footprintCorners(geo::LonLat centre, double headingDeg, const sensor::Footprint& fp) {
-    const double along = fp.shortSideM / 2.0, across = fp.longSideM / 2.0;
-    const double dist = std::hypot(along, across);
-    const double a = std::atan2(across, along) * 180.0 / kPi;
-    geo::GeoRing ring;
-    for (double az :
-         {headingDeg + a, headingDeg + 180.0 - a, headingDeg + 180.0 + a, headingDeg - a})
-        ring.push_back(geo::geodesicDirect(centre, az, dist));
-    return ring;
-}
 
 Status writeKml(const ExportContext& ctx, const std::vector<std::size_t>& routeIndices,
                 const std::string& path) {

@@ -5,6 +5,7 @@
 
 #include "core/io/export_context.h"
 #include "core/result.h"
+#include "core/sensor/footprint.h"
 
 #include <cstddef>
 #include <string>
@@ -12,10 +13,8 @@
 
 namespace pf::io {
 
-// The four ground corners of a photo taken at `centre` with the sensor's long side across the
-// direction of flight `headingDeg` (as the planner lays out the tracks), in ring order.
-geo::GeoRing footprintCorners(geo::LonLat centre, double headingDeg,
-                              const sensor::Footprint& footprint);
+// The photos' footprints are drawn as sensor/footprint lays them out.
+using sensor::footprintCorners;
 
 // Writes the given routes of ctx (one route: a per-aircraft file; all: the combined file).
 Status writeKml(const ExportContext& ctx, const std::vector<std::size_t>& routeIndices,

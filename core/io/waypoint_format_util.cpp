@@ -1,5 +1,7 @@
 #include "core/io/waypoint_format_util.h"
 
+#include "core/io/json_reader.h"
+
 #include <cpl_error.h>
 #include <cpl_vsi.h>
 
@@ -176,15 +178,7 @@ Result<CPLJSONObject> parseJson(const std::string& rawText, const std::string& s
         if (auto p = msg.find("at offset "); p != std::string::npos)
             offset =
                 std::min<std::size_t>(std::strtoul(msg.c_str() + p + 10, nullptr, 10), text.size());
-        std::size_t line = 1, col = 1;
-        for (std::size_t i = 0; i < offset; ++i) {
-            if (text[i] == '\n') {
-                ++line;
-                col = 1;
-            } else {
-                ++col;
-            }
-        }
+        const TextPosition at = textPositionAt(text, offset);
         std::string why = msg;
         if (auto p = why.find("JSON parsing error: "); p != std::string::npos)
             why = why.substr(p + 20);
@@ -194,8 +188,8 @@ Result<CPLJSONObject> parseJson(const std::string& rawText, const std::string& s
             why = "not valid JSON";
         else if (why == "continue") // json-c's word for input that stops mid-document
             why = "the file ends before the JSON is complete";
-        return makeError(ErrorCode::ParseError, source + ": line " + std::to_string(line) +
-                                                    ", column " + std::to_string(col) +
+        return makeError(ErrorCode::ParseError, source + ": line " + std::to_string(at.line) +
+                                                    ", column " + std::to_string(at.column) +
                                                     ": invalid JSON (" + why + ")");
     }
     CPLJSONObject root = doc.GetRoot();

@@ -1,6 +1,6 @@
 #include "core/mission/plan_geojson.h"
 
-#include "core/plan/coverage_check.h"
+#include "core/sensor/footprint.h"
 
 #include <atomic>
 #include <cmath>
@@ -170,7 +170,7 @@ bool writePlanGeoJson(const MissionPlan& plan, std::ostream& out, const PlanGeoJ
             for (const auto& lw : a.localWaypoints) {
                 if (lw.kind != route::WaypointKind::Photo)
                     continue;
-                const geo::Ring r = plan::footprintRing(
+                const geo::Ring r = sensor::footprintRing(
                     {lw.pos, lw.headingDeg, a.footprint.real.longSideM, a.footprint.real.shortSideM});
                 w.begin("\"kind\":\"footprint\"," + who + ",\"seq\":" + std::to_string(++seq), "Polygon");
                 out << '[';

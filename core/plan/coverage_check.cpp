@@ -2,8 +2,8 @@
 
 #include "core/job_scope.h"
 
+#include "core/geo/no_fly_field.h"
 #include "core/geo/polygon_ops.h"
-#include "core/route/safety.h"
 
 #include <algorithm>
 #include <cmath>
@@ -62,14 +62,6 @@ template <class F> void scanRings(const Raster& ras, const std::vector<const geo
 }
 
 } // namespace
-
-geo::Ring footprintRing(const PhotoFootprint& f) {
-    const double h = f.headingDeg * M_PI / 180.0;
-    const geo::Vec2 along(std::sin(h), std::cos(h));  // direction of flight
-    const geo::Vec2 right(std::cos(h), -std::sin(h)); // across the track, to the right
-    const geo::Vec2 a = 0.5 * f.alongM * along, c = 0.5 * f.acrossM * right;
-    return {f.pos - a - c, f.pos - a + c, f.pos + a + c, f.pos + a - c};
-}
 
 Result<CoverageReport> checkCoverage(const geo::MultiPolygon& admissible, const std::vector<PhotoFootprint>& photos,
                                      const CoverageCheckOptions& opt, const std::vector<geo::Ring>* outlines) {
@@ -216,7 +208,7 @@ NoFlyViolations countNoFlyViolations(const std::vector<std::vector<geo::Vec2>>& 
                                      const std::vector<geo::Polygon>& noFly, double marginM) {
     NoFlyViolations v;
     // The final check's threshold, without the planner's slack (geo/no_fly_field.h).
-    const route::NoFlyField field = route::NoFlyField::forCheck(noFly, marginM);
+    const geo::NoFlyField field = geo::NoFlyField::forCheck(noFly, marginM);
     if (field.empty())
         return v;
     for (const auto& path : paths)

@@ -4,23 +4,16 @@
 
 #include "core/geo/types.h"
 #include "core/result.h"
+#include "core/sensor/footprint.h"
 
 #include <cstddef>
 #include <vector>
 
 namespace pf::plan {
 
-// One photo's ground footprint: a rectangle centred on the waypoint, its long side across the track
-// (paper 001: the sensor's long side is orthogonal to the direction of flight).
-struct PhotoFootprint {
-    geo::Vec2 pos{0, 0};
-    double headingDeg = 0.0; // direction of flight, clockwise from north
-    double acrossM = 0.0;    // side across the track
-    double alongM = 0.0;     // side along the track
-};
-
-// The footprint's corners in local metres, counter-clockwise.
-geo::Ring footprintRing(const PhotoFootprint& f);
+// The check takes the photos' footprints as sensor/footprint lays them out.
+using sensor::PhotoFootprint;
+using sensor::footprintRing;
 
 struct CoverageCheckOptions {
     // Pixel side in metres; 0 picks min(0.5 m, shortest footprint side / 20).

@@ -3,7 +3,7 @@
 #include "core/job_scope.h"
 
 #include "core/geo/polygon_ops.h"
-#include "core/plan/coverage_check.h"
+#include "core/sensor/footprint.h"
 #include "core/route/lanes.h"
 
 #include <algorithm>
@@ -140,7 +140,7 @@ private:
 };
 
 geo::Polygon rectangle(const Vec2& centre, double headingDeg, double acrossM, double alongM) {
-    return {plan::footprintRing(plan::PhotoFootprint{centre, headingDeg, acrossM, alongM}), {}};
+    return {sensor::footprintRing(sensor::PhotoFootprint{centre, headingDeg, acrossM, alongM}), {}};
 }
 
 } // namespace

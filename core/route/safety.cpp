@@ -3,7 +3,7 @@
 #include "core/job_scope.h"
 
 #include "core/geo/polygon_ops.h"
-#include "core/plan/coverage_check.h"
+#include "core/sensor/footprint.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,35 +16,6 @@ namespace pf::route {
 namespace {
 
 using geo::Vec2;
-
-template <class F> void forEachEdge(const geo::Polygon& poly, F f) {
-    auto ring = [&](const geo::Ring& r) {
-        for (std::size_t i = 0; i < r.size(); ++i)
-            f(r[i], r[(i + 1) % r.size()]);
-    };
-    ring(poly.outer);
-    for (const auto& h : poly.holes)
-        ring(h);
-}
-
-// The nearest point to p on any ring of polys.
-Vec2 nearestOnBoundary(const geo::MultiPolygon& polys, const Vec2& p) {
-    Vec2 best = p;
-    double bestD = std::numeric_limits<double>::infinity();
-    for (const auto& poly : polys)
-        forEachEdge(poly, [&](const Vec2& a, const Vec2& b) {
-            const Vec2 ab = b - a;
-            const double len2 = ab.squaredNorm();
-            const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-            const Vec2 q = a + t * ab;
-            const double d = (q - p).squaredNorm();
-            if (d < bestD) {
-                bestD = d;
-                best = q;
-            }
-        });
-    return best;
-}
 
 std::string fmt(double v, int decimals = 1) {
     char buf[64];
@@ -135,7 +106,7 @@ Result<std::vector<LocalWaypoint>> keepInsideArea(const std::vector<LocalWaypoin
         return makeError(ErrorCode::InvalidInput, "The area shrunk by the inside margin of " + fmt(marginM) +
                                                       " m is empty: reduce the margin.");
     auto rect = [](const Vec2& p, double h, double across, double along) {
-        return geo::Polygon{plan::footprintRing(plan::PhotoFootprint{p, h, across, along}), {}};
+        return geo::Polygon{sensor::footprintRing(sensor::PhotoFootprint{p, h, across, along}), {}};
     };
     std::vector<LocalWaypoint> out = waypoints;
     for (std::size_t i = 0; i < out.size(); ++i) {
@@ -143,7 +114,7 @@ Result<std::vector<LocalWaypoint>> keepInsideArea(const std::vector<LocalWaypoin
         if (w.kind == WaypointKind::Transit || geo::contains(inner, w.pos))
             continue;
         const Vec2 from = w.pos;
-        const Vec2 target = nearestOnBoundary(inner, from);
+        const Vec2 target = geo::nearestOnBoundary(inner, from);
         if (w.kind == WaypointKind::Turn) {
             if (finder.field().pointIsSafe(target)) {
                 w.pos = target;

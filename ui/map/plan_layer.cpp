@@ -2,11 +2,13 @@
 
 #include "core/geo/local_frame.h"
 #include "core/mission/aircraft_naming.h"
+#include "core/sensor/footprint.h"
 #include "ui/geo_adapter.h"
 #include "ui/mission_document.h"
 #include "ui/planning/plan_controller.h"
 
 #include <QGraphicsScene>
+#include <QMenu>
 #include <QPainter>
 #include <QtMath>
 
@@ -412,16 +414,12 @@ void PlanLayer::rebuildRoutes() {
                     if (w.kind != route::WaypointKind::Photo)
                         continue;
                     const double k = w.altitudeM / ap.altitudeM;
-                    const double across = ap.footprint.real.longSideM * k / 2,
-                                 along = ap.footprint.real.shortSideM * k / 2;
-                    const double h = qDegreesToRadians(w.headingDeg);
-                    const geo::Vec2 u{std::sin(h), std::cos(h)}, n{std::cos(h), -std::sin(h)};
-                    const geo::Vec2 c = plan->frame->toLocal(w.position);
+                    const sensor::PhotoFootprint f{plan->frame->toLocal(w.position), w.headingDeg,
+                                                   ap.footprint.real.longSideM * k,
+                                                   ap.footprint.real.shortSideM * k};
                     QPolygonF q;
-                    static const int signs[4][2] = {{1, 1}, {1, -1}, {-1, -1}, {-1, 1}};
-                    for (const auto& sg : signs)
-                        q << toScene(
-                            plan->frame->toGeo(c + u * (sg[0] * along) + n * (sg[1] * across)));
+                    for (const auto& corner : sensor::footprintRing(f))
+                        q << toScene(plan->frame->toGeo(corner));
                     q << q.first();
                     footprints.addPolygon(q);
                     ++m_footprintCount;
@@ -478,6 +476,21 @@ void PlanLayer::setVisible(Part part, bool on) {
 
 bool PlanLayer::isVisible(Part part) const {
     return m_show[int(part)];
+}
+
+void PlanLayer::addPartActions(QMenu* menu) {
+    const std::pair<Part, QString> parts[] = {
+        {Part::Paths, tr("Flight &paths")},       {Part::Photos, tr("P&hoto points")},
+        {Part::Footprints, tr("Photo &footprints")}, {Part::Partition, tr("&Partition of the area")},
+        {Part::Grid, tr("&Grid cells")},          {Part::Sorties, tr("&Sorties (batteries)")},
+        {Part::Uncovered, tr("&Uncovered patches")}};
+    for (const auto& [part, text] : parts) {
+        auto* a = menu->addAction(text);
+        a->setCheckable(true);
+        a->setChecked(isVisible(part));
+        const auto p = part;
+        connect(a, &QAction::toggled, this, [this, p](bool on) { setVisible(p, on); });
+    }
 }
 
 void PlanLayer::setMetresPerPixel(double mpp) {

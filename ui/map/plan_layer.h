@@ -17,6 +17,7 @@
 #include <vector>
 
 class QGraphicsScene;
+class QMenu;
 
 namespace pf::ui {
 
@@ -83,6 +84,8 @@ public:
     enum class Part { Paths, Photos, Footprints, Partition, Grid, Sorties, Uncovered };
     void setVisible(Part part, bool on);
     bool isVisible(Part part) const;
+    // One checkable action per part (Flight paths, Photo points, …) into `menu`, toggling it.
+    void addPartActions(QMenu* menu);
 
     void setMetresPerPixel(double mpp);
 

@@ -27,6 +27,10 @@ ProblemsPanel::ProblemsPanel(MissionDocument* doc, MissionLayer* shapes, PlanCon
         default: break;
         }
     });
+    // What an item is about is selected on the map.
+    connect(this, &ProblemsPanel::areaActivated, this, [this] { m_shapes->select(ShapeRef::area()); });
+    connect(this, &ProblemsPanel::noFlyZoneActivated, this, [this](int i) { m_shapes->select(ShapeRef::noFly(i)); });
+    connect(this, &ProblemsPanel::waypointActivated, this, [this](int r, int w) { m_plan->selectWaypoints(r, {w}); });
     connect(m_shapes, &MissionLayer::problemsChanged, this, &ProblemsPanel::refresh);
     connect(m_planner, &PlanController::planChanged, this, &ProblemsPanel::refresh);
     connect(m_plan, &PlanLayer::routeProblemsChanged, this, &ProblemsPanel::refresh);

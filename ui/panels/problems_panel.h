@@ -23,6 +23,7 @@ public:
     void refresh();
 
 signals:
+    // An item was clicked; the panel has selected what it is about on the map.
     void areaActivated();
     void noFlyZoneActivated(int zone);
     void waypointActivated(int route, int waypoint);

@@ -1,0 +1,124 @@
+#include "ui/planning/planning_toolbar.h"
+
+#include "core/mission/planner_kinds.h"
+#include "ui/commands/set_planner_options_command.h"
+#include "ui/mission_document.h"
+#include "ui/planning/plan_controller.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QMessageBox>
+#include <QSettings>
+
+namespace pf::ui {
+
+namespace {
+QIcon icon(const char* name) { return QIcon(QStringLiteral(":/icons/%1.svg").arg(QLatin1String(name))); }
+} // namespace
+
+PlanningToolBar::PlanningToolBar(MissionDocument* doc, PlanController* planner, QAction* exportRoutes,
+                                 bool interactive, QWidget* parent)
+    : QToolBar(tr("Planning"), parent), m_doc(doc), m_planner(planner), m_interactive(interactive) {
+    setObjectName(QStringLiteral("PlanningToolBar"));
+    setIconSize(QSize(22, 22));
+
+    m_plan = new QAction(icon("plan"), tr("&Plan now"), this);
+    connect(m_plan, &QAction::triggered, this, &PlanningToolBar::planNow);
+    m_plan->setShortcut(QKeySequence(Qt::Key_F5));
+    m_plan->setToolTip(tr("Plan the mission (F5)"));
+    m_cancel = new QAction(icon("cancel"), tr("&Cancel planning"), this);
+    connect(m_cancel, &QAction::triggered, m_planner, &PlanController::cancel);
+    m_cancel->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F5));
+    m_cancel->setEnabled(false);
+    connect(m_planner, &PlanController::busyChanged, m_cancel, &QAction::setEnabled);
+    m_autoPlan = new QAction(tr("Plan &automatically after edits"), this);
+    m_autoPlan->setCheckable(true);
+    m_autoPlan->setChecked(QSettings().value(QStringLiteral("plan/auto"), true).toBool());
+    m_planner->setAutoPlan(m_autoPlan->isChecked());
+    connect(m_autoPlan, &QAction::toggled, this, [this](bool on) {
+        m_planner->setAutoPlan(on);
+        QSettings().setValue(QStringLiteral("plan/auto"), on);
+    });
+
+    m_plannerBox = new QComboBox;
+    m_plannerBox->setObjectName(QStringLiteral("PlannerBox"));
+    m_plannerBox->setToolTip(tr("Coverage planner"));
+    for (const auto& k : mission::plannerKinds()) {
+        m_plannerBox->addItem(plannerName(k.kind), int(k.kind));
+        m_plannerBox->setItemData(m_plannerBox->count() - 1, QString::fromLatin1(k.summary), Qt::ToolTipRole);
+    }
+    // Keep inside area, one click away: waypoints stay inside the area (as far as each photo still
+    // sees the ground it is responsible for).
+    m_keepInside = new QAction(icon("keep_inside"), tr("Keep inside area"), this);
+    m_keepInside->setObjectName(QStringLiteral("KeepInsideAction"));
+    m_keepInside->setCheckable(true);
+    m_keepInside->setToolTip(
+        tr("Keep inside area: off, lanes end where the photos cover the boundary, so waypoints may lie "
+           "outside the area; on, waypoints stay within it"));
+    connect(m_keepInside, &QAction::triggered, this, [this](bool on) {
+        auto o = m_doc->mission().options;
+        if (o.keepInsideArea == on) return;
+        o.keepInsideArea = on;
+        m_doc->undoStack()->push(new SetPlannerOptionsCommand(
+            m_doc, o, on ? tr("Keep waypoints inside the area") : tr("Let lanes end beyond the area")));
+    });
+    m_angleBox = new QDoubleSpinBox;
+    m_angleBox->setObjectName(QStringLiteral("GridAngleBox"));
+    m_angleBox->setToolTip(tr("Grid angle in degrees from east; Auto tries many angles and keeps the fastest plan"));
+    m_angleBox->setRange(-1, 179);
+    m_angleBox->setDecimals(0);
+    m_angleBox->setSingleStep(5);
+    m_angleBox->setSuffix(QStringLiteral("°"));
+    m_angleBox->setSpecialValueText(tr("Auto angle"));
+    m_angleBox->setKeyboardTracking(false);
+    connect(m_plannerBox, QOverload<int>::of(&QComboBox::activated), this, [this](int i) {
+        auto o = m_doc->mission().options;
+        const auto kind = mission::PlannerKind(m_plannerBox->itemData(i).toInt());
+        if (o.planner == kind) return;
+        o.planner = kind;
+        m_doc->undoStack()->push(new SetPlannerOptionsCommand(m_doc, o, tr("Planner %1").arg(plannerName(kind))));
+    });
+    connect(m_angleBox, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        auto o = m_doc->mission().options;
+        std::optional<double> angle;
+        if (v >= 0) angle = v;
+        if (o.gridAngleDeg == angle) return;
+        o.gridAngleDeg = angle;
+        m_doc->undoStack()->push(new SetPlannerOptionsCommand(
+            m_doc, o, angle ? tr("Grid angle %1°").arg(*angle, 0, 'f', 0) : tr("Automatic grid angle")));
+    });
+    connect(m_doc, &MissionDocument::optionsChanged, this, &PlanningToolBar::syncControls);
+    connect(m_doc, &MissionDocument::missionReset, this, &PlanningToolBar::syncControls);
+
+    addAction(m_plan);
+    addAction(m_cancel);
+    addWidget(m_plannerBox);
+    addWidget(m_angleBox);
+    addAction(m_keepInside);
+    addAction(exportRoutes);
+    syncControls();
+}
+
+void PlanningToolBar::syncControls() {
+    const auto& o = m_doc->mission().options;
+    const QSignalBlocker b1(m_plannerBox), b2(m_angleBox);
+    m_plannerBox->setCurrentIndex(m_plannerBox->findData(int(o.planner)));
+    m_keepInside->setChecked(o.keepInsideArea);
+    m_angleBox->setValue(o.gridAngleDeg ? *o.gridAngleDeg : -1.0);
+}
+
+void PlanningToolBar::planNow() {
+    if (m_doc->anyRouteEdited() && m_interactive) {
+        const auto answer = QMessageBox::question(
+            parentWidget(), tr("Replace edited paths?"),
+            tr("Some paths were edited by hand. A new plan replaces them. Plan now and replace the edited paths?"),
+            QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel);
+        if (answer != QMessageBox::Yes) return;
+        m_planner->planNow(/*replaceEdited=*/true); // consent given
+        return;
+    }
+    m_planner->planNow();
+}
+
+} // namespace pf::ui
