@@ -10,6 +10,8 @@
 #include "core/plan/decomposition.h"
 #include "core/plan/lane_trim.h"
 #include "core/plan/sweep_lanes.h"
+#include "core/plan/sweep_reach.h"
+#include "core/plan/sweep_routing.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,9 +27,9 @@ using geo::Vec2;
 
 namespace {
 
+using namespace sweep_detail;
+
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// The cost of a transition no safe path makes: large enough that the order never chooses one.
-constexpr double kNoWayS = 1e7;
 // Lane ends the lane-level search considers joining, per end: the nearest this many.
 constexpr int kNeighbours = 10;
 // Lanes flown no longer than this many trigger distances are checked for being redundant.
@@ -42,235 +44,6 @@ std::string fmt(double v, int decimals = 1) {
     std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
     return buf;
 }
-
-double angleDeg(const Vec2& u, const Vec2& v) {
-    const double nu = u.norm(), nv = v.norm();
-    if (nu == 0.0 || nv == 0.0)
-        return 0.0;
-    return std::atan2(std::fabs(u.x() * v.y() - u.y() * v.x()), u.dot(v)) * 180.0 / M_PI;
-}
-
-// Time of a transition by the one model: straight legs from a through mid to b, a turn at every
-// vertex. `arrive` is the direction the aircraft arrives at a with, `leave` the one it leaves b with
-// (zero: at rest there, no turn).
-double transitionTime(const FlightTimeModel& m, const Vec2& a, const Vec2& arrive, const std::vector<Vec2>& mid,
-                      const Vec2& b, const Vec2& leave) {
-    double len = 0.0, t = 0.0;
-    Vec2 dir = arrive, p = a;
-    auto leg = [&](const Vec2& q) {
-        const Vec2 d = q - p;
-        const double l = d.norm();
-        if (l == 0.0)
-            return;
-        const Vec2 u = d / l;
-        if (dir.squaredNorm() > 0)
-            t += turnCostS(angleDeg(dir, u), m);
-        dir = u;
-        len += l;
-        p = q;
-    };
-    for (const auto& q : mid)
-        leg(q);
-    leg(b);
-    if (leave.squaredNorm() > 0 && dir.squaredNorm() > 0)
-        t += turnCostS(angleDeg(dir, leave), m);
-    return t + len / m.speedMps;
-}
-
-// A place a lane starts or ends at: a lane starting here flies along `in`, one ending here arrives
-// along -in. Home and landing have in = 0 (at rest).
-struct EndPoint {
-    Vec2 p{0, 0};
-    Vec2 in{0, 0};
-};
-
-struct Route {
-    std::vector<Vec2> mid; // from the lower id to the higher
-    double timeS = 0.0;
-    bool ok = true;
-    bool leavesArea = false;
-};
-
-// A visibility graph built the first time a transition needs it (the detailed ones seldom are).
-class LazyGraph {
-public:
-    explicit LazyGraph(const geo::VisibilityGraph& built) : m_built(&built) {}
-    LazyGraph(const geo::NoFlyField& field, geo::VisibilityGraphOptions options)
-        : m_field(field), m_options(std::move(options)) {}
-    const geo::VisibilityGraph& get() const {
-        if (m_built)
-            return *m_built;
-        if (!m_own)
-            m_own = std::make_unique<geo::VisibilityGraph>(m_field, m_options);
-        return *m_own;
-    }
-
-private:
-    const geo::VisibilityGraph* m_built = nullptr;
-    geo::NoFlyField m_field;
-    geo::VisibilityGraphOptions m_options;
-    mutable std::unique_ptr<geo::VisibilityGraph> m_own;
-};
-
-// The graphs a transition may take, in order of preference: over the area (when kept inside), with
-// coarse corners (few turns), then the detailed margins (a lane end in a narrow notch between two
-// merged margins sees no coarse corner), then outside the area when no way over it exists.
-struct RouteGraph {
-    const LazyGraph* graph = nullptr;
-    bool leavesArea = false;
-};
-
-// Safe transitions between end points: straight when free, else the first graph's shortest path that
-// exists. Trees and visible nodes are cached per end point and graph, routes per pair.
-class Router {
-public:
-    Router(const FlightTimeModel& model, std::vector<RouteGraph> graphs)
-        : m_model(model), m_graphs(std::move(graphs)), m_caches(m_graphs.size()) {}
-
-    int add(const EndPoint& e) {
-        m_pts.push_back(e);
-        return static_cast<int>(m_pts.size()) - 1;
-    }
-    const EndPoint& point(int i) const { return m_pts[static_cast<std::size_t>(i)]; }
-    std::size_t size() const { return m_pts.size(); }
-
-    // From u (arriving along -in_u) to v (leaving along in_v); mid in that order.
-    Route route(int u, int v) {
-        const int lo = std::min(u, v), hi = std::max(u, v);
-        const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(lo)) << 32) |
-                                  static_cast<std::uint32_t>(hi);
-        auto it = m_routes.find(key);
-        if (it == m_routes.end())
-            it = m_routes.emplace(key, compute(lo, hi)).first;
-        Route r = it->second;
-        if (u != lo)
-            std::reverse(r.mid.begin(), r.mid.end());
-        return r;
-    }
-
-    double lowerBound(int u, int v) const {
-        const auto& a = point(u);
-        const auto& b = point(v);
-        return (a.p - b.p).norm() / m_model.speedMps + angleDeg(-a.in, b.in) / m_model.turnRateDegS;
-    }
-
-private:
-    struct Cache {
-        std::unordered_map<int, std::vector<int>> visible;
-        std::unordered_map<int, geo::VisibilityGraph::Tree> trees;
-    };
-    const std::vector<int>& visible(const geo::VisibilityGraph& g, Cache& c, int i) {
-        auto it = c.visible.find(i);
-        if (it == c.visible.end())
-            it = c.visible.emplace(i, g.visibleNodes(point(i).p)).first;
-        return it->second;
-    }
-    const geo::VisibilityGraph::Tree& tree(const geo::VisibilityGraph& g, Cache& c, int i) {
-        auto it = c.trees.find(i);
-        if (it == c.trees.end())
-            it = c.trees.emplace(i, g.tree(point(i).p, visible(g, c, i))).first;
-        return it->second;
-    }
-    // The shortest free way on graph g, or false.
-    bool via(const geo::VisibilityGraph& g, Cache& c, int u, int v, std::vector<Vec2>& mid) {
-        const Vec2 &a = point(u).p, &b = point(v).p;
-        if (g.segmentIsFree(a, b)) {
-            mid.clear();
-            return true;
-        }
-        if (g.hasAllPairs()) {
-            const auto& va = visible(g, c, u);
-            const auto& vb = visible(g, c, v);
-            if (!std::isfinite(g.distance(a, va, b, vb)))
-                return false;
-            mid = g.path(a, va, b, vb);
-            return true;
-        }
-        // Search from the end point with the larger tree cache hit chance: the lower id (cells' order).
-        const auto& t = tree(g, c, u);
-        const auto& vis = visible(g, c, v);
-        if (!std::isfinite(g.distance(t, b, vis)))
-            return false;
-        mid = g.path(t, b, vis);
-        return true;
-    }
-    Route compute(int u, int v) {
-        Route r;
-        const auto &a = point(u), &b = point(v);
-        for (std::size_t k = 0; k < m_graphs.size(); ++k) {
-            if (via(m_graphs[k].graph->get(), m_caches[k], u, v, r.mid)) {
-                r.leavesArea = m_graphs[k].leavesArea;
-                r.timeS = transitionTime(m_model, a.p, -a.in, r.mid, b.p, b.in);
-                return r;
-            }
-        }
-        r.ok = false;
-        r.mid.clear();
-        r.timeS = kNoWayS;
-        return r;
-    }
-
-    FlightTimeModel m_model;
-    std::vector<RouteGraph> m_graphs;
-    std::vector<Cache> m_caches;
-    std::vector<EndPoint> m_pts;
-    std::unordered_map<std::uint64_t, Route> m_routes;
-};
-
-// A point inside the polygon: the middle of the widest interval of a horizontal line through it.
-Vec2 interiorPoint(const geo::Polygon& poly) {
-    const geo::Box b = geo::bounds(poly);
-    Vec2 best = 0.5 * (b.min + b.max);
-    double bestW = -1.0;
-    for (double f : {0.5, 0.37, 0.63, 0.21, 0.79}) {
-        const double y = b.min.y() + f * (b.max.y() - b.min.y());
-        std::vector<double> xs;
-        auto ring = [&](const geo::Ring& r) {
-            for (std::size_t i = 0; i < r.size(); ++i) {
-                const Vec2 &p = r[i], &q = r[(i + 1) % r.size()];
-                if ((p.y() > y) != (q.y() > y))
-                    xs.push_back(p.x() + (y - p.y()) * (q.x() - p.x()) / (q.y() - p.y()));
-            }
-        };
-        ring(poly.outer);
-        for (const auto& h : poly.holes)
-            ring(h);
-        std::sort(xs.begin(), xs.end());
-        for (std::size_t i = 0; i + 1 < xs.size(); i += 2)
-            if (xs[i + 1] - xs[i] > bestW) {
-                bestW = xs[i + 1] - xs[i];
-                best = Vec2(0.5 * (xs[i] + xs[i + 1]), y);
-            }
-        if (bestW > 0)
-            break;
-    }
-    return best;
-}
-
-// Pockets: the holes of the grown zones' union, free space that no way from outside enters.
-class Pockets {
-public:
-    explicit Pockets(const geo::MultiPolygon& grown) {
-        for (const auto& g : grown)
-            for (const auto& h : g.holes)
-                m_holes.push_back(geo::Polygon{h, {}});
-        for (const auto& h : m_holes)
-            m_areas.push_back(geo::area(h));
-    }
-    // The innermost pocket holding p, -1 outside every pocket.
-    int of(const Vec2& p) const {
-        int best = -1;
-        for (std::size_t i = 0; i < m_holes.size(); ++i)
-            if (geo::contains(m_holes[i], p) && (best < 0 || m_areas[i] < m_areas[static_cast<std::size_t>(best)]))
-                best = static_cast<int>(i);
-        return best;
-    }
-    const geo::Polygon& hole(int i) const { return m_holes[static_cast<std::size_t>(i)]; }
-
-private:
-    std::vector<geo::Polygon> m_holes;
-    std::vector<double> m_areas;
-};
 
 // One merged cell of a direction, with its lanes and the connections between consecutive lanes.
 struct PlannedCell {
@@ -365,59 +138,6 @@ std::vector<OrderStep> rowOrders(const OrderProblem& lanes, const std::vector<st
         }
     }
     return best;
-}
-
-// For each of `pts` (end point ids of the router), the k nearest others of `pts`, on a grid of cell h.
-std::vector<std::vector<int>> nearestEndPoints(const Router& router, const std::vector<int>& pts, int k, double h) {
-    std::vector<std::vector<int>> out(router.size());
-    if (pts.empty())
-        return out;
-    geo::Box box{router.point(pts.front()).p, router.point(pts.front()).p};
-    for (int id : pts) {
-        box.min = box.min.cwiseMin(router.point(id).p);
-        box.max = box.max.cwiseMax(router.point(id).p);
-    }
-    const int nx = std::max(1, static_cast<int>((box.max.x() - box.min.x()) / h) + 1);
-    const int ny = std::max(1, static_cast<int>((box.max.y() - box.min.y()) / h) + 1);
-    std::vector<std::vector<int>> grid(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
-    auto cellOf = [&](const Vec2& p, int& cx, int& cy) {
-        cx = std::clamp(static_cast<int>((p.x() - box.min.x()) / h), 0, nx - 1);
-        cy = std::clamp(static_cast<int>((p.y() - box.min.y()) / h), 0, ny - 1);
-    };
-    for (int id : pts) {
-        int cx, cy;
-        cellOf(router.point(id).p, cx, cy);
-        grid[static_cast<std::size_t>(cy) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(cx)].push_back(id);
-    }
-    std::vector<std::pair<double, int>> found;
-    for (int id : pts) {
-        const Vec2 p = router.point(id).p;
-        int cx, cy;
-        cellOf(p, cx, cy);
-        found.clear();
-        // rings of grid cells until k are found and the next ring is farther than the k-th
-        for (int r = 0; r <= std::max(nx, ny); ++r) {
-            for (int y = cy - r; y <= cy + r; ++y)
-                for (int x = cx - r; x <= cx + r; ++x) {
-                    if (x < 0 || y < 0 || x >= nx || y >= ny || (std::abs(x - cx) != r && std::abs(y - cy) != r))
-                        continue;
-                    for (int o : grid[static_cast<std::size_t>(y) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(x)])
-                        if (o != id)
-                            found.emplace_back((router.point(o).p - p).squaredNorm(), o);
-                }
-            if (static_cast<int>(found.size()) >= k) {
-                std::nth_element(found.begin(), found.begin() + (k - 1), found.end());
-                const double kth = std::sqrt(found[static_cast<std::size_t>(k - 1)].first);
-                if (kth <= r * h)
-                    break;
-            }
-        }
-        std::sort(found.begin(), found.end());
-        auto& list = out[static_cast<std::size_t>(id)];
-        for (std::size_t i = 0; i < found.size() && static_cast<int>(i) < k; ++i)
-            list.push_back(found[i].second);
-    }
-    return out;
 }
 
 } // namespace
@@ -1041,72 +761,8 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         plan.warnings.push_back(std::to_string(flown.leaving) +
                                 " transitions leave the area: no way over it keeps the safety margin.");
 
-    // --- ground no photo can see: free pieces no safe path reaches (pockets), and ground between
-    // zones whose margins merge, farther from the reachable free space than the footprint reaches.
-    {
-        std::vector<int> pocketIds;
-        geo::MultiPolygon reachableFree;
-        for (const auto& f : freeSpace) {
-            const int id = pockets.of(interiorPoint(f));
-            if (id == anchor)
-                reachableFree.push_back(f);
-            else if (std::find(pocketIds.begin(), pocketIds.end(), id) == pocketIds.end())
-                pocketIds.push_back(id);
-        }
-        // Convex zones each alone in its grown piece hide no ground from the footprints.
-        bool hiding = !pocketIds.empty();
-        for (const auto& g : grown) {
-            int inside = 0;
-            for (const auto& z : noFly)
-                if (!z.outer.empty() && geo::contains(g, z.outer.front()))
-                    ++inside;
-            hiding = hiding || inside != 1 || !g.holes.empty();
-        }
-        for (const auto& z : noFly) {
-            const std::size_t n = z.outer.size();
-            int pos = 0, neg = 0;
-            for (std::size_t i = 0; i < n; ++i) {
-                const Vec2 a = z.outer[(i + 1) % n] - z.outer[i], b = z.outer[(i + 2) % n] - z.outer[(i + 1) % n];
-                const double c = a.x() * b.y() - a.y() * b.x();
-                pos += c > 1e-9;
-                neg += c < -1e-9;
-            }
-            hiding = hiding || (pos > 0 && neg > 0) || !z.holes.empty();
-        }
-        if (hiding) {
-            // Candidates: ground farther from the reachable free space than half the footprint's short
-            // side; what the plan's photos leave of them, by the independent coverage check.
-            const double reach = 0.5 * std::min(realAcross, realAlong);
-            const geo::MultiPolygon ground = geo::difference(region, geo::MultiPolygon(noFly.begin(), noFly.end()));
-            const geo::MultiPolygon far = geo::difference(ground, geo::buffer(reachableFree, reach, 4));
-            double left = 0.0;
-            if (!far.empty()) {
-                const geo::Box fb = geo::bounds(far);
-                const double pad = 0.5 * std::hypot(realAcross, realAlong);
-                std::vector<PhotoFootprint> near;
-                for (const auto& l : plan.lanes)
-                    for (const auto& p : l.photos)
-                        if (p.x() > fb.min.x() - pad && p.x() < fb.max.x() + pad && p.y() > fb.min.y() - pad &&
-                            p.y() < fb.max.y() + pad)
-                            near.push_back(PhotoFootprint{p, l.headingDeg, realAcross, realAlong});
-                CoverageCheckOptions co;
-                co.resolutionM = std::min(0.5, 0.05 * std::min(realAcross, realAlong));
-                co.maxPixels = 2'000'000;
-                auto cov = checkCoverage(far, near, co);
-                left = cov.ok() ? cov->uncoveredAreaM2 : geo::area(far);
-            }
-            plan.stats.unreachablePockets = static_cast<int>(pocketIds.size());
-            plan.stats.unreachableAreaM2 = left;
-            if (left >= 1.0 || !pocketIds.empty())
-                plan.warnings.push_back(
-                    "About " + fmt(left, 0) + " m2 of ground between no-fly zones" +
-                    (pocketIds.empty() ? std::string()
-                                       : " (" + std::to_string(pocketIds.size()) +
-                                             (pocketIds.size() == 1 ? " pocket" : " pockets") + " no safe path reaches)") +
-                    " lies beyond the footprint's reach from anywhere the aircraft may fly without entering a "
-                    "safety margin: it stays unphotographed; everything else is covered.");
-        }
-    }
+    // --- ground no photo can see: pockets and ground between zones whose margins merge
+    reportUnseenGround(region, noFly, grown, freeSpace, pockets, anchor, realAcross, realAlong, plan);
     return plan;
 }
 
