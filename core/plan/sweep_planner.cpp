@@ -12,6 +12,10 @@
 #include "core/plan/sweep_lanes.h"
 #include "core/plan/sweep_reach.h"
 #include "core/plan/sweep_routing.h"
+#include "core/plan/sweep_state.h"
+#include "core/plan/sweep_estimate.h"
+#include "core/plan/sweep_input.h"
+#include "core/plan/sweep_turns.h"
 
 #include <algorithm>
 #include <cmath>
@@ -45,128 +49,12 @@ std::string fmt(double v, int decimals = 1) {
     return buf;
 }
 
-// One merged cell of a direction, with its lanes and the connections between consecutive lanes.
-struct PlannedCell {
-    int merged = 0;
-    std::vector<CellLane> lanes;
-    int firstPoint = 0;              // lane j: first photo = firstPoint + 2j, last = firstPoint + 2j + 1
-    std::vector<Route> right, left;  // between lanes j and j + 1 at their right (last) / left (first) ends
-    double laneTimeS = 0.0;
-    bool reachable = true;
-    int pt(std::size_t j, bool last) const { return firstPoint + 2 * static_cast<int>(j) + (last ? 1 : 0); }
-};
-
-// The lanes of a way: lane j flown left to right when (j + parity) is even.
-bool leftToRight(std::size_t j, int parity) { return (j + static_cast<std::size_t>(parity)) % 2 == 0; }
-
-struct DirectionPlan {
-    double angleDeg = 0.0;
-    double estimateS = 0.0;
-    std::shared_ptr<const Decomposition> dec;           // shared by the lane-height variants of a direction
-    std::shared_ptr<const std::vector<MergedCell>> mc;
-    std::optional<double> latticeY0;                    // the variant's shared lines (SweepLaneParams)
-    std::vector<std::vector<double>> heights;
-    std::vector<std::vector<char>> pinned; // lanes that neighbours lean on
-    const Decomposition& d() const { return *dec; }
-    const std::vector<MergedCell>& merged() const { return *mc; }
-};
-
-struct FullPlan {
-    double angleDeg = 0.0;
-    std::unique_ptr<Router> router;
-    std::vector<PlannedCell> cells;      // every merged cell (unreachable ones flagged)
-    std::vector<int> orderCellOf;        // order problem cell -> index into cells
-    OrderProblem problem;                // cells, two ways each
-    OrderResult order;
-    OrderProblem laneProblem;            // lanes, one way each (first photo to last), for the lane-level search
-    std::vector<std::vector<int>> near;  // per end point: the nearest end points of other lanes
-    std::vector<std::pair<int, int>> laneRef; // lane-level cell -> (index into cells, lane)
-    std::vector<int> laneBase;           // per planned cell: its first lane-level id
-    std::vector<OrderStep> steps;        // lane-level order: the improved one
-    std::vector<OrderStep> constructed;  // lane-level order of the cell-level construction alone
-    double timeS = kInf;
-    double missedM2 = 0.0;               // ground beside lane ends no photo may reach (estimate)
-    int laneMoves = 0;
-    bool rowStart = false;               // the kept lane order came from the row-by-row start
-    int homePt = -1, landingPt = -1;
-    const DirectionPlan* dir = nullptr;
-};
-
-// The lane-level sequence that flies the lanes row by row (lanes less than half a spacing apart across
-// the lanes form a row, flown along the lanes' direction in turn), the best of the four corners to
-// begin at by the problem's own cost; empty without lanes.
-std::vector<OrderStep> rowOrders(const OrderProblem& lanes, const std::vector<std::pair<int, int>>& laneRef,
-                                 const std::vector<PlannedCell>& cells, const SweepFrame& frame, double spacing) {
-    struct Key {
-        double y, x;
-        int id;
-    };
-    std::vector<Key> keys;
-    keys.reserve(laneRef.size());
-    for (std::size_t id = 0; id < laneRef.size(); ++id) {
-        const auto& [ci, j] = laneRef[id];
-        const CellLane& l = cells[static_cast<std::size_t>(ci)].lanes[static_cast<std::size_t>(j)];
-        keys.push_back(Key{l.y, frame.toFrame(0.5 * (l.span.first + l.span.last)).x(), static_cast<int>(id)});
-    }
-    if (keys.empty())
-        return {};
-    std::stable_sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) { return a.y < b.y; });
-    std::vector<std::vector<Key>> rows;
-    for (const auto& k : keys) {
-        if (rows.empty() || k.y - rows.back().front().y >= 0.5 * spacing)
-            rows.emplace_back();
-        rows.back().push_back(k);
-    }
-    for (auto& r : rows)
-        std::stable_sort(r.begin(), r.end(), [](const Key& a, const Key& b) { return a.x < b.x; });
-    std::vector<OrderStep> best;
-    double bestCost = kInf;
-    for (int variant = 0; variant < 4; ++variant) {
-        const bool upwards = variant < 2, firstLtr = variant % 2 == 0;
-        std::vector<OrderStep> seq;
-        seq.reserve(keys.size());
-        for (std::size_t k = 0; k < rows.size(); ++k) {
-            const auto& row = rows[upwards ? k : rows.size() - 1 - k];
-            const bool ltr = (k % 2 == 0) == firstLtr;
-            for (std::size_t i = 0; i < row.size(); ++i)
-                seq.push_back(OrderStep{row[ltr ? i : row.size() - 1 - i].id, 0, !ltr});
-        }
-        const double c = orderCost(lanes, seq);
-        if (c < bestCost) {
-            bestCost = c;
-            best = std::move(seq);
-        }
-    }
-    return best;
-}
-
 } // namespace
 
 Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
                             const SweepOptions& opt) {
-    auto bad = [](const std::string& m) { return makeError(ErrorCode::InvalidInput, m); };
-    if (!(opt.trackSpacingM > 0) || !std::isfinite(opt.trackSpacingM))
-        return bad("The sweep's track spacing must be a positive distance (got " + fmt(opt.trackSpacingM, 3) + " m).");
-    if (!(opt.photoSpacingM > 0) || !std::isfinite(opt.photoSpacingM))
-        return bad("The sweep's photo spacing must be a positive distance (got " + fmt(opt.photoSpacingM, 3) + " m).");
-    if (!(opt.realAcrossM >= 0) || !(opt.realAlongM >= 0) || !std::isfinite(opt.realAcrossM) || !std::isfinite(opt.realAlongM))
-        return bad("The photo footprint's sides must not be negative.");
-    if (!(opt.safetyMarginM >= 0) || !std::isfinite(opt.safetyMarginM))
-        return bad("The safety margin must not be negative (got " + fmt(opt.safetyMarginM) + " m).");
-    if (!(opt.time.speedMps > 0) || !(opt.time.turnRateDegS > 0))
-        return bad("The flight-time model needs a positive speed and turn rate.");
-    if (!(opt.coarseStepDeg > 0) || opt.plannedDirections < 1 || opt.quadrantSegments < 1 || opt.maxOrderRounds < 0)
-        return bad("The sweep's direction step, planned directions and margin segments must be positive.");
-    if (region.empty())
-        return makeError(ErrorCode::InvalidGeometry, "The area to sweep is empty.");
-    for (std::size_t i = 0; i < region.size(); ++i) {
-        std::string why;
-        if (!geo::isValid(region[i], &why))
-            return makeError(ErrorCode::InvalidGeometry, "The area to sweep (part " + std::to_string(i + 1) +
-                                                             ") is not a valid polygon: " + why);
-    }
-    if (!(geo::area(region) > 0))
-        return makeError(ErrorCode::InvalidGeometry, "The area to sweep has no area.");
+    if (auto ok = checkSweepInput(region, opt); !ok)
+        return ok.error();
     const double s = opt.trackSpacingM, ph = opt.photoSpacingM;
     const double realAcross = opt.realAcrossM > 0 ? opt.realAcrossM : s;
     const double realAlong = opt.realAlongM > 0 ? opt.realAlongM : ph;
@@ -238,40 +126,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     }
 
     // --- candidate directions
-    std::vector<double> angles;
-    auto addAngle = [&](double deg) {
-        deg = std::fmod(deg, 180.0);
-        if (deg < 0)
-            deg += 180.0;
-        for (double a : angles) {
-            const double dd = std::fabs(a - deg);
-            if (std::min(dd, 180.0 - dd) < 0.5)
-                return;
-        }
-        angles.push_back(deg);
-    };
-    if (!opt.anglesDeg.empty()) {
-        for (double a : opt.anglesDeg)
-            addAngle(a);
-    } else {
-        auto longest = [&](const std::vector<geo::Polygon>& polys) {
-            std::vector<std::pair<double, double>> edges; // length, angle
-            for (const auto& poly : polys) {
-                const auto& r = poly.outer;
-                for (std::size_t i = 0; i < r.size(); ++i) {
-                    const Vec2 d = r[(i + 1) % r.size()] - r[i];
-                    edges.emplace_back(d.norm(), std::atan2(d.y(), d.x()) * 180.0 / M_PI);
-                }
-            }
-            std::stable_sort(edges.begin(), edges.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-            for (std::size_t i = 0; i < edges.size() && static_cast<int>(i) < opt.edgeDirections; ++i)
-                addAngle(edges[i].second);
-        };
-        longest(region);
-        longest(noFly);
-        for (double a = 0; a < 180.0 - 1e-9; a += opt.coarseStepDeg)
-            addAngle(a);
-    }
+    const std::vector<double> angles = candidateDirections(region, noFly, opt);
 
     // --- quick estimate per direction: decomposition, lane heights, turns, cell changes
     SweepLaneParams lp;
@@ -285,57 +140,10 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     const double uTurnS = 2.0 * turnCostS(90.0, opt.time) + s / opt.time.speedMps;
     // Lane heights of a variant and its quick estimate: lanes, turns, cell changes.
     auto estimate = [&](DirectionPlan& dp) {
-        double est = 0.0;
-        std::vector<std::pair<Vec2, Vec2>> ends;
         SweepLaneParams vp = lp;
         vp.latticeY0 = dp.latticeY0;
         dp.heights = allLaneHeights(dp.d(), dp.merged(), vp, ground, &dp.pinned);
-        for (std::size_t mi = 0; mi < dp.merged().size(); ++mi) {
-            const auto& m = dp.merged()[mi];
-            const auto& hs = dp.heights[mi];
-            if (hs.empty())
-                continue;
-            std::size_t part = 0;
-            Vec2 first(0, 0), last(0, 0);
-            for (std::size_t j = 0; j < hs.size(); ++j) {
-                while (part + 1 < m.parts.size() && hs[j] > dp.d().cells[static_cast<std::size_t>(m.parts[part])].yhi)
-                    ++part;
-                const auto& c = dp.d().cells[static_cast<std::size_t>(m.parts[part])];
-                const double w = c.xRight(hs[j]) - c.xLeft(hs[j]);
-                est += std::max(0.0, w - ph) / opt.time.speedMps;
-                const Vec2 mid(0.5 * (c.xRight(hs[j]) + c.xLeft(hs[j])), hs[j]);
-                if (j == 0)
-                    first = mid;
-                last = mid;
-            }
-            est += static_cast<double>(hs.size() > 0 ? hs.size() - 1 : 0) * uTurnS;
-            ends.emplace_back(first, last);
-        }
-        // cell changes: nearest neighbour over the cells' first and last lanes
-        if (!ends.empty()) {
-            std::vector<char> used(ends.size(), 0);
-            used[0] = 1;
-            Vec2 at = ends[0].second;
-            for (std::size_t k = 1; k < ends.size(); ++k) {
-                double best = kInf;
-                std::size_t bi = 0;
-                bool flip = false;
-                for (std::size_t i = 0; i < ends.size(); ++i) {
-                    if (used[i])
-                        continue;
-                    const double d1 = (ends[i].first - at).norm(), d2 = (ends[i].second - at).norm();
-                    if (std::min(d1, d2) < best) {
-                        best = std::min(d1, d2);
-                        bi = i;
-                        flip = d2 < d1;
-                    }
-                }
-                used[bi] = 1;
-                at = flip ? ends[bi].first : ends[bi].second;
-                est += best / opt.time.speedMps + 2.0 * turnCostS(90.0, opt.time);
-            }
-        }
-        return est;
+        return quickEstimateS(dp.d(), dp.merged(), dp.heights, ph, opt.time, s);
     };
     std::vector<DirectionPlan> dirs;
     geo::MultiPolygon shrunk;
@@ -721,34 +529,9 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         const bool neighbours = flown.refs[i].first == flown.refs[i + 1].first &&
                                 std::abs(flown.refs[i].second - flown.refs[i + 1].second) == 1 && ltr != nltr;
         if (neighbours && link.empty()) {
-            const bool right = ltr; // the turn is at the lanes' right ends
-            const double o = right ? 1.0 : -1.0;
-            const Vec2 P = ltr ? l->span.last : l->span.first, Q = nltr ? nl->span.first : nl->span.last;
-            const double eP = o * P.dot(u), eQ = o * Q.dot(u);
-            const bool pNear = eP < eQ;
-            const CellLane* nearLane = pNear ? l : nl;
-            const bool otherBelow = pNear ? nl->y < l->y : l->y < nl->y;
-            const double wedge = right ? (otherBelow ? nearLane->wedgeRightBelow : nearLane->wedgeRightAbove)
-                                       : (otherBelow ? nearLane->wedgeLeftBelow : nearLane->wedgeLeftAbove);
-            const double eNear = std::min(eP, eQ), eFar = std::max(eP, eQ);
-            const double lo = eNear + reach, hi = std::min(eNear + wedge, eFar - reach);
-            if (hi > lo + 1e-6 && eFar > eNear) {
-                const double L = (Q - P).norm();
-                const double t0 = (lo - eP) / (eQ - eP), t1 = (hi - eP) / (eQ - eP);
-                const double ta = std::min(t0, t1), tb = std::max(t0, t1);
-                const int n = std::max(1, static_cast<int>(std::ceil((tb - ta) * L / ph - 1e-9)));
-                Lane side;
-                const Vec2 d = (Q - P) / L;
-                for (int k = 0; k < n; ++k) {
-                    const double t = std::clamp(0.5 * (ta + tb) + (k - 0.5 * (n - 1)) * ph / L, 0.0, 1.0);
-                    side.photos.push_back(P + t * L * d);
-                }
-                side.stripStart = P + ta * L * d;
-                side.stripEnd = P + tb * L * d;
-                double h = std::atan2(d.x(), d.y()) * 180.0 / M_PI;
-                side.headingDeg = h < 0 ? h + 360.0 : h;
+            if (auto side = photographedTurn(*l, ltr, *nl, nltr, u, reach, ph)) {
                 links.push_back({});
-                plan.lanes.push_back(std::move(side));
+                plan.lanes.push_back(std::move(*side));
                 plan.laneCells.push_back(-1);
             }
         }
