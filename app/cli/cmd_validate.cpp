@@ -3,6 +3,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/mission_args.h"
 
+#include "core/mission/memory_estimate.h"
 #include "core/mission/terrain_stage.h"
 #include "core/mission/validation.h"
 
@@ -100,6 +101,13 @@ int runValidate(const std::vector<std::string>& argv) {
        << (m.options.gridAngleDeg ? fmt("%.1f deg", *m.options.gridAngleDeg) : std::string("auto (figures at 0 deg)"))
        << '\n';
     os << "Cell budget:      " << grouped(static_cast<double>(m.options.maxCells)) << " cells\n";
+    if (!m.aircraft.empty()) {
+        const mission::MemoryEstimate e = mission::estimatePlanMemory(m);
+        if (e.bytes > 0)
+            os << "Memory:           about " << fmt("%.2f GB", e.bytes / 1e9) << " to plan with one planner ("
+               << fmt("%.2f GB", static_cast<double>(mission::memoryBudgetBytes()) / 1e9)
+               << " available to planning here)\n";
+    }
     for (const auto& f : r.aircraft) {
         os << "Aircraft \"" << f.name << "\":\n";
         if (f.cellSizeM <= 0) {

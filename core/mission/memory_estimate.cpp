@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 namespace pf::mission {
 
@@ -19,6 +20,11 @@ namespace {
 constexpr double kBaseBytes = 80e6;
 constexpr double kBytesPerCell = 64.0;
 constexpr double kBytesPerPhoto = 320.0;
+// addressSpaceBytes: mapped per resident byte, and the libraries, stacks and arenas of the process.
+constexpr double kMappedPerResident = 1.5;
+constexpr double kMappedFixed = 200e6;
+// Of an address-space limit, what the plan may map (the rest for the estimate's error).
+constexpr double kLimitShare = 0.95;
 
 std::string gigabytes(double bytes) {
     char buf[32];
@@ -50,12 +56,28 @@ MemoryEstimate estimatePlanMemory(const Mission& m) {
     return e;
 }
 
-std::size_t memoryBudgetBytes() {
-    double budget = 0.75 * static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGE_SIZE));
+double addressSpaceBytes(double residentBytes) { return kMappedFixed + kMappedPerResident * residentBytes; }
+
+namespace {
+
+// The resident budget an address-space limit leaves (the inverse of addressSpaceBytes), if there is one.
+std::optional<double> limitBudget() {
     rlimit lim{};
-    if (::getrlimit(RLIMIT_AS, &lim) == 0 && lim.rlim_cur != RLIM_INFINITY)
-        budget = std::min(budget, 0.75 * static_cast<double>(lim.rlim_cur));
-    return budget > 0 ? static_cast<std::size_t>(budget) : static_cast<std::size_t>(1) << 30;
+    if (::getrlimit(RLIMIT_AS, &lim) != 0 || lim.rlim_cur == RLIM_INFINITY)
+        return std::nullopt;
+    const double mappable = kLimitShare * static_cast<double>(lim.rlim_cur) - kMappedFixed;
+    return std::max(mappable, 0.0) / kMappedPerResident;
+}
+
+} // namespace
+
+std::size_t memoryBudgetBytes() {
+    const double pages = static_cast<double>(::sysconf(_SC_PHYS_PAGES));
+    const double pageSize = static_cast<double>(::sysconf(_SC_PAGE_SIZE));
+    double budget = pages > 0 && pageSize > 0 ? 0.75 * pages * pageSize : static_cast<double>(1u << 30);
+    if (const auto lim = limitBudget())
+        budget = std::min(budget, *lim);
+    return static_cast<std::size_t>(std::max(budget, 1.0));
 }
 
 Status checkPlanMemory(const Mission& m, std::size_t budgetBytes, int plans) {
@@ -84,9 +106,17 @@ Status checkPlanMemory(const Mission& m, std::size_t budgetBytes, int plans) {
     char counts[160];
     std::snprintf(counts, sizeof counts, " (%.0f grid cells, about %.0f photos%s)", e.cells, e.photos,
                   plans > 1 ? ", plans compared two at a time" : "");
+    // Under an address-space limit the figure that fails is the mapped one: say so.
+    std::string limit;
+    if (const auto lim = limitBudget(); lim && *lim <= budget + 1.0) {
+        rlimit l{};
+        ::getrlimit(RLIMIT_AS, &l);
+        limit = " (ulimit -v allows " + gigabytes(static_cast<double>(l.rlim_cur)) +
+                " of address space; the plan would map about " + gigabytes(addressSpaceBytes(need)) + ")";
+    }
     return makeError(ErrorCode::TooLarge, "the plan would need about " + gigabytes(need) + " of memory" + counts +
-                                              ", more than the " + gigabytes(budget) +
-                                              " this machine can give it" + fits + "; or split the area into parts");
+                                              ", more than the " + gigabytes(budget) + " this machine can give it" +
+                                              limit + fits + "; or split the area into parts");
 }
 
 } // namespace pf::mission

@@ -504,13 +504,13 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
             for (int i = s.firstWaypoint; i <= s.lastWaypoint; ++i)
                 s.photos += flown[static_cast<std::size_t>(i)].kind == route::WaypointKind::Photo;
         }
-        ap.route.waypoints.clear();
-        for (const auto& w : flown) {
-            ap.route.waypoints.push_back({frame.toGeo(w.pos), ap.altitudeM, w.headingDeg, w.kind});
+        ap.route.waypoints = routeWaypoints(flown, frame, ap.altitudeM);
+        if (stopRequested())
+            return cancelledError();
+        for (const auto& w : flown)
             if (w.kind == route::WaypointKind::Photo)
                 photoFootprints.push_back(
                     {w.pos, w.headingDeg, ap.footprint.real.longSideM, ap.footprint.real.shortSideM});
-        }
         ap.sortieRoutes.clear();
         // Only the sortie's own waypoints are copied: a copy of the whole route per sortie (then cut)
         // kept its full capacity, sorties x waypoints in all (3.3 GB for 158 sorties of 523,000).

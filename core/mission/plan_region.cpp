@@ -76,10 +76,7 @@ void finish(AircraftPlan& p, const Aircraft& a, PlannerKind kind, const geo::Loc
     p.route.cruiseSpeedMps = a.cfg.cruiseSpeedMps;
     if (home)
         p.route.home = frame.toGeo(*home);
-    p.route.waypoints.clear();
-    p.route.waypoints.reserve(p.localWaypoints.size());
-    for (const auto& w : p.localWaypoints)
-        p.route.waypoints.push_back({frame.toGeo(w.pos), a.altitudeM, w.headingDeg, w.kind});
+    p.route.waypoints = routeWaypoints(p.localWaypoints, frame, a.altitudeM);
 }
 
 // Metrics of a plan made without a grid (sweep, lawnmower): the flown survey's length and turns by the
@@ -183,11 +180,17 @@ Result<AircraftPlan> gridRegion(const geo::MultiPolygon& region, const std::vect
     for (std::size_t i = 0; i < best.size() && !stopRequested(); ++i) {
         AircraftPlan& p = best[i];
         p.localWaypoints = route::photoWaypoints(p.grid, p.path, a.fp);
+        if (stopRequested())
+            break; // each step below takes 0.1 s at 10^6 cells, none of them checks
         route::straightenTransits(p.grid, p.localWaypoints);
+        if (stopRequested())
+            break;
         const double t = aloneRouteTimeS(surveyPart(p.localWaypoints), a.cfg, home, landing);
         if (soonest.offer(t))
             chosen = i;
     }
+    if (stopRequested())
+        return makeError(ErrorCode::Cancelled, "planning cancelled");
     AircraftPlan p = std::move(best[chosen]);
     p.anglesTried = tried;
     mopt.turnLowerBound = true;
@@ -309,6 +312,8 @@ Result<AircraftPlan> planOne(const geo::MultiPolygon& region, const std::vector<
         p = gridRegion(region, noFly, a, kind, options, home, landing);
         break;
     }
+    if (stopRequested())
+        return makeError(ErrorCode::Cancelled, "planning cancelled");
     if (p)
         finish(*p, a, kind, frame, home);
     return p;
@@ -386,6 +391,26 @@ Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vect
         return out;
     out->metrics.planningMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    return out;
+}
+
+std::vector<route::Waypoint> routeWaypoints(const std::vector<route::LocalWaypoint>& w, const geo::LocalFrame& frame,
+                                            double altitudeM) {
+    constexpr std::size_t kBlock = 1 << 16;
+    std::vector<route::Waypoint> out;
+    out.reserve(w.size());
+    geo::Ring block;
+    for (std::size_t i = 0; i < w.size(); i += kBlock) {
+        if (stopRequested())
+            break;
+        const std::size_t end = std::min(w.size(), i + kBlock);
+        block.clear();
+        for (std::size_t k = i; k < end; ++k)
+            block.push_back(w[k].pos);
+        const geo::GeoRing geo = frame.toGeo(block);
+        for (std::size_t k = i; k < end; ++k)
+            out.push_back({geo[k - i], altitudeM, w[k].headingDeg, w[k].kind});
+    }
     return out;
 }
 

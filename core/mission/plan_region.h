@@ -39,6 +39,12 @@ std::vector<double> candidateAngles(const geo::MultiPolygon& region);
 // take-off cell and back to the landing cell is replaced by the shortest safe transit later.
 std::vector<route::LocalWaypoint> surveyPart(const std::vector<route::LocalWaypoint>& w);
 
+// The route waypoints (WGS84, at `altitudeM`) of local waypoints, transformed in blocks of 65,536 with
+// a cancel check between blocks (two million waypoints take 0.8 s); a cancelled job gets a partial
+// list, which its caller drops.
+std::vector<route::Waypoint> routeWaypoints(const std::vector<route::LocalWaypoint>& w, const geo::LocalFrame& frame,
+                                            double altitudeM);
+
 // The time of the route an aircraft would fly alone over its survey waypoints: from home along the
 // straight line to the first one, through all, and straight back (to the landing point if any), by the
 // one flight-time model. What planners and splits are compared on before the final plan.

@@ -262,6 +262,8 @@ std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellP
         }
     };
     for (std::size_t k = 0; k < slots.size(); ++k) {
+        if ((k & 0xFFF) == 0 && stopRequested())
+            break; // a cancelled job drops the partial list
         LocalWaypoint w = slots[k].w;
         if (offLane && !g.segmentIsSafe(out.back().pos, w.kind == WaypointKind::Photo ? slots[k].anchor : w.pos)) {
             // laneOut runs from the lane's last cell back to its last clean one: flown in reverse.

@@ -47,6 +47,8 @@ Result<std::vector<LocalWaypoint>> enforceNoFly(const std::vector<LocalWaypoint>
     SafetyReport& rep = report ? *report : local;
     std::vector<LocalWaypoint> moved = waypoints;
     for (std::size_t i = 0; i < moved.size(); ++i) {
+        if ((i & 0xFFFF) == 0 && stopRequested())
+            return makeError(ErrorCode::Cancelled, "making the route safe: cancelled");
         if (finder.field().pointIsSafe(moved[i].pos))
             continue;
         const Vec2 to = finder.nearestSafePoint(moved[i].pos);

@@ -3,6 +3,7 @@
 // the latency of a cancel at several stages. Sites of 1.25 km and more are named "Big" and left out of
 // CI's smoke run (--benchmark_filter=-Big); run them by hand:
 //   build/tests/bench/pf_bench --benchmark_filter=Mission
+// and the cancel latencies with --benchmark_filter='Cancel.*Big'.
 #include "core/geo/local_frame.h"
 #include "core/mission/plan_mission.h"
 #include "core/progress.h"
@@ -14,6 +15,8 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <mutex>
+#include <optional>
 #include <random>
 #include <thread>
 
@@ -145,6 +148,69 @@ BENCHMARK(BM_CancelStrideBig)
     ->Iterations(1);
 BENCHMARK(BM_CancelAutoBig)
     ->ArgsProduct({{2500}, {1, 20, 40, 70, 90}})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
+// Cancel latency inside a named stage: the cancel comes range(2) ms after the stage began (stages the
+// percentage points above jump over, such as "detours and sorties", get measured too). The label is
+// the stage running when the cancel came.
+const char* const kStages[] = {"grid", "cell path", "photo waypoints", "detours and sorties", "coverage check"};
+
+void cancelInStage(benchmark::State& state, mission::PlannerKind kind) {
+    const mission::Mission m = squareSite(static_cast<double>(state.range(0)), kind);
+    const std::string wanted = kStages[state.range(1)];
+    double worst = 0.0;
+    std::string stageSeen;
+    for (auto _ : state) {
+        std::mutex mutex;
+        std::string stage;
+        std::optional<std::chrono::steady_clock::time_point> entered;
+        Progress progress([&](double, const std::string& s) {
+            std::lock_guard<std::mutex> lock(mutex);
+            stage = s;
+            if (s == wanted && !entered)
+                entered = std::chrono::steady_clock::now();
+        });
+        std::atomic<bool> done{false};
+        std::chrono::steady_clock::time_point cancelledAt;
+        std::string stageAtCancel;
+        std::thread watcher([&] {
+            while (!done) {
+                std::this_thread::sleep_for(std::chrono::milliseconds(2));
+                std::lock_guard<std::mutex> lock(mutex);
+                if (entered && std::chrono::steady_clock::now() - *entered >= std::chrono::milliseconds(state.range(2))) {
+                    stageAtCancel = stage;
+                    cancelledAt = std::chrono::steady_clock::now();
+                    progress.cancel();
+                    return;
+                }
+            }
+        });
+        auto plan = mission::planMission(m, &progress);
+        const auto end = std::chrono::steady_clock::now();
+        done = true;
+        watcher.join();
+        if (!progress.cancelled()) {
+            state.SkipWithError("the plan finished before the cancel point");
+            return;
+        }
+        if (plan || plan.error().code != ErrorCode::Cancelled) {
+            state.SkipWithError("a cancelled plan did not return Cancelled");
+            return;
+        }
+        const double s = std::chrono::duration<double>(end - cancelledAt).count();
+        worst = std::max(worst, s);
+        state.SetIterationTime(s);
+        stageSeen = stageAtCancel;
+    }
+    state.SetLabel(stageSeen);
+    state.counters["worst_latency_ms"] = 1000.0 * worst;
+}
+
+void BM_CancelInStageStrideBig(benchmark::State& state) { cancelInStage(state, mission::PlannerKind::Stride); }
+BENCHMARK(BM_CancelInStageStrideBig)
+    ->ArgsProduct({{2500}, {0, 1, 2, 3, 4}, {200, 1500}})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
