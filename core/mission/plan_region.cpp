@@ -103,11 +103,16 @@ double legHeading(const geo::Vec2& a, const geo::Vec2& b) { return route::headin
 // time misses where lanes end (inside their end cells, at the exact boundary), which can reorder close
 // angles; lanes for every angle would cost more than the rest of the search.
 constexpr std::size_t kLaneCandidates = 3;
+// Above this many cells the angles are ranked on a coarse grid of about kCoarseCells cells, and the
+// best kCoarseKeep planned at the real size.
+constexpr double kCoarseAboveCells = 500'000;
+constexpr double kCoarseCells = 100'000;
+constexpr std::size_t kCoarseKeep = 4;
 
 Result<AircraftPlan> gridRegion(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
                                 const Aircraft& a, PlannerKind kind, const PlannerOptions& options,
                                 const std::optional<geo::Vec2>& home, const std::optional<geo::Vec2>& landing) {
-    const std::vector<double> angles =
+    std::vector<double> angles =
         options.gridAngleDeg ? std::vector<double>{*options.gridAngleDeg} : candidateAngles(region);
     plan::PlanOptions popt;
     popt.kind = toPlanKind(kind);
@@ -117,6 +122,43 @@ Result<AircraftPlan> gridRegion(const geo::MultiPolygon& region, const std::vect
     mopt.time = a.model;
     mopt.diagonalSteps = popt.kind == plan::PlannerKind::Wavefront && popt.wavefront.moore;
     mopt.turnLowerBound = false;
+    // A big area: the angles ranked first on a coarser grid (cells a whole factor larger, about
+    // kCoarseCells of them), and only the best few planned at the real cell size. The ranking by cell
+    // path time holds at the coarse size as the lanes are the same lines, fewer of them; the full
+    // search at 10^6 cells would cost 37 grids and cell paths of 0.7 s each.
+    const double cellsEstimate = geo::area(region) / (a.cellSizeM * a.cellSizeM);
+    if (angles.size() > kCoarseKeep && cellsEstimate > kCoarseAboveCells) {
+        const double factor = std::ceil(std::sqrt(cellsEstimate / kCoarseCells));
+        std::vector<std::pair<double, double>> scored; // estimated time, angle
+        for (std::size_t ai = 0; ai < angles.size() && !stopRequested(); ++ai) {
+            reportProgress(0.1 * static_cast<double>(ai) / static_cast<double>(angles.size()), "grid angles (coarse)");
+            grid::GridOptions gopt;
+            gopt.cellSize = a.cellSizeM * factor;
+            gopt.angleDeg = angles[ai];
+            gopt.safetyMarginM = options.safetyMarginM;
+            gopt.maxCells = options.maxCells;
+            auto g = grid::Grid::build(region, noFly, gopt);
+            if (!g)
+                continue;
+            plan::CoverageRequest req;
+            if (home) {
+                req.takeoff = g->nearestVisitable(*home);
+                req.landing = g->nearestVisitable(landing ? *landing : *home);
+            }
+            auto path = plan::planCoverage(*g, req, popt);
+            if (!path)
+                continue;
+            scored.emplace_back(plan::computeMetrics(*g, *path, mopt).estimatedTimeS, angles[ai]);
+        }
+        if (stopRequested())
+            return makeError(ErrorCode::Cancelled, "planning cancelled");
+        if (scored.size() >= kCoarseKeep) {
+            std::stable_sort(scored.begin(), scored.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+            angles.clear();
+            for (std::size_t i = 0; i < kCoarseKeep; ++i)
+                angles.push_back(scored[i].second);
+        }
+    }
 
     std::vector<AircraftPlan> best; // the cell paths flown soonest, soonest first
     std::optional<Error> firstError;

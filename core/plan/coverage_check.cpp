@@ -109,10 +109,18 @@ Result<CoverageReport> checkCoverage(const geo::MultiPolygon& admissible, const 
         for (const auto& hole : p.holes)
             rings.push_back(&hole);
     }
+    // A big area's raster takes a while to fill: a cancel is looked at every 256 rows and the rest skipped.
+    bool stopped = false;
     scanRings(ras, rings, [&](int j, int i0, int i1) {
+        if ((j & 0xFF) == 0 && !stopped)
+            stopped = stopRequested();
+        if (stopped)
+            return;
         for (int i = i0; i < i1; ++i)
             px[ras.index(i, j)] ^= 1; // even-odd across separate parts too
     });
+    if (stopped)
+        return makeError(ErrorCode::Cancelled, "checking the coverage: cancelled");
     for (std::size_t k = 0; k < photos.size(); ++k) {
         if ((k & 0x3FFF) == 0) {
             if (stopRequested())
