@@ -530,8 +530,12 @@ void MainWindow::buildPlanning() {
     // Below the map, left to right: waypoints, statistics, problems.
     splitDockWidget(wpDock, statsDock, Qt::Horizontal);
     splitDockWidget(statsDock, problemsDock, Qt::Horizontal);
-    resizeDocks({wpDock, statsDock, problemsDock}, {500, 640, 400}, Qt::Horizontal);
-    resizeDocks({wpDock}, {250}, Qt::Vertical);
+    // The statistics table needs its columns and the total row; the problems read as sentences. The
+    // sizes take once the window is laid out (before, the docks have no room to share).
+    QTimer::singleShot(0, this, [this, wpDock, statsDock, problemsDock] {
+        resizeDocks({wpDock, statsDock, problemsDock}, {470, 700, 430}, Qt::Horizontal);
+        resizeDocks({wpDock}, {285}, Qt::Vertical);
+    });
     // The panel selects what an item is about; a waypoint is also brought into view.
     connect(m_problemList, &ProblemsPanel::waypointActivated, this, [this](int r, int w) {
         if (r >= 0 && r < int(m_doc->routes().size()) && w >= 0 &&
@@ -551,6 +555,7 @@ void MainWindow::buildPlanning() {
     m_viewMenu->addAction(wpDock->toggleViewAction());
     m_viewMenu->addAction(problemsDock->toggleViewAction());
     addDockWidget(Qt::BottomDockWidgetArea, m_terrain->dock());
+    // The profile needs the width of the statistics: a tab beside them.
     tabifyDockWidget(statsDock, m_terrain->dock());
     statsDock->raise();
     m_viewMenu->addAction(m_terrain->dock()->toggleViewAction());

@@ -37,7 +37,7 @@ void TerrainProfileWidget::paintEvent(QPaintEvent*) {
     const QRectF area = QRectF(rect()).adjusted(52, 10, -12, -24);
     if (m_profile.empty()) {
         p.setPen(palette().color(QPalette::Disabled, QPalette::Text));
-        p.drawText(rect(), Qt::AlignCenter,
+        p.drawText(QRectF(rect()).adjusted(8, 4, -8, -4), Qt::AlignCenter | Qt::TextWordWrap,
                    tr("No terrain profile: choose a terrain model (File ▸ Terrain model) and plan"));
         return;
     }
