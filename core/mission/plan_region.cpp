@@ -106,8 +106,8 @@ constexpr std::size_t kLaneCandidates = 3;
 // Above this many cells the angles are ranked on a coarse grid of about kCoarseCells cells, and the
 // best kCoarseKeep planned at the real size.
 constexpr double kCoarseAboveCells = 500'000;
-constexpr double kCoarseCells = 100'000;
-constexpr std::size_t kCoarseKeep = 4;
+constexpr double kCoarseCells = 60'000;
+constexpr std::size_t kCoarseKeep = 3;
 
 Result<AircraftPlan> gridRegion(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
                                 const Aircraft& a, PlannerKind kind, const PlannerOptions& options,
