@@ -4,6 +4,7 @@
 #include "app/cli/export_args.h"
 #include "app/cli/mission_args.h"
 
+#include "core/io/plan_export.h"
 #include "core/io/waypoint_formats.h"
 #include "core/mission/plan_geojson.h"
 #include "core/mission/plan_mission.h"
@@ -230,7 +231,7 @@ int runPlan(const std::vector<std::string>& argv) {
         gj.footprints = args->has("footprints");
         if (auto st = mission::writePlanGeoJsonFile(*plan, (dir / "plan.geojson").string(), gj); !st)
             return reportError(st.error());
-        if (int rc = writeFile(dir / "metrics.json", mission::planMetricsJson(*plan, planner)); rc != kExitOk)
+        if (int rc = writeFile(dir / "metrics.json", io::planMetricsJson(*plan, planner)); rc != kExitOk)
             return rc;
         written.push_back((dir / "plan.geojson").string());
         written.push_back((dir / "metrics.json").string());

@@ -227,4 +227,10 @@ Status writePlanGeoJsonFile(const MissionPlan& plan, const std::string& path, co
     return {};
 }
 
+std::string planToGeoJson(const MissionPlan& plan) {
+    std::ostringstream out;
+    writePlanGeoJson(plan, out);
+    return out.str();
+}
+
 } // namespace pf::mission

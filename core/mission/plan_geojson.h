@@ -32,4 +32,8 @@ bool writePlanGeoJson(const MissionPlan& plan, std::ostream& out, const PlanGeoJ
 // The same into `path`, atomically (a temporary file beside it, renamed over it when complete).
 Status writePlanGeoJsonFile(const MissionPlan& plan, const std::string& path, const PlanGeoJsonOptions& options = {});
 
+// The plan as GeoJSON text (writePlanGeoJson, default options): for tests and small plans; files are
+// written with writePlanGeoJsonFile, which streams.
+std::string planToGeoJson(const MissionPlan& plan);
+
 } // namespace pf::mission

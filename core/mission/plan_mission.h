@@ -21,14 +21,6 @@
 
 namespace pf::mission {
 
-// The plan as GeoJSON text (writePlanGeoJson, default options): for tests and small plans; files are
-// written with writePlanGeoJsonFile, which streams.
-std::string planToGeoJson(const MissionPlan& plan);
-// The metrics as JSON: {"planner", "aircraft": [{"name", ...metrics, time_s, sorties, photos_saved}],
-// "total": {..., coverage_ratio, nofly_violations, makespan_s}, "coverage_ratio", "nofly_violations",
-// "warnings": [...]}.
-std::string planMetricsJson(const MissionPlan& plan, const std::string& plannerName);
-
 // Plans the mission end to end. One aircraft flies the whole admissible area; several share it through
 // fleet::splitArea, balanced on the time of the route planRegion makes at a fixed grid angle (the
 // mission's, or the one the search picks for the aircraft with the coarsest grid over the whole area),

@@ -7,6 +7,7 @@
 // Writes OUTDIR/photos/AC1_0001.JPG, ... (AC2_ for the second aircraft, ...) and
 // OUTDIR/plan/plan.geojson.
 #include "core/io/mission_file.h"
+#include "core/mission/plan_geojson.h"
 #include "core/mission/plan_mission.h"
 #include "core/sensor/camera.h"
 #include "tests/support/flight_simulator.h"

@@ -1,3 +1,4 @@
+#include "core/mission/plan_geojson.h"
 #include "core/mission/plan_mission.h"
 
 #include "core/geo/polygon_ops.h"

@@ -1,5 +1,6 @@
 // photoflight-cli mosaic: the real executable on simulated photos: exit codes 0/2, the report on
 // stdout, left-out photos named on stderr, and the options' errors.
+#include "core/mission/plan_geojson.h"
 #include "tests/core/cli/cli_test_util.h"
 #include "tests/core/mosaic/mosaic_test_util.h"
 

@@ -1,0 +1,302 @@
+#include "core/mission/build_plan.h"
+
+#include "core/fleet/altitude.h"
+#include "core/fleet/photo_dedup.h"
+#include "core/geo/polygon_ops.h"
+#include "core/job_scope.h"
+#include "core/mission/plan_region.h"
+#include "core/mission/planner_kinds.h"
+#include "core/mission/terrain_stage.h"
+#include "core/plan/coverage_check.h"
+#include "core/plan/planner.h"
+#include "core/route/photo_waypoints.h"
+#include "core/route/safety.h"
+#include "core/route/sorties.h"
+#include "core/route/transit.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace pf::mission::detail {
+
+Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const LocalGeometry& geomRef,
+                              const std::vector<geo::MultiPolygon>& regions,
+                              const std::vector<std::optional<geo::Vec2>>& homes,
+                              const std::optional<geo::Vec2>& landing, bool check,
+                              std::vector<double>* aloneTimes) {
+    const LocalGeometry* geom = &geomRef;
+    const geo::LocalFrame& frame = geom->frame;
+    const std::size_t n = m.aircraft.size();
+    MissionPlan plan;
+    plan.frame = frame;
+
+    // 2. Each aircraft over its region.
+    for (std::size_t k = 0; k < n; ++k) {
+        if (regions[k].empty())
+            return makeError(ErrorCode::InvalidInput,
+                             aircraftLabel(m.aircraft[k]) + ": got no part of the area (too many aircraft for it)");
+        auto ap = planRegion(regions[k], geom->noFly, m.aircraft[k], opt, frame, homes[k], landing);
+        if (stopRequested())
+            return cancelledError();
+        if (!ap)
+            return ap.error();
+        ap->subarea = regions[k];
+        ap->surveyWaypoints = surveyPart(ap->localWaypoints);
+        if (aloneTimes)
+            aloneTimes->push_back(aloneRouteTimeS(ap->surveyWaypoints, m.aircraft[k], homes[k], landing));
+        plan.aircraft.push_back(std::move(*ap));
+    }
+
+    // 3. No second photo of ground another aircraft already takes.
+    if (n > 1) {
+        std::vector<fleet::AircraftPhotos> photos;
+        for (const auto& a : plan.aircraft)
+            photos.push_back({a.surveyWaypoints, a.footprint.acrossM, a.footprint.alongM, a.footprint.real.longSideM,
+                              a.footprint.real.shortSideM});
+        auto saved = fleet::dropDuplicatePhotos(photos);
+        if (!saved)
+            return saved.error();
+        for (std::size_t k = 0; k < n; ++k) {
+            plan.aircraft[k].surveyWaypoints = std::move(photos[k].waypoints);
+            plan.aircraft[k].photosSaved = saved->photosSaved[k];
+            // Where dropped photos leave only turn and transit points between two photos, fly straight.
+            if (saved->photosSaved[k] > 0)
+                route::straightenTransits(plan.aircraft[k].grid, plan.aircraft[k].surveyWaypoints);
+        }
+        plan.photosSaved = saved->totalSaved;
+    }
+
+    // 4. Safety, transit and sorties.
+    const geo::MultiPolygon areaMp{geom->area};
+    const geo::MultiPolygon admissible = geom->noFly.empty() ? areaMp : geo::difference(geom->area, geom->noFly);
+    const route::SafePathFinder safeFinder(route::NoFlyField(geom->noFly, opt.safetyMarginM));
+    // The lawnmower flies what a ground station's Survey flies: straight over the zones, from and back
+    // to home too. Nothing makes it safe; the route check reports every crossing.
+    const route::SafePathFinder straightFinder;
+    std::vector<std::vector<geo::Vec2>> flownPaths;
+    std::vector<plan::PhotoFootprint> photoFootprints;
+    for (std::size_t k = 0; k < n; ++k) {
+        AircraftPlan& ap = plan.aircraft[k];
+        const AircraftConfig& cfg = m.aircraft[k];
+        const std::string who = aircraftLabel(cfg);
+        for (const auto& w : ap.warnings)
+            plan.warnings.push_back(who + ": " + w);
+        if (stopRequested())
+            return cancelledError();
+        reportProgress(check ? 0.6 + 0.25 * static_cast<double>(k) / static_cast<double>(n) : 0.6,
+                       "detours and sorties");
+        const bool yardstick = ap.planner == PlannerKind::Lawnmower;
+        const route::SafePathFinder& finder = yardstick ? straightFinder : safeFinder;
+        std::vector<route::LocalWaypoint> survey = ap.surveyWaypoints;
+        route::SafetyReport rep;
+        if (opt.keepInsideArea && !yardstick) {
+            const route::PhotoSides sides{ap.footprint.acrossM, ap.footprint.alongM, ap.footprint.real.longSideM,
+                                          ap.footprint.real.shortSideM};
+            auto inside = route::keepInsideArea(survey, areaMp, admissible, sides, opt.insideMarginM, finder, &rep);
+            if (!inside)
+                return makeError(inside.error().code, who + ": " + inside.error().message);
+            survey = std::move(*inside);
+        }
+        if (!yardstick) {
+            auto safe = route::enforceNoFly(survey, finder, &rep);
+            if (!safe)
+                return makeError(safe.error().code, who + ": " + safe.error().message);
+            survey = std::move(*safe);
+        }
+        // After the no-fly stage nothing repairs a leg: a waypoint is dropped only where the leg that
+        // replaces it keeps the margin.
+        route::dropNearDuplicates(survey, yardstick ? nullptr : &finder.field());
+        for (const auto& w : rep.warnings)
+            plan.warnings.push_back(who + ": " + w);
+        ap.detours = rep.detours;
+        ap.waypointsMoved = rep.waypointsMoved;
+        ap.keptInside = rep.keptInside;
+        ap.surveyWaypoints = survey;
+
+        const route::FlightModel model = flightModel(cfg);
+        std::vector<route::LocalWaypoint> flown;
+        std::vector<geo::Vec2> path; // home, every waypoint, landing
+        const auto& home = homes[k];
+        if (home) {
+            if (stopRequested())
+                return cancelledError();
+            auto sp = route::splitIntoSorties(survey, *home, finder, model,
+                                              route::SortieOptions{cfg.enduranceMin, opt.batteryReserve}, cfg.name);
+            if (!sp)
+                return makeError(sp.error().code, who + ": " + sp.error().message);
+            if (sp->sorties.size() == 1 && landing && (*landing - *home).norm() > 1e-6) {
+                // One flight landing elsewhere: out from home, back to the landing point.
+                auto t = route::withTransit(survey, *home, finder, landing);
+                if (!t)
+                    return makeError(t.error().code, who + ": " + t.error().message);
+                std::vector<geo::Vec2> poly{*home};
+                for (const auto& w : *t)
+                    poly.push_back(w.pos);
+                poly.push_back(*landing);
+                SortieSummary s;
+                s.firstWaypoint = 0;
+                s.lastWaypoint = static_cast<int>(t->size()) - 1;
+                s.lengthM = polylineLength(poly);
+                s.timeS = route::flightTimeS(poly, model);
+                flown = std::move(*t);
+                ap.sorties.push_back(s);
+            } else {
+                for (const auto& s : sp->sorties) {
+                    // Between two sorties the route flies through home (where the battery is changed): a
+                    // straight leg from one sortie's last waypoint to the next one's first is never
+                    // flown, and may cross a zone, yet the whole route (its check, the map, the one file
+                    // for the aircraft) would join them.
+                    if (!flown.empty())
+                        flown.push_back({*home, route::headingDeg(*home, s.waypoints.front().pos),
+                                         route::WaypointKind::Transit, -1});
+                    SortieSummary sum;
+                    sum.firstWaypoint = static_cast<int>(flown.size());
+                    flown.insert(flown.end(), s.waypoints.begin(), s.waypoints.end());
+                    sum.lastWaypoint = static_cast<int>(flown.size()) - 1;
+                    sum.lengthM = s.lengthM;
+                    sum.timeS = s.timeS;
+                    ap.sorties.push_back(sum);
+                }
+                if (sp->sorties.size() > 1)
+                    plan.warnings.push_back(who + ": the flight needs " + std::to_string(sp->sorties.size()) +
+                                            " batteries (sorties returning home), " + metres(sp->totalTimeS / 60.0, 1) +
+                                            " min in all for " + metres(sp->budgetS / 60.0, 1) + " min per battery");
+            }
+            // Every sortie starts and ends at home: the legs between sorties are flown through it.
+            path.push_back(*home);
+            for (std::size_t si = 0; si < ap.sorties.size(); ++si) {
+                for (int i = ap.sorties[si].firstWaypoint; i <= ap.sorties[si].lastWaypoint; ++i)
+                    path.push_back(flown[static_cast<std::size_t>(i)].pos);
+                if (si + 1 < ap.sorties.size())
+                    path.push_back(*home);
+            }
+            path.push_back(ap.sorties.size() == 1 && landing ? *landing : *home);
+        } else {
+            // No home: the survey alone, one flight; no transit to check.
+            flown = survey;
+            for (const auto& w : flown)
+                path.push_back(w.pos);
+            SortieSummary s;
+            s.lastWaypoint = static_cast<int>(flown.size()) - 1;
+            s.lengthM = polylineLength(path);
+            s.timeS = route::flightTimeS(path, model);
+            ap.sorties.push_back(s);
+            plan.warnings.push_back(who + ": no home point, so no transit and no endurance check");
+        }
+        ap.localWaypoints = flown;
+        ap.timeS = 0.0;
+        ap.flightDistanceM = 0.0;
+        for (auto& s : ap.sorties) {
+            ap.timeS += s.timeS;
+            ap.flightDistanceM += s.lengthM;
+            for (int i = s.firstWaypoint; i <= s.lastWaypoint; ++i)
+                s.photos += flown[static_cast<std::size_t>(i)].kind == route::WaypointKind::Photo;
+        }
+        ap.route.waypoints = routeWaypoints(flown, frame, ap.altitudeM);
+        if (stopRequested())
+            return cancelledError();
+        for (const auto& w : flown)
+            if (w.kind == route::WaypointKind::Photo)
+                photoFootprints.push_back(
+                    {w.pos, w.headingDeg, ap.footprint.real.longSideM, ap.footprint.real.shortSideM});
+        ap.sortieRoutes.clear();
+        // Only the sortie's own waypoints are copied: a copy of the whole route per sortie (then cut)
+        // kept its full capacity, sorties x waypoints in all (3.3 GB for 158 sorties of 523,000).
+        std::vector<route::Waypoint> all = std::move(ap.route.waypoints);
+        ap.route.waypoints.clear();
+        for (const auto& s : ap.sorties) {
+            route::Route r = ap.route; // everything but the waypoints
+            r.waypoints.assign(all.begin() + s.firstWaypoint, all.begin() + s.lastWaypoint + 1);
+            ap.sortieRoutes.push_back(std::move(r));
+        }
+        ap.route.waypoints = std::move(all);
+        ap.metrics.photos = static_cast<int>(std::count_if(flown.begin(), flown.end(), [](const auto& w) {
+            return w.kind == route::WaypointKind::Photo;
+        }));
+        ap.flight = plan::flightTime(path, model);
+        flownPaths.push_back(std::move(path));
+    }
+
+    // 4b. Terrain following (terrain_stage.h): altitudes above the ground, legs checked, waypoints
+    // inserted where the ground rises, times with the climbs, each photo's footprint on the terrain.
+    std::vector<geo::Ring> terrainOutlines;
+    if (m.terrain.prepared)
+        if (auto t = applyTerrain(plan, m, frame, homes, landing, photoFootprints, terrainOutlines); !t)
+            return t.error();
+
+    // 5. Altitude separation between aircraft in the air together.
+    if (n > 1) {
+        std::vector<fleet::AltitudeSlot> slots;
+        for (std::size_t k = 0; k < n; ++k)
+            slots.push_back({m.aircraft[k].name, plan.aircraft[k].altitudeM, m.aircraft[k].maxAltitudeM, 0.0,
+                             plan.aircraft[k].timeS});
+        const fleet::AltitudeCheck alt = fleet::checkAltitudeSeparation(slots, opt.altitudeSeparationM);
+        plan.altitudeConflicts = static_cast<int>(alt.conflicts.size());
+        for (const auto& w : alt.warnings)
+            plan.warnings.push_back(w);
+    }
+
+    // 6. The independent check: real footprints of every photo of every aircraft, margin breaches.
+    if (stopRequested())
+        return cancelledError();
+    if (check) {
+        reportProgress(0.85, "coverage check");
+        JobScope stage(0.85, 1.0);
+        auto cov = plan::checkCoverage(admissible, photoFootprints, {}, m.terrain.prepared ? &terrainOutlines : nullptr);
+        if (stopRequested())
+            return cancelledError();
+        if (!cov)
+            return makeError(cov.error().code, "checking the coverage: " + cov.error().message);
+        plan.coverageRatio = cov->coveredFraction;
+        plan.uncoveredAreaM2 = cov->uncoveredAreaM2;
+        for (const auto& p : cov->patches)
+            plan.uncovered.push_back({p.shape, p.areaM2});
+        if (cov->coveredFraction < kCoverageTarget)
+            plan.warnings.push_back("the photos leave " + metres(cov->uncoveredAreaM2) + " m2 of the area (" +
+                                    metres(100.0 * (1.0 - cov->coveredFraction), 1) + " %) unseen, in " +
+                                    std::to_string(cov->patchCount) + " patch(es)");
+        geo::MultiPolygon pockets;
+        for (const auto& a : plan.aircraft)
+            pockets.insert(pockets.end(), a.grid.pockets().begin(), a.grid.pockets().end());
+        if (!pockets.empty())
+            plan.warnings.push_back(pocketWarning(geo::unite(pockets)));
+        plan.noFlyViolations = plan::countNoFlyViolations(flownPaths, geom->noFly, opt.safetyMarginM).total();
+        if (plan.noFlyViolations > 0)
+            plan.warnings.push_back(std::to_string(plan.noFlyViolations) +
+                                    " waypoint(s) or leg(s) come closer to a no-fly zone than the safety margin");
+    }
+
+    PlanTotals& t = plan.totals;
+    double sumTime = 0.0;
+    for (const auto& a : plan.aircraft) {
+        ++t.aircraft;
+        t.cells += a.metrics.cells;
+        t.visitable += a.metrics.visitable;
+        t.photos += a.metrics.photos;
+        t.pathLengthM += a.metrics.pathLengthM;
+        t.distanceM += a.metrics.distanceM;
+        t.turns += a.metrics.turns;
+        t.flightTurns += a.flight.turns;
+        t.turnAngleDeg += a.metrics.turnAngleDeg;
+        t.jumps += a.metrics.jumps;
+        t.revisits += a.metrics.revisits;
+        t.estimatedTimeS = std::max(t.estimatedTimeS, a.metrics.estimatedTimeS);
+        t.planningMs += a.metrics.planningMs;
+        plan.makespanS = std::max(plan.makespanS, a.timeS);
+        sumTime += a.timeS;
+    }
+    plan.idealS = sumTime / static_cast<double>(n);
+    if (t.jumps > 0) {
+        int detours = 0;
+        for (const auto& a : plan.aircraft)
+            detours += a.detours;
+        plan.warnings.push_back(std::to_string(t.jumps) +
+                                " leg(s) join parts of an aircraft's area that no grid move connects (a no-fly "
+                                "zone or its margin separates them): they are flown straight where that is safe, "
+                                "else around the margins (" + std::to_string(detours) + " detour(s) in all)");
+    }
+    return plan;
+}
+
+} // namespace pf::mission::detail
