@@ -225,5 +225,129 @@ LaneTrimStats trimCoveredLanes(const Decomposition& d, std::vector<std::vector<C
     return stats;
 }
 
+int dropCoveredLanes(const Decomposition& d, std::vector<std::vector<CellLane>>& lanes,
+                     const std::vector<std::vector<char>>& pinned, const SweepLaneParams& p, const SweepGround& ground,
+                     double realAcrossM, double realAlongM, double maxLengthM) {
+    struct Ref {
+        std::size_t cell, lane;
+    };
+    std::vector<Ref> all, candidates;
+    for (std::size_t c = 0; c < lanes.size(); ++c)
+        for (std::size_t j = 0; j < lanes[c].size(); ++j) {
+            all.push_back(Ref{c, j});
+            const auto& l = lanes[c][j];
+            const bool pin = c < pinned.size() && j < pinned[c].size() && pinned[c][j];
+            if (!pin && (l.flyB - l.flyA).norm() <= maxLengthM)
+                candidates.push_back(Ref{c, j});
+        }
+    if (candidates.empty())
+        return 0;
+    std::stable_sort(candidates.begin(), candidates.end(), [&](const Ref& a, const Ref& b) {
+        const auto &la = lanes[a.cell][a.lane], &lb = lanes[b.cell][b.lane];
+        return (la.flyB - la.flyA).squaredNorm() < (lb.flyB - lb.flyA).squaredNorm();
+    });
+    const double s = p.trackSpacingM;
+    const double pad = 0.5 * std::hypot(realAcrossM, realAlongM) + 0.5 * s;
+    // Lanes by the box of their strip, on a grid, to find the photos near a candidate.
+    geo::Box whole{lanes[all.front().cell][all.front().lane].stripA, lanes[all.front().cell][all.front().lane].stripA};
+    std::vector<geo::Box> boxes;
+    boxes.reserve(all.size());
+    for (const auto& r : all) {
+        const auto& l = lanes[r.cell][r.lane];
+        geo::Box b{l.stripA.cwiseMin(l.stripB), l.stripA.cwiseMax(l.stripB)};
+        b.min -= Vec2(pad, pad);
+        b.max += Vec2(pad, pad);
+        boxes.push_back(b);
+        whole.min = whole.min.cwiseMin(b.min);
+        whole.max = whole.max.cwiseMax(b.max);
+    }
+    const double g = std::max(50.0, 2 * pad);
+    const int nx = static_cast<int>((whole.max.x() - whole.min.x()) / g) + 1;
+    const int ny = static_cast<int>((whole.max.y() - whole.min.y()) / g) + 1;
+    std::vector<std::vector<int>> grid(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
+    auto cellRange = [&](const geo::Box& b, int& x0, int& y0, int& x1, int& y1) {
+        x0 = std::clamp(static_cast<int>((b.min.x() - whole.min.x()) / g), 0, nx - 1);
+        y0 = std::clamp(static_cast<int>((b.min.y() - whole.min.y()) / g), 0, ny - 1);
+        x1 = std::clamp(static_cast<int>((b.max.x() - whole.min.x()) / g), 0, nx - 1);
+        y1 = std::clamp(static_cast<int>((b.max.y() - whole.min.y()) / g), 0, ny - 1);
+    };
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        int x0, y0, x1, y1;
+        cellRange(boxes[i], x0, y0, x1, y1);
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x)
+                grid[static_cast<std::size_t>(y) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(x)].push_back(static_cast<int>(i));
+    }
+    std::vector<char> dropped(all.size(), 0);
+    std::vector<std::vector<Vec2>> photos(all.size());
+    std::vector<char> built(all.size(), 0);
+    std::vector<std::size_t> offset(lanes.size() + 1, 0);
+    for (std::size_t c = 0; c < lanes.size(); ++c)
+        offset[c + 1] = offset[c] + lanes[c].size();
+    auto refIndex = [&](const Ref& r) { return offset[r.cell] + r.lane; };
+    const double ha = 0.5 * realAlongM, hc = 0.5 * realAcrossM;
+    const Vec2 u = d.frame.toWorld(Vec2(1, 0)); // every lane runs along u: footprints are aligned with it
+    const double r = std::clamp(s / 20.0, 0.25, 1.5);
+    int count = 0;
+    for (const auto& cand : candidates) {
+        const std::size_t ci = refIndex(cand);
+        const CellLane& l = lanes[cand.cell][cand.lane];
+        // the photos of the other lanes near it
+        int x0, y0, x1, y1;
+        cellRange(boxes[ci], x0, y0, x1, y1);
+        std::vector<int> near;
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x)
+                for (int o : grid[static_cast<std::size_t>(y) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(x)])
+                    if (static_cast<std::size_t>(o) != ci && !dropped[static_cast<std::size_t>(o)] && boxes[static_cast<std::size_t>(o)].intersects(boxes[ci]))
+                        near.push_back(o);
+        std::sort(near.begin(), near.end());
+        near.erase(std::unique(near.begin(), near.end()), near.end());
+        std::vector<Vec2> pts;
+        for (int o : near) {
+            const auto& ref = all[static_cast<std::size_t>(o)];
+            if (!built[static_cast<std::size_t>(o)]) {
+                const auto& ol = lanes[ref.cell][ref.lane];
+                photos[static_cast<std::size_t>(o)] = makeLane(ol.stripA, ol.stripB, p.photoSpacingM, ol.flyA, ol.flyB).photos;
+                built[static_cast<std::size_t>(o)] = 1;
+            }
+            pts.insert(pts.end(), photos[static_cast<std::size_t>(o)].begin(), photos[static_cast<std::size_t>(o)].end());
+        }
+        auto seen = [&](const Vec2& q) {
+            for (const auto& c : pts) {
+                const Vec2 dq = q - c;
+                if (std::abs(dq.dot(u)) <= ha && std::abs(u.x() * dq.y() - u.y() * dq.x()) <= hc)
+                    return true;
+            }
+            return false;
+        };
+        // Everything its own photos see that is ground must be seen by another photo too.
+        const std::vector<Vec2> own = makeLane(l.stripA, l.stripB, p.photoSpacingM, l.flyA, l.flyB).photos;
+        const Vec2 v(-u.y(), u.x());
+        bool covered = !pts.empty();
+        for (std::size_t k = 0; covered && k < own.size(); ++k)
+            for (double b = -hc + 0.5 * r; covered && b < hc; b += r)
+                for (double a = -ha + 0.5 * r; covered && a < ha; a += r) {
+                    const Vec2 q = own[k] + a * u + b * v;
+                    if (ground.insideArea(q) && !ground.inZone(q) && !seen(q))
+                        covered = false;
+                }
+        if (covered) {
+            dropped[ci] = 1;
+            ++count;
+        }
+    }
+    // remove the dropped lanes
+    std::size_t k = 0;
+    for (auto& cl : lanes) {
+        std::vector<CellLane> keep;
+        for (auto& l : cl)
+            if (!dropped[k++])
+                keep.push_back(l);
+        cl = std::move(keep);
+    }
+    return count;
+}
+
 } // namespace pf::plan
 

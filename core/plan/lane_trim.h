@@ -1,5 +1,6 @@
-// Shortening a sweep's lanes to the ground only they photograph: the part of a lane whose strip the
-// other lanes' photos already see, at the overlap the operator set, is not flown.
+// A sweep's lanes not needed: short lanes whose ground the others' photos already see are dropped,
+// and every lane is shortened to the ground only it photographs (the part of its strip the other
+// lanes' photos already see, at the overlap the operator set, is not flown).
 #pragma once
 
 #include "core/plan/decomposition.h"
@@ -8,6 +9,14 @@
 #include <vector>
 
 namespace pf::plan {
+
+// Drops short lanes (flown no longer than maxLengthM, not `pinned`) whose ground the photos of the
+// other lanes already see with the real footprint (across x along): slivers between a zone's margin and
+// the area's edge, or between two margins, often are. Shortest first; a dropped lane no longer counts
+// for the others. Returns how many were dropped.
+int dropCoveredLanes(const Decomposition& d, std::vector<std::vector<CellLane>>& lanes,
+                     const std::vector<std::vector<char>>& pinned, const SweepLaneParams& p, const SweepGround& ground,
+                     double realAcrossM, double realAlongM, double maxLengthM);
 
 struct LaneTrimStats {
     int dropped = 0;       // lanes no longer needed at all

@@ -102,12 +102,4 @@ std::vector<CellLane> cellLanes(const Decomposition& d, const MergedCell& m, con
                                 const SweepLaneParams& p, const SweepGround& ground,
                                 const std::function<bool(const geo::Vec2&, const geo::Vec2&)>& safe);
 
-// Drops short lanes (flown no longer than maxLengthM, not `pinned`) whose ground the photos of the
-// other lanes already see with the real footprint (across x along): slivers between a zone's margin and
-// the area's edge, or between two margins, often are. Shortest first; a dropped lane no longer counts
-// for the others. Returns how many were dropped.
-int dropCoveredLanes(const Decomposition& d, std::vector<std::vector<CellLane>>& lanes,
-                     const std::vector<std::vector<char>>& pinned, const SweepLaneParams& p, const SweepGround& ground,
-                     double realAcrossM, double realAlongM, double maxLengthM);
-
 } // namespace pf::plan
