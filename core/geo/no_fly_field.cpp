@@ -1,6 +1,7 @@
 #include "core/geo/no_fly_field.h"
 
 #include "core/geo/even_odd.h"
+#include "core/geo/point_text.h"
 #include "core/geo/polygon_ops.h"
 
 #include <algorithm>
@@ -71,14 +72,6 @@ double pointSegDist2(const Vec2& p, const Vec2& a, const Vec2& b) {
     const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
     return (a + t * ab - p).squaredNorm();
 }
-
-std::string fmt(double v, int decimals = 1) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-    return buf;
-}
-
-std::string where(const Vec2& p) { return "(" + fmt(p.x()) + ", " + fmt(p.y()) + ") m"; }
 
 } // namespace
 
@@ -215,12 +208,12 @@ Vec2 SafePathFinder::nearestSafePoint(const Vec2& p) const {
 }
 
 Result<std::vector<Vec2>> SafePathFinder::detour(const Vec2& a, const Vec2& b) const {
-    const std::string margin = fmt(m_field.marginM());
+    const std::string margin = fixedText(m_field.marginM());
     if (!m_field.pointIsSafe(a))
-        return makeError(ErrorCode::NoPath, "The point " + where(a) + " lies within the " + margin +
+        return makeError(ErrorCode::NoPath, "The point " + pointText(a) + " lies within the " + margin +
                                                 " m safety margin of a no-fly zone.");
     if (!m_field.pointIsSafe(b))
-        return makeError(ErrorCode::NoPath, "The point " + where(b) + " lies within the " + margin +
+        return makeError(ErrorCode::NoPath, "The point " + pointText(b) + " lies within the " + margin +
                                                 " m safety margin of a no-fly zone.");
     if (m_field.segmentIsSafe(a, b))
         return std::vector<Vec2>{};
@@ -264,7 +257,7 @@ Result<std::vector<Vec2>> SafePathFinder::detour(const Vec2& a, const Vec2& b) c
             relax(n + 1, (m_nodes[static_cast<std::size_t>(u)] - b).norm());
     }
     if (prev[static_cast<std::size_t>(n + 1)] < 0)
-        return makeError(ErrorCode::NoPath, "No safe way from " + where(a) + " to " + where(b) +
+        return makeError(ErrorCode::NoPath, "No safe way from " + pointText(a) + " to " + pointText(b) +
                                                 " keeps the " + margin + " m margin around the no-fly zones.");
     std::vector<Vec2> path;
     for (int v = prev[static_cast<std::size_t>(n + 1)]; v != n; v = prev[static_cast<std::size_t>(v)])

@@ -1,6 +1,8 @@
 // Area and no-fly-zone import through OGR: any supported vector format and CRS -> WGS84 2D polygons.
 #include "core/io/area_import.h"
 
+#include "core/io/waypoint_format_util.h"
+
 #include <cpl_conv.h>
 #include <cpl_error.h>
 #include <cpl_string.h>
@@ -37,19 +39,6 @@ void CPL_STDCALL scopeHandler(CPLErr cls, CPLErrorNum /*num*/, const char* msg) 
         scope->record(msg);
 }
 
-std::string lower(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return s;
-}
-
-std::string extensionOf(const std::string& path) {
-    const auto slash = path.find_last_of("/\\");
-    const auto dot = path.find_last_of('.');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-        return "";
-    return lower(path.substr(dot + 1));
-}
-
 struct DatasetCloser {
     void operator()(GDALDataset* ds) const { GDALClose(ds); }
 };
@@ -64,15 +53,15 @@ constexpr Format kFormats[] = {{"GeoJSON", "GeoJSON"},      {"KML", "KML"},     
                                {"ESRI Shapefile", "Shapefile"}, {"GPKG", "GeoPackage"}, {"GML", "GML"}};
 
 const char* labelForExtension(const std::string& ext) {
-    if (ext == "geojson" || ext == "json")
+    if (ext == ".geojson" || ext == ".json")
         return "GeoJSON";
-    if (ext == "kml")
+    if (ext == ".kml")
         return "KML";
-    if (ext == "shp")
+    if (ext == ".shp")
         return "Shapefile";
-    if (ext == "gpkg")
+    if (ext == ".gpkg")
         return "GeoPackage";
-    if (ext == "gml" || ext == "xml")
+    if (ext == ".gml" || ext == ".xml")
         return "GML";
     return nullptr;
 }
@@ -173,7 +162,7 @@ Result<std::vector<ImportedPolygon>> importPolygons(const std::string& path) {
     else
         return makeError(ErrorCode::IoError, path + ": cannot read the file: " + std::strerror(errno));
 
-    const std::string ext = extensionOf(path);
+    const std::string ext = detail::extensionOf(path);
     detail::GdalErrorScope errors;
 
     // Refuse formats outside the documented list before opening: GDAL would read many more, but only
@@ -189,7 +178,7 @@ Result<std::vector<ImportedPolygon>> importPolygons(const std::string& path) {
     const char* const drivers[] = {"GeoJSON", "KML", "LIBKML", "ESRI Shapefile", "GPKG", "GML", nullptr};
     // GML: do not leave a .gfs schema file beside the user's file.
     const char* const openOptions[] = {"WRITE_GFS=NO", nullptr};
-    const bool isGml = (identified && EQUAL(GDALGetDriverShortName(identified), "GML")) || ext == "gml";
+    const bool isGml = (identified && EQUAL(GDALGetDriverShortName(identified), "GML")) || ext == ".gml";
     DatasetPtr ds(static_cast<GDALDataset*>(GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, drivers,
                                                        isGml ? openOptions : nullptr, nullptr)));
     if (!ds) {

@@ -8,6 +8,11 @@
 
 namespace pf::io {
 
+namespace detail {
+// The "format" value of every mission file.
+inline constexpr const char* kMissionFormatName = "photoflight-mission";
+} // namespace detail
+
 // Reads and checks a mission file. Errors name the file, the field and what is wrong.
 Result<mission::Mission> readMissionFile(const std::string& path);
 // Parses mission JSON text; `sourceName` is used in messages (a path or "<clipboard>").

@@ -10,6 +10,7 @@
 #include "core/mosaic/photo_warper.h"
 #include "core/mosaic/pose_resolver.h"
 #include "core/mosaic/seam_map.h"
+#include "core/mosaic/site_frame.h"
 #include "core/mosaic/utm_projection.h"
 
 #include <algorithm>
@@ -34,23 +35,6 @@ std::string fmt(const char* format, double v) {
     std::snprintf(buf, sizeof buf, format, v);
     return buf;
 }
-
-// The ground model in grid units: UTM stretches horizontal distances by its point scale, and the
-// heights are stretched alike so that view angles stay true.
-class ScaledGround : public GroundModel {
-public:
-    ScaledGround(std::shared_ptr<const GroundModel> base, double k)
-        : m_base(std::move(base)), m_k(k) {}
-    double heightAt(double x, double y) const override { return m_k * m_base->heightAt(x, y); }
-    std::optional<double> levelHeight() const override {
-        const auto h = m_base->levelHeight();
-        return h ? std::optional<double>(m_k * *h) : std::nullopt;
-    }
-
-private:
-    std::shared_ptr<const GroundModel> m_base;
-    double m_k;
-};
 
 // GDAL's block cache is process-wide and defaults to 5 % of the RAM; the scratch rasters would fill
 // it. Lowered for the run, restored afterwards.
@@ -279,27 +263,7 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
                              " photo(s) can be placed: " + summarise(report.findings));
 
     // 3. The output coordinate system: the UTM zone of the site.
-    geo::LonLat site;
-    if (options.plan && !options.plan->area.empty()) {
-        double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-        for (const auto& poly : options.plan->area)
-            for (const auto& p : poly.outer) {
-                x0 = std::min(x0, p.lon);
-                x1 = std::max(x1, p.lon);
-                y0 = std::min(y0, p.lat);
-                y1 = std::max(y1, p.lat);
-            }
-        site = {0.5 * (x0 + x1), 0.5 * (y0 + y1)};
-    } else {
-        std::vector<double> lons, lats;
-        for (const auto& p : poses->photos) {
-            lons.push_back(p.position.lon);
-            lats.push_back(p.position.lat);
-        }
-        std::nth_element(lons.begin(), lons.begin() + lons.size() / 2, lons.end());
-        std::nth_element(lats.begin(), lats.begin() + lats.size() / 2, lats.end());
-        site = {lons[lons.size() / 2], lats[lats.size() / 2]};
-    }
+    const geo::LonLat site = mosaicSite(options, poses->photos);
     auto utmR = UtmProjection::forSite(site);
     if (!utmR)
         return utmR.error();
@@ -317,19 +281,7 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
     std::vector<double> gsds;
     for (int i = 0; i < n; ++i) {
         const PlacedPhoto& p = poses->photos[i];
-        const geo::Vec2 g = utm.toGrid(p.position);
-        CameraPose pose;
-        pose.position = Vec3(g.x(), g.y(), p.altitudeM * k);
-        pose.yawDeg = p.yawDeg + utm.gridFromTrueDeg(p.position);
-        pose.pitchDeg = p.pitchDeg;
-        pose.rollDeg = p.rollDeg;
-        CameraIntrinsics in;
-        in.widthPx = p.meta.widthPx;
-        in.heightPx = p.meta.heightPx;
-        in.longSideFovDeg = p.longSideFovDeg;
-        in.shortSideFovDeg = p.shortSideFovDeg;
-        in.orientation = p.meta.orientation;
-        geoms[i] = photoGeometry(CameraModel(in, pose), ground, options.maxViewAngleDeg);
+        geoms[i] = photoGeometry(gridCamera(p, utm, k), ground, options.maxViewAngleDeg);
         if (!geoms[i].seesGround) {
             active[i] = 0;
             status[i] = "left out: looks too far from the vertical";

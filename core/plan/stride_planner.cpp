@@ -11,7 +11,6 @@
 #include <limits>
 #include <numeric>
 #include <optional>
-#include <unordered_map>
 
 namespace pf::plan {
 
@@ -27,45 +26,10 @@ constexpr double kLaneWeight = 2.0;
 constexpr int kLeadInCellLimit = 5'000;
 constexpr int kAxesCellLimit = 250'000;
 
-int popcount2(unsigned m) { return static_cast<int>((m & 1u) + ((m >> 1) & 1u)); }
-
-// True if the side of c in direction s is a limit: no allowed move there, or the neighbour is visited.
-inline bool blocked(const Grid& g, const std::vector<std::uint8_t>& visited, int c, int s) {
-    return !g.canMove(c, static_cast<Dir>(s)) || visited[c + dirOffset(g, s)] != 0;
-}
-
-inline unsigned limitsOf(const Grid& g, const std::vector<std::uint8_t>& visited, int c, int d) {
-    const int left = (d + 1) % 4, right = (d + 3) % 4;
-    return (blocked(g, visited, c, left) ? kLeftLimit : 0u) | (blocked(g, visited, c, right) ? kRightLimit : 0u);
-}
-
-// Grows a stride; writes its new cells to `out` (cleared) and returns why it stopped.
-StrideStop growStride(const Grid& g, const std::vector<std::uint8_t>& visited, int c0, int d, std::vector<int>& out,
-                      bool full = false) {
-    out.clear();
-    if (blocked(g, visited, c0, d))
-        return StrideStop::None;
-    const int off = dirOffset(g, d);
-    const unsigned m0 = limitsOf(g, visited, c0, d);
-    int cl = c0 + off;
-    out.push_back(cl);
-    for (;;) {
-        if (blocked(g, visited, cl, d))
-            return StrideStop::AreaLimit;
-        const int cn = cl + off;
-        if (!full && popcount2(limitsOf(g, visited, cl, d)) != 2) {
-            const unsigned mn = limitsOf(g, visited, cn, d);
-            if (mn == 0)
-                return StrideStop::NoLimit;
-            if (popcount2(mn) != popcount2(m0))
-                return StrideStop::LimitCountDiffers;
-            if (mn != m0) // both have one limit, on opposite sides
-                return StrideStop::LimitOppositeSide;
-        }
-        out.push_back(cn);
-        cl = cn;
-    }
-}
+using detail::blocked;
+using detail::growStride;
+using detail::limitsOf;
+using detail::popcount2;
 
 // Union-find over small integer ids.
 struct UnionFind {
@@ -498,94 +462,6 @@ private:
 
 } // namespace
 
-unsigned strideLimits(const Grid& g, const std::vector<std::uint8_t>& visited, int c, Dir d) {
-    return limitsOf(g, visited, c, static_cast<int>(d));
-}
-
-Stride buildStride(const Grid& g, const std::vector<std::uint8_t>& visited, int c0, Dir d) {
-    Stride s;
-    s.dir = d;
-    s.stop = growStride(g, visited, c0, static_cast<int>(d), s.cells);
-    return s;
-}
-
-void appendTransit(const Grid& g, CellPath& path, int to) {
-    if (path.cells.empty() || path.cells.back() == to)
-        return;
-    GridSearch search(g);
-    const std::vector<int> p = search.pathTo(path.cells.back(), to);
-    if (p.empty()) {
-        ++path.jumps;
-        path.cells.push_back(to);
-        path.revisit.push_back(true);
-        return;
-    }
-    for (int c : p) {
-        path.cells.push_back(c);
-        path.revisit.push_back(true);
-    }
-}
-
-void cleanUpRevisits(const Grid& g, CellPath& path) {
-    const std::size_t n = path.cells.size();
-    if (n < 3)
-        return;
-    CellPath out;
-    out.jumps = path.jumps;
-    out.cells.reserve(n);
-    out.revisit.reserve(n);
-    std::unordered_map<int, std::size_t> lastPos;
-    std::size_t windowEnd = 0; // last position of the current window (exclusive bound + 1)
-    std::size_t i = 0;
-    bool pushCurrent = true;
-    while (i < n) {
-        if (pushCurrent) {
-            out.cells.push_back(path.cells[i]);
-            out.revisit.push_back(path.revisit[i]);
-        }
-        pushCurrent = true;
-        if (i + 2 >= n || !path.revisit[i + 1]) {
-            ++i;
-            continue;
-        }
-        // The window: the run of transit occurrences after i, plus the occurrence ending it.
-        if (windowEnd <= i + 1) {
-            std::size_t e = i + 1;
-            while (e + 1 < n && path.revisit[e + 1])
-                ++e;
-            windowEnd = std::min(e + 1, n - 1);
-            lastPos.clear();
-            for (std::size_t k = i + 1; k <= windowEnd; ++k)
-                lastPos[path.cells[k]] = k;
-        }
-        const int c = path.cells[i];
-        std::size_t far = 0;
-        bool same = false;
-        auto consider = [&](int cell, bool isSame) {
-            auto it = lastPos.find(cell);
-            if (it != lastPos.end() && it->second >= i + 2 && it->second > far) {
-                far = it->second;
-                same = isSame;
-            }
-        };
-        consider(c, true);
-        for (int d = 0; d < 4; ++d)
-            if (g.canMove(c, static_cast<Dir>(d)))
-                consider(c + dirOffset(g, d), false);
-        if (far == 0) {
-            ++i;
-            continue;
-        }
-        // Occurrences i+1 .. far-1 are all transits: drop them. When path[far] is the same cell as
-        // path[i], drop it too and keep i's occurrence, photographed if either of the two was (a path
-        // that leaves a cell in transit and comes back to photograph it photographs it once).
-        i = far;
-        pushCurrent = !same;
-        if (same && !path.revisit[far])
-            out.revisit.back() = false;
-    }
-    path = std::move(out);
-}
 
 std::vector<StrideVariant> strideVariants(const Grid& g, int start) {
     std::vector<StrideVariant> v{{}, {kLaneWeight, -1, -1}};

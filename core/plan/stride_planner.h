@@ -3,43 +3,15 @@
 
 #include "core/grid/grid.h"
 #include "core/plan/cell_path.h"
+#include "core/plan/path_cleanup.h"
 #include "core/plan/planner.h"
+#include "core/plan/stride_rules.h"
 #include "core/result.h"
 
 #include <cstdint>
 #include <vector>
 
 namespace pf::plan {
-
-// Sides of a cell, relative to a stride direction, where a limit lies (bit set):
-constexpr unsigned kLeftLimit = 1u;  // on the left of the stride direction
-constexpr unsigned kRightLimit = 2u; // on the right
-
-// The limits of cell c orthogonal to direction d (the paper's L(c), with the side of each). A side is a
-// limit when the move there is not allowed (the neighbour is outside the area, not visitable, past the
-// grid's edge, or the straight segment to it is unsafe) or when the neighbour is already visited.
-unsigned strideLimits(const grid::Grid& g, const std::vector<std::uint8_t>& visited, int c, grid::Dir d);
-
-// Why a stride stopped growing.
-enum class StrideStop {
-    None,              // no stride: the first cell is visited or cannot be reached
-    AreaLimit,         // the next cell is visited, not visitable, or the move to it is not allowed
-    NoLimit,           // rule (1): L(cn) = 0
-    LimitCountDiffers, // rule (2): L(cn) != L(c0)
-    LimitOppositeSide, // rule (3): L(cn) = 1 with the limit on the other side than c0's
-};
-
-struct Stride {
-    grid::Dir dir = grid::Dir::East;
-    std::vector<int> cells; // the new cells, c0 excluded; the paper's length is cells.size() + 1
-    StrideStop stop = StrideStop::None;
-    int length() const { return cells.empty() ? 0 : static_cast<int>(cells.size()) + 1; }
-};
-
-// The longest stride from c0 in direction d under the paper's rules: the first neighbour is always
-// taken; each further cell cn after the last cell cl is added when it is unvisited and reachable and
-// either L(cl) = 2, or L(cn) equals L(c0) with the limits on the same sides (L(cn) != 0).
-Stride buildStride(const grid::Grid& g, const std::vector<std::uint8_t>& visited, int c0, grid::Dir d);
 
 // What happened while planning, for tests and reports.
 struct StrideTrace {
@@ -85,13 +57,5 @@ Result<CellPath> planStrideVariant(const grid::Grid& g, const CoverageRequest& r
 // start and the best path by `choice` is kept (the earlier variant on a tie); `trace` describes it.
 Result<CellPath> planStride(const grid::Grid& g, const CoverageRequest& req, StrideTrace* trace = nullptr,
                             const StrideChoice& choice = {});
-
-// The paper's clean-up: removes each sequence of transit occurrences that joins two cells which are
-// the same or joined by an allowed move. Photographed occurrences are never removed.
-void cleanUpRevisits(const grid::Grid& g, CellPath& path);
-
-// Appends a transit path from the path's last cell to `to` (shortest over allowed moves; a jump if no
-// allowed path exists). Used for landing paths by every planner.
-void appendTransit(const grid::Grid& g, CellPath& path, int to);
 
 } // namespace pf::plan

@@ -3,6 +3,7 @@
 #include "core/job_scope.h"
 
 #include "core/geo/polygon_ops.h"
+#include "core/geo/point_text.h"
 #include "core/sensor/footprint.h"
 
 #include <algorithm>
@@ -15,15 +16,9 @@ namespace pf::route {
 
 namespace {
 
+using geo::fixedText;
+using geo::pointText;
 using geo::Vec2;
-
-std::string fmt(double v, int decimals = 1) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-    return buf;
-}
-
-std::string where(const Vec2& p) { return "(" + fmt(p.x()) + ", " + fmt(p.y()) + ") m"; }
 
 } // namespace
 
@@ -52,8 +47,9 @@ Result<std::vector<LocalWaypoint>> enforceNoFly(const std::vector<LocalWaypoint>
         if (finder.field().pointIsSafe(moved[i].pos))
             continue;
         const Vec2 to = finder.nearestSafePoint(moved[i].pos);
-        rep.warnings.push_back("Waypoint " + std::to_string(i + 1) + " at " + where(moved[i].pos) +
-                               " was inside a no-fly margin and moved " + fmt((to - moved[i].pos).norm()) + " m out.");
+        rep.warnings.push_back("Waypoint " + std::to_string(i + 1) + " at " + pointText(moved[i].pos) +
+                               " was inside a no-fly margin and moved " +
+                               fixedText((to - moved[i].pos).norm()) + " m out.");
         moved[i].pos = to;
         ++rep.waypointsMoved;
     }
@@ -105,7 +101,7 @@ Result<std::vector<LocalWaypoint>> keepInsideArea(const std::vector<LocalWaypoin
         return makeError(ErrorCode::InvalidInput, "The inside margin must not be negative.");
     const geo::MultiPolygon inner = marginM > 0 ? geo::buffer(area, -marginM) : area;
     if (inner.empty() || geo::area(inner) <= 0)
-        return makeError(ErrorCode::InvalidInput, "The area shrunk by the inside margin of " + fmt(marginM) +
+        return makeError(ErrorCode::InvalidInput, "The area shrunk by the inside margin of " + fixedText(marginM) +
                                                       " m is empty: reduce the margin.");
     auto rect = [](const Vec2& p, double h, double across, double along) {
         return geo::Polygon{sensor::footprintRing(sensor::PhotoFootprint{p, h, across, along}), {}};
@@ -154,7 +150,7 @@ Result<std::vector<LocalWaypoint>> keepInsideArea(const std::vector<LocalWaypoin
         w.pos = from + lo * (target - from);
         ++rep.leftOutside;
         rep.warnings.push_back("Photo waypoint " + std::to_string(i + 1) + " stays " +
-                               fmt((target - w.pos).norm()) +
+                               fixedText((target - w.pos).norm()) +
                                " m outside the area: moving it further in would leave part of its ground unphotographed.");
     }
     return out;
