@@ -1,8 +1,8 @@
 #include "ui/mission_files.h"
 
+#include "core/data_dir.h"
 #include "core/geo/polygon_ops.h"
 #include "core/io/area_import.h"
-#include "core/io/catalog.h"
 #include "core/io/mission_file.h"
 #include "core/io/waypoint_formats.h"
 #include "ui/autosave.h"
@@ -175,7 +175,7 @@ bool MissionFiles::openMission(const QString& path, QString* error) {
 }
 
 bool MissionFiles::openDemoMission(QString* error) {
-    const QString data = QString::fromStdString(io::dataDirectory());
+    const QString data = QString::fromStdString(pf::dataDirectory());
     const QString path = data + QStringLiteral("/demo/demo_mission.json");
     if (data.isEmpty() || !QFileInfo::exists(path)) {
         const QString why = tr("The demo mission was not found (looked for demo/demo_mission.json in the data directory).");

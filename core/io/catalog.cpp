@@ -1,5 +1,7 @@
 // The camera and aircraft catalog: reading resources/catalog.json and the user's own catalog.
 #include "core/io/catalog.h"
+
+#include "core/data_dir.h"
 #include "core/io/json_reader.h"
 #include "core/io/json_util.h"
 
@@ -131,26 +133,6 @@ public:
     }
 };
 
-// The bundled data directories, most specific first.
-std::vector<std::string> dataDirectoryCandidates() {
-    std::vector<std::string> dirs;
-    if (const char* env = std::getenv("PHOTOFLIGHT_DATA_DIR"); env && *env)
-        dirs.emplace_back(env);
-    // A relocated installation: <prefix>/bin/photoflight-cli next to <prefix>/share/photoflight.
-    char exe[4096];
-    const ssize_t n = ::readlink("/proc/self/exe", exe, sizeof exe - 1);
-    if (n > 0) {
-        std::string p(exe, static_cast<std::size_t>(n));
-        const auto slash = p.find_last_of('/');
-        if (slash != std::string::npos)
-            dirs.push_back(p.substr(0, slash) + "/../share/photoflight");
-    }
-    if (*PF_INSTALL_DATA_DIR)
-        dirs.emplace_back(PF_INSTALL_DATA_DIR);
-    if (*PF_SOURCE_DATA_DIR)
-        dirs.emplace_back(PF_SOURCE_DATA_DIR);
-    return dirs;
-}
 
 using detail::jsonNumber;
 
@@ -244,18 +226,12 @@ Catalog mergeCatalogs(Catalog base, const Catalog& extra) {
     return base;
 }
 
-std::string dataDirectory() {
-    for (const auto& dir : dataDirectoryCandidates())
-        if (isFile(dir + "/catalog.json"))
-            return dir;
-    return "";
-}
 
 Result<Catalog> loadDefaultCatalog() {
-    const std::string dir = dataDirectory();
+    const std::string dir = pf::dataDirectory();
     if (dir.empty()) {
         std::string searched;
-        for (const auto& d : dataDirectoryCandidates())
+        for (const auto& d : pf::dataDirectoryCandidates())
             searched += (searched.empty() ? "" : ", ") + d;
         return makeError(ErrorCode::NotFound, "the bundled catalog.json was not found (searched: " + searched +
                                                   "); set PHOTOFLIGHT_DATA_DIR to the folder holding it");

@@ -26,7 +26,5 @@ Catalog mergeCatalogs(Catalog base, const Catalog& extra);
 // The bundled catalog found in $PHOTOFLIGHT_DATA_DIR, the installed data directory or the source
 // tree's resources/, merged with the user's catalog (~/.local/share/photoflight/catalog.json) if any.
 Result<Catalog> loadDefaultCatalog();
-// The directory holding the bundled data (catalog.json, demo/), searched as above; empty if none.
-std::string dataDirectory();
 
 } // namespace pf::io

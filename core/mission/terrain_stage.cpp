@@ -1,7 +1,7 @@
 #include "core/mission/terrain_stage.h"
 
 #include "core/geo/polygon_ops.h"
-#include "core/io/catalog.h"
+#include "core/data_dir.h"
 #include "core/route/terrain_follow.h"
 #include "core/sensor/camera.h"
 #include "core/terrain/terrain_footprint.h"
@@ -42,7 +42,7 @@ std::string locateDem(const std::string& path) {
         return path;
     const std::string name = std::filesystem::path(path).filename().string();
     std::vector<std::string> dirs;
-    if (const std::string data = io::dataDirectory(); !data.empty())
+    if (const std::string data = pf::dataDirectory(); !data.empty())
         dirs.push_back(data + "/maps");
 #ifdef PF_BUILD_MAPS_DIR
     dirs.emplace_back(PF_BUILD_MAPS_DIR);

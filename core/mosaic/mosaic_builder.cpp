@@ -2,7 +2,7 @@
 
 #include "core/geo/ogr_adapter.h"
 #include "core/geo/polygon_ops.h"
-#include "core/mosaic/gdal_util.h"
+#include "core/geo/gdal_util.h"
 #include "core/mosaic/mosaic_canvas.h"
 #include "core/mosaic/mosaic_vectors.h"
 #include "core/mosaic/photo_geometry.h"
@@ -150,7 +150,7 @@ std::string defaultVectorPath(const std::string& outputPath) {
 
 Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progress) {
     const auto started = std::chrono::steady_clock::now();
-    detail::ensureGdalRegistered();
+    geo::detail::ensureGdalRegistered();
 
     // Options.
     if (options.photos.empty())
@@ -209,7 +209,7 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
         for (const auto& p : options.photos) {
             const std::string key = std::filesystem::weakly_canonical(p, ec).string();
             if (!seen.insert(ec ? p : key).second) {
-                report.findings.push_back({detail::fileName(p), PhotoFinding::Kind::Duplicate, true,
+                report.findings.push_back({geo::detail::fileName(p), PhotoFinding::Kind::Duplicate, true,
                                            "given twice: used once"});
                 continue;
             }
@@ -242,7 +242,7 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
         }
         // The core's messages start with the file name; the finding names it already.
         std::string msg = readErrors[i];
-        const std::string name = detail::fileName(paths[i]);
+        const std::string name = geo::detail::fileName(paths[i]);
         if (msg.rfind(name + ": ", 0) == 0)
             msg = msg.substr(name.size() + 2);
         report.findings.push_back({name, PhotoFinding::Kind::Unreadable, true, msg});
@@ -286,7 +286,7 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
             active[i] = 0;
             status[i] = "left out: looks too far from the vertical";
             report.findings.push_back(
-                {detail::fileName(p.meta.path), PhotoFinding::Kind::Unused, true,
+                {geo::detail::fileName(p.meta.path), PhotoFinding::Kind::Unused, true,
                  "looks " + fmt("%.0f", geoms[i].camera.offNadirDeg()) +
                      " degrees from the vertical: none of its ground is within " +
                      fmt("%.0f", options.maxViewAngleDeg) + " degrees of it"});
@@ -381,7 +381,7 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
             active[i] = 0;
             status[i] = "not used: other photos see all of its ground more from above";
             report.findings.push_back(
-                {detail::fileName(poses->photos[i].meta.path), PhotoFinding::Kind::Unused, false,
+                {geo::detail::fileName(poses->photos[i].meta.path), PhotoFinding::Kind::Unused, false,
                  "not used: other photos see all of its ground more from above"});
         }
 
@@ -416,7 +416,7 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
             }
             active[i] = 0;
             status[i] = "left out: " + msg;
-            report.findings.push_back({detail::fileName(poses->photos[i].meta.path),
+            report.findings.push_back({geo::detail::fileName(poses->photos[i].meta.path),
                                        PhotoFinding::Kind::Unreadable, true, msg});
         };
         auto rgb = warpPhoto(poses->photos[i].meta.path, geoms[i], ground, grid, w);
@@ -535,7 +535,7 @@ Result<MosaicReport> buildMosaic(const MosaicOptions& options, Progress& progres
     for (int i = 0; i < n; ++i) {
         const PlacedPhoto& p = poses->photos[i];
         VectorPhoto v;
-        v.file = detail::fileName(p.meta.path);
+        v.file = geo::detail::fileName(p.meta.path);
         v.used = active[i] != 0;
         v.status = status[i];
         v.footprint = geoms[i].footprint;

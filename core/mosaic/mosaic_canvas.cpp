@@ -1,6 +1,6 @@
 #include "core/mosaic/mosaic_canvas.h"
 
-#include "core/mosaic/gdal_util.h"
+#include "core/geo/gdal_util.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,7 +27,7 @@ MosaicCanvas::~MosaicCanvas() {
 Result<std::unique_ptr<MosaicCanvas>> MosaicCanvas::create(const OutputGrid& grid,
                                                            const std::string& wkt,
                                                            const std::string& scratchPath) {
-    detail::ensureGdalRegistered();
+    geo::detail::ensureGdalRegistered();
     std::unique_ptr<MosaicCanvas> canvas(new MosaicCanvas);
     canvas->m_impl = std::make_unique<Impl>();
     canvas->m_impl->path = scratchPath;
@@ -37,7 +37,7 @@ Result<std::unique_ptr<MosaicCanvas>> MosaicCanvas::create(const OutputGrid& gri
     const char* const options[] = {"TILED=YES",        "BLOCKXSIZE=256",   "BLOCKYSIZE=256",
                                    "INTERLEAVE=PIXEL", "BIGTIFF=IF_SAFER", "SPARSE_OK=TRUE",
                                    "PHOTOMETRIC=RGB",  "ALPHA=YES",        nullptr};
-    detail::GdalErrorCapture errors;
+    geo::detail::GdalErrorCapture errors;
     canvas->m_impl->ds.reset(gtiff ? gtiff->Create(scratchPath.c_str(), grid.width, grid.height, 4,
                                                    GDT_Byte, const_cast<char**>(options))
                                    : nullptr);
@@ -60,7 +60,7 @@ Status MosaicCanvas::add(const PixelWindow& w, const std::vector<std::uint8_t>& 
     auto& buf = m_impl->buffer;
     const std::size_t n = static_cast<std::size_t>(w.w) * w.h;
     buf.resize(n * 4);
-    detail::GdalErrorCapture errors;
+    geo::detail::GdalErrorCapture errors;
     GDALDataset& ds = *m_impl->ds;
     if (ds.RasterIO(GF_Read, w.x0, w.y0, w.w, w.h, buf.data(), w.w, w.h, GDT_Byte, 4, nullptr, 4,
                     4 * w.w, 1, nullptr) != CE_None)
@@ -124,7 +124,7 @@ Status MosaicCanvas::writeGeoTiff(const std::string& path, bool jpeg,
         final.parent_path() / ("." + final.filename().string() + ".partial");
     ProgressBridge bridge;
     bridge.fn = &progress;
-    detail::GdalErrorCapture errors;
+    geo::detail::GdalErrorCapture errors;
     GDALDatasetUniquePtr out(cog->CreateCopy(temp.string().c_str(), &ds, FALSE,
                                              const_cast<char**>(options.data()), gdalProgress,
                                              &bridge));

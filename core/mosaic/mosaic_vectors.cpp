@@ -2,7 +2,7 @@
 
 #include "core/geo/ogr_adapter.h"
 #include "core/geo/polygon_ops.h"
-#include "core/mosaic/gdal_util.h"
+#include "core/geo/gdal_util.h"
 
 #include <ogrsf_frmts.h>
 
@@ -36,7 +36,7 @@ Status writeMosaicVectors(const std::string& path, const std::string& wkt,
                           const std::vector<VectorPhoto>& photos,
                           const std::vector<geo::Polygon>& gaps,
                           const std::vector<VectorPoint>& missing) {
-    detail::ensureGdalRegistered();
+    geo::detail::ensureGdalRegistered();
     GDALDriver* gpkg = GetGDALDriverManager()->GetDriverByName("GPKG");
     if (!gpkg)
         return makeError(ErrorCode::Unsupported, "this GDAL has no GeoPackage driver");
@@ -45,7 +45,7 @@ Status writeMosaicVectors(const std::string& path, const std::string& wkt,
         final.parent_path() / ("." + final.stem().string() + ".partial.gpkg");
     std::error_code ec;
     std::filesystem::remove(temp, ec);
-    detail::GdalErrorCapture errors;
+    geo::detail::GdalErrorCapture errors;
     auto write = [&]() -> Status {
         GDALDatasetUniquePtr ds(gpkg->Create(temp.string().c_str(), 0, 0, 0, GDT_Unknown, nullptr));
         if (!ds)

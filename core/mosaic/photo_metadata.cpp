@@ -1,6 +1,6 @@
 #include "core/mosaic/photo_metadata.h"
 
-#include "core/mosaic/gdal_util.h"
+#include "core/geo/gdal_util.h"
 
 #include <cpl_string.h>
 
@@ -130,12 +130,12 @@ std::optional<double> itemNumber(GDALDataset& ds, const char* key) {
 } // namespace
 
 Result<PhotoMetadata> readPhotoMetadata(const std::string& path) {
-    const std::string name = detail::fileName(path);
+    const std::string name = geo::detail::fileName(path);
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
         return makeError(ErrorCode::IoError, name + ": no such file");
-    detail::GdalErrorCapture errors;
-    auto ds = detail::openRaster(path);
+    geo::detail::GdalErrorCapture errors;
+    auto ds = geo::detail::openRaster(path);
     if (!ds)
         return makeError(
             ErrorCode::ParseError,
@@ -211,11 +211,11 @@ Result<PhotoMetadata> readPhotoMetadata(const std::string& path) {
 }
 
 Status checkPhotoDecodes(const std::string& path) {
-    const std::string name = detail::fileName(path);
+    const std::string name = geo::detail::fileName(path);
     // libjpeg's complaints about damaged data are warnings by default; here they are failures.
     CPLConfigOptionSetter strict("GDAL_ERROR_ON_LIBJPEG_WARNING", "TRUE", true);
-    detail::GdalErrorCapture errors;
-    auto ds = detail::openRaster(path);
+    geo::detail::GdalErrorCapture errors;
+    auto ds = geo::detail::openRaster(path);
     if (!ds)
         return makeError(ErrorCode::ParseError, name + ": not an image GDAL can read");
     GDALRasterBand* band = ds->GetRasterBand(1);

@@ -1,6 +1,6 @@
 #include "core/mosaic/photo_warper.h"
 
-#include "core/mosaic/gdal_util.h"
+#include "core/geo/gdal_util.h"
 
 #include <gdal_alg.h>
 #include <gdalwarper.h>
@@ -66,7 +66,7 @@ struct WarpOptionsDeleter {
 Result<WarpedWindow> warpPhoto(const std::string& path, const PhotoGeometry& photo,
                                const GroundModel& ground, const OutputGrid& grid,
                                const PixelWindow& window, Resampling resampling) {
-    const std::string name = detail::fileName(path);
+    const std::string name = geo::detail::fileName(path);
     WarpedWindow out;
     out.window = window;
     out.rgb.assign(static_cast<std::size_t>(window.w) * window.h * 3, 0);
@@ -74,8 +74,8 @@ Result<WarpedWindow> warpPhoto(const std::string& path, const PhotoGeometry& pho
         return out;
 
     CPLConfigOptionSetter strict("GDAL_ERROR_ON_LIBJPEG_WARNING", "TRUE", true);
-    detail::GdalErrorCapture errors;
-    auto ds = detail::openRaster(path);
+    geo::detail::GdalErrorCapture errors;
+    auto ds = geo::detail::openRaster(path);
     if (!ds)
         return makeError(ErrorCode::ParseError,
                          name + ": cannot be opened any more (" + errors.message() + ")");

@@ -1,7 +1,7 @@
 #include "core/mosaic/planned_flight.h"
 
 #include "core/geo/ogr_adapter.h"
-#include "core/mosaic/gdal_util.h"
+#include "core/geo/gdal_util.h"
 
 #include <ogrsf_frmts.h>
 
@@ -34,8 +34,8 @@ Result<PlannedFlight> readPlannedFlight(const std::string& pathIn) {
         return makeError(ErrorCode::IoError,
                          name + ": no such file (give the plan's directory or its plan.geojson, "
                                 "as written by photoflight-cli plan --out DIR)");
-    detail::ensureGdalRegistered();
-    detail::GdalErrorCapture errors;
+    geo::detail::ensureGdalRegistered();
+    geo::detail::GdalErrorCapture errors;
     const char* const drivers[] = {"GeoJSON", nullptr};
     GDALDatasetUniquePtr ds(
         GDALDataset::Open(name.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, drivers));

@@ -2,7 +2,7 @@
 
 #include "core/geo/local_frame.h"
 #include "core/geo/polygon_ops.h"
-#include "core/mosaic/gdal_util.h"
+#include "core/geo/gdal_util.h"
 #include "core/mosaic/plan_matching.h"
 
 #include <algorithm>
@@ -163,7 +163,7 @@ Result<ResolvedPoses> resolvePoses(const std::vector<PhotoMetadata>& metas,
     for (const auto& m : metas) {
         Work w;
         w.meta = &m;
-        w.file = detail::fileName(m.path);
+        w.file = geo::detail::fileName(m.path);
         w.position = m.position;
         work.push_back(w);
     }

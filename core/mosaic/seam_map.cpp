@@ -1,7 +1,7 @@
 #include "core/mosaic/seam_map.h"
 
 #include "core/geo/ogr_adapter.h"
-#include "core/mosaic/gdal_util.h"
+#include "core/geo/gdal_util.h"
 
 #include <gdal_alg.h>
 #include <ogrsf_frmts.h>
@@ -95,7 +95,7 @@ Result<std::unique_ptr<SeamMap>> SeamMap::compute(const std::vector<PhotoGeometr
                                                   const std::function<bool(double)>& progress) {
     if (photos.size() >= 65535)
         return makeError(ErrorCode::TooLarge, "at most 65534 photos fit in one mosaic");
-    detail::ensureGdalRegistered();
+    geo::detail::ensureGdalRegistered();
     std::unique_ptr<SeamMap> map(new SeamMap);
     map->m_grid = grid;
     map->m_windows.assign(photos.size(), PixelWindow{});
@@ -106,7 +106,7 @@ Result<std::unique_ptr<SeamMap>> SeamMap::compute(const std::vector<PhotoGeometr
     const char* const options[] = {"TILED=YES",        "BLOCKXSIZE=256", "BLOCKYSIZE=256",
                                    "INTERLEAVE=PIXEL", "COMPRESS=ZSTD",  "ZSTD_LEVEL=1",
                                    "BIGTIFF=IF_SAFER", "SPARSE_OK=TRUE", nullptr};
-    detail::GdalErrorCapture errors;
+    geo::detail::GdalErrorCapture errors;
     map->m_impl->ds.reset(gtiff ? gtiff->Create(scratchPath.c_str(), grid.width, grid.height, 2,
                                                 GDT_UInt16, const_cast<char**>(options))
                                 : nullptr);
@@ -228,7 +228,7 @@ Result<std::unique_ptr<SeamMap>> SeamMap::compute(const std::vector<PhotoGeometr
         for (long long t = next++; t < tiles && !stop; t = next++) {
             labelTile(t, &tile);
             std::lock_guard<std::mutex> lock(map->m_impl->mutex);
-            detail::GdalErrorCapture werrors;
+            geo::detail::GdalErrorCapture werrors;
             const CPLErr err = map->m_impl->ds->RasterIO(
                 GF_Write, tile.window.x0, tile.window.y0, tile.window.w, tile.window.h,
                 tile.labels.data(), tile.window.w, tile.window.h, GDT_UInt16, 2, nullptr, 4,
@@ -268,7 +268,7 @@ Status SeamMap::read(const PixelWindow& w, std::vector<std::uint16_t>* best,
     std::vector<std::uint16_t> both(static_cast<std::size_t>(w.w) * w.h * 2);
     {
         std::lock_guard<std::mutex> lock(m_impl->mutex);
-        detail::GdalErrorCapture errors;
+        geo::detail::GdalErrorCapture errors;
         if (m_impl->ds->RasterIO(GF_Read, w.x0, w.y0, w.w, w.h, both.data(), w.w, w.h, GDT_UInt16,
                                  2, nullptr, 4, 4 * w.w, 2, nullptr) != CE_None)
             return makeError(ErrorCode::IoError, "cannot read the scratch file " + m_impl->path +
@@ -295,7 +295,7 @@ Result<std::vector<geo::MultiPolygon>> SeamMap::seamPolygons(int photoCount) con
     OGRFieldDefn field("label", OFTInteger);
     layer->CreateField(&field);
     GDALRasterBand* band = m_impl->ds->GetRasterBand(1);
-    detail::GdalErrorCapture errors;
+    geo::detail::GdalErrorCapture errors;
     if (GDALPolygonize(band, band, layer, 0, nullptr, nullptr, nullptr) != CE_None)
         return makeError(ErrorCode::Internal, "cannot trace the seams (" + errors.message() + ")");
     std::vector<geo::MultiPolygon> out(photoCount);

@@ -1,7 +1,7 @@
 #include "core/terrain/dem.h"
 
 #include "core/geo/polygon_ops.h"
-#include "core/mosaic/gdal_util.h"
+#include "core/geo/gdal_util.h"
 #include "core/terrain/direct_resample.h"
 
 #include <gdal_utils.h>
@@ -17,7 +17,7 @@ namespace pf::terrain {
 
 namespace {
 
-using mosaic::detail::GdalErrorCapture;
+using geo::detail::GdalErrorCapture;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr std::size_t kMaxNodes = 16'000'000;
@@ -133,10 +133,10 @@ Dem::~Dem() = default;
 const DemInfo& Dem::info() const { return m->info; }
 
 Result<Dem> Dem::open(const std::string& path) {
-    mosaic::detail::ensureGdalRegistered();
+    geo::detail::ensureGdalRegistered();
     const std::string who = "the terrain model \"" + path + "\"";
     GdalErrorCapture errors;
-    GDALDatasetUniquePtr ds = mosaic::detail::openRaster(path);
+    GDALDatasetUniquePtr ds = geo::detail::openRaster(path);
     if (!ds) {
         std::string why = errors.message();
         return makeError(ErrorCode::IoError, who + " cannot be read" + (why.empty() ? "" : ": " + why) +
@@ -265,9 +265,9 @@ bool Dem::looksLikeDem(const std::string& path) {
         return true;
     if (ext != "tif" && ext != "tiff" && ext != "vrt")
         return false;
-    mosaic::detail::ensureGdalRegistered();
+    geo::detail::ensureGdalRegistered();
     GdalErrorCapture errors;
-    GDALDatasetUniquePtr ds = mosaic::detail::openRaster(path);
+    GDALDatasetUniquePtr ds = geo::detail::openRaster(path);
     if (!ds || ds->GetRasterCount() != 1 || !ds->GetSpatialRef())
         return false;
     double gt[6];

@@ -1,6 +1,6 @@
 #include "ui/map/base_maps.h"
 
-#include "core/io/catalog.h"
+#include "core/data_dir.h"
 #include "ui/map/gdal_tile_source.h"
 
 #include <QCoreApplication>
@@ -17,7 +17,7 @@ QString demoMapPath() {
 #ifdef PF_BUILD_DEMO_MAP
     candidates << QStringLiteral(PF_BUILD_DEMO_MAP);
 #endif
-    const QString data = QString::fromStdString(io::dataDirectory());
+    const QString data = QString::fromStdString(pf::dataDirectory());
     if (!data.isEmpty()) candidates << data + QStringLiteral("/maps/demo_map.tif");
     candidates << QCoreApplication::applicationDirPath() + QStringLiteral("/../share/photoflight/maps/demo_map.tif");
     for (const QString& c : candidates)

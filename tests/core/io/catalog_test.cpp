@@ -1,5 +1,6 @@
 // Catalog: the bundled figures against the papers and published specifications, the search order,
 // the user's additions, and errors that name the file and the entry.
+#include "core/data_dir.h"
 #include "core/io/catalog.h"
 
 #include <gtest/gtest.h>
@@ -175,7 +176,7 @@ TEST(Catalog, DefaultCatalogFollowsDataDirAndMergesTheUsersCatalog) {
     {
         ScopedEnv data("PHOTOFLIGHT_DATA_DIR", dataDir);
         ScopedEnv xdg("XDG_DATA_HOME", userHome);
-        EXPECT_EQ(dataDirectory(), dataDir);
+        EXPECT_EQ(pf::dataDirectory(), dataDir);
         auto cat = loadDefaultCatalog();
         ASSERT_TRUE(cat) << cat.error().message;
         EXPECT_EQ(cat->cameras.size(), 2u);
@@ -205,7 +206,7 @@ TEST(Catalog, DefaultCatalogFollowsDataDirAndMergesTheUsersCatalog) {
 TEST(Catalog, DefaultCatalogFallsBackToTheSourceTree) {
     ScopedEnv data("PHOTOFLIGHT_DATA_DIR", "/nonexistent/photoflight");
     ScopedEnv xdg("XDG_DATA_HOME", "/nonexistent/xdg");
-    const std::string dir = dataDirectory();
+    const std::string dir = pf::dataDirectory();
     ASSERT_FALSE(dir.empty());
     auto cat = loadDefaultCatalog();
     ASSERT_TRUE(cat) << cat.error().message;

@@ -1,4 +1,5 @@
-// GDAL helpers shared by the mosaic and terrain stages. Internal: include from core .cpp files only.
+// GDAL helpers shared by the stages that read rasters (mosaic, terrain). Internal: include from core
+// .cpp files only.
 #pragma once
 
 #include <cpl_error.h>
@@ -6,7 +7,7 @@
 
 #include <string>
 
-namespace pf::mosaic::detail {
+namespace pf::geo::detail {
 
 // Registers GDAL's drivers once per process (thread-safe).
 void ensureGdalRegistered();
@@ -40,4 +41,4 @@ GDALDatasetUniquePtr openRaster(const std::string& path,
 // "/a/b/IMG_0001.JPG" -> "IMG_0001.JPG", for messages.
 std::string fileName(const std::string& path);
 
-} // namespace pf::mosaic::detail
+} // namespace pf::geo::detail

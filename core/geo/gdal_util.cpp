@@ -1,9 +1,9 @@
-#include "core/mosaic/gdal_util.h"
+#include "core/geo/gdal_util.h"
 
 #include <filesystem>
 #include <mutex>
 
-namespace pf::mosaic::detail {
+namespace pf::geo::detail {
 
 void ensureGdalRegistered() {
     static std::once_flag once;
@@ -42,4 +42,4 @@ std::string fileName(const std::string& path) {
     return name.empty() ? path : name;
 }
 
-} // namespace pf::mosaic::detail
+} // namespace pf::geo::detail
