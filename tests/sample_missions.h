@@ -43,4 +43,19 @@ inline std::optional<mission::AircraftConfig> catalogAircraft(const io::Catalog&
     return a;
 }
 
+// The aircraft of the big-site cases (issue's camera of 60 x 45 degrees on a 4000 x 3000 sensor,
+// 70 % front and 60 % side overlap) at `altitudeM`, named "Falcon 8".
+inline mission::AircraftConfig bigSiteAircraft(double altitudeM, const std::string& cameraName = "test") {
+    mission::AircraftConfig a;
+    a.name = "Falcon 8";
+    a.camera.name = cameraName;
+    a.camera.hfovDeg = 60;
+    a.camera.vfovDeg = 45;
+    a.camera.imageWidthPx = 4000;
+    a.camera.imageHeightPx = 3000;
+    a.altitudeM = altitudeM;
+    a.overlap = {0.7, 0.6};
+    return a;
+}
+
 } // namespace pf::test

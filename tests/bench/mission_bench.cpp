@@ -7,6 +7,7 @@
 #include "core/geo/local_frame.h"
 #include "core/mission/plan_mission.h"
 #include "core/progress.h"
+#include "tests/sample_missions.h"
 
 #include <benchmark/benchmark.h>
 
@@ -41,15 +42,7 @@ mission::Mission squareSite(double sideM, mission::PlannerKind kind) {
         m.noFlyZones.push_back({"zone " + std::to_string(z + 1), frame.toGeo(p)});
     }
     m.home = frame.toGeo(geo::Vec2{-30, -30});
-    mission::AircraftConfig a;
-    a.name = "Falcon 8";
-    a.camera.name = "Falcon 8 camera";
-    a.camera.hfovDeg = 60;
-    a.camera.vfovDeg = 45;
-    a.camera.imageWidthPx = 4000;
-    a.camera.imageHeightPx = 3000;
-    a.altitudeM = 5.0;
-    a.overlap = {0.7, 0.6};
+    mission::AircraftConfig a = pf::test::bigSiteAircraft(5.0, "Falcon 8 camera");
     a.cruiseSpeedMps = 8;
     a.turnRateDegS = 60;
     a.enduranceMin = 40; // the far corner of a 5 km site and back within a battery
@@ -98,6 +91,25 @@ BENCHMARK(BM_MissionAutoBig)->Arg(790)->Arg(1250)->Arg(2500)->Unit(benchmark::kM
 // Cancel latency: the plan runs on a thread; when its progress passes range(1) % it is cancelled, and
 // the time from cancel() to planMission's return is measured (manual time). The stage it was in is
 // the label.
+// One cancelled run: skipped with the reason unless it was cancelled and returned Cancelled; else its
+// latency (cancel to return) is the iteration's time and the worst so far is kept.
+bool recordCancel(benchmark::State& state, bool cancelled, const Result<mission::MissionPlan>& plan,
+                  std::chrono::steady_clock::time_point cancelledAt, std::chrono::steady_clock::time_point end,
+                  double& worst) {
+    if (!cancelled) {
+        state.SkipWithError("the plan finished before the cancel point");
+        return false;
+    }
+    if (plan || plan.error().code != ErrorCode::Cancelled) {
+        state.SkipWithError("a cancelled plan did not return Cancelled");
+        return false;
+    }
+    const double s = std::chrono::duration<double>(end - cancelledAt).count();
+    worst = std::max(worst, s);
+    state.SetIterationTime(s);
+    return true;
+}
+
 void cancelAt(benchmark::State& state, mission::PlannerKind kind) {
     const mission::Mission m = squareSite(static_cast<double>(state.range(0)), kind);
     const double at = static_cast<double>(state.range(1)) / 100.0;
@@ -118,17 +130,8 @@ void cancelAt(benchmark::State& state, mission::PlannerKind kind) {
         self = &progress;
         auto plan = mission::planMission(m, &progress);
         const auto end = std::chrono::steady_clock::now();
-        if (!fired) {
-            state.SkipWithError("the plan finished before the cancel point");
+        if (!recordCancel(state, fired, plan, cancelledAt, end, worst))
             return;
-        }
-        if (plan || plan.error().code != ErrorCode::Cancelled) {
-            state.SkipWithError("a cancelled plan did not return Cancelled");
-            return;
-        }
-        const double s = std::chrono::duration<double>(end - cancelledAt).count();
-        worst = std::max(worst, s);
-        state.SetIterationTime(s);
         stageSeen = stage;
     }
     state.SetLabel(stageSeen);
@@ -191,17 +194,8 @@ void cancelInStage(benchmark::State& state, mission::PlannerKind kind) {
         const auto end = std::chrono::steady_clock::now();
         done = true;
         watcher.join();
-        if (!progress.cancelled()) {
-            state.SkipWithError("the plan finished before the cancel point");
+        if (!recordCancel(state, progress.cancelled(), plan, cancelledAt, end, worst))
             return;
-        }
-        if (plan || plan.error().code != ErrorCode::Cancelled) {
-            state.SkipWithError("a cancelled plan did not return Cancelled");
-            return;
-        }
-        const double s = std::chrono::duration<double>(end - cancelledAt).count();
-        worst = std::max(worst, s);
-        state.SetIterationTime(s);
         stageSeen = stageAtCancel;
     }
     state.SetLabel(stageSeen);

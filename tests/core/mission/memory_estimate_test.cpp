@@ -2,6 +2,7 @@
 #include "core/geo/local_frame.h"
 #include "core/mission/memory_estimate.h"
 #include "core/mission/plan_mission.h"
+#include "tests/sample_missions.h"
 
 #include <gtest/gtest.h>
 
@@ -22,15 +23,7 @@ Mission squareAt(double sideM, double altitudeM) {
     Mission m;
     m.area = frame.toGeo(geo::Polygon{{{0, 0}, {sideM, 0}, {sideM, sideM}, {0, sideM}}, {}});
     m.home = frame.toGeo(geo::Vec2{-10, -10});
-    AircraftConfig a;
-    a.name = "Falcon 8";
-    a.camera.name = "test";
-    a.camera.hfovDeg = 60;
-    a.camera.vfovDeg = 45;
-    a.camera.imageWidthPx = 4000;
-    a.camera.imageHeightPx = 3000;
-    a.altitudeM = altitudeM;
-    a.overlap = {0.7, 0.6};
+    AircraftConfig a = pf::test::bigSiteAircraft(altitudeM);
     m.aircraft.push_back(a);
     m.options.planner = PlannerKind::Stride;
     m.options.gridAngleDeg = 0.0;

@@ -2,6 +2,7 @@
 #include "core/geo/local_frame.h"
 #include "core/mission/plan_mission.h"
 #include "core/progress.h"
+#include "tests/sample_missions.h"
 
 #include <gtest/gtest.h>
 
@@ -32,15 +33,7 @@ Mission site() {
         m.noFlyZones.push_back({"zone " + std::to_string(z + 1), frame.toGeo(p)});
     }
     m.home = frame.toGeo(geo::Vec2{-30, -30});
-    AircraftConfig a;
-    a.name = "Falcon 8";
-    a.camera.name = "test";
-    a.camera.hfovDeg = 60;
-    a.camera.vfovDeg = 45;
-    a.camera.imageWidthPx = 4000;
-    a.camera.imageHeightPx = 3000;
-    a.altitudeM = 5.0;
-    a.overlap = {0.7, 0.6};
+    AircraftConfig a = pf::test::bigSiteAircraft(5.0);
     a.enduranceMin = 40;
     m.aircraft.push_back(a);
     m.options.planner = PlannerKind::Stride;
