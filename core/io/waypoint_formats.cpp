@@ -8,6 +8,7 @@
 #include "core/io/trigger_lanes.h"
 #include "core/io/waypoint_format_util.h"
 #include "core/io/waypoint_geojson.h"
+#include "core/mission/route_check.h"
 
 #include <algorithm>
 #include <cctype>
@@ -106,8 +107,26 @@ ExportContext mergedContext(const ExportContext& ctx, const std::vector<std::siz
         if (i >= out.routes.size())
             continue;
         std::size_t merged = 0;
-        out.routes[i].waypoints = mergeCloseWaypoints(out.routes[i].waypoints, minM, &merged);
-        if (merged && notes)
+        route::Route candidate = out.routes[i];
+        candidate.waypoints = mergeCloseWaypoints(out.routes[i].waypoints, minM, &merged);
+        if (merged == 0)
+            continue;
+        // A merge moves a waypoint by less than the format's minimum, which can cut a detour's corner
+        // into a no-fly margin the route as checked kept: then the route is written as it is.
+        if (!ctx.mission.noFlyZones.empty()) {
+            const mission::RouteLimits limits = mission::routeLimits(ctx.mission, out.routes[i]);
+            if (mission::checkRoute(candidate, limits).noFly > mission::checkRoute(out.routes[i], limits).noFly) {
+                if (notes)
+                    notes->push_back(ctx.routeLabel(i) + ": " + std::to_string(merged) + " waypoint" +
+                                     (merged == 1 ? "" : "s") + " closer than " + detail::formatNumber(minM, 1) +
+                                     " m to the previous one kept as planned: merging them would put a leg into "
+                                     "a no-fly zone's safety margin (" + formatInfo(format).description +
+                                     " may refuse waypoints that close)");
+                continue;
+            }
+        }
+        out.routes[i] = std::move(candidate);
+        if (notes)
             notes->push_back(ctx.routeLabel(i) + ": " + std::to_string(merged) + " waypoint" +
                              (merged == 1 ? "" : "s") + " closer than " +
                              detail::formatNumber(minM, 1) + " m to the previous one merged into it (" +

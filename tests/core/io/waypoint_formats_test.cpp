@@ -8,6 +8,8 @@
 #include "core/io/qgc_plan.h"
 #include "core/io/qgc_wpl.h"
 #include "core/io/waypoint_geojson.h"
+#include "core/geo/local_frame.h"
+#include "core/mission/route_check.h"
 #include "tests/core/io/formats_test_util.h"
 
 #include <gtest/gtest.h>
@@ -352,4 +354,47 @@ TEST(LitchiCsv, ReadsASpreadsheetsSemicolonsAndDecimalCommas) {
     EXPECT_DOUBLE_EQ(w[0].altitudeM, 40.0);
     EXPECT_EQ(w[0].kind, route::WaypointKind::Photo);
     EXPECT_EQ(w[1].kind, route::WaypointKind::Transit);
+}
+
+// Litchi takes no two waypoints closer than 0.6 m, so close ones are merged; round a no-fly zone's
+// corner that moves the detour's corner waypoint onto the next one (a photo 0.55 m on) and cuts the
+// corner into the safety margin: then the route is written as planned, with a note saying why.
+TEST(LitchiCsv, CloseWaypointsStayWhenMergingWouldCutIntoAMargin) {
+    const auto frame = *geo::LocalFrame::create({8.33, 49.01});
+    auto at = [&](double x, double y) { return frame.toGeo(geo::Vec2(x, y)); };
+    auto build = [&](bool withZone) {
+        mission::Mission m;
+        m.area = frame.toGeo(geo::Polygon{{{-40, -40}, {40, -40}, {40, 40}, {-40, 40}}, {}});
+        if (withZone)
+            m.noFlyZones.push_back({"Warehouse", frame.toGeo(geo::Polygon{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {}})});
+        m.options.safetyMarginM = 5.0;
+        m.home = at(-30, 30);
+        route::Route r;
+        r.aircraft = "Falcon 8";
+        // Round the zone's top-left corner 5.6 m out (a 5.6 m radius, corner at 135 degrees): clear
+        // by 5.05 m; the photo 0.55 m past the corner waypoint would leave 4.90 m once merged into it.
+        r.waypoints = {route::Waypoint(at(-5.6, 10.0), 30, 0, route::WaypointKind::Transit),
+                       route::Waypoint(at(-3.96, 13.96), 30, 45, route::WaypointKind::Transit),
+                       route::Waypoint(at(-3.41, 13.96), 30, 90, route::WaypointKind::Photo),
+                       route::Waypoint(at(0.0, 15.6), 30, 90, route::WaypointKind::Photo)};
+        return makeExportContext(m, {r});
+    };
+    const std::string dir = test::scratchDir("litchi_margin");
+    const ExportContext zoned = build(true);
+    ASSERT_EQ(mission::checkRoute(zoned.routes[0], mission::routeLimits(zoned.mission, zoned.routes[0])).noFly, 0);
+    auto kept = exportRouteFiles(zoned, 0, WaypointFormat::LitchiCsv, dir + "/zoned.csv");
+    ASSERT_TRUE(kept.ok()) << kept.error().message;
+    ASSERT_EQ(kept->notes.size(), 1u);
+    EXPECT_NE(kept->notes[0].find("kept as planned"), std::string::npos) << kept->notes[0];
+    auto back = importWaypoints(dir + "/zoned.csv");
+    ASSERT_TRUE(back.ok()) << back.error().message;
+    EXPECT_EQ(back->routes[0].waypoints.size(), 4u);
+    // Without the zone the same waypoints merge, as before.
+    auto merged = exportRouteFiles(build(false), 0, WaypointFormat::LitchiCsv, dir + "/open.csv");
+    ASSERT_TRUE(merged.ok()) << merged.error().message;
+    ASSERT_EQ(merged->notes.size(), 1u);
+    EXPECT_NE(merged->notes[0].find("merged into it"), std::string::npos) << merged->notes[0];
+    back = importWaypoints(dir + "/open.csv");
+    ASSERT_TRUE(back.ok()) << back.error().message;
+    EXPECT_EQ(back->routes[0].waypoints.size(), 3u);
 }
