@@ -122,6 +122,23 @@ Result<AircraftPlan> gridRegion(const geo::MultiPolygon& region, const std::vect
     mopt.time = a.model;
     mopt.diagonalSteps = popt.kind == plan::PlannerKind::Wavefront && popt.wavefront.moore;
     mopt.turnLowerBound = false;
+    // The grid at an angle and cell size, and the cell path's request on it (from and back to home).
+    auto buildGrid = [&](double angle, double cellSize) {
+        grid::GridOptions gopt;
+        gopt.cellSize = cellSize;
+        gopt.angleDeg = angle;
+        gopt.safetyMarginM = options.safetyMarginM;
+        gopt.maxCells = options.maxCells;
+        return grid::Grid::build(region, noFly, gopt);
+    };
+    auto requestOn = [&](const grid::Grid& g) {
+        plan::CoverageRequest req;
+        if (home) {
+            req.takeoff = g.nearestVisitable(*home);
+            req.landing = g.nearestVisitable(landing ? *landing : *home);
+        }
+        return req;
+    };
     // A big area: the angles ranked first on a coarser grid (cells a whole factor larger, about
     // kCoarseCells of them), and only the best few planned at the real cell size. The ranking by cell
     // path time holds at the coarse size as the lanes are the same lines, fewer of them; the full
@@ -132,20 +149,10 @@ Result<AircraftPlan> gridRegion(const geo::MultiPolygon& region, const std::vect
         std::vector<std::pair<double, double>> scored; // estimated time, angle
         for (std::size_t ai = 0; ai < angles.size() && !stopRequested(); ++ai) {
             reportProgress(0.1 * static_cast<double>(ai) / static_cast<double>(angles.size()), "grid angles (coarse)");
-            grid::GridOptions gopt;
-            gopt.cellSize = a.cellSizeM * factor;
-            gopt.angleDeg = angles[ai];
-            gopt.safetyMarginM = options.safetyMarginM;
-            gopt.maxCells = options.maxCells;
-            auto g = grid::Grid::build(region, noFly, gopt);
+            auto g = buildGrid(angles[ai], a.cellSizeM * factor);
             if (!g)
                 continue;
-            plan::CoverageRequest req;
-            if (home) {
-                req.takeoff = g->nearestVisitable(*home);
-                req.landing = g->nearestVisitable(landing ? *landing : *home);
-            }
-            auto path = plan::planCoverage(*g, req, popt);
+            auto path = plan::planCoverage(*g, requestOn(*g), popt);
             if (!path)
                 continue;
             scored.emplace_back(plan::computeMetrics(*g, *path, mopt).estimatedTimeS, angles[ai]);
@@ -172,24 +179,14 @@ Result<AircraftPlan> gridRegion(const geo::MultiPolygon& region, const std::vect
         const double f0 = 0.6 * static_cast<double>(ai) / static_cast<double>(angles.size());
         const double f1 = 0.6 * static_cast<double>(ai + 1) / static_cast<double>(angles.size());
         reportProgress(f0, "grid");
-        grid::GridOptions gopt;
-        gopt.cellSize = a.cellSizeM;
-        gopt.angleDeg = angle;
-        gopt.safetyMarginM = options.safetyMarginM;
-        gopt.maxCells = options.maxCells;
-        auto g = grid::Grid::build(region, noFly, gopt);
+        auto g = buildGrid(angle, a.cellSizeM);
         if (!g) {
             if (!firstError)
                 firstError = g.error();
             continue;
         }
-        plan::CoverageRequest req;
-        if (home) {
-            req.takeoff = g->nearestVisitable(*home);
-            req.landing = g->nearestVisitable(landing ? *landing : *home);
-        }
         reportProgress(f0 + 0.3 * (f1 - f0), "cell path");
-        auto path = plan::planCoverage(*g, req, popt);
+        auto path = plan::planCoverage(*g, requestOn(*g), popt);
         if (stopRequested())
             break;
         if (!path) {

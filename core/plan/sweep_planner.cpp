@@ -190,8 +190,11 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     auto safeOutside = [&](const Vec2& a, const Vec2& b) { return field.segmentIsSafe(a, b); };
     std::unique_ptr<FullPlan> best;
     const int planned = std::min<int>(opt.plannedDirections, static_cast<int>(rank.size()));
-    // Each planned direction also with its lanes on shared lines (SweepLaneParams::latticeY0), laid
-    // from the free space's lowest edge and from its highest: the fastest plan is kept.
+    // Each planned direction also with its lanes on shared lines (SweepLaneParams::latticeY0) laid from
+    // the free space's lowest edge, planned in full for the best direction, for the others only when
+    // the quick estimate (which does not see the trim) puts it near the direction's own lanes, and
+    // not on large areas (many lanes), where the zones are few for the lanes and the time would
+    // double; the fastest plan is kept.
     std::deque<DirectionPlan> variants;
     std::vector<const DirectionPlan*> toPlan;
     for (int r = 0; r < planned; ++r) {
@@ -199,29 +202,22 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         toPlan.push_back(&base);
         if (!opt.sharedLines || base.d().cells.empty())
             continue;
-        double ymin = kInf, ymax = -kInf;
-        for (const auto& c : base.d().cells) {
+        double ymin = kInf;
+        for (const auto& c : base.d().cells)
             ymin = std::min(ymin, c.ylo);
-            ymax = std::max(ymax, c.yhi);
-        }
-        for (const double y0 : {ymin + 0.5 * s - 0.02}) {
-            DirectionPlan v;
-            v.angleDeg = base.angleDeg;
-            v.dec = base.dec;
-            v.mc = base.mc;
-            v.latticeY0 = y0;
-            v.estimateS = estimate(v);
-            // Planned in full for the best direction, for the others only when the quick estimate
-            // (which does not see the trim) puts it near the direction's own lanes; not on large
-            // areas (many lanes), where the zones are few for the lanes and the time would double.
-            std::size_t laneCount = 0;
-            for (const auto& hs : v.heights)
-                laneCount += hs.size();
-            if (laneCount > kSharedLinesMaxLanes || (r > 0 && v.estimateS > kSharedLinesEstimateRatio * base.estimateS))
-                continue;
-            variants.push_back(std::move(v));
-            toPlan.push_back(&variants.back());
-        }
+        DirectionPlan v;
+        v.angleDeg = base.angleDeg;
+        v.dec = base.dec;
+        v.mc = base.mc;
+        v.latticeY0 = ymin + 0.5 * s - 0.02;
+        v.estimateS = estimate(v);
+        std::size_t laneCount = 0;
+        for (const auto& hs : v.heights)
+            laneCount += hs.size();
+        if (laneCount > kSharedLinesMaxLanes || (r > 0 && v.estimateS > kSharedLinesEstimateRatio * base.estimateS))
+            continue;
+        variants.push_back(std::move(v));
+        toPlan.push_back(&variants.back());
     }
     for (const DirectionPlan* planning : toPlan) {
         if (stopRequested())
@@ -237,24 +233,23 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         for (std::size_t mi = 0; mi < dp.merged().size(); ++mi)
             laneSets[mi] = cellLanes(dp.d(), dp.merged()[mi], dp.heights[mi], lp, ground, safeOutside);
         dropCoveredLanes(dp.d(), laneSets, dp.pinned, lp, ground, realAcross, realAlong, kShortLanePhotos * ph);
-        if (opt.trimLanes) {
-            // Cells in a pocket no safe path reaches are not flown: their lanes see nothing.
-            std::vector<char> flownCells(laneSets.size(), 1);
-            for (std::size_t mi = 0; mi < laneSets.size(); ++mi)
-                if (!laneSets[mi].empty()) {
-                    const auto& ml = laneSets[mi][laneSets[mi].size() / 2];
-                    flownCells[mi] = pockets.of(0.5 * (ml.flyA + ml.flyB)) == anchor ? 1 : 0;
-                }
-            trimCoveredLanes(dp.d(), laneSets, lp, ground, 1.0, &flownCells);
-        }
+        // Cells in a pocket no safe path reaches are not flown (a merged cell lies in one piece of the
+        // free space, so its middle lane tells): their lanes see nothing.
+        std::vector<char> reachableCell(laneSets.size(), 0);
+        for (std::size_t mi = 0; mi < laneSets.size(); ++mi)
+            if (!laneSets[mi].empty()) {
+                const auto& ml = laneSets[mi][laneSets[mi].size() / 2];
+                reachableCell[mi] = pockets.of(0.5 * (ml.flyA + ml.flyB)) == anchor ? 1 : 0;
+            }
+        if (opt.trimLanes)
+            trimCoveredLanes(dp.d(), laneSets, lp, ground, 1.0, &reachableCell);
         for (std::size_t mi = 0; mi < dp.merged().size(); ++mi) {
             PlannedCell pc;
             pc.merged = static_cast<int>(mi);
             pc.lanes = std::move(laneSets[mi]);
             if (pc.lanes.empty())
                 continue;
-            const auto& midLane = pc.lanes[pc.lanes.size() / 2];
-            pc.reachable = pockets.of(0.5 * (midLane.flyA + midLane.flyB)) == anchor;
+            pc.reachable = reachableCell[mi] != 0;
             pc.firstPoint = static_cast<int>(router.size());
             for (const auto& l : pc.lanes) {
                 router.add(EndPoint{l.span.first, u});
