@@ -9,6 +9,7 @@
 #include "core/plan/coverage_check.h"
 #include "core/plan/decomposition.h"
 #include "core/plan/lane_trim.h"
+#include "core/plan/photo_thinning.h"
 #include "core/plan/sweep_lanes.h"
 #include "core/plan/sweep_reach.h"
 #include "core/plan/sweep_routing.h"
@@ -533,6 +534,16 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         links.push_back(std::move(link));
     }
     plan.links = std::move(links);
+    if (opt.thinPhotos) {
+        PhotoThinningOptions to;
+        to.trackSpacingM = s;
+        to.photoSpacingM = ph;
+        to.realAcrossM = realAcross;
+        to.realAlongM = realAlong;
+        plan.stats.photosLeftOut = thinLanePhotos(plan.lanes, {}, to, [&ground](const Vec2& p) {
+            return ground.insideArea(p) && !ground.inZone(p);
+        });
+    }
     if (flown.broken)
         plan.warnings.push_back("Some transitions of the sweep found no safe way and fly straight: check the plan.");
     if (flown.leaving > 0 && opt.keepInside)

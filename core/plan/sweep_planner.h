@@ -40,6 +40,9 @@ struct SweepOptions {
     bool rowStart = true;
     // Shorten lanes to the ground only they photograph (plan::trimCoveredLanes), at the overlap set.
     bool trimLanes = true;
+    // Leave out the photos inside a lane whose ground the other photos already see at the overlap set
+    // (plan::thinLanePhotos); the lanes are flown as before.
+    bool thinPhotos = true;
     // Also plan the best directions with their lanes on lines shared by all cells (as a Survey's
     // transects; a cell adds lanes only where the lines beside a zone leave ground), keeping the
     // faster plan.
@@ -66,6 +69,7 @@ struct SweepStats {
                                             // than half a track spacing from it: no way within existed
     int graphNodes = 0, graphEdges = 0;     // the visibility graph of the transitions
     int laneSegments = 0;                   // lanes across the cells (without the photographed turns)
+    int photosLeftOut = 0;                  // interior photos other photos' footprints make redundant
 };
 
 struct SweepPlan {
