@@ -306,10 +306,12 @@ int runPlan(const std::vector<std::string>& argv) {
             continue;
         const auto& t = a.terrain;
         std::snprintf(line, sizeof line,
-                      "terrain: %s %.1f m above the ground (lanes for %.1f m), take-off ground %.1f m, lowest "
-                      "clearance %.1f m, %d waypoint(s) inserted, GSD %.2f cm/px (edges down to %.2f)\n",
-                      a.aircraft.c_str(), t.heightAboveGroundM, t.planningHeightM, t.homeGroundM, t.lowestClearanceM,
-                      t.waypointsInserted, t.gsdCm, t.coarsestGsdCm);
+                      "terrain: %s %.1f m above the ground (lanes for %.1f m, photo spacing per lane: %d photo(s) "
+                      "fewer on %d lane(s)), take-off ground %.1f m, lowest clearance %.1f m, %d waypoint(s) "
+                      "inserted, GSD %.2f cm/px (edges down to %.2f)\n",
+                      a.aircraft.c_str(), t.heightAboveGroundM, t.planningHeightM, t.photosSavedPerLane,
+                      t.lanesRespaced, t.homeGroundM, t.lowestClearanceM, t.waypointsInserted, t.gsdCm,
+                      t.coarsestGsdCm);
         std::cout << line;
     }
     if (!written.empty()) {

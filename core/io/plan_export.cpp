@@ -75,6 +75,8 @@ std::string planMetricsJson(const MissionPlan& plan, const std::string& plannerN
             CPLJSONObject t;
             t.Add("height_above_ground_m", a.terrain.heightAboveGroundM);
             t.Add("planning_height_m", a.terrain.planningHeightM);
+            t.Add("lanes_respaced", a.terrain.lanesRespaced);
+            t.Add("photos_saved_per_lane", a.terrain.photosSavedPerLane);
             t.Add("home_ground_m", a.terrain.homeGroundM);
             t.Add("lowest_clearance_m", a.terrain.lowestClearanceM);
             t.Add("waypoints_inserted", a.terrain.waypointsInserted);

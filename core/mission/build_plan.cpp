@@ -36,7 +36,7 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         if (regions[k].empty())
             return makeError(ErrorCode::InvalidInput,
                              aircraftLabel(m.aircraft[k]) + ": got no part of the area (too many aircraft for it)");
-        auto ap = planRegion(regions[k], geom->noFly, m.aircraft[k], opt, frame, homes[k], landing);
+        auto ap = planRegion(regions[k], geom->noFly, m.aircraft[k], opt, frame, homes[k], landing, laneSpacing(m, k));
         if (stopRequested())
             return cancelledError();
         if (!ap)

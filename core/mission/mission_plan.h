@@ -26,7 +26,9 @@ namespace pf::mission {
 struct TerrainSummary {
     bool active = false;
     double heightAboveGroundM = 0.0;  // every waypoint this high above the ground under it
-    double planningHeightM = 0.0;     // the lowest height above ground its camera sees: lanes and spacing
+    double planningHeightM = 0.0;     // the lowest height above ground its camera sees: lane placement
+    int lanesRespaced = 0;            // lanes whose own lowest height above ground spaced their photos wider
+    int photosSavedPerLane = 0;       // photos that saved against the spacing of planningHeightM
     double homeGroundM = 0.0;         // its take-off point's ground above sea level
     double lowestClearanceM = 0.0;    // along every leg, sampled every metre
     int waypointsInserted = 0;        // where the ground rises between two waypoints

@@ -108,7 +108,7 @@ Result<MissionPlan> planMissionWith(const Mission& m) {
     // the neighbours (photos another aircraft already takes) and the no-fly detours to the correction
     // factors below. An aircraft whose subarea lies far from its home gets less of the area.
     const auto rawEstimate = [&](std::size_t k, const geo::MultiPolygon& sub) -> Result<double> {
-        auto ap = planRegion(sub, geom->noFly, m.aircraft[k], fixed, frame, homes[k], landing);
+        auto ap = planRegion(sub, geom->noFly, m.aircraft[k], fixed, frame, homes[k], landing, laneSpacing(m, k));
         if (!ap)
             return ap.error();
         return aloneRouteTimeS(surveyPart(ap->localWaypoints), m.aircraft[k], homes[k], landing);

@@ -338,7 +338,8 @@ std::string minutes(double s) {
 
 Result<AircraftPlan> planOne(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly, const Aircraft& a,
                              PlannerKind kind, const PlannerOptions& options, const geo::LocalFrame& frame,
-                             const std::optional<geo::Vec2>& home, const std::optional<geo::Vec2>& landing) {
+                             const std::optional<geo::Vec2>& home, const std::optional<geo::Vec2>& landing,
+                             const route::LaneSpacingFn& laneSpacing) {
     Result<AircraftPlan> p = makeError(ErrorCode::Internal, "no planner");
     switch (kind) {
     case PlannerKind::Sweep:
@@ -353,6 +354,16 @@ Result<AircraftPlan> planOne(const geo::MultiPolygon& region, const std::vector<
     }
     if (stopRequested())
         return makeError(ErrorCode::Cancelled, "planning cancelled");
+    if (p && laneSpacing) {
+        // Each lane's photos as far apart as its own ground allows (the planner spaced them for the
+        // lowest height above ground over the whole region).
+        route::LaneSpacingReport rep;
+        p->localWaypoints = route::spaceLanes(p->localWaypoints, a.fp.alongM, laneSpacing, &rep);
+        p->terrain.lanesRespaced = rep.respaced;
+        p->terrain.photosSavedPerLane = rep.photosBefore - rep.photosAfter;
+        if (rep.respaced > 0 && (kind == PlannerKind::Sweep || kind == PlannerKind::Lawnmower))
+            routeMetrics(*p, a.model);
+    }
     if (p)
         finish(*p, a, kind, frame, home);
     return p;
@@ -388,14 +399,14 @@ std::vector<double> candidateAngles(const geo::MultiPolygon& region) {
 Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
                                 const AircraftConfig& aircraft, const PlannerOptions& options,
                                 const geo::LocalFrame& frame, const std::optional<geo::Vec2>& home,
-                                const std::optional<geo::Vec2>& landing) {
+                                const std::optional<geo::Vec2>& landing, const route::LaneSpacingFn& laneSpacing) {
     const auto t0 = std::chrono::steady_clock::now();
     auto a = prepare(aircraft);
     if (!a)
         return a.error();
     Result<AircraftPlan> out = makeError(ErrorCode::Internal, "no planner");
     if (options.planner != PlannerKind::Auto) {
-        out = planOne(region, noFly, *a, options.planner, options, frame, home, landing);
+        out = planOne(region, noFly, *a, options.planner, options, frame, home, landing, laneSpacing);
     } else {
         // The candidates, each planned in full and compared on the route the aircraft would fly: its
         // survey made safe (the detours a grid planner's jumps need) and the safe ways from home and back.
@@ -406,7 +417,7 @@ Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vect
         for (PlannerKind k : {PlannerKind::Sweep, PlannerKind::Stride, PlannerKind::Raster}) {
             if (stopRequested())
                 return makeError(ErrorCode::Cancelled, "planning cancelled");
-            auto p = planOne(region, noFly, *a, k, options, frame, home, landing);
+            auto p = planOne(region, noFly, *a, k, options, frame, home, landing, laneSpacing);
             const char* id = plannerKindInfo(k).id;
             if (!p) {
                 if (!firstError)

@@ -7,6 +7,7 @@
 #include "core/mission/mission.h"
 #include "core/mission/mission_plan.h"
 #include "core/result.h"
+#include "core/route/lane_spacing.h"
 #include "core/route/waypoint.h"
 
 #include <optional>
@@ -26,11 +27,15 @@ namespace pf::mission {
 // - lawnmower: plan::planLawnmower, the Survey pattern over the region, straight over the zones;
 // - auto: sweep, stride and raster are planned in full and the one whose route flies soonest (from home
 //   over its survey waypoints and back, aloneRouteTimeS) is kept; plannerChoice says which and why.
+// With `laneSpacing` (over terrain: terrain_stage.h's laneSpacing), every planner's photos are then
+// spaced per lane (route::spaceLanes, before the automatic choice compares them; the lanes respaced
+// and the photos that saved in AircraftPlan::terrain).
 // Errors name the aircraft and the problem.
 Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
                                 const AircraftConfig& aircraft, const PlannerOptions& options,
                                 const geo::LocalFrame& frame, const std::optional<geo::Vec2>& home,
-                                const std::optional<geo::Vec2>& landing = std::nullopt);
+                                const std::optional<geo::Vec2>& landing = std::nullopt,
+                                const route::LaneSpacingFn& laneSpacing = {});
 
 // The angles the automatic search tries for a region.
 std::vector<double> candidateAngles(const geo::MultiPolygon& region);

@@ -124,14 +124,22 @@ Result<std::shared_ptr<const MissionTerrain>> loadMissionTerrain(const Mission& 
     else if (m.home)
         t->homeGroundM = shared->heightAt(frame.toLocal(*m.home));
 
-    // The lowest height above ground each camera sees over the area.
+    // The lowest height above ground each camera sees over the area (the rises shared between
+    // aircraft whose footprints reach as far).
     const geo::MultiPolygon area{geom.area};
+    std::vector<double> radii;
     for (std::size_t k = 0; k < m.aircraft.size(); ++k) {
         const double h = t->heightAboveGroundM[k];
         auto f = sensor::footprintAt(m.aircraft[k].camera, h);
         const double r = f ? 0.5 * std::hypot(f->longSideM, f->shortSideM) : 0.0;
+        const auto same = std::find(radii.begin(), radii.end(), r);
+        if (same == radii.end())
+            t->riseM.push_back(std::make_shared<const terrain::HeightGrid>(terrain::riseWithin(*shared, r)));
+        else
+            t->riseM.push_back(t->riseM[static_cast<std::size_t>(same - radii.begin())]);
+        radii.push_back(r);
         const double rise =
-            terrain::maxRiseWithin(*shared, r, [&](const geo::Vec2& p) { return geo::contains(area, p); });
+            terrain::maxRiseWithin(*t->riseM.back(), [&](const geo::Vec2& p) { return geo::contains(area, p); });
         if (rise > 0.8 * h)
             return makeError(ErrorCode::InvalidInput,
                              label(m.aircraft[k]) + ": the ground rises by " + fmt(rise) + " m within the view of its camera at " +
@@ -149,6 +157,23 @@ Mission planningMission(const Mission& m, std::shared_ptr<const MissionTerrain> 
     }
     p.terrain.prepared = std::move(t);
     return p;
+}
+
+route::LaneSpacingFn laneSpacing(const Mission& m, std::size_t k) {
+    const std::shared_ptr<const MissionTerrain>& t = m.terrain.prepared;
+    if (!t || !t->spacingPerLane || k >= m.aircraft.size() || k >= t->riseM.size() || !t->riseM[k])
+        return {};
+    const std::shared_ptr<const terrain::HeightGrid> rises = t->riseM[k];
+    const double H = t->heightAboveGroundM[k];
+    const sensor::Camera camera = m.aircraft[k].camera;
+    const sensor::Overlap overlap = m.aircraft[k].overlap;
+    return [rises, H, camera, overlap](const geo::Vec2& a, const geo::Vec2& b) {
+        const double h = H - terrain::maxRiseAlong(*rises, a, b);
+        if (!(h > 0))
+            return 0.0;
+        auto f = sensor::effectiveFootprint(camera, h, overlap);
+        return f ? f->alongM : 0.0;
+    };
 }
 
 bool needsTerrainStage(const Mission& m) { return m.terrain.follows() && !m.terrain.prepared; }

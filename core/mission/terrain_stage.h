@@ -7,6 +7,7 @@
 #include "core/mission/validation.h"
 #include "core/plan/coverage_check.h"
 #include "core/result.h"
+#include "core/route/lane_spacing.h"
 #include "core/terrain/dem.h"
 #include "core/terrain/height_grid.h"
 
@@ -25,6 +26,12 @@ struct MissionTerrain {
     std::optional<double> homeGroundM;   // the mission's take-off point (given, else from the DEM)
     std::vector<double> heightAboveGroundM; // per aircraft: its altitude (or its GSD's), above ground
     std::vector<double> planningHeightM;    // per aircraft: the lowest height above ground it sees
+    // Per aircraft: at every node of `grid`, the largest rise of the ground within its camera's
+    // footprint reach (terrain::riseWithin), for the lowest height above ground along each lane.
+    std::vector<std::shared_ptr<const terrain::HeightGrid>> riseM;
+    // Whether each lane's photos are spaced from that lane's own lowest height above ground
+    // (laneSpacing); off, every lane keeps the area-wide spacing of planningHeightM.
+    bool spacingPerLane = true;
 };
 
 // Where a DEM named in a mission is: the path itself if it exists, else (a bare name such as the
@@ -45,7 +52,17 @@ Result<std::shared_ptr<const MissionTerrain>> loadMissionTerrain(const Mission& 
 // height above ground its camera sees over the area (its height above ground minus the largest rise
 // of the ground within its footprint's half-diagonal of any point of the area), so that lanes and
 // photo spacing keep the overlaps wherever the ground comes closer; `terrain.prepared` set to `t`.
+// The planners then space each lane's photos by its own lowest height above ground (laneSpacing).
 Mission planningMission(const Mission& m, std::shared_ptr<const MissionTerrain> t);
+
+// The trigger distance of each lane of aircraft k of a mission planned over terrain (m.terrain.prepared
+// set, m as planningMission made it): the effective footprint along the track at the lowest height
+// above ground along the lane, its height above ground minus the largest rise of the ground within
+// its footprint's half-diagonal of any point of the lane (the area-wide rule of planningMission,
+// along one lane), so that the front overlap is kept over the whole lane. Empty (the planner's
+// spacing kept) without terrain or with MissionTerrain::spacingPerLane off; 0 for a lane with no
+// height left to plan at.
+route::LaneSpacingFn laneSpacing(const Mission& m, std::size_t k);
 
 // Whether planMission must first run the terrain stage: the mission follows the terrain and its DEM
 // has not been read yet.

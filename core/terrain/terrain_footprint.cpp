@@ -55,9 +55,9 @@ void runningMax(At at, int n, int lineWidth, int r, std::vector<float>& prefix, 
 
 } // namespace
 
-double maxRiseWithin(const HeightGrid& grid, double radiusM, const std::function<bool(const geo::Vec2&)>& inside) {
+HeightGrid riseWithin(const HeightGrid& grid, double radiusM) {
     if (grid.empty())
-        return 0.0;
+        return {};
     const int cols = grid.cols(), rows = grid.rows();
     const int r = std::max(0, static_cast<int>(std::ceil(radiusM / grid.spacingM())));
     // No data counts as a low (never a rise); the heights along each row, then down the columns.
@@ -80,18 +80,53 @@ double maxRiseWithin(const HeightGrid& grid, double radiusM, const std::function
         runningMax([&](int j) { return j < r || j >= rows + r ? lowLine.data() : &tmp[static_cast<std::size_t>(j - r) * cols + c0]; },
                    rows, width, r, prefix, suffix, &mx[static_cast<std::size_t>(c0)], static_cast<std::size_t>(cols));
     }
+    for (std::size_t k = 0; k < h.size(); ++k)
+        mx[k] = h[k] == kLow ? std::numeric_limits<float>::quiet_NaN() : mx[k] - h[k];
+    return HeightGrid(grid.x0(), grid.y0(), grid.spacingM(), cols, rows, std::move(mx));
+}
+
+double maxRiseWithin(const HeightGrid& grid, double radiusM, const std::function<bool(const geo::Vec2&)>& inside) {
+    return maxRiseWithin(riseWithin(grid, radiusM), inside);
+}
+
+double maxRiseWithin(const HeightGrid& rises, const std::function<bool(const geo::Vec2&)>& inside) {
     double rise = 0.0;
-    for (int j = 0; j < rows; ++j)
-        for (int i = 0; i < cols; ++i) {
-            const std::size_t k = static_cast<std::size_t>(j) * cols + i;
-            if (h[k] == kLow || !(mx[k] - h[k] > rise))
+    for (int j = 0; j < rises.rows(); ++j)
+        for (int i = 0; i < rises.cols(); ++i) {
+            const float v = rises.node(i, j);
+            if (!(v > rise)) // no data (NaN) is neither a rise nor a place
                 continue;
-            if (inside(grid.nodePosition(i, j)))
-                rise = mx[k] - h[k];
+            if (inside(rises.nodePosition(i, j)))
+                rise = v;
         }
     return rise;
 }
 
+double maxRiseAlong(const HeightGrid& rises, const geo::Vec2& a, const geo::Vec2& b) {
+    if (rises.empty())
+        return std::numeric_limits<double>::infinity();
+    // Every node of a cell the segment passes through: sampled at a quarter of the node spacing.
+    const double step = 0.25 * rises.spacingM();
+    const double len = (b - a).norm();
+    const int n = std::max(1, static_cast<int>(std::ceil(len / step)));
+    double rise = 0.0;
+    for (int s = 0; s <= n; ++s) {
+        const geo::Vec2 p = a + (b - a) * (static_cast<double>(s) / n);
+        const double fc = (p.x() - rises.x0()) / rises.spacingM(), fr = (rises.y0() - p.y()) / rises.spacingM();
+        const int c0 = static_cast<int>(std::floor(fc)), r0 = static_cast<int>(std::floor(fr));
+        if (!(fc >= 0 && fr >= 0 && fc <= rises.cols() - 1 && fr <= rises.rows() - 1))
+            return std::numeric_limits<double>::infinity(); // ground the grid does not know
+        for (int r = r0; r <= r0 + 1; ++r)
+            for (int c = c0; c <= c0 + 1; ++c) {
+                if (c < 0 || r < 0 || c >= rises.cols() || r >= rises.rows())
+                    continue;
+                const float v = rises.node(c, r);
+                if (v > rise)
+                    rise = v;
+            }
+    }
+    return rise;
+}
 
 geo::Vec2 groundPoint(const HeightGrid& grid, const NadirCamera& cam, double u, double v) {
     // Ray direction per metre of descent: right and ahead in the local frame (x east, y north).

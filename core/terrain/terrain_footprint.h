@@ -29,11 +29,22 @@ geo::Vec2 groundPoint(const HeightGrid& grid, const NadirCamera& cam, double u, 
 // `perSide` rays along each side of the image border (flat facets between them).
 geo::Ring footprintOnTerrain(const HeightGrid& grid, const NadirCamera& cam, int perSide = 6);
 
-// The largest rise of the ground within `radiusM` (a square of half-side radiusM) of any node whose
-// position `inside` accepts, over the ground at that node: a camera following the terrain at height
-// H above the ground under it sees no ground closer than H minus this. Nodes without data count as
-// neither a rise nor a place. A separable running maximum (two passes of a monotone queue):
+// Per node of `grid`: the largest rise of the ground within `radiusM` (a square of half-side
+// radiusM) over the ground at that node, NaN where the node has no data (nodes without data count as
+// no rise). A camera following the terrain at height H above the ground under that node sees no
+// ground closer than H minus this. A separable running maximum (two passes of a monotone queue):
 // linear in the number of nodes whatever the radius.
+HeightGrid riseWithin(const HeightGrid& grid, double radiusM);
+
+// The largest rise of the ground within `radiusM` of any node whose position `inside` accepts
+// (riseWithin, then the largest over those nodes).
 double maxRiseWithin(const HeightGrid& grid, double radiusM, const std::function<bool(const geo::Vec2&)>& inside);
+// The same over rises riseWithin already found.
+double maxRiseWithin(const HeightGrid& rises, const std::function<bool(const geo::Vec2&)>& inside);
+
+// The largest of riseWithin's rises along the segment a -> b: at every node of the grid cells the
+// segment passes through (so never less than at the segment's own points); +infinity where the
+// segment leaves the grid (nothing is known there) or the grid is empty.
+double maxRiseAlong(const HeightGrid& rises, const geo::Vec2& a, const geo::Vec2& b);
 
 } // namespace pf::terrain

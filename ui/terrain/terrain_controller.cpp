@@ -217,9 +217,10 @@ void TerrainController::refresh() {
     const QColor colour(QString::fromStdString(m.aircraft[k].colour));
     TerrainProfile prof = profileOf(*plan, static_cast<std::size_t>(k), t.minClearanceM, colour);
     const double lowest = prof.lowestClearanceM();
-    QString text = tr("<b>%1</b> over %2: %3 m above the ground under every photo (lanes and spacing for %4 m), "
-                      "take-off ground %5 m, lowest clearance %6 m (minimum %7 m), %8 waypoint(s) inserted, "
-                      "GSD %9 cm/px (photo edges down to %10).")
+    QString text = tr("<b>%1</b> over %2: %3 m above the ground under every photo (lanes for %4 m, photo "
+                      "spacing per lane: %11 photo(s) fewer on %12 lane(s)), take-off ground %5 m, lowest "
+                      "clearance %6 m (minimum %7 m), %8 waypoint(s) inserted, GSD %9 cm/px (photo edges down "
+                      "to %10).")
                        .arg(QString::fromStdString(plan->aircraft[k].aircraft), dem)
                        .arg(ts.heightAboveGroundM, 0, 'f', 1)
                        .arg(ts.planningHeightM, 0, 'f', 1)
@@ -228,7 +229,9 @@ void TerrainController::refresh() {
                        .arg(t.minClearanceM, 0, 'f', 1)
                        .arg(ts.waypointsInserted)
                        .arg(ts.gsdCm, 0, 'f', 2)
-                       .arg(ts.coarsestGsdCm, 0, 'f', 2);
+                       .arg(ts.coarsestGsdCm, 0, 'f', 2)
+                       .arg(ts.photosSavedPerLane)
+                       .arg(ts.lanesRespaced);
     if (std::isfinite(lowest) && lowest < t.minClearanceM - 0.05)
         text += tr("<br><span style='color:#c00000'>Clearance below the minimum: see the red part of the "
                    "profile.</span>");
