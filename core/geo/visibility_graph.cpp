@@ -183,11 +183,15 @@ VisibilityGraph::VisibilityGraph(NoFlyField field, VisibilityGraphOptions option
     if (!m_field.empty()) {
         // Chords of a circle of radius r with q segments per quarter stay r cos(pi / 4q) from its centre.
         m_inflatedMargin = m_field.marginM() / std::cos(M_PI / (4.0 * q)) + 0.05;
-        MultiPolygon grown;
-        for (const auto& z : m_field.zones())
-            for (auto& b : buffer(z, m_inflatedMargin, q))
-                grown.push_back(std::move(b));
-        m_inflated = unite(grown);
+        if (options.inflatedZones) {
+            m_inflated = *options.inflatedZones;
+        } else {
+            MultiPolygon grown;
+            for (const auto& z : m_field.zones())
+                for (auto& b : buffer(z, m_inflatedMargin, q))
+                    grown.push_back(std::move(b));
+            m_inflated = unite(grown);
+        }
         for (const auto& poly : m_inflated) {
             bool coarse = false;
             if (options.coarseCorners) {
@@ -410,6 +414,34 @@ std::vector<Vec2> VisibilityGraph::path(const Vec2& a, const std::vector<int>& a
             break;
     }
     return out;
+}
+
+bool VisibilityGraph::pathAround(const Tree& t, const Vec2& target, const std::vector<int>& targetVisible,
+                                 std::vector<Vec2>& mid) const {
+    double len = kInf;
+    const int last = bestLastNode(t, target, targetVisible, &len);
+    if (!std::isfinite(len))
+        return false;
+    mid.clear();
+    for (int v = last; v >= 0; v = t.prev[static_cast<std::size_t>(v)])
+        mid.push_back(m_nodes[static_cast<std::size_t>(v)].p);
+    std::reverse(mid.begin(), mid.end());
+    return true;
+}
+
+bool VisibilityGraph::pathAround(const Vec2& a, const std::vector<int>& aVisible, const Vec2& b,
+                                 const std::vector<int>& bVisible, std::vector<Vec2>& mid) const {
+    int i = -1, j = -1;
+    if (!std::isfinite(bestPair(a, aVisible, b, bVisible, &i, &j)))
+        return false;
+    const std::size_t n = m_nodes.size();
+    mid.clear();
+    for (int k = i; k >= 0; k = m_pairNext[static_cast<std::size_t>(k) * n + static_cast<std::size_t>(j)]) {
+        mid.push_back(m_nodes[static_cast<std::size_t>(k)].p);
+        if (k == j || mid.size() > n)
+            break;
+    }
+    return true;
 }
 
 Result<std::vector<Vec2>> VisibilityGraph::shortestPath(const Vec2& a, const Vec2& b) const {

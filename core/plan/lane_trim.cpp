@@ -163,9 +163,20 @@ LaneTrimStats trimCoveredLanes(const Decomposition& d, std::vector<std::vector<C
         return std::make_pair(lo, hi);
     };
     // Most redundant first: by the share of the strip others leave, measured before any change.
+    // needed(k) reads only the bands within `dependsWithin` of lane k's line: it is worked out again
+    // at the lane's turn only when one of those changed since.
     std::vector<double> share(refs.size());
+    std::vector<std::pair<double, double>> neededAtStart(refs.size());
+    std::vector<char> stale(refs.size(), 0);
+    const double dependsWithin = beyond + 0.5 * s + 1e-3;
+    auto changed = [&](std::size_t j) {
+        const auto first = std::lower_bound(ys.begin(), ys.end(), rects[j].y - dependsWithin);
+        for (auto it = first; it != ys.end() && *it <= rects[j].y + dependsWithin; ++it)
+            stale[byY[static_cast<std::size_t>(it - ys.begin())]] = 1;
+    };
     for (std::size_t k = 0; k < refs.size(); ++k) {
-        const auto [lo, hi] = needed(k);
+        neededAtStart[k] = needed(k);
+        const auto [lo, hi] = neededAtStart[k];
         const double len = rects[k].x1 - rects[k].x0;
         share[k] = lo > hi ? 0.0 : (hi - lo) / std::max(len, 1e-9);
     }
@@ -179,9 +190,10 @@ LaneTrimStats trimCoveredLanes(const Decomposition& d, std::vector<std::vector<C
         if (share[k] >= 1.0 - 1e-9)
             continue; // needed from end to end before any change: it stays so
         CellLane& l = lanes[refs[k].cell][refs[k].lane];
-        const auto [lo, hi] = needed(k);
+        const auto [lo, hi] = stale[k] ? needed(k) : neededAtStart[k];
         if (lo > hi) {
             rects[k].gone = true;
+            changed(k);
             drop[refs[k].cell][refs[k].lane] = 1;
             ++stats.dropped;
             stats.savedM += (l.stripB - l.stripA).norm();
@@ -213,6 +225,7 @@ LaneTrimStats trimCoveredLanes(const Decomposition& d, std::vector<std::vector<C
         l.flyB = d.frame.toWorld(Vec2(nfb, l.y));
         l.span = laneSpan(l.stripA, l.stripB, ph, l.flyA, l.flyB);
         rects[k] = rectOf(d, l, ph);
+        changed(k);
     }
     for (std::size_t c = 0; c < lanes.size(); ++c) {
         std::vector<CellLane> kept;

@@ -67,6 +67,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     vgo.coarseCorners = true;
     vgo.allPairs = true;
     const geo::VisibilityGraph freeGraph(field, vgo);
+    vgo.inflatedZones = std::make_shared<const geo::MultiPolygon>(freeGraph.inflatedZones());
     // Transitions stay over the area with keep-inside; without, within half a track spacing of it
     // (as no waypoint of any plan may stray further), unless no such way exists.
     vgo.keepInside = opt.keepInside ? region : geo::buffer(region, 0.5 * opt.trackSpacingM - 0.05, 2);
@@ -301,15 +302,15 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
             std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key(a) < key(b); });
             fp->problem.sweepOrder = order;
         }
-        fp->problem.link = [&router](int a, int b) { return router.route(a, b).timeS; };
+        fp->problem.link = [&router](int a, int b) { return router.timeS(a, b); };
         fp->problem.lowerBound = [&router](int a, int b) { return router.lowerBound(a, b); };
         if (home) {
             const int h = fp->homePt;
-            fp->problem.start = [&router, h](int v) { return router.route(h, v).timeS; };
+            fp->problem.start = [&router, h](int v) { return router.timeS(h, v); };
         }
         if (landing) {
             const int l = fp->landingPt;
-            fp->problem.finish = [&router, l](int v) { return router.route(v, l).timeS; };
+            fp->problem.finish = [&router, l](int v) { return router.timeS(v, l); };
         }
         OrderOptions oo;
         oo.improve = opt.improveOrder;
