@@ -30,9 +30,6 @@ struct VisibilityGraphOptions {
     // path between two points is then a look-up over their visible nodes, for planners asking many.
     bool allPairs = false;
     int maxAllPairsNodes = 600;
-    // When given: the zones grown by the margin and united exactly as this graph would do it, i.e.
-    // another graph's inflatedZones() over the same field and quadrantSegments; spares the union.
-    std::shared_ptr<const MultiPolygon> inflatedZones;
 };
 
 // The nodes are the convex corners of the grown zones (and the reflex corners of keepInside), the
@@ -43,6 +40,9 @@ class VisibilityGraph {
 public:
     VisibilityGraph() = default;
     explicit VisibilityGraph(NoFlyField field, VisibilityGraphOptions options = {});
+    // The same with the zones already grown by the margin and united exactly as this graph would do
+    // it (another graph's inflatedZones() over the same field and quadrantSegments): spares the union.
+    VisibilityGraph(NoFlyField field, VisibilityGraphOptions options, std::shared_ptr<const MultiPolygon> inflatedZones);
 
     const NoFlyField& field() const { return m_field; }
     // The zones grown by the graph's inflated margin (their union): what the nodes lie on.

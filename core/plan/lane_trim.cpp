@@ -326,8 +326,11 @@ int dropCoveredLanes(const Decomposition& d, std::vector<std::vector<CellLane>>&
             }
             pts.insert(pts.end(), photos[static_cast<std::size_t>(o)].begin(), photos[static_cast<std::size_t>(o)].end());
         }
+        // The photos whose footprint may overlap the one of the own photo being checked: a point of
+        // that footprint is seen by no other (1 m spare for rounding).
+        std::vector<Vec2> close;
         auto seen = [&](const Vec2& q) {
-            for (const auto& c : pts) {
+            for (const auto& c : close) {
                 const Vec2 dq = q - c;
                 if (std::abs(dq.dot(u)) <= ha && std::abs(u.x() * dq.y() - u.y() * dq.x()) <= hc)
                     return true;
@@ -338,13 +341,20 @@ int dropCoveredLanes(const Decomposition& d, std::vector<std::vector<CellLane>>&
         const std::vector<Vec2> own = makeLane(l.stripA, l.stripB, p.photoSpacingM, l.flyA, l.flyB).photos;
         const Vec2 v(-u.y(), u.x());
         bool covered = !pts.empty();
-        for (std::size_t k = 0; covered && k < own.size(); ++k)
+        for (std::size_t k = 0; covered && k < own.size(); ++k) {
+            close.clear();
+            for (const auto& c : pts) {
+                const Vec2 dc = own[k] - c;
+                if (std::abs(dc.dot(u)) <= 2 * ha + 1.0 && std::abs(u.x() * dc.y() - u.y() * dc.x()) <= 2 * hc + 1.0)
+                    close.push_back(c);
+            }
             for (double b = -hc + 0.5 * r; covered && b < hc; b += r)
                 for (double a = -ha + 0.5 * r; covered && a < ha; a += r) {
                     const Vec2 q = own[k] + a * u + b * v;
                     if (ground.insideArea(q) && !ground.inZone(q) && !seen(q))
                         covered = false;
                 }
+        }
         if (covered) {
             dropped[ci] = 1;
             ++count;

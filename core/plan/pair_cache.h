@@ -12,7 +12,8 @@ public:
     // The key of the pair (u, v), the same for (v, u). u, v >= 0.
     static std::uint64_t key(int u, int v) {
         const int lo = u < v ? u : v, hi = u < v ? v : u;
-        return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(lo)) << 32) | static_cast<std::uint32_t>(hi);
+        return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(lo)) << 32) |
+               static_cast<std::uint32_t>(hi);
     }
     // The cost kept for the key, or nullptr.
     const double* find(std::uint64_t k) const {

@@ -47,13 +47,15 @@ struct Route {
 class LazyGraph {
 public:
     explicit LazyGraph(const geo::VisibilityGraph& built) : m_built(&built) {}
-    LazyGraph(const geo::NoFlyField& field, geo::VisibilityGraphOptions options)
-        : m_field(field), m_options(std::move(options)) {}
+    // inflatedZones: see geo::VisibilityGraph (optional).
+    LazyGraph(const geo::NoFlyField& field, geo::VisibilityGraphOptions options,
+              std::shared_ptr<const geo::MultiPolygon> inflatedZones = nullptr)
+        : m_field(field), m_options(std::move(options)), m_inflatedZones(std::move(inflatedZones)) {}
     const geo::VisibilityGraph& get() const {
         if (m_built)
             return *m_built;
         if (!m_own)
-            m_own = std::make_unique<geo::VisibilityGraph>(m_field, m_options);
+            m_own = std::make_unique<geo::VisibilityGraph>(m_field, m_options, m_inflatedZones);
         return *m_own;
     }
 
@@ -61,6 +63,7 @@ private:
     const geo::VisibilityGraph* m_built = nullptr;
     geo::NoFlyField m_field;
     geo::VisibilityGraphOptions m_options;
+    std::shared_ptr<const geo::MultiPolygon> m_inflatedZones;
     mutable std::unique_ptr<geo::VisibilityGraph> m_own;
 };
 
