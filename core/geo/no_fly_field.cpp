@@ -17,7 +17,7 @@ namespace {
 
 using geo::Vec2;
 
-double pointSegDist(const Vec2& p, const Vec2& a, const Vec2& b) {
+inline double pointSegDist(const Vec2& p, const Vec2& a, const Vec2& b) {
     const Vec2 ab = b - a;
     const double len2 = ab.squaredNorm();
     const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
@@ -26,7 +26,7 @@ double pointSegDist(const Vec2& p, const Vec2& a, const Vec2& b) {
 
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
-bool segmentsIntersect(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+inline bool segmentsIntersect(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
     const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
     const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
     if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
@@ -58,7 +58,7 @@ double boxGap(const Vec2& amin, const Vec2& amax, const Vec2& bmin, const Vec2& 
 
 // True when two boxes are at least `need` apart (and apart at all): what boxGap >= need says, without
 // a square root.
-bool boxesApart(const Vec2& amin, const Vec2& amax, const Vec2& bmin, const Vec2& bmax, double need) {
+inline bool boxesApart(const Vec2& amin, const Vec2& amax, const Vec2& bmin, const Vec2& bmax, double need) {
     const double dx = std::max({0.0, bmin.x() - amax.x(), amin.x() - bmax.x()});
     const double dy = std::max({0.0, bmin.y() - amax.y(), amin.y() - bmax.y()});
     const double g2 = dx * dx + dy * dy;
@@ -66,7 +66,7 @@ bool boxesApart(const Vec2& amin, const Vec2& amax, const Vec2& bmin, const Vec2
 }
 
 // Squared distance from p to the segment ab.
-double pointSegDist2(const Vec2& p, const Vec2& a, const Vec2& b) {
+inline double pointSegDist2(const Vec2& p, const Vec2& a, const Vec2& b) {
     const Vec2 ab = b - a;
     const double len2 = ab.squaredNorm();
     const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
@@ -77,10 +77,13 @@ double pointSegDist2(const Vec2& p, const Vec2& a, const Vec2& b) {
 
 NoFlyField::NoFlyField(std::vector<geo::Polygon> zones, double marginM)
     : m_zones(std::move(zones)), m_margin(std::max(0.0, marginM)) {
+    m_edgeBegin.push_back(0);
     for (const auto& z : m_zones) {
         const auto b = geo::bounds(z);
         m_boxes.emplace_back(b.min, b.max);
         m_circles.emplace_back(0.5 * (b.min + b.max), 0.5 * (b.max - b.min).norm());
+        forEachEdge(z, [&](const Vec2& c, const Vec2& d) { m_edges.push_back(Edge{c, d, c.cwiseMin(d), c.cwiseMax(d)}); });
+        m_edgeBegin.push_back(m_edges.size());
     }
 }
 
@@ -141,18 +144,20 @@ bool NoFlyField::segmentIsSafe(const Vec2& a, const Vec2& b) const {
         const double reach = m_circles[i].second + need;
         if (pointSegDist2(m_circles[i].first, a, b) > reach * reach)
             continue;
-        bool safe = true;
-        forEachEdge(m_zones[i], [&](const Vec2& c, const Vec2& d) {
-            if (!safe)
-                return;
+        for (std::size_t k = m_edgeBegin[i]; k < m_edgeBegin[i + 1]; ++k) {
+            const Edge& e = m_edges[k];
             // An edge whose box lies at least `need` beyond the segment's box is far enough.
-            if (boxesApart(smin, smax, c.cwiseMin(d), c.cwiseMax(d), need))
-                return;
-            if (!isSafeClearance(segSegDist(a, b, c, d)))
-                safe = false;
-        });
+            if (boxesApart(smin, smax, e.lo, e.hi, need))
+                continue;
+            // isSafeClearance(segSegDist(a, b, c, d)): safe when clear of each of the four end-to-segment
+            // distances, so the first one too close settles it.
+            if (segmentsIntersect(a, b, e.c, e.d) || !isSafeClearance(pointSegDist(a, e.c, e.d)) ||
+                !isSafeClearance(pointSegDist(b, e.c, e.d)) || !isSafeClearance(pointSegDist(e.c, a, b)) ||
+                !isSafeClearance(pointSegDist(e.d, a, b)))
+                return false;
+        }
         // Clear of every edge by the margin: the segment lies wholly inside or wholly outside.
-        if (!safe || geo::insideEvenOdd(m_zones[i], a))
+        if (geo::insideEvenOdd(m_zones[i], a))
             return false;
     }
     return true;

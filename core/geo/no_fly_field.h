@@ -62,6 +62,13 @@ private:
     std::vector<Polygon> m_zones;
     std::vector<std::pair<Vec2, Vec2>> m_boxes; // per zone: min, max
     std::vector<std::pair<Vec2, double>> m_circles; // per zone: a circle holding it (centre, radius)
+    // Every zone's edges with their boxes, zone after zone (zone i: m_edgeBegin[i] to m_edgeBegin[i + 1]),
+    // so that the segment test reads them in order without working them out again.
+    struct Edge {
+        Vec2 c{0, 0}, d{0, 0}, lo{0, 0}, hi{0, 0};
+    };
+    std::vector<Edge> m_edges;
+    std::vector<std::size_t> m_edgeBegin;
     double m_margin = 0.0;
     double m_slack = kPlanningSlackM;
 };

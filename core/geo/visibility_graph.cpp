@@ -25,8 +25,9 @@ std::string where(const Vec2& p) {
 
 // True when the segment ab stays inside (or on the boundary of) the polygons: every piece of it
 // between two boundary crossings has its midpoint inside.
-bool segmentInside(const MultiPolygon& polys, const Vec2& a, const Vec2& b) {
-    if (!contains(polys, a) || !contains(polys, b))
+// aInside, bInside: contains(polys, a) and contains(polys, b), when the caller knows them.
+bool segmentInside(const MultiPolygon& polys, const Vec2& a, const Vec2& b, int aInside = -1, int bInside = -1) {
+    if (!(aInside >= 0 ? aInside == 1 : contains(polys, a)) || !(bInside >= 0 ? bInside == 1 : contains(polys, b)))
         return false;
     std::vector<double> ts{0.0, 1.0};
     const Vec2 d = b - a;
@@ -155,6 +156,10 @@ Ring circumscribed(const Ring& hull, double r) {
 } // namespace
 
 VisibilityGraph::VisibilityGraph(NoFlyField field, VisibilityGraphOptions options)
+    : VisibilityGraph(std::move(field), std::move(options), nullptr) {}
+
+VisibilityGraph::VisibilityGraph(NoFlyField field, VisibilityGraphOptions options,
+                                 std::shared_ptr<const MultiPolygon> inflatedZones)
     : m_field(std::move(field)), m_keepInside(std::move(options.keepInside)) {
     const int q = std::max(1, options.quadrantSegments);
     std::vector<Node> candidates;
@@ -183,11 +188,15 @@ VisibilityGraph::VisibilityGraph(NoFlyField field, VisibilityGraphOptions option
     if (!m_field.empty()) {
         // Chords of a circle of radius r with q segments per quarter stay r cos(pi / 4q) from its centre.
         m_inflatedMargin = m_field.marginM() / std::cos(M_PI / (4.0 * q)) + 0.05;
-        MultiPolygon grown;
-        for (const auto& z : m_field.zones())
-            for (auto& b : buffer(z, m_inflatedMargin, q))
-                grown.push_back(std::move(b));
-        m_inflated = unite(grown);
+        if (inflatedZones) {
+            m_inflated = *inflatedZones;
+        } else {
+            MultiPolygon grown;
+            for (const auto& z : m_field.zones())
+                for (auto& b : buffer(z, m_inflatedMargin, q))
+                    grown.push_back(std::move(b));
+            m_inflated = unite(grown);
+        }
         for (const auto& poly : m_inflated) {
             bool coarse = false;
             if (options.coarseCorners) {
@@ -295,9 +304,19 @@ std::size_t VisibilityGraph::edgeCount() const {
 std::vector<int> VisibilityGraph::visibleNodes(const Vec2& p) const {
     std::vector<int> out;
     const std::vector<char> inside = obstaclesHolding(p);
-    for (std::size_t i = 0; i < m_nodes.size(); ++i)
-        if (tangentAt(m_nodes[i], p, &inside) && segmentIsFree(p, m_nodes[i].p))
-            out.push_back(static_cast<int>(i));
+    // Every node lies in keepInside (see the constructor); whether p does is asked once.
+    int pInside = -1;
+    for (std::size_t i = 0; i < m_nodes.size(); ++i) {
+        if (!tangentAt(m_nodes[i], p, &inside) || !m_field.segmentIsSafe(p, m_nodes[i].p))
+            continue;
+        if (!m_keepInside.empty()) {
+            if (pInside < 0)
+                pInside = contains(m_keepInside, p) ? 1 : 0;
+            if (!segmentInside(m_keepInside, p, m_nodes[i].p, pInside, 1))
+                continue;
+        }
+        out.push_back(static_cast<int>(i));
+    }
     return out;
 }
 
@@ -410,6 +429,34 @@ std::vector<Vec2> VisibilityGraph::path(const Vec2& a, const std::vector<int>& a
             break;
     }
     return out;
+}
+
+bool VisibilityGraph::pathAround(const Tree& t, const Vec2& target, const std::vector<int>& targetVisible,
+                                 std::vector<Vec2>& mid) const {
+    double len = kInf;
+    const int last = bestLastNode(t, target, targetVisible, &len);
+    if (!std::isfinite(len))
+        return false;
+    mid.clear();
+    for (int v = last; v >= 0; v = t.prev[static_cast<std::size_t>(v)])
+        mid.push_back(m_nodes[static_cast<std::size_t>(v)].p);
+    std::reverse(mid.begin(), mid.end());
+    return true;
+}
+
+bool VisibilityGraph::pathAround(const Vec2& a, const std::vector<int>& aVisible, const Vec2& b,
+                                 const std::vector<int>& bVisible, std::vector<Vec2>& mid) const {
+    int i = -1, j = -1;
+    if (!std::isfinite(bestPair(a, aVisible, b, bVisible, &i, &j)))
+        return false;
+    const std::size_t n = m_nodes.size();
+    mid.clear();
+    for (int k = i; k >= 0; k = m_pairNext[static_cast<std::size_t>(k) * n + static_cast<std::size_t>(j)]) {
+        mid.push_back(m_nodes[static_cast<std::size_t>(k)].p);
+        if (k == j || mid.size() > n)
+            break;
+    }
+    return true;
 }
 
 Result<std::vector<Vec2>> VisibilityGraph::shortestPath(const Vec2& a, const Vec2& b) const {

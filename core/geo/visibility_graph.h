@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace pf::geo {
@@ -39,6 +40,9 @@ class VisibilityGraph {
 public:
     VisibilityGraph() = default;
     explicit VisibilityGraph(NoFlyField field, VisibilityGraphOptions options = {});
+    // The same with the zones already grown by the margin and united exactly as this graph would do
+    // it (another graph's inflatedZones() over the same field and quadrantSegments): spares the union.
+    VisibilityGraph(NoFlyField field, VisibilityGraphOptions options, std::shared_ptr<const MultiPolygon> inflatedZones);
 
     const NoFlyField& field() const { return m_field; }
     // The zones grown by the graph's inflated margin (their union): what the nodes lie on.
@@ -72,6 +76,12 @@ public:
     double distance(const Vec2& a, const std::vector<int>& aVisible, const Vec2& b, const std::vector<int>& bVisible) const;
     std::vector<Vec2> path(const Vec2& a, const std::vector<int>& aVisible, const Vec2& b,
                            const std::vector<int>& bVisible) const;
+
+    // distance() and path() in one for a segment ab already known not to be free: false when no way
+    // exists, else the points strictly between a and b in `mid`.
+    bool pathAround(const Tree& t, const Vec2& target, const std::vector<int>& targetVisible, std::vector<Vec2>& mid) const;
+    bool pathAround(const Vec2& a, const std::vector<int>& aVisible, const Vec2& b, const std::vector<int>& bVisible,
+                    std::vector<Vec2>& mid) const;
 
     // One query: the points strictly between a and b of the shortest free path (empty when the segment
     // is free). Errors: a or b not free, or no free way.

@@ -163,9 +163,20 @@ LaneTrimStats trimCoveredLanes(const Decomposition& d, std::vector<std::vector<C
         return std::make_pair(lo, hi);
     };
     // Most redundant first: by the share of the strip others leave, measured before any change.
+    // needed(k) reads only the bands within `dependsWithin` of lane k's line: it is worked out again
+    // at the lane's turn only when one of those changed since.
     std::vector<double> share(refs.size());
+    std::vector<std::pair<double, double>> neededAtStart(refs.size());
+    std::vector<char> stale(refs.size(), 0);
+    const double dependsWithin = beyond + 0.5 * s + 1e-3;
+    auto changed = [&](std::size_t j) {
+        const auto first = std::lower_bound(ys.begin(), ys.end(), rects[j].y - dependsWithin);
+        for (auto it = first; it != ys.end() && *it <= rects[j].y + dependsWithin; ++it)
+            stale[byY[static_cast<std::size_t>(it - ys.begin())]] = 1;
+    };
     for (std::size_t k = 0; k < refs.size(); ++k) {
-        const auto [lo, hi] = needed(k);
+        neededAtStart[k] = needed(k);
+        const auto [lo, hi] = neededAtStart[k];
         const double len = rects[k].x1 - rects[k].x0;
         share[k] = lo > hi ? 0.0 : (hi - lo) / std::max(len, 1e-9);
     }
@@ -179,9 +190,10 @@ LaneTrimStats trimCoveredLanes(const Decomposition& d, std::vector<std::vector<C
         if (share[k] >= 1.0 - 1e-9)
             continue; // needed from end to end before any change: it stays so
         CellLane& l = lanes[refs[k].cell][refs[k].lane];
-        const auto [lo, hi] = needed(k);
+        const auto [lo, hi] = stale[k] ? needed(k) : neededAtStart[k];
         if (lo > hi) {
             rects[k].gone = true;
+            changed(k);
             drop[refs[k].cell][refs[k].lane] = 1;
             ++stats.dropped;
             stats.savedM += (l.stripB - l.stripA).norm();
@@ -213,6 +225,7 @@ LaneTrimStats trimCoveredLanes(const Decomposition& d, std::vector<std::vector<C
         l.flyB = d.frame.toWorld(Vec2(nfb, l.y));
         l.span = laneSpan(l.stripA, l.stripB, ph, l.flyA, l.flyB);
         rects[k] = rectOf(d, l, ph);
+        changed(k);
     }
     for (std::size_t c = 0; c < lanes.size(); ++c) {
         std::vector<CellLane> kept;
@@ -313,8 +326,11 @@ int dropCoveredLanes(const Decomposition& d, std::vector<std::vector<CellLane>>&
             }
             pts.insert(pts.end(), photos[static_cast<std::size_t>(o)].begin(), photos[static_cast<std::size_t>(o)].end());
         }
+        // The photos whose footprint may overlap the one of the own photo being checked: a point of
+        // that footprint is seen by no other (1 m spare for rounding).
+        std::vector<Vec2> close;
         auto seen = [&](const Vec2& q) {
-            for (const auto& c : pts) {
+            for (const auto& c : close) {
                 const Vec2 dq = q - c;
                 if (std::abs(dq.dot(u)) <= ha && std::abs(u.x() * dq.y() - u.y() * dq.x()) <= hc)
                     return true;
@@ -325,13 +341,20 @@ int dropCoveredLanes(const Decomposition& d, std::vector<std::vector<CellLane>>&
         const std::vector<Vec2> own = makeLane(l.stripA, l.stripB, p.photoSpacingM, l.flyA, l.flyB).photos;
         const Vec2 v(-u.y(), u.x());
         bool covered = !pts.empty();
-        for (std::size_t k = 0; covered && k < own.size(); ++k)
+        for (std::size_t k = 0; covered && k < own.size(); ++k) {
+            close.clear();
+            for (const auto& c : pts) {
+                const Vec2 dc = own[k] - c;
+                if (std::abs(dc.dot(u)) <= 2 * ha + 1.0 && std::abs(u.x() * dc.y() - u.y() * dc.x()) <= 2 * hc + 1.0)
+                    close.push_back(c);
+            }
             for (double b = -hc + 0.5 * r; covered && b < hc; b += r)
                 for (double a = -ha + 0.5 * r; covered && a < ha; a += r) {
                     const Vec2 q = own[k] + a * u + b * v;
                     if (ground.insideArea(q) && !ground.inZone(q) && !seen(q))
                         covered = false;
                 }
+        }
         if (covered) {
             dropped[ci] = 1;
             ++count;

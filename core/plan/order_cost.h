@@ -2,10 +2,10 @@
 #pragma once
 
 #include "core/plan/cell_order.h"
+#include "core/plan/pair_cache.h"
 
 #include <cstdint>
 #include <limits>
-#include <unordered_map>
 #include <vector>
 
 namespace pf::plan::order_search {
@@ -28,14 +28,12 @@ public:
             return m_p.start ? m_p.start(v) : 0.0;
         if (v == kNone)
             return m_p.finish ? m_p.finish(u) : 0.0;
-        const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(std::min(u, v))) << 32) |
-                                  static_cast<std::uint32_t>(std::max(u, v));
-        auto it = m_cache.find(key);
-        if (it != m_cache.end())
-            return it->second;
+        const std::uint64_t key = PairCostCache::key(u, v);
+        if (const double* known = m_cache.find(key))
+            return *known;
         ++evaluations;
         const double c = m_p.link(u, v);
-        m_cache.emplace(key, c);
+        m_cache.insert(key, c);
         return c;
     }
     double bound(int u, int v) {
@@ -43,10 +41,8 @@ public:
             return link(u, v);
         if (!m_p.lowerBound)
             return 0.0;
-        const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(std::min(u, v))) << 32) |
-                                  static_cast<std::uint32_t>(std::max(u, v));
-        auto it = m_cache.find(key);
-        return it != m_cache.end() ? it->second : m_p.lowerBound(u, v);
+        const double* known = m_cache.find(PairCostCache::key(u, v));
+        return known ? *known : m_p.lowerBound(u, v);
     }
     double wayCost(const OrderStep& s) const {
         return m_p.cells[static_cast<std::size_t>(s.cell)].ways[static_cast<std::size_t>(s.way)].costS;
@@ -70,7 +66,7 @@ public:
 
 protected:
     const OrderProblem& m_p;
-    std::unordered_map<std::uint64_t, double> m_cache;
+    PairCostCache m_cache;
 };
 
 } // namespace pf::plan::order_search

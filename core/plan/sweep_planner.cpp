@@ -68,10 +68,11 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     vgo.coarseCorners = true;
     vgo.allPairs = true;
     const geo::VisibilityGraph freeGraph(field, vgo);
+    const auto grownOnce = std::make_shared<const geo::MultiPolygon>(freeGraph.inflatedZones());
     // Transitions stay over the area with keep-inside; without, within half a track spacing of it
     // (as no waypoint of any plan may stray further), unless no such way exists.
     vgo.keepInside = opt.keepInside ? region : geo::buffer(region, 0.5 * opt.trackSpacingM - 0.05, 2);
-    std::unique_ptr<geo::VisibilityGraph> keepGraph = std::make_unique<geo::VisibilityGraph>(field, vgo);
+    std::unique_ptr<geo::VisibilityGraph> keepGraph = std::make_unique<geo::VisibilityGraph>(field, vgo, grownOnce);
     const geo::VisibilityGraph& graph = *keepGraph;
     // The detailed graphs serve the few transitions the coarse ones miss: no all-pairs table for them.
     geo::VisibilityGraphOptions detailed = vgo;
@@ -81,12 +82,12 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         auto o = detailed;
         o.keepInside.clear();
         return o;
-    }());
+    }(), grownOnce);
     std::unique_ptr<LazyGraph> coarseKeep, detailedKeep;
     std::vector<RouteGraph> routeGraphs;
     if (keepGraph) {
         coarseKeep = std::make_unique<LazyGraph>(*keepGraph);
-        detailedKeep = std::make_unique<LazyGraph>(field, detailed);
+        detailedKeep = std::make_unique<LazyGraph>(field, detailed, grownOnce);
         routeGraphs.push_back(RouteGraph{coarseKeep.get(), false});
         routeGraphs.push_back(RouteGraph{detailedKeep.get(), false});
     }
@@ -302,15 +303,15 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
             std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key(a) < key(b); });
             fp->problem.sweepOrder = order;
         }
-        fp->problem.link = [&router](int a, int b) { return router.route(a, b).timeS; };
+        fp->problem.link = [&router](int a, int b) { return router.timeS(a, b); };
         fp->problem.lowerBound = [&router](int a, int b) { return router.lowerBound(a, b); };
         if (home) {
             const int h = fp->homePt;
-            fp->problem.start = [&router, h](int v) { return router.route(h, v).timeS; };
+            fp->problem.start = [&router, h](int v) { return router.timeS(h, v); };
         }
         if (landing) {
             const int l = fp->landingPt;
-            fp->problem.finish = [&router, l](int v) { return router.route(v, l).timeS; };
+            fp->problem.finish = [&router, l](int v) { return router.timeS(v, l); };
         }
         OrderOptions oo;
         oo.improve = opt.improveOrder;

@@ -9,7 +9,12 @@ double angleDeg(const Vec2& u, const Vec2& v) {
     const double nu = u.norm(), nv = v.norm();
     if (nu == 0.0 || nv == 0.0)
         return 0.0;
-    return std::atan2(std::fabs(u.x() * v.y() - u.y() * v.x()), u.dot(v)) * 180.0 / M_PI;
+    const double c = std::fabs(u.x() * v.y() - u.y() * v.x()), d = u.dot(v);
+    // Lane ends meet along one line (same or opposite directions): what atan2 gives there, without it.
+    static const double kOpposite = std::atan2(0.0, -1.0) * 180.0 / M_PI;
+    if (c == 0.0 && d != 0.0)
+        return d > 0.0 ? 0.0 : kOpposite;
+    return std::atan2(c, d) * 180.0 / M_PI;
 }
 
 double transitionTime(const FlightTimeModel& m, const Vec2& a, const Vec2& arrive, const std::vector<Vec2>& mid,

@@ -47,13 +47,15 @@ struct Route {
 class LazyGraph {
 public:
     explicit LazyGraph(const geo::VisibilityGraph& built) : m_built(&built) {}
-    LazyGraph(const geo::NoFlyField& field, geo::VisibilityGraphOptions options)
-        : m_field(field), m_options(std::move(options)) {}
+    // inflatedZones: see geo::VisibilityGraph (optional).
+    LazyGraph(const geo::NoFlyField& field, geo::VisibilityGraphOptions options,
+              std::shared_ptr<const geo::MultiPolygon> inflatedZones = nullptr)
+        : m_field(field), m_options(std::move(options)), m_inflatedZones(std::move(inflatedZones)) {}
     const geo::VisibilityGraph& get() const {
         if (m_built)
             return *m_built;
         if (!m_own)
-            m_own = std::make_unique<geo::VisibilityGraph>(m_field, m_options);
+            m_own = std::make_unique<geo::VisibilityGraph>(m_field, m_options, m_inflatedZones);
         return *m_own;
     }
 
@@ -61,6 +63,7 @@ private:
     const geo::VisibilityGraph* m_built = nullptr;
     geo::NoFlyField m_field;
     geo::VisibilityGraphOptions m_options;
+    std::shared_ptr<const geo::MultiPolygon> m_inflatedZones;
     mutable std::unique_ptr<geo::VisibilityGraph> m_own;
 };
 
@@ -88,17 +91,13 @@ public:
 
     // From u (arriving along -in_u) to v (leaving along in_v); mid in that order.
     Route route(int u, int v) {
-        const int lo = std::min(u, v), hi = std::max(u, v);
-        const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(lo)) << 32) |
-                                  static_cast<std::uint32_t>(hi);
-        auto it = m_routes.find(key);
-        if (it == m_routes.end())
-            it = m_routes.emplace(key, compute(lo, hi)).first;
-        Route r = it->second;
-        if (u != lo)
+        Route r = cached(u, v);
+        if (u > v)
             std::reverse(r.mid.begin(), r.mid.end());
         return r;
     }
+    // route(u, v).timeS without copying the way: what the order search asks for every link.
+    double timeS(int u, int v) { return cached(u, v).timeS; }
 
     double lowerBound(int u, int v) const {
         const auto& a = point(u);
@@ -107,6 +106,15 @@ public:
     }
 
 private:
+    const Route& cached(int u, int v) {
+        const int lo = std::min(u, v), hi = std::max(u, v);
+        const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(lo)) << 32) |
+                                  static_cast<std::uint32_t>(hi);
+        auto it = m_routes.find(key);
+        if (it == m_routes.end())
+            it = m_routes.emplace(key, compute(lo, hi)).first;
+        return it->second;
+    }
     struct Cache {
         std::unordered_map<int, std::vector<int>> visible;
         std::unordered_map<int, geo::VisibilityGraph::Tree> trees;
@@ -130,21 +138,11 @@ private:
             mid.clear();
             return true;
         }
-        if (g.hasAllPairs()) {
-            const auto& va = visible(g, c, u);
-            const auto& vb = visible(g, c, v);
-            if (!std::isfinite(g.distance(a, va, b, vb)))
-                return false;
-            mid = g.path(a, va, b, vb);
-            return true;
-        }
+        if (g.hasAllPairs())
+            return g.pathAround(a, visible(g, c, u), b, visible(g, c, v), mid);
         // Search from the end point with the larger tree cache hit chance: the lower id (cells' order).
         const auto& t = tree(g, c, u);
-        const auto& vis = visible(g, c, v);
-        if (!std::isfinite(g.distance(t, b, vis)))
-            return false;
-        mid = g.path(t, b, vis);
-        return true;
+        return g.pathAround(t, b, visible(g, c, v), mid);
     }
     Route compute(int u, int v) {
         Route r;
