@@ -61,19 +61,30 @@ bool OrderMoves::twoOpt(std::vector<OrderStep>& seq) {
     return any;
 }
 
+// What taking seq[i, i + len) out gains (its two links replaced by one), or 0 when that cannot pay
+// for any insertion; with `dearOnly`, also 0 unless one of its links is dear.
+double OrderMoves::removalGain(const std::vector<OrderStep>& seq, int i, int len, bool dearOnly) {
+    const int n = static_cast<int>(seq.size());
+    const int last = i + len - 1;
+    const int prev = i > 0 ? exit(seq[static_cast<std::size_t>(i - 1)]) : kNone;
+    const int next = last + 1 < n ? entry(seq[static_cast<std::size_t>(last + 1)]) : kNone;
+    const int bi = entry(seq[static_cast<std::size_t>(i)]), bx = exit(seq[static_cast<std::size_t>(last)]);
+    if (dearOnly && !dear(prev, bi) && !dear(bx, next))
+        return 0.0;
+    const double removed = link(prev, bi) + link(bx, next);
+    if (removed - bound(prev, next) <= kGainEps)
+        return 0.0;
+    const double gain = removed - link(prev, next);
+    return gain > kGainEps ? gain : 0.0;
+}
+
 // Move seq[i, i + len) between two other neighbours, either way round.
 bool OrderMoves::orOpt(std::vector<OrderStep>& seq) {
     const int n = static_cast<int>(seq.size());
     for (int len = 1; len <= 3; ++len)
         for (int i = 0; i + len <= n; ++i) {
             const int last = i + len - 1;
-            const int prev = i > 0 ? exit(seq[static_cast<std::size_t>(i - 1)]) : kNone;
-            const int next = last + 1 < n ? entry(seq[static_cast<std::size_t>(last + 1)]) : kNone;
-            const int bi = entry(seq[static_cast<std::size_t>(i)]), bx = exit(seq[static_cast<std::size_t>(last)]);
-            const double removed = link(prev, bi) + link(bx, next);
-            if (removed - bound(prev, next) <= kGainEps)
-                continue;
-            const double removeGain = removed - link(prev, next);
+            const double removeGain = removalGain(seq, i, len, false);
             if (removeGain <= kGainEps)
                 continue;
             // insert between k and k + 1 (k = -1: at the front), k outside [i - 1, last]
@@ -156,17 +167,10 @@ bool OrderMoves::orOptNear(std::vector<OrderStep>& seq, int budget) {
         for (int i = 0; i + len <= static_cast<int>(seq.size()) && moves < budget; ++i) {
             const int n = static_cast<int>(seq.size());
             const int last = i + len - 1;
-            const int prev = i > 0 ? exit(seq[static_cast<std::size_t>(i - 1)]) : kNone;
-            const int next = last + 1 < n ? entry(seq[static_cast<std::size_t>(last + 1)]) : kNone;
-            const int bi = entry(seq[static_cast<std::size_t>(i)]), bx = exit(seq[static_cast<std::size_t>(last)]);
-            if (!dear(prev, bi) && !dear(bx, next))
-                continue;
-            const double removed = link(prev, bi) + link(bx, next);
-            if (removed - bound(prev, next) <= kGainEps)
-                continue;
-            const double removeGain = removed - link(prev, next);
+            const double removeGain = removalGain(seq, i, len, true);
             if (removeGain <= kGainEps)
                 continue;
+            const int bi = entry(seq[static_cast<std::size_t>(i)]), bx = exit(seq[static_cast<std::size_t>(last)]);
             bool moved = false;
             for (int endp : {bi, bx}) {
                 const std::vector<int> cand = m_p.near(endp);
