@@ -6,14 +6,10 @@
 
 namespace pf {
 
-namespace {
-
 bool isFile(const std::string& path) {
     struct stat st {};
     return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
 }
-
-} // namespace
 
 std::vector<std::string> dataDirectoryCandidates() {
     std::vector<std::string> dirs;

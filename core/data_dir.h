@@ -12,6 +12,10 @@ namespace pf {
 // the installed data directory, the source tree's resources (a build that runs without installing).
 std::vector<std::string> dataDirectoryCandidates();
 
+// True if `path` names an existing regular file (not a folder): how the data folders and the user's
+// catalog are looked for.
+bool isFile(const std::string& path);
+
 // The directory holding the bundled data (catalog.json, demo/), searched as above; empty if none.
 std::string dataDirectory();
 

@@ -93,6 +93,12 @@ NoFlyField NoFlyField::forCheck(std::vector<geo::Polygon> zones, double marginM)
     return f;
 }
 
+NoFlyField NoFlyField::ofGrownZones(std::vector<geo::Polygon> grown) {
+    NoFlyField f(std::move(grown), 0.0);
+    f.m_grown = true;
+    return f;
+}
+
 double NoFlyField::clearance(const Vec2& p) const {
     double best = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < m_zones.size(); ++i) {
@@ -121,6 +127,15 @@ double NoFlyField::clearance(const Vec2& a, const Vec2& b) const {
 }
 
 bool NoFlyField::pointIsSafe(const Vec2& p) const {
+    if (m_grown) {
+        for (std::size_t i = 0; i < m_zones.size(); ++i) {
+            if (!geo::Box{m_boxes[i].first, m_boxes[i].second}.contains(p))
+                continue;
+            if (geo::contains(m_zones[i], p) && geo::distanceToBoundary(m_zones[i], p) > kGrownBoundaryM)
+                return false;
+        }
+        return true;
+    }
     const double need = std::max(0.0, minClearance());
     for (std::size_t i = 0; i < m_zones.size(); ++i) {
         if (boxesApart(p, p, m_boxes[i].first, m_boxes[i].second, need))
@@ -136,6 +151,14 @@ bool NoFlyField::pointIsSafe(const Vec2& p) const {
 bool NoFlyField::segmentIsSafe(const Vec2& a, const Vec2& b) const {
     const double need = std::max(0.0, minClearance());
     const Vec2 smin = a.cwiseMin(b), smax = a.cwiseMax(b);
+    if (m_grown) {
+        const geo::Box sb{smin, smax};
+        for (std::size_t i = 0; i < m_zones.size(); ++i)
+            if (geo::Box{m_boxes[i].first, m_boxes[i].second}.intersects(sb) &&
+                geo::segmentCrossesInterior(m_zones[i], a, b))
+                return false;
+        return true;
+    }
     for (std::size_t i = 0; i < m_zones.size(); ++i) {
         if (boxesApart(smin, smax, m_boxes[i].first, m_boxes[i].second, need))
             continue;

@@ -24,6 +24,11 @@ namespace pf::geo {
 //   converted back to metres in the check's own frame). The slack is no safety distance: a stage
 //   that moves or drops waypoints after the no-fly stage must test the legs it makes with the
 //   planner's field (dropNearDuplicates does).
+// The grid asks a third kind (ofGrownZones): its zones buffered as polygons by a little more than the
+// margin, the polygons its cells and flight positions are cut from, so that its answers agree with
+// its cells. That buffer contains the margin's true offset (grid.h), so what the grid calls safe a
+// margin field of the same zones calls safe too; not the other way round: the grid keeps up to 2 %
+// more, and asking a margin field instead would change the grid's cells and so its plans.
 class NoFlyField {
 public:
     // The planner's slack beyond the check's threshold: 300 times what a round trip through WGS84 costs
@@ -36,6 +41,12 @@ public:
     NoFlyField(std::vector<Polygon> zones, double marginM);
     // A field for the final check: safe means at least margin - tolerance() away.
     static NoFlyField forCheck(std::vector<Polygon> zones, double marginM);
+    // A field of zones already grown by their margin as polygons (the grid's buffered zones, whose
+    // cells and flight positions are cut from those polygons): safe means not inside them. Their
+    // boundary counts as outside, to kGrownBoundaryM for a point (a flight position computed on it
+    // carries rounding errors of ~1e-9 m), and a segment may run along it or touch it.
+    static NoFlyField ofGrownZones(std::vector<Polygon> grown);
+    static constexpr double kGrownBoundaryM = 1e-6;
 
     const std::vector<Polygon>& zones() const { return m_zones; }
     double marginM() const { return m_margin; }
@@ -50,10 +61,10 @@ public:
     // Distance from p (or from the segment ab) to the nearest zone; 0 inside or across one.
     double clearance(const Vec2& p) const;
     double clearance(const Vec2& a, const Vec2& b) const;
-    // Inside or touching a zone is never safe, whatever the margin.
+    // Inside or touching a zone is never safe, whatever the margin (but see ofGrownZones).
     // The same answers as isSafeClearance(clearance(...)), but a zone whose bounding box lies beyond
     // the margin is skipped and the scan stops at the first zone too close: planners ask these
-    // millions of times.
+    // millions of times. A field of grown zones answers by containment as said above.
     bool pointIsSafe(const Vec2& p) const;
     bool segmentIsSafe(const Vec2& a, const Vec2& b) const;
     bool isSafeClearance(double c) const { return c > 0.0 && c >= minClearance(); }
@@ -71,6 +82,7 @@ private:
     std::vector<std::size_t> m_edgeBegin;
     double m_margin = 0.0;
     double m_slack = kPlanningSlackM;
+    bool m_grown = false; // made by ofGrownZones: the margin is in the polygons
 };
 
 // Shortest safe paths around the zones: a visibility graph over the vertices of the zones buffered

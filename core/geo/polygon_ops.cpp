@@ -257,44 +257,46 @@ MultiPolygon intersection(const MultiPolygon& a, const Polygon& b) {
     return fromOgr(r.get());
 }
 
-bool segmentCrossesInterior(const MultiPolygon& polys, const Vec2& a, const Vec2& b) {
-    // Sample-free exact test: the segment enters an interior if its midpoint, or the midpoint of
+bool segmentCrossesInterior(const Polygon& poly, const Vec2& a, const Vec2& b) {
+    // Sample-free exact test: the segment enters the interior if its midpoint, or the midpoint of
     // any piece between consecutive boundary crossings, lies strictly inside.
-    for (const auto& poly : polys) {
-        const Box bb = bounds(poly);
-        const Box sb{Vec2(std::min(a.x(), b.x()), std::min(a.y(), b.y())),
-                     Vec2(std::max(a.x(), b.x()), std::max(a.y(), b.y()))};
-        if (!bb.intersects(sb))
-            continue;
-        std::vector<double> ts{0.0, 1.0};
-        const Vec2 d = b - a;
-        auto addCrossings = [&](const Ring& ring) {
-            const std::size_t n = ring.size();
-            for (std::size_t i = 0; i < n; ++i) {
-                const Vec2& p = ring[i];
-                const Vec2 e = ring[(i + 1) % n] - p;
-                const double den = d.x() * e.y() - d.y() * e.x();
-                if (std::abs(den) < 1e-15)
-                    continue;
-                const Vec2 ap = p - a;
-                const double t = (ap.x() * e.y() - ap.y() * e.x()) / den;
-                const double u = (ap.x() * d.y() - ap.y() * d.x()) / den;
-                if (t > 0.0 && t < 1.0 && u >= 0.0 && u <= 1.0)
-                    ts.push_back(t);
-            }
-        };
-        addCrossings(poly.outer);
-        for (const auto& h : poly.holes)
-            addCrossings(h);
-        std::sort(ts.begin(), ts.end());
-        for (std::size_t i = 0; i + 1 < ts.size(); ++i) {
-            if (ts[i + 1] - ts[i] < 1e-12)
+    std::vector<double> ts{0.0, 1.0};
+    const Vec2 d = b - a;
+    auto addCrossings = [&](const Ring& ring) {
+        const std::size_t n = ring.size();
+        for (std::size_t i = 0; i < n; ++i) {
+            const Vec2& p = ring[i];
+            const Vec2 e = ring[(i + 1) % n] - p;
+            const double den = d.x() * e.y() - d.y() * e.x();
+            if (std::abs(den) < 1e-15)
                 continue;
-            const Vec2 m = a + 0.5 * (ts[i] + ts[i + 1]) * d;
-            if (contains(poly, m) && distanceToBoundary(poly, m) > 1e-9)
-                return true;
+            const Vec2 ap = p - a;
+            const double t = (ap.x() * e.y() - ap.y() * e.x()) / den;
+            const double u = (ap.x() * d.y() - ap.y() * d.x()) / den;
+            if (t > 0.0 && t < 1.0 && u >= 0.0 && u <= 1.0)
+                ts.push_back(t);
         }
+    };
+    addCrossings(poly.outer);
+    for (const auto& h : poly.holes)
+        addCrossings(h);
+    std::sort(ts.begin(), ts.end());
+    for (std::size_t i = 0; i + 1 < ts.size(); ++i) {
+        if (ts[i + 1] - ts[i] < 1e-12)
+            continue;
+        const Vec2 m = a + 0.5 * (ts[i] + ts[i + 1]) * d;
+        if (contains(poly, m) && distanceToBoundary(poly, m) > 1e-9)
+            return true;
     }
+    return false;
+}
+
+bool segmentCrossesInterior(const MultiPolygon& polys, const Vec2& a, const Vec2& b) {
+    const Box sb{Vec2(std::min(a.x(), b.x()), std::min(a.y(), b.y())),
+                 Vec2(std::max(a.x(), b.x()), std::max(a.y(), b.y()))};
+    for (const auto& poly : polys)
+        if (bounds(poly).intersects(sb) && segmentCrossesInterior(poly, a, b))
+            return true;
     return false;
 }
 

@@ -37,6 +37,7 @@ MultiPolygon intersection(const MultiPolygon& a, const Polygon& b);
 
 // True if the segment ab touches the interior of any polygon (grazing the boundary is allowed).
 bool segmentCrossesInterior(const MultiPolygon& polys, const Vec2& a, const Vec2& b);
+bool segmentCrossesInterior(const Polygon& poly, const Vec2& a, const Vec2& b);
 
 // GEOS validity; on failure `reason` receives GEOS's explanation (with a location when it has one).
 bool isValid(const Polygon& poly, std::string* reason = nullptr);

@@ -32,9 +32,6 @@ using detail::URing;
 
 namespace {
 
-// A point this far (metres) inside a buffered no-fly zone still counts as on its boundary: the nearest
-// flyable point of a cell is computed on that boundary and carries rounding errors of ~1e-9 m.
-constexpr double kSafeTolM = 1e-6;
 // Shifted flight positions are moved this far away from the zone's boundary when the cell allows it, so
 // that they are strictly outside even for callers using an exact point-in-polygon test.
 constexpr double kNudgeM = 1e-3;
@@ -217,16 +214,17 @@ Result<Grid> GridBuilder::build(const geo::MultiPolygon& area, const std::vector
     // GEOS approximates the buffer's round corners by chords inscribed in the true offset curve (8 per
     // quarter circle), which would cut up to 0.5 % off the margin there; buffering a little more makes
     // the polygonal zone contain the true offset, so the margin is always honoured in full.
+    geo::MultiPolygon buffered;
     if (!zoneUnion.empty())
-        g.m_bufferedNoFly = opt.safetyMarginM > 0 ? geo::buffer(zoneUnion, opt.safetyMarginM / std::cos(M_PI / 16), 8)
-                                                  : zoneUnion;
+        buffered = opt.safetyMarginM > 0 ? geo::buffer(zoneUnion, opt.safetyMarginM / std::cos(M_PI / 16), 8)
+                                         : zoneUnion;
     // Pockets: ground enclosed by margins that merge round it (zones a few metres apart, a U-shaped zone
     // whose margin closes the U) is a hole of the buffered zones. No safe path leads into it, so it is
     // flown like a margin: never entered, its ground photographed from outside as far as the
     // footprints reach. The holes are filled; what they held of the admissible area is kept for reports.
     {
         geo::MultiPolygon pockets;
-        for (auto& z : g.m_bufferedNoFly) {
+        for (auto& z : buffered) {
             for (auto& h : z.holes)
                 pockets.push_back(geo::Polygon{std::move(h), {}});
             z.holes.clear();
@@ -235,12 +233,16 @@ Result<Grid> GridBuilder::build(const geo::MultiPolygon& area, const std::vector
             for (const auto& p : pockets)
                 for (const auto& part : geo::intersection(g.m_admissible, p))
                     g.m_pockets.push_back(part);
-            g.m_bufferedNoFly.insert(g.m_bufferedNoFly.end(), pockets.begin(), pockets.end());
-            g.m_bufferedNoFly = geo::unite(g.m_bufferedNoFly);
+            buffered.insert(buffered.end(), pockets.begin(), pockets.end());
+            buffered = geo::unite(buffered);
         }
     }
-    for (const auto& z : g.m_bufferedNoFly)
-        g.m_noFlyBoxes.push_back(geo::bounds(z));
+    // The grid's safety questions go to the no-fly model, asked of these zones.
+    g.m_noFly = geo::NoFlyField::ofGrownZones(std::move(buffered));
+    const geo::MultiPolygon& bufferedZones = g.m_noFly.zones();
+    std::vector<geo::Box> zoneBoxes; // to skip far zones fast when cutting cells
+    for (const auto& z : bufferedZones)
+        zoneBoxes.push_back(geo::bounds(z));
 
     // Which cells overlap the admissible area.
     const std::vector<URing> admRings = makeURings(g.m_admissible, frame);
@@ -248,12 +250,12 @@ Result<Grid> GridBuilder::build(const geo::MultiPolygon& area, const std::vector
     resolveEdgeCells(inArea, admRings, g.m_cols, g.m_rows);
 
     // Which cells are entirely clear of, entirely inside, or crossed by a buffered no-fly zone.
-    const std::vector<URing> flyRings = makeURings(g.m_bufferedNoFly, frame);
+    const std::vector<URing> flyRings = makeURings(bufferedZones, frame);
     const std::vector<std::uint8_t> fly =
         flyRings.empty() ? std::vector<std::uint8_t>(inArea.size(), kOut) : rasterise(flyRings, g.m_cols, g.m_rows);
 
     std::vector<std::unique_ptr<OGRPolygon>> zonesOgr;
-    for (const auto& z : g.m_bufferedNoFly)
+    for (const auto& z : bufferedZones)
         zonesOgr.push_back(geo::detail::toOgr(z));
 
     const int n = g.m_cols * g.m_rows;
@@ -274,7 +276,7 @@ Result<Grid> GridBuilder::build(const geo::MultiPolygon& area, const std::vector
             geo::Box cellBox = geo::bounds(corners);
             geo::detail::OgrGeomPtr rest(geo::detail::toOgr(geo::Polygon{corners, {}}).release());
             for (std::size_t k = 0; k < zonesOgr.size() && rest && !rest->IsEmpty(); ++k)
-                if (g.m_noFlyBoxes[k].intersects(cellBox))
+                if (zoneBoxes[k].intersects(cellBox))
                     rest.reset(rest->Difference(zonesOgr[k].get()));
             const geo::MultiPolygon free = rest ? geo::detail::fromOgr(rest.get()) : geo::MultiPolygon{};
             double best = std::numeric_limits<double>::infinity();
@@ -303,7 +305,7 @@ Result<Grid> GridBuilder::build(const geo::MultiPolygon& area, const std::vector
                     const Vec2 u = frame.toGrid(nudged);
                     const int c = g.col(i), r = g.row(i);
                     if (u.x() >= c && u.x() <= c + 1 && u.y() >= r && u.y() <= r + 1 &&
-                        !geo::contains(g.m_bufferedNoFly, nudged))
+                        !geo::contains(bufferedZones, nudged))
                         bestP = nudged;
                 }
                 g.m_shifts.emplace_back(i, bestP);
@@ -452,32 +454,6 @@ int Grid::nearestVisitable(const geo::Vec2& p) const {
     return best;
 }
 
-bool Grid::segmentIsSafe(const geo::Vec2& a, const geo::Vec2& b) const {
-    // Only the zones whose box the segment's box meets are tested exactly (one at a time, so that the
-    // exact test does not rescan every zone's bounds on each call: the grid builder calls this often).
-    const geo::Box sb{a.cwiseMin(b), a.cwiseMax(b)};
-    geo::MultiPolygon one(1);
-    for (std::size_t k = 0; k < m_bufferedNoFly.size(); ++k) {
-        if (!m_noFlyBoxes[k].intersects(sb))
-            continue;
-        one[0] = m_bufferedNoFly[k];
-        if (geo::segmentCrossesInterior(one, a, b))
-            return false;
-    }
-    return true;
-}
-
-bool Grid::pointIsSafe(const geo::Vec2& p) const {
-    for (std::size_t k = 0; k < m_bufferedNoFly.size(); ++k) {
-        if (!m_noFlyBoxes[k].contains(p))
-            continue;
-        const auto& z = m_bufferedNoFly[k];
-        if (geo::contains(z, p) && geo::distanceToBoundary(z, p) > kSafeTolM)
-            return false;
-    }
-    return true;
-}
-
 std::size_t Grid::memoryBytes() const {
     auto polyBytes = [](const geo::MultiPolygon& mp) {
         std::size_t b = mp.capacity() * sizeof(geo::Polygon);
@@ -489,7 +465,8 @@ std::size_t Grid::memoryBytes() const {
         return b;
     };
     return m_state.capacity() + m_moves.capacity() + m_shifts.capacity() * sizeof(m_shifts[0]) +
-           polyBytes(m_admissible) + polyBytes(m_bufferedNoFly) + m_noFlyBoxes.capacity() * sizeof(geo::Box);
+           polyBytes(m_admissible) + polyBytes(m_noFly.zones()) + polyBytes(m_pockets) +
+           m_noFly.zones().size() * 2 * sizeof(geo::Box); // the field's boxes and circles
 }
 
 } // namespace pf::grid

@@ -1,6 +1,7 @@
 // Grid: the approximate cellular decomposition of the admissible area (area minus no-fly zones).
 #pragma once
 
+#include "core/geo/no_fly_field.h"
 #include "core/geo/polygon_ops.h"
 #include "core/geo/types.h"
 #include "core/result.h"
@@ -112,16 +113,19 @@ public:
     // The visitable cell whose flight position is nearest to p, or -1 if there is none.
     int nearestVisitable(const geo::Vec2& p) const;
 
+    // The grid's no-fly model: its buffered zones (pockets filled) as a field of grown zones, so that
+    // every safety question asked of the grid agrees with its cells and flight positions.
+    const geo::NoFlyField& noFlyField() const { return m_noFly; }
     // True if the straight segment ab keeps out of every buffered no-fly zone (any two points, not only
     // neighbours: planners use it for diagonal moves and transits).
-    bool segmentIsSafe(const geo::Vec2& a, const geo::Vec2& b) const;
+    bool segmentIsSafe(const geo::Vec2& a, const geo::Vec2& b) const { return m_noFly.segmentIsSafe(a, b); }
     // True if p is outside every buffered no-fly zone.
-    bool pointIsSafe(const geo::Vec2& p) const;
+    bool pointIsSafe(const geo::Vec2& p) const { return m_noFly.pointIsSafe(p); }
 
     // The admissible area and buffered no-fly zones used to build the grid (local metres).
     const geo::MultiPolygon& admissible() const { return m_admissible; }
     // The buffered no-fly zones with every pocket filled (see pockets()).
-    const geo::MultiPolygon& bufferedNoFly() const { return m_bufferedNoFly; }
+    const geo::MultiPolygon& bufferedNoFly() const { return m_noFly.zones(); }
     // The admissible ground inside pockets: holes of the buffered zones, enclosed by margins that merge
     // round them, which no safe path reaches. They are treated as margin (never flown into); their
     // ground is photographed from outside as far as the footprints reach.
@@ -143,9 +147,8 @@ private:
     // search: few cells are shifted, so this keeps the per-cell cost low on large grids.
     std::vector<std::pair<int, geo::Vec2>> m_shifts;
     geo::MultiPolygon m_admissible;
-    geo::MultiPolygon m_bufferedNoFly;
+    geo::NoFlyField m_noFly; // the buffered zones, grown by the margin
     geo::MultiPolygon m_pockets;
-    std::vector<geo::Box> m_noFlyBoxes; // bounding boxes of m_bufferedNoFly, to skip far zones fast
     double m_cos = 1.0;                 // cos/sin of the grid angle, cached for the cell transforms
     double m_sin = 0.0;
 

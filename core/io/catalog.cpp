@@ -22,9 +22,6 @@
 #include <optional>
 #include <sstream>
 
-#include <sys/stat.h>
-#include <unistd.h>
-
 #ifndef PF_INSTALL_DATA_DIR
 #define PF_INSTALL_DATA_DIR ""
 #endif
@@ -43,11 +40,6 @@ bool sameName(const std::string& a, const std::string& b) {
     return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](unsigned char x, unsigned char y) {
                return std::tolower(x) == std::tolower(y);
            });
-}
-
-bool isFile(const std::string& path) {
-    struct stat st {};
-    return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
 }
 
 // The catalog's entries on top of the checked JSON reader; the first problem becomes
@@ -244,7 +236,7 @@ Result<Catalog> loadDefaultCatalog() {
 
     const std::string userPath = userCatalogPath();
     std::string defaultsFrom = bundledPath;
-    if (!userPath.empty() && isFile(userPath)) {
+    if (!userPath.empty() && pf::isFile(userPath)) {
         auto user = loadCatalog(userPath);
         if (!user)
             return user.error(); // a broken user catalog is reported, not silently ignored

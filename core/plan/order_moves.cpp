@@ -13,6 +13,26 @@ namespace {
 // nothing from it that the lane-level search does not find).
 constexpr int kWaysSearchCells = 12;
 
+// seq with the block seq[i, i + len) taken out and `block` put between k and k + 1 (k = -1: at the
+// front), k outside [i - 1, i + len - 1].
+std::vector<OrderStep> withBlockMoved(const std::vector<OrderStep>& seq, int i, int len, int k,
+                                      const std::vector<OrderStep>& block) {
+    const int n = static_cast<int>(seq.size());
+    const int last = i + len - 1;
+    std::vector<OrderStep> out;
+    out.reserve(seq.size());
+    if (k == -1)
+        out.insert(out.end(), block.begin(), block.end());
+    for (int t = 0; t < n; ++t) {
+        if (t >= i && t <= last)
+            continue;
+        out.push_back(seq[static_cast<std::size_t>(t)]);
+        if (t == k)
+            out.insert(out.end(), block.begin(), block.end());
+    }
+    return out;
+}
+
 } // namespace
 
 // Reverse seq[i..j] (each cell flown the other way round): only the two outer links change.
@@ -41,69 +61,36 @@ bool OrderMoves::twoOpt(std::vector<OrderStep>& seq) {
     return any;
 }
 
+// What taking seq[i, i + len) out gains (its two links replaced by one), or 0 when that cannot pay
+// for any insertion; with `dearOnly`, also 0 unless one of its links is dear.
+double OrderMoves::removalGain(const std::vector<OrderStep>& seq, int i, int len, bool dearOnly) {
+    const int n = static_cast<int>(seq.size());
+    const int last = i + len - 1;
+    const int prev = i > 0 ? exit(seq[static_cast<std::size_t>(i - 1)]) : kNone;
+    const int next = last + 1 < n ? entry(seq[static_cast<std::size_t>(last + 1)]) : kNone;
+    const int bi = entry(seq[static_cast<std::size_t>(i)]), bx = exit(seq[static_cast<std::size_t>(last)]);
+    if (dearOnly && !dear(prev, bi) && !dear(bx, next))
+        return 0.0;
+    const double removed = link(prev, bi) + link(bx, next);
+    if (removed - bound(prev, next) <= kGainEps)
+        return 0.0;
+    const double gain = removed - link(prev, next);
+    return gain > kGainEps ? gain : 0.0;
+}
+
 // Move seq[i, i + len) between two other neighbours, either way round.
 bool OrderMoves::orOpt(std::vector<OrderStep>& seq) {
     const int n = static_cast<int>(seq.size());
     for (int len = 1; len <= 3; ++len)
         for (int i = 0; i + len <= n; ++i) {
             const int last = i + len - 1;
-            const int prev = i > 0 ? exit(seq[static_cast<std::size_t>(i - 1)]) : kNone;
-            const int next = last + 1 < n ? entry(seq[static_cast<std::size_t>(last + 1)]) : kNone;
-            const int bi = entry(seq[static_cast<std::size_t>(i)]), bx = exit(seq[static_cast<std::size_t>(last)]);
-            const double removed = link(prev, bi) + link(bx, next);
-            if (removed - bound(prev, next) <= kGainEps)
-                continue;
-            const double removeGain = removed - link(prev, next);
+            const double removeGain = removalGain(seq, i, len, false);
             if (removeGain <= kGainEps)
                 continue;
             // insert between k and k + 1 (k = -1: at the front), k outside [i - 1, last]
-            for (int k = -1; k < n; ++k) {
-                if (k >= i - 1 && k <= last)
-                    continue;
-                const int a = k >= 0 ? exit(seq[static_cast<std::size_t>(k)]) : kNone;
-                const int b = k + 1 < n ? entry(seq[static_cast<std::size_t>(k + 1)]) : kNone;
-                const double ab = link(a, b);
-                // a single cell may also change its way where it lands
-                const OrderStep moved = seq[static_cast<std::size_t>(i)];
-                const int ways = len == 1 ? static_cast<int>(m_p.cells[static_cast<std::size_t>(moved.cell)].ways.size()) : 1;
-                for (int c = 0; c < 2 * ways; ++c) {
-                    const int r = c % 2;
-                    OrderStep as = moved;
-                    if (len == 1) {
-                        as.way = c / 2;
-                        as.reversed = r == 1;
-                    }
-                    const int in = len == 1 ? entry(as) : (r ? bx : bi), out = len == 1 ? exit(as) : (r ? bi : bx);
-                    const double wayDelta = len == 1 ? wayCost(as) - wayCost(moved) : 0.0;
-                    if (removeGain - wayDelta - (bound(a, in) + bound(out, b) - ab) <= kGainEps)
-                        continue;
-                    const double add = link(a, in) + link(out, b) - ab;
-                    if (removeGain - wayDelta - add <= kGainEps)
-                        continue;
-                    std::vector<OrderStep> block(seq.begin() + i, seq.begin() + i + len);
-                    if (len == 1) {
-                        block[0] = as;
-                    } else if (r) {
-                        std::reverse(block.begin(), block.end());
-                        for (auto& s : block)
-                            s.reversed = !s.reversed;
-                    }
-                    std::vector<OrderStep> out2;
-                    out2.reserve(seq.size());
-                    if (k == -1)
-                        out2.insert(out2.end(), block.begin(), block.end());
-                    for (int t = 0; t < n; ++t) {
-                        if (t >= i && t <= last)
-                            continue;
-                        out2.push_back(seq[static_cast<std::size_t>(t)]);
-                        if (t == k)
-                            out2.insert(out2.end(), block.begin(), block.end());
-                    }
-                    seq = std::move(out2);
-                    ++moves;
+            for (int k = -1; k < n; ++k)
+                if (!(k >= i - 1 && k <= last) && applyInsert(seq, i, len, k, removeGain, true))
                     return true;
-                }
-            }
         }
     return false;
 }
@@ -180,17 +167,10 @@ bool OrderMoves::orOptNear(std::vector<OrderStep>& seq, int budget) {
         for (int i = 0; i + len <= static_cast<int>(seq.size()) && moves < budget; ++i) {
             const int n = static_cast<int>(seq.size());
             const int last = i + len - 1;
-            const int prev = i > 0 ? exit(seq[static_cast<std::size_t>(i - 1)]) : kNone;
-            const int next = last + 1 < n ? entry(seq[static_cast<std::size_t>(last + 1)]) : kNone;
-            const int bi = entry(seq[static_cast<std::size_t>(i)]), bx = exit(seq[static_cast<std::size_t>(last)]);
-            if (!dear(prev, bi) && !dear(bx, next))
-                continue;
-            const double removed = link(prev, bi) + link(bx, next);
-            if (removed - bound(prev, next) <= kGainEps)
-                continue;
-            const double removeGain = removed - link(prev, next);
+            const double removeGain = removalGain(seq, i, len, true);
             if (removeGain <= kGainEps)
                 continue;
+            const int bi = entry(seq[static_cast<std::size_t>(i)]), bx = exit(seq[static_cast<std::size_t>(last)]);
             bool moved = false;
             for (int endp : {bi, bx}) {
                 const std::vector<int> cand = m_p.near(endp);
@@ -201,7 +181,7 @@ bool OrderMoves::orOptNear(std::vector<OrderStep>& seq, int budget) {
                     for (int k : {j - 1, j}) {
                         if (k >= i - 1 && k <= last)
                             continue;
-                        if (applyInsert(seq, i, len, k, removeGain)) {
+                        if (applyInsert(seq, i, len, k, removeGain, false)) {
                             // everything between the block's old and new places moved
                             indexPoints(seq, std::max(0, std::min(i, k + 1)), std::min(n - 1, std::max(last, k)));
                             moved = true;
@@ -219,39 +199,42 @@ bool OrderMoves::orOptNear(std::vector<OrderStep>& seq, int budget) {
     return any;
 }
 
-// Moves seq[i, i + len) between k and k + 1 (either way round) if that gains more than it costs.
-bool OrderMoves::applyInsert(std::vector<OrderStep>& seq, int i, int len, int k, double removeGain) {
+// Moves seq[i, i + len) between k and k + 1 if that gains more than it costs: the block as it is,
+// then reversed; with `chooseWay`, a single cell tries every way in both directions instead (it may
+// change its way where it lands).
+bool OrderMoves::applyInsert(std::vector<OrderStep>& seq, int i, int len, int k, double removeGain, bool chooseWay) {
     const int n = static_cast<int>(seq.size());
     const int last = i + len - 1;
     const int bi = entry(seq[static_cast<std::size_t>(i)]), bx = exit(seq[static_cast<std::size_t>(last)]);
     const int a = k >= 0 ? exit(seq[static_cast<std::size_t>(k)]) : kNone;
     const int b = k + 1 < n ? entry(seq[static_cast<std::size_t>(k + 1)]) : kNone;
     const double ab = link(a, b);
-    for (int r = 0; r < 2; ++r) {
-        const int in = r ? bx : bi, out = r ? bi : bx;
-        if (removeGain - (bound(a, in) + bound(out, b) - ab) <= kGainEps)
+    const OrderStep moved = seq[static_cast<std::size_t>(i)];
+    const bool single = chooseWay && len == 1;
+    const int ways = single ? static_cast<int>(m_p.cells[static_cast<std::size_t>(moved.cell)].ways.size()) : 1;
+    for (int c = 0; c < 2 * ways; ++c) {
+        const int r = c % 2;
+        OrderStep as = moved;
+        if (single) {
+            as.way = c / 2;
+            as.reversed = r == 1;
+        }
+        const int in = single ? entry(as) : (r ? bx : bi), out = single ? exit(as) : (r ? bi : bx);
+        const double wayDelta = single ? wayCost(as) - wayCost(moved) : 0.0;
+        if (removeGain - wayDelta - (bound(a, in) + bound(out, b) - ab) <= kGainEps)
             continue;
         const double add = link(a, in) + link(out, b) - ab;
-        if (removeGain - add <= kGainEps)
+        if (removeGain - wayDelta - add <= kGainEps)
             continue;
         std::vector<OrderStep> block(seq.begin() + i, seq.begin() + i + len);
-        if (r) {
+        if (single) {
+            block[0] = as;
+        } else if (r) {
             std::reverse(block.begin(), block.end());
             for (auto& s : block)
                 s.reversed = !s.reversed;
         }
-        std::vector<OrderStep> out2;
-        out2.reserve(seq.size());
-        if (k == -1)
-            out2.insert(out2.end(), block.begin(), block.end());
-        for (int t = 0; t < n; ++t) {
-            if (t >= i && t <= last)
-                continue;
-            out2.push_back(seq[static_cast<std::size_t>(t)]);
-            if (t == k)
-                out2.insert(out2.end(), block.begin(), block.end());
-        }
-        seq = std::move(out2);
+        seq = withBlockMoved(seq, i, len, k, block);
         ++moves;
         return true;
     }
@@ -271,17 +254,8 @@ bool OrderMoves::orOptWithWays(std::vector<OrderStep>& seq) {
                 const int last = i + len - 1;
                 if (k >= i - 1 && k <= last)
                     continue;
-                std::vector<OrderStep> block(seq.begin() + i, seq.begin() + i + len), cand;
-                cand.reserve(seq.size());
-                if (k == -1)
-                    cand.insert(cand.end(), block.begin(), block.end());
-                for (int t = 0; t < n; ++t) {
-                    if (t >= i && t <= last)
-                        continue;
-                    cand.push_back(seq[static_cast<std::size_t>(t)]);
-                    if (t == k)
-                        cand.insert(cand.end(), block.begin(), block.end());
-                }
+                std::vector<OrderStep> cand =
+                    withBlockMoved(seq, i, len, k, std::vector<OrderStep>(seq.begin() + i, seq.begin() + i + len));
                 bestWays(cand, false);
                 const double c = cost(cand);
                 if (c < cur - kGainEps) {

@@ -23,7 +23,8 @@ public:
 
 private:
     void indexPoints(const std::vector<OrderStep>& seq, int from = 0, int to = -1);
-    bool applyInsert(std::vector<OrderStep>& seq, int i, int len, int k, double removeGain);
+    double removalGain(const std::vector<OrderStep>& seq, int i, int len, bool dearOnly);
+    bool applyInsert(std::vector<OrderStep>& seq, int i, int len, int k, double removeGain, bool chooseWay);
     int stepOf(int point) const {
         return point >= 0 && point < static_cast<int>(m_stepOf.size()) ? m_stepOf[static_cast<std::size_t>(point)] : -1;
     }
