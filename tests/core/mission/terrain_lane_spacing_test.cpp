@@ -23,6 +23,8 @@
 namespace pf::mission {
 namespace {
 
+using terrain::test::overlapAlong;
+
 const geo::LonLat kOrigin{8.33, 49.012};
 
 std::string tmp(const std::string& name) {
@@ -93,23 +95,6 @@ Pair planBoth(PlannerKind planner, const terrain::test::HeightFn& fn, const std:
     EXPECT_TRUE(a.ok()) << a.error().message;
     EXPECT_TRUE(b.ok()) << b.error().message;
     return {m, std::move(*a), std::move(*b), geom->frame};
-}
-
-// The fraction of the line through ca and cb (through both footprints) in both rings, over its part
-// in a: the front overlap of two photos from their footprints on the terrain.
-double overlapAlong(const geo::Ring& a, const geo::Ring& b, const geo::Vec2& ca,
-                    const geo::Vec2& cb) {
-    const geo::Polygon pa{a, {}}, pb{b, {}};
-    const geo::Vec2 dir = (cb - ca).normalized();
-    int inA = 0, inBoth = 0;
-    for (double s = -150.0; s <= 150.0 + (cb - ca).norm(); s += 0.05) {
-        const geo::Vec2 p = ca + dir * s;
-        if (!geo::contains(pa, p))
-            continue;
-        ++inA;
-        inBoth += geo::contains(pb, p);
-    }
-    return inA ? static_cast<double>(inBoth) / inA : 0.0;
 }
 
 int photosOf(const MissionPlan& p) {

@@ -19,6 +19,8 @@
 namespace pf::mission {
 namespace {
 
+using terrain::test::overlapAlong;
+
 const geo::LonLat kOrigin{8.33, 49.012};
 
 std::string tmp(const std::string& name) {
@@ -73,23 +75,6 @@ Planned planOver(const terrain::test::HeightFn& fn, const std::string& file) {
     auto plan = planMission(m);
     EXPECT_TRUE(plan.ok()) << plan.error().message;
     return {m, std::move(*plan), geom->frame};
-}
-
-// The fraction of the segment from a's centre towards b's centre (and on, through both footprints)
-// that lies in both rings, over the part in a: the overlap of two photos measured on the line
-// through their centres, from their footprints on the terrain.
-double overlapAlong(const geo::Ring& a, const geo::Ring& b, const geo::Vec2& ca, const geo::Vec2& cb) {
-    const geo::Polygon pa{a, {}}, pb{b, {}};
-    const geo::Vec2 dir = (cb - ca).normalized();
-    int inA = 0, inBoth = 0;
-    for (double s = -150.0; s <= 150.0 + (cb - ca).norm(); s += 0.05) {
-        const geo::Vec2 p = ca + dir * s;
-        if (!geo::contains(pa, p))
-            continue;
-        ++inA;
-        inBoth += geo::contains(pb, p);
-    }
-    return inA ? static_cast<double>(inBoth) / inA : 0.0;
 }
 
 void checkTargets(const Planned& pl, const terrain::test::HeightFn& fn) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/geo/local_frame.h"
+#include "core/geo/polygon_ops.h"
 #include "core/geo/types.h"
 
 #include <gdal_priv.h>
@@ -116,6 +117,23 @@ inline std::string writeVrtWithSrs(const std::string& path, const std::string& s
     s.SetFromUserInput(srs.c_str());
     out->SetSpatialRef(&s);
     return "";
+}
+
+// The fraction of the line through ca and cb (on through both footprints) that lies in both rings,
+// over its part in a: the front overlap of two photos measured on the line through their centres,
+// from their footprints on the terrain.
+inline double overlapAlong(const geo::Ring& a, const geo::Ring& b, const geo::Vec2& ca, const geo::Vec2& cb) {
+    const geo::Polygon pa{a, {}}, pb{b, {}};
+    const geo::Vec2 dir = (cb - ca).normalized();
+    int inA = 0, inBoth = 0;
+    for (double s = -150.0; s <= 150.0 + (cb - ca).norm(); s += 0.05) {
+        const geo::Vec2 p = ca + dir * s;
+        if (!geo::contains(pa, p))
+            continue;
+        ++inA;
+        inBoth += geo::contains(pb, p);
+    }
+    return inA ? static_cast<double>(inBoth) / inA : 0.0;
 }
 
 } // namespace pf::terrain::test
