@@ -545,6 +545,14 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
             return ground.insideArea(p) && !ground.inZone(p);
         });
     }
+    if (opt.spotPhotos && !plan.lanes.empty()) {
+        SpotPhotoOptions so;
+        so.realAcrossM = realAcross;
+        so.realAlongM = realAlong;
+        so.headingDeg = std::fmod(450.0 - fp.angleDeg, 360.0);
+        addSpotPhotos(plan, region, noFly, field, grown, opt.keepInside ? region : vgo.keepInside, pockets, anchor,
+                      router, so, opt.time, home, landing);
+    }
     if (flown.broken)
         plan.warnings.push_back("Some transitions of the sweep found no safe way and fly straight: check the plan.");
     if (flown.leaving > 0 && opt.keepInside)

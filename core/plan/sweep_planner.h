@@ -43,6 +43,10 @@ struct SweepOptions {
     // Leave out the photos inside a lane whose ground the other photos already see at the overlap set
     // (plan::thinLanePhotos); the lanes are flown as before.
     bool thinPhotos = true;
+    // Photograph the patches of ground the lanes leave unseen (a corner past a lane end's photo, ground
+    // between zones whose margins merge) with single photos from safe places, each flown where it adds
+    // least time (plan::chooseSpotPhotos, plan::placeSpotPhotos).
+    bool spotPhotos = true;
     // Also plan the best directions with their lanes on lines shared by all cells (as a Survey's
     // transects; a cell adds lanes only where the lines beside a zone leave ground), keeping the
     // faster plan.
@@ -70,6 +74,7 @@ struct SweepStats {
     int graphNodes = 0, graphEdges = 0;     // the visibility graph of the transitions
     int laneSegments = 0;                   // lanes across the cells (without the photographed turns)
     int photosLeftOut = 0;                  // interior photos other photos' footprints make redundant
+    int spotPhotos = 0;                     // single photos for ground the lanes leave unseen
 };
 
 struct SweepPlan {
@@ -81,7 +86,7 @@ struct SweepPlan {
                                                // lane i + 1's first photo (the safe path); size lanes.size() - 1
     std::vector<geo::Vec2> homeLink, landingLink; // the same from home to the first photo, the last to landing
     std::vector<geo::Polygon> cells;           // the merged cells of the chosen direction (world), for drawing
-    std::vector<int> laneCells;                // per lane: index into cells, -1 for a photographed turn
+    std::vector<int> laneCells;                // per lane: index into cells, -1 for a photographed turn or a spot photo
     FlightTime time;                           // of the whole survey (home -> ... -> landing when given)
     SweepStats stats;
     std::vector<std::string> warnings;         // e.g. unreachable pockets (the plan is still complete elsewhere)

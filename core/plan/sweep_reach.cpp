@@ -132,4 +132,31 @@ void reportUnseenGround(const geo::MultiPolygon& region, const std::vector<geo::
     }
 }
 
+void addSpotPhotos(SweepPlan& plan, const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
+                   const geo::NoFlyField& field, const geo::MultiPolygon& grown, const geo::MultiPolygon& flyOver,
+                   const Pockets& pockets, int anchor, Router& router, const SpotPhotoOptions& options,
+                   const FlightTimeModel& time, const std::optional<Vec2>& home, const std::optional<Vec2>& landing) {
+    std::vector<sensor::PhotoFootprint> fps;
+    for (const auto& l : plan.lanes)
+        for (const auto& p : l.photos)
+            fps.push_back(sensor::PhotoFootprint{p, l.headingDeg, options.realAcrossM, options.realAlongM});
+    auto mayFlyAt = [&](const Vec2& p) {
+        return field.pointIsSafe(p) && !geo::contains(grown, p) && geo::contains(flyOver, p) && pockets.of(p) == anchor;
+    };
+    auto choice = chooseSpotPhotos(geo::difference(region, geo::MultiPolygon(noFly.begin(), noFly.end())), fps,
+                                   mayFlyAt, options, sweepFlightPath(plan, home, landing));
+    if (!choice.ok() || choice->photos.empty())
+        return;
+    SpotRouting sr;
+    sr.add = [&router](const Vec2& p, const Vec2& in) { return router.add(EndPoint{p, in}); };
+    sr.timeS = [&router](int a, int b) { return router.timeS(a, b); };
+    sr.way = [&router](int a, int b) { return router.route(a, b).mid; };
+    plan.stats.spotPhotos = placeSpotPhotos(plan.lanes, plan.links, plan.homeLink, plan.landingLink, plan.laneCells,
+                                            choice->photos, home, landing, sr);
+    FlightTimeAccumulator acc(time);
+    for (const auto& p : sweepFlightPath(plan, home, landing))
+        acc.add(p);
+    plan.time = acc.result();
+}
+
 } // namespace pf::plan::sweep_detail

@@ -1,10 +1,16 @@
 // Where the sweep may not go and what it cannot see: pockets of free space enclosed by merged margins
 // (no safe way enters them), a point inside a polygon to tell which pocket it lies in, and the report
-// of the ground no footprint reaches from anywhere the aircraft may fly. Internal to the sweep planner.
+// of the ground no footprint reaches from anywhere the aircraft may fly, and the single photos that
+// see what the lanes leave unseen. Internal to the sweep planner.
 #pragma once
 
+#include "core/geo/no_fly_field.h"
 #include "core/geo/types.h"
+#include "core/plan/spot_photos.h"
 #include "core/plan/sweep_planner.h"
+#include "core/plan/sweep_routing.h"
+
+#include <optional>
 
 #include <vector>
 
@@ -36,5 +42,14 @@ private:
 void reportUnseenGround(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
                         const geo::MultiPolygon& grown, const geo::MultiPolygon& freeSpace, const Pockets& pockets,
                         int anchor, double realAcross, double realAlong, SweepPlan& plan);
+
+// Single photos for the ground the plan's lanes leave unseen (plan::chooseSpotPhotos over the region
+// less the zones), taken from safe places of the anchor's free space over `flyOver`, each flown where
+// it adds least time on the router's ways (plan::placeSpotPhotos); the plan's time is counted again
+// over the whole flight. plan.stats.spotPhotos says how many.
+void addSpotPhotos(SweepPlan& plan, const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
+                   const geo::NoFlyField& field, const geo::MultiPolygon& grown, const geo::MultiPolygon& flyOver,
+                   const Pockets& pockets, int anchor, Router& router, const SpotPhotoOptions& options,
+                   const FlightTimeModel& time, const std::optional<Vec2>& home, const std::optional<Vec2>& landing);
 
 } // namespace pf::plan::sweep_detail
