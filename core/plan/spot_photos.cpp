@@ -90,7 +90,7 @@ Result<SpotPhotoChoice> chooseSpotPhotos(const geo::MultiPolygon& ground,
         // Places round the patch, within a footprint's reach of it; coarser round large patches.
         const geo::Box& b = patchBoxes[pi];
         const double w = b.max.x() - b.min.x() + 2 * reach, h = b.max.y() - b.min.y() + 2 * reach;
-        const double step = std::max(o.candidateStepM, std::sqrt(w * h / 2500.0));
+        const double step = std::max(o.candidateStepM, std::sqrt(w * h / 1200.0));
         std::vector<Vec2> places;
         for (double y = b.min.y() - reach; y <= b.max.y() + reach; y += step)
             for (double x = b.min.x() - reach; x <= b.max.x() + reach; x += step)
