@@ -32,6 +32,9 @@ struct SpotPhotoOptions {
     // nearest the flight is taken: on the way, a spot photo costs hardly a detour.
     double nearFlightShare = 0.9;
     int maxPhotos = 100;         // in all, largest patches first
+    // Plans with more photos than this get none (the sweep's stage scans the whole flight for each
+    // piece of ground round a zone, which would outgrow the planning of very large areas).
+    double maxPlanPhotos = 20000;
     double candidateStepM = 1.0; // the places tried round a patch, this far apart
     double resolutionM = 0.5;    // of the coverage check that finds the patches and of the probes
 };

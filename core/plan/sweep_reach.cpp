@@ -156,6 +156,8 @@ void addSpotPhotos(SweepPlan& plan, const geo::MultiPolygon& region,
         for (const auto& p : l.photos)
             fps.push_back(
                 sensor::PhotoFootprint{p, l.headingDeg, options.realAcrossM, options.realAlongM});
+    if (static_cast<double>(fps.size()) > options.maxPlanPhotos)
+        return; // each piece still scans the whole flight: beyond this, the stage would outgrow the plan
     // Outside the grown zones is outside every margin (their polygons circumscribe it); the exact
     // check is kept for the photos chosen.
     auto mayFlyAt = [&](const Vec2& p) {
