@@ -60,16 +60,14 @@ Pockets::Pockets(const geo::MultiPolygon& grown) {
 int Pockets::of(const Vec2& p) const {
     int best = -1;
     for (std::size_t i = 0; i < m_holes.size(); ++i)
-        if (geo::contains(m_holes[i], p) &&
-            (best < 0 || m_areas[i] < m_areas[static_cast<std::size_t>(best)]))
+        if (geo::contains(m_holes[i], p) && (best < 0 || m_areas[i] < m_areas[static_cast<std::size_t>(best)]))
             best = static_cast<int>(i);
     return best;
 }
 
 void reportUnseenGround(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
-                        const geo::MultiPolygon& grown, const geo::MultiPolygon& freeSpace,
-                        const Pockets& pockets, int anchor, double realAcross, double realAlong,
-                        SweepPlan& plan) {
+                        const geo::MultiPolygon& grown, const geo::MultiPolygon& freeSpace, const Pockets& pockets,
+                        int anchor, double realAcross, double realAlong, SweepPlan& plan) {
     std::vector<int> pocketIds;
     geo::MultiPolygon reachableFree;
     for (const auto& f : freeSpace) {
@@ -92,8 +90,7 @@ void reportUnseenGround(const geo::MultiPolygon& region, const std::vector<geo::
         const std::size_t n = z.outer.size();
         int pos = 0, neg = 0;
         for (std::size_t i = 0; i < n; ++i) {
-            const Vec2 a = z.outer[(i + 1) % n] - z.outer[i],
-                       b = z.outer[(i + 2) % n] - z.outer[(i + 1) % n];
+            const Vec2 a = z.outer[(i + 1) % n] - z.outer[i], b = z.outer[(i + 2) % n] - z.outer[(i + 1) % n];
             const double c = a.x() * b.y() - a.y() * b.x();
             pos += c > 1e-9;
             neg += c < -1e-9;
@@ -104,8 +101,7 @@ void reportUnseenGround(const geo::MultiPolygon& region, const std::vector<geo::
         // Candidates: ground farther from the reachable free space than half the footprint's short
         // side; what the plan's photos leave of them, by the independent coverage check.
         const double reach = 0.5 * std::min(realAcross, realAlong);
-        const geo::MultiPolygon ground =
-            geo::difference(region, geo::MultiPolygon(noFly.begin(), noFly.end()));
+        const geo::MultiPolygon ground = geo::difference(region, geo::MultiPolygon(noFly.begin(), noFly.end()));
         const geo::MultiPolygon far = geo::difference(ground, geo::buffer(reachableFree, reach, 4));
         double left = 0.0;
         if (!far.empty()) {
@@ -114,8 +110,8 @@ void reportUnseenGround(const geo::MultiPolygon& region, const std::vector<geo::
             std::vector<PhotoFootprint> near;
             for (const auto& l : plan.lanes)
                 for (const auto& p : l.photos)
-                    if (p.x() > fb.min.x() - pad && p.x() < fb.max.x() + pad &&
-                        p.y() > fb.min.y() - pad && p.y() < fb.max.y() + pad)
+                    if (p.x() > fb.min.x() - pad && p.x() < fb.max.x() + pad && p.y() > fb.min.y() - pad &&
+                        p.y() < fb.max.y() + pad)
                         near.push_back(PhotoFootprint{p, l.headingDeg, realAcross, realAlong});
             CoverageCheckOptions co;
             co.resolutionM = std::min(0.5, 0.05 * std::min(realAcross, realAlong));
@@ -130,20 +126,16 @@ void reportUnseenGround(const geo::MultiPolygon& region, const std::vector<geo::
                 "About " + fmt0(left) + " m2 of ground between no-fly zones" +
                 (pocketIds.empty() ? std::string()
                                    : " (" + std::to_string(pocketIds.size()) +
-                                         (pocketIds.size() == 1 ? " pocket" : " pockets") +
-                                         " no safe path reaches)") +
-                " lies beyond the footprint's reach from anywhere the aircraft may fly without "
-                "entering a "
+                                         (pocketIds.size() == 1 ? " pocket" : " pockets") + " no safe path reaches)") +
+                " lies beyond the footprint's reach from anywhere the aircraft may fly without entering a "
                 "safety margin: it stays unphotographed; everything else is covered.");
     }
 }
 
-void addSpotPhotos(SweepPlan& plan, const geo::MultiPolygon& region,
-                   const std::vector<geo::Polygon>& noFly, const geo::NoFlyField& field,
-                   const geo::MultiPolygon& grown, const geo::MultiPolygon& flyOver,
-                   const Pockets& pockets, int anchor, Router& router,
-                   const SpotPhotoOptions& options, const FlightTimeModel& time,
-                   const std::optional<Vec2>& home, const std::optional<Vec2>& landing) {
+void addSpotPhotos(SweepPlan& plan, const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
+                   const geo::NoFlyField& field, const geo::MultiPolygon& grown, const geo::MultiPolygon& flyOver,
+                   const Pockets& pockets, int anchor, Router& router, const SpotPhotoOptions& options,
+                   const FlightTimeModel& time, const std::optional<Vec2>& home, const std::optional<Vec2>& landing) {
     // The lanes leave ground unseen only round the zones (their margins, pockets and notches): each
     // piece of ground within two footprints' reach of a grown zone is checked on its own, with the
     // photos that reach it, so that the check grows with the zones, not with the area.
@@ -154,8 +146,7 @@ void addSpotPhotos(SweepPlan& plan, const geo::MultiPolygon& region,
     fps.reserve(plan.lanes.size() * 8);
     for (const auto& l : plan.lanes)
         for (const auto& p : l.photos)
-            fps.push_back(
-                sensor::PhotoFootprint{p, l.headingDeg, options.realAcrossM, options.realAlongM});
+            fps.push_back(sensor::PhotoFootprint{p, l.headingDeg, options.realAcrossM, options.realAlongM});
     if (static_cast<double>(fps.size()) > options.maxPlanPhotos)
         return; // each piece still scans the whole flight: beyond this, the stage would outgrow the plan
     // Outside the grown zones is outside every margin (their polygons circumscribe it); the exact
@@ -163,8 +154,7 @@ void addSpotPhotos(SweepPlan& plan, const geo::MultiPolygon& region,
     auto mayFlyAt = [&](const Vec2& p) {
         return !geo::contains(grown, p) && geo::contains(flyOver, p) && pockets.of(p) == anchor;
     };
-    const geo::MultiPolygon ground =
-        geo::difference(region, geo::MultiPolygon(noFly.begin(), noFly.end()));
+    const geo::MultiPolygon ground = geo::difference(region, geo::MultiPolygon(noFly.begin(), noFly.end()));
     const std::vector<Vec2> flight = sweepFlightPath(plan, home, landing);
     std::vector<SpotPhoto> spots;
     for (const auto& piece : geo::buffer(grown, 2.0 * reach, 2)) {
@@ -174,8 +164,8 @@ void addSpotPhotos(SweepPlan& plan, const geo::MultiPolygon& region,
         const geo::Box b = geo::bounds(piece);
         std::vector<sensor::PhotoFootprint> seeing;
         for (const auto& f : fps)
-            if (f.pos.x() > b.min.x() - reach && f.pos.x() < b.max.x() + reach &&
-                f.pos.y() > b.min.y() - reach && f.pos.y() < b.max.y() + reach)
+            if (f.pos.x() > b.min.x() - reach && f.pos.x() < b.max.x() + reach && f.pos.y() > b.min.y() - reach &&
+                f.pos.y() < b.max.y() + reach)
                 seeing.push_back(f);
         SpotPhotoOptions o = options;
         o.maxPhotos = options.maxPhotos - static_cast<int>(spots.size());
@@ -193,8 +183,8 @@ void addSpotPhotos(SweepPlan& plan, const geo::MultiPolygon& region,
     sr.add = [&router](const Vec2& p, const Vec2& in) { return router.add(EndPoint{p, in}); };
     sr.timeS = [&router](int a, int b) { return router.timeS(a, b); };
     sr.way = [&router](int a, int b) { return router.route(a, b).mid; };
-    plan.stats.spotPhotos = placeSpotPhotos(plan.lanes, plan.links, plan.homeLink, plan.landingLink,
-                                            plan.laneCells, spots, home, landing, sr);
+    plan.stats.spotPhotos = placeSpotPhotos(plan.lanes, plan.links, plan.homeLink, plan.landingLink, plan.laneCells,
+                                            spots, home, landing, sr);
     FlightTimeAccumulator acc(time);
     for (const auto& p : sweepFlightPath(plan, home, landing))
         acc.add(p);
