@@ -1,12 +1,12 @@
 #include "core/fleet/photo_dedup.h"
 
+#include "core/geo/box_buckets.h"
 #include "core/geo/polygon_ops.h"
 #include "core/sensor/footprint.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <unordered_map>
 
 namespace pf::fleet {
 
@@ -17,39 +17,6 @@ struct Photo {
     int index;
     geo::Polygon real;
     geo::Box box;
-};
-
-// Buckets of photo bounding boxes on a square lattice, for neighbourhood queries.
-class Buckets {
-public:
-    explicit Buckets(double size) : m_size(size) {}
-    void insert(int id, const geo::Box& b) {
-        forCells(b, [&](long long key) { m_map[key].push_back(id); });
-    }
-    std::vector<int> query(const geo::Box& b) const {
-        std::vector<int> out;
-        forCells(b, [&](long long key) {
-            auto it = m_map.find(key);
-            if (it != m_map.end())
-                out.insert(out.end(), it->second.begin(), it->second.end());
-        });
-        std::sort(out.begin(), out.end());
-        out.erase(std::unique(out.begin(), out.end()), out.end());
-        return out;
-    }
-
-private:
-    template <class F> void forCells(const geo::Box& b, F f) const {
-        const long long x0 = static_cast<long long>(std::floor(b.min.x() / m_size));
-        const long long x1 = static_cast<long long>(std::floor(b.max.x() / m_size));
-        const long long y0 = static_cast<long long>(std::floor(b.min.y() / m_size));
-        const long long y1 = static_cast<long long>(std::floor(b.max.y() / m_size));
-        for (long long y = y0; y <= y1; ++y)
-            for (long long x = x0; x <= x1; ++x)
-                f(y * 2'000'003LL + x);
-    }
-    double m_size;
-    std::unordered_map<long long, std::vector<int>> m_map;
 };
 
 bool straightThrough(const geo::Vec2& a, const geo::Vec2& b, const geo::Vec2& c) {
@@ -76,7 +43,7 @@ Result<DedupReport> dropDuplicatePhotos(std::vector<AircraftPhotos>& fleet) {
 
     std::vector<Photo> photos;
     std::vector<std::vector<int>> idOf(fleet.size());
-    Buckets buckets(maxSide);
+    geo::BoxBuckets buckets(maxSide);
     for (std::size_t k = 0; k < fleet.size(); ++k) {
         idOf[k].assign(fleet[k].waypoints.size(), -1);
         for (std::size_t i = 0; i < fleet[k].waypoints.size(); ++i) {

@@ -36,7 +36,7 @@ Result<SpotPhotoChoice> chooseSpotPhotos(const geo::MultiPolygon& ground,
                                          const std::vector<sensor::PhotoFootprint>& photos,
                                          const std::function<bool(const geo::Vec2&)>& mayFlyAt,
                                          const SpotPhotoOptions& o,
-                                         const std::vector<geo::Vec2>& flight) {
+                                         const std::vector<std::pair<geo::Vec2, geo::Vec2>>& flightLegs) {
     if (!(o.realAcrossM > 0) || !(o.realAlongM > 0) || !(o.candidateStepM > 0) ||
         !(o.resolutionM > 0))
         return makeError(ErrorCode::InvalidInput,
@@ -100,8 +100,7 @@ Result<SpotPhotoChoice> chooseSpotPhotos(const geo::MultiPolygon& ground,
             continue;
         // The flight's legs near the patch, and each place's distance to them.
         std::vector<std::pair<Vec2, Vec2>> legs;
-        for (std::size_t k = 0; k + 1 < flight.size(); ++k) {
-            const Vec2 &a = flight[k], &c = flight[k + 1];
+        for (const auto& [a, c] : flightLegs) {
             if (std::max(a.x(), c.x()) >= b.min.x() - reach - step &&
                 std::min(a.x(), c.x()) <= b.max.x() + reach + step &&
                 std::max(a.y(), c.y()) >= b.min.y() - reach - step &&
@@ -212,9 +211,11 @@ int placeSpotPhotos(std::vector<Lane>& lanes, std::vector<std::vector<geo::Vec2>
         return 0;
     struct Item {
         int lane = -1; // index into lanes, or -1 - the spot's index
-        int entry = -1, exit = -1;
+        int entry = -1, exit = -1; // router ids, added when first timed (kNotAdded before)
         Vec2 entryPos{0, 0}, exitPos{0, 0};
+        Vec2 dir{0, 0};            // a lane's heading
     };
+    constexpr int kNotAdded = -2;
     std::vector<Item> seq;
     for (std::size_t i = 0; i < lanes.size(); ++i) {
         const Lane& l = lanes[i];
@@ -225,14 +226,25 @@ int placeSpotPhotos(std::vector<Lane>& lanes, std::vector<std::vector<geo::Vec2>
         it.lane = static_cast<int>(i);
         it.entryPos = l.photos.front();
         it.exitPos = l.photos.back();
-        it.entry = routing.add(it.entryPos, dir);
-        it.exit = routing.add(it.exitPos, -dir);
+        it.dir = dir;
+        it.entry = it.exit = kNotAdded;
         seq.push_back(it);
     }
     if (seq.size() != lanes.size())
         return 0; // a lane without photos: no flight to place spots in
     const int homeId = home ? routing.add(*home, Vec2(0, 0)) : -1;
     const int landingId = landing ? routing.add(*landing, Vec2(0, 0)) : -1;
+    // Only the ends of the slots timed join the router: a large plan's lanes stay out of it.
+    auto entryOf = [&](Item& it) {
+        if (it.entry == kNotAdded)
+            it.entry = routing.add(it.entryPos, it.dir);
+        return it.entry;
+    };
+    auto exitOf = [&](Item& it) {
+        if (it.exit == kNotAdded)
+            it.exit = routing.add(it.exitPos, -it.dir);
+        return it.exit;
+    };
     auto time = [&](int a, int b) { return a < 0 || b < 0 ? 0.0 : routing.timeS(a, b); };
     auto way = [&](int a, int b) {
         return a < 0 || b < 0 ? std::vector<Vec2>{} : routing.way(a, b);
@@ -258,21 +270,22 @@ int placeSpotPhotos(std::vector<Lane>& lanes, std::vector<std::vector<geo::Vec2>
                 e -= (*next - *prev).norm();
             est.emplace_back(e, k);
         }
-        std::sort(est.begin(), est.end());
-        est.resize(std::min<std::size_t>(est.size(), 8));
+        const std::size_t timed = std::min<std::size_t>(est.size(), 8);
+        std::partial_sort(est.begin(), est.begin() + static_cast<std::ptrdiff_t>(timed), est.end());
+        est.resize(timed);
         double best = std::numeric_limits<double>::infinity();
         std::size_t at = 0;
         for (const auto& [e, k] : est) {
-            const int prev = k == 0 ? homeId : seq[k - 1].exit;
-            const int next = k == n ? landingId : seq[k].entry;
+            const int prev = k == 0 ? homeId : exitOf(seq[k - 1]);
+            const int next = k == n ? landingId : entryOf(seq[k]);
             const double d = time(prev, sid) + time(sid, next) - time(prev, next);
             if (d < best) {
                 best = d;
                 at = k;
             }
         }
-        const int prev = at == 0 ? homeId : seq[at - 1].exit;
-        const int next = at == n ? landingId : seq[at].entry;
+        const int prev = at == 0 ? homeId : exitOf(seq[at - 1]);
+        const int next = at == n ? landingId : entryOf(seq[at]);
         // links[k] joins seq[k] and seq[k + 1]: the spot takes the place of one link and adds one.
         if (n == 0) {
             homeLink = way(prev, sid);

@@ -12,6 +12,7 @@
 
 #include <functional>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace pf::plan {
@@ -32,9 +33,6 @@ struct SpotPhotoOptions {
     // nearest the flight is taken: on the way, a spot photo costs hardly a detour.
     double nearFlightShare = 0.9;
     int maxPhotos = 100;         // in all, largest patches first
-    // Plans with more photos than this get none (the sweep's stage scans the whole flight for each
-    // piece of ground round a zone, which would outgrow the planning of very large areas).
-    double maxPlanPhotos = 20000;
     double candidateStepM = 1.0; // the places tried round a patch, this far apart
     double resolutionM = 0.5;    // of the coverage check that finds the patches and of the probes
 };
@@ -56,13 +54,14 @@ struct SpotPhotoChoice {
 // round it (candidateStepM apart, within a footprint's reach) that `mayFlyAt` accepts, the one
 // whose footprint (along or across the heading) sees most of the patch still unseen, until a photo
 // would see less than minSeenM2 or maxPhotos are taken; of the places seeing nearly the most
-// (nearFlightShare), the one nearest the `flight` polyline (the points flown, may be empty). A
-// photo counts for every patch it sees. Errors: a footprint side or a step not positive.
+// (nearFlightShare), the one nearest the flight (`flightLegs`: the straight legs flown near the
+// ground, may be empty). A photo counts for every patch it sees. Errors: a footprint side or a step
+// not positive.
 Result<SpotPhotoChoice> chooseSpotPhotos(const geo::MultiPolygon& ground,
                                          const std::vector<sensor::PhotoFootprint>& photos,
                                          const std::function<bool(const geo::Vec2&)>& mayFlyAt,
                                          const SpotPhotoOptions& options,
-                                         const std::vector<geo::Vec2>& flight = {});
+                                         const std::vector<std::pair<geo::Vec2, geo::Vec2>>& flightLegs = {});
 
 // The ways between the places a flight stops at, for placing spot photos in it.
 struct SpotRouting {

@@ -565,14 +565,20 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
 }
 
 std::vector<geo::Vec2> sweepFlightPath(const SweepPlan& plan, const std::optional<geo::Vec2>& home,
-                                       const std::optional<geo::Vec2>& landing) {
+                                       const std::optional<geo::Vec2>& landing, bool laneEndsOnly) {
     std::vector<Vec2> out;
     if (home)
         out.push_back(*home);
     if (!plan.lanes.empty())
         out.insert(out.end(), plan.homeLink.begin(), plan.homeLink.end());
     for (std::size_t i = 0; i < plan.lanes.size(); ++i) {
-        out.insert(out.end(), plan.lanes[i].photos.begin(), plan.lanes[i].photos.end());
+        const auto& ph = plan.lanes[i].photos;
+        if (laneEndsOnly && ph.size() > 2) {
+            out.push_back(ph.front());
+            out.push_back(ph.back());
+        } else {
+            out.insert(out.end(), ph.begin(), ph.end());
+        }
         if (i < plan.links.size() && i + 1 < plan.lanes.size())
             out.insert(out.end(), plan.links[i].begin(), plan.links[i].end());
     }

@@ -111,8 +111,9 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
                             const SweepOptions& options);
 
 // Every point flown, in order: home, its link, the lanes' photos with the links between them, the
-// landing link and the landing (home and landing only when given).
+// landing link and the landing (home and landing only when given). With laneEndsOnly, a lane gives
+// only its first and last photo (a lane is straight: the same legs, without the points along them).
 std::vector<geo::Vec2> sweepFlightPath(const SweepPlan& plan, const std::optional<geo::Vec2>& home,
-                                       const std::optional<geo::Vec2>& landing);
+                                       const std::optional<geo::Vec2>& landing, bool laneEndsOnly = false);
 
 } // namespace pf::plan

@@ -1,5 +1,6 @@
 #include "core/plan/sweep_reach.h"
 
+#include "core/geo/box_buckets.h"
 #include "core/geo/polygon_ops.h"
 #include "core/plan/coverage_check.h"
 
@@ -142,36 +143,57 @@ void addSpotPhotos(SweepPlan& plan, const geo::MultiPolygon& region, const std::
     if (noFly.empty() || grown.empty())
         return;
     const double reach = 0.5 * std::hypot(options.realAcrossM, options.realAlongM);
-    std::vector<sensor::PhotoFootprint> fps;
-    fps.reserve(plan.lanes.size() * 8);
-    for (const auto& l : plan.lanes)
-        for (const auto& p : l.photos)
-            fps.push_back(sensor::PhotoFootprint{p, l.headingDeg, options.realAcrossM, options.realAlongM});
-    if (static_cast<double>(fps.size()) > options.maxPlanPhotos)
-        return; // each piece still scans the whole flight: beyond this, the stage would outgrow the plan
     // Outside the grown zones is outside every margin (their polygons circumscribe it); the exact
     // check is kept for the photos chosen.
     auto mayFlyAt = [&](const Vec2& p) {
         return !geo::contains(grown, p) && geo::contains(flyOver, p) && pockets.of(p) == anchor;
     };
     const geo::MultiPolygon ground = geo::difference(region, geo::MultiPolygon(noFly.begin(), noFly.end()));
-    const std::vector<Vec2> flight = sweepFlightPath(plan, home, landing);
-    std::vector<SpotPhoto> spots;
+    struct Piece {
+        geo::MultiPolygon near;
+        geo::Box reached;                            // its box grown by a footprint's reach
+        std::vector<sensor::PhotoFootprint> seeing;  // the photos whose footprint may reach it
+        std::vector<std::pair<Vec2, Vec2>> legs;     // the legs flown near it
+    };
+    std::vector<Piece> pieces;
+    // One pass over the photos and the legs, each given to the pieces whose box (grown by the reach
+    // and, for the legs, by two more) it meets: the stage grows with the plan, not with the plan
+    // times the zones.
+    geo::BoxBuckets photoBoxes(8.0 * reach), legBoxes(8.0 * reach);
+    auto grow = [](geo::Box b, double d) {
+        b.min -= Vec2(d, d);
+        b.max += Vec2(d, d);
+        return b;
+    };
     for (const auto& piece : geo::buffer(grown, 2.0 * reach, 2)) {
-        const geo::MultiPolygon near = geo::intersection(ground, piece);
+        geo::MultiPolygon near = geo::intersection(ground, piece);
         if (near.empty())
             continue;
-        const geo::Box b = geo::bounds(piece);
-        std::vector<sensor::PhotoFootprint> seeing;
-        for (const auto& f : fps)
-            if (f.pos.x() > b.min.x() - reach && f.pos.x() < b.max.x() + reach && f.pos.y() > b.min.y() - reach &&
-                f.pos.y() < b.max.y() + reach)
-                seeing.push_back(f);
+        const geo::Box b = geo::bounds(near);
+        photoBoxes.insert(static_cast<int>(pieces.size()), grow(b, reach));
+        legBoxes.insert(static_cast<int>(pieces.size()), grow(b, 3.0 * reach));
+        pieces.push_back(Piece{std::move(near), grow(b, reach), {}, {}});
+    }
+    for (const auto& l : plan.lanes)
+        for (const auto& p : l.photos)
+            for (int id : photoBoxes.query(geo::Box{p, p}))
+                if (pieces[static_cast<std::size_t>(id)].reached.contains(p))
+                    pieces[static_cast<std::size_t>(id)].seeing.push_back(
+                        sensor::PhotoFootprint{p, l.headingDeg, options.realAcrossM, options.realAlongM});
+    const std::vector<Vec2> flight = sweepFlightPath(plan, home, landing, true);
+    for (std::size_t k = 0; k + 1 < flight.size(); ++k) {
+        const Vec2 &a = flight[k], &c = flight[k + 1];
+        const geo::Box lb{a.cwiseMin(c), a.cwiseMax(c)};
+        for (int id : legBoxes.query(lb))
+            pieces[static_cast<std::size_t>(id)].legs.emplace_back(a, c);
+    }
+    std::vector<SpotPhoto> spots;
+    for (const Piece& piece : pieces) {
         SpotPhotoOptions o = options;
         o.maxPhotos = options.maxPhotos - static_cast<int>(spots.size());
         if (o.maxPhotos <= 0)
             break;
-        auto choice = chooseSpotPhotos(near, seeing, mayFlyAt, o, flight);
+        auto choice = chooseSpotPhotos(piece.near, piece.seeing, mayFlyAt, o, piece.legs);
         if (choice.ok())
             for (const auto& sp : choice->photos)
                 if (field.pointIsSafe(sp.pos))
@@ -186,7 +208,7 @@ void addSpotPhotos(SweepPlan& plan, const geo::MultiPolygon& region, const std::
     plan.stats.spotPhotos = placeSpotPhotos(plan.lanes, plan.links, plan.homeLink, plan.landingLink, plan.laneCells,
                                             spots, home, landing, sr);
     FlightTimeAccumulator acc(time);
-    for (const auto& p : sweepFlightPath(plan, home, landing))
+    for (const auto& p : sweepFlightPath(plan, home, landing, true))
         acc.add(p);
     plan.time = acc.result();
 }
