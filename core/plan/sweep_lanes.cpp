@@ -284,6 +284,7 @@ std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, con
             }
         }
     }
+    const std::size_t innerEnd = w.size(); // w[0], w[1]: the outer windows; then the cuts' and steps'
     for (double y : fixed)
         w.push_back(Window{y, y});
     if (m.parts.size() == 1 && w[0].hi >= w[1].lo && fixed.empty()) {
@@ -315,10 +316,20 @@ std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, con
                 break;
             ys.push_back(y);
         }
+        // A cut or a step inside the cell gets no lane of its own: the shared lines run on (the
+        // neighbour cell's line beyond the cut covers what the line below leaves, on the same
+        // lattice), and what they leave beside a zone's edge there (a wedge less than half a spacing
+        // deep) goes to spot photos (plan::chooseSpotPhotos), flown where they cost least; a lane per
+        // such window cost more turns than that on the generated areas (measured in the sweep note).
+        // The cell's bottom and top windows and the heights others lean on keep their lanes; the
+        // planner checks the finished plan's coverage before it prefers shared lines.
         std::vector<Window> need;
-        for (const auto& x : w)
-            if (!x.optional)
+        for (std::size_t wi = 0; wi < w.size(); ++wi) {
+            const auto& x = w[wi];
+            const bool inner = !ys.empty() && wi >= 2 && wi < innerEnd;
+            if (!x.optional && !inner)
                 need.push_back(x);
+        }
         std::sort(need.begin(), need.end(), [](const Window& a, const Window& b) { return a.hi < b.hi; });
         for (const auto& x : need)
             if (std::none_of(ys.begin(), ys.end(), [&](double y) { return y >= x.lo - 1e-12 && y <= x.hi + 1e-12; }))

@@ -56,10 +56,11 @@ struct SweepLaneParams {
     // that part of a half band is the neighbour's, not a wedge of this lane.
     double neighbourReachM = 0.0;
     // Lanes on shared lines: given, a cell's lanes lie at latticeY0 + k * trackSpacingM (frame y), with
-    // a lane of its own only in a window no line meets (the ground along a zone's edge that the lines
-    // beside it leave; plan::trimCoveredLanes then shortens it to that stretch), so that the lanes of
-    // cells side by side continue one another as a Survey's transects do round a zone. Unset: each
-    // cell spaces its lanes on its own (fewest lanes for the cell, neighbours' lines not aligned).
+    // a lane of its own only where no line meets the cell's bottom or top window (plan::trimCoveredLanes
+    // then shortens it to that stretch), so that the lanes of cells side by side continue one another
+    // as a Survey's transects do round a zone; the wedges the lines leave beside a zone's edge inside
+    // a cell go to spot photos. Unset: each cell spaces its lanes on its own (fewest lanes for the
+    // cell, neighbours' lines not aligned, a lane in every window).
     std::optional<double> latticeY0;
 };
 

@@ -190,7 +190,10 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     const double regionArea = geo::area(region);
     const double wedgeDepth = std::max(0.0, 0.5 * s - std::max(0.0, 0.5 * (realAcross - s)));
     auto safeOutside = [&](const Vec2& a, const Vec2& b) { return field.segmentIsSafe(a, b); };
-    std::unique_ptr<FullPlan> best;
+    // The fastest plan of each kind of lanes: a cell's own spacing, and lines shared by all cells
+    // (kept apart because the search's time does not see what the shared lines leave beside the
+    // zones for spot photos; both are finished and the faster flight kept).
+    std::unique_ptr<FullPlan> best, bestShared;
     const int planned = std::min<int>(opt.plannedDirections, static_cast<int>(rank.size()));
     // Each planned direction also with its lanes on shared lines (SweepLaneParams::latticeY0) laid from
     // the free space's lowest edge, planned in full for the best direction, for the others only when
@@ -406,162 +409,203 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
             return aMiss ? a.missedM2 > b.missedM2 + allowed || (a.missedM2 >= b.missedM2 - allowed && a.timeS > b.timeS)
                          : a.timeS > b.timeS;
         };
-        if (!best || worse(*best, *fp))
+        // Shared lines leave the ground beside a zone's edge to spot photos (their wedges are counted
+        // as missed): among them the search's time decides, the finished flights then weigh the spots.
+        if (dp.latticeY0) {
+            if (!bestShared || bestShared->timeS > fp->timeS)
+                bestShared = std::move(fp);
+        } else if (!best || worse(*best, *fp)) {
             best = std::move(fp);
+        }
     }
     plan.stats.directionsPlanned = planned;
+    const SweepPlan base = plan;
 
-    // --- the plan of the best direction, in flight order
-    FullPlan& fp = *best;
-    Router& router = *fp.router;
-    const DirectionPlan& dp = *fp.dir;
-    plan.stats.angleDeg = fp.angleDeg;
-    plan.stats.cellsBeforeMerge = static_cast<int>(dp.d().cells.size());
-    plan.stats.cellsAfterMerge = static_cast<int>(dp.merged().size());
-    plan.stats.orderRounds = fp.order.rounds;
-    plan.stats.orderMoves = fp.order.moves + fp.laneMoves;
-    plan.stats.linkEvaluations = fp.order.linkEvaluations;
-    plan.stats.rowStart = fp.rowStart;
-    for (const auto& m : dp.merged()) {
-        geo::Polygon poly;
-        for (const auto& p : mergedRing(dp.d(), m))
-            poly.outer.push_back(dp.d().frame.toWorld(p));
-        plan.cells.push_back(std::move(poly));
-    }
+    // --- a finished plan (flight order, photographed turns, thinned photos, spot photos) of a candidate
+    auto finish = [&](FullPlan& fp) {
+        SweepPlan plan = base;
+        // --- the plan of the best direction, in flight order
+        Router& router = *fp.router;
+        const DirectionPlan& dp = *fp.dir;
+        plan.stats.angleDeg = fp.angleDeg;
+        plan.stats.cellsBeforeMerge = static_cast<int>(dp.d().cells.size());
+        plan.stats.cellsAfterMerge = static_cast<int>(dp.merged().size());
+        plan.stats.orderRounds = fp.order.rounds;
+        plan.stats.orderMoves = fp.order.moves + fp.laneMoves;
+        plan.stats.linkEvaluations = fp.order.linkEvaluations;
+        plan.stats.rowStart = fp.rowStart;
+        plan.stats.sharedLines = dp.latticeY0.has_value();
+        for (const auto& m : dp.merged()) {
+            geo::Polygon poly;
+            for (const auto& p : mergedRing(dp.d(), m))
+                poly.outer.push_back(dp.d().frame.toWorld(p));
+            plan.cells.push_back(std::move(poly));
+        }
 
-    // Every point flown for a lane-level sequence, with the links.
-    struct Flown {
-        std::vector<std::pair<const CellLane*, bool>> lanes; // lane, flown left to right
-        std::vector<std::pair<int, int>> refs;               // (planned cell, lane) of each
-        std::vector<std::vector<Vec2>> links;
-        std::vector<Vec2> homeLink, landingLink;
-        int leaving = 0;
-        bool broken = false;
-    };
-    auto fly = [&](const std::vector<OrderStep>& steps) {
-        Flown f;
-        int lastPt = fp.homePt;
-        for (const auto& st : steps) {
-            const auto& [ci, j] = fp.laneRef[static_cast<std::size_t>(st.cell)];
-            const PlannedCell& pc = fp.cells[static_cast<std::size_t>(ci)];
-            const int entry = st.entry(fp.laneProblem);
-            if (lastPt >= 0) {
-                Route r = router.route(lastPt, entry);
+        // Every point flown for a lane-level sequence, with the links.
+        struct Flown {
+            std::vector<std::pair<const CellLane*, bool>> lanes; // lane, flown left to right
+            std::vector<std::pair<int, int>> refs;               // (planned cell, lane) of each
+            std::vector<std::vector<Vec2>> links;
+            std::vector<Vec2> homeLink, landingLink;
+            int leaving = 0;
+            bool broken = false;
+        };
+        auto fly = [&](const std::vector<OrderStep>& steps) {
+            Flown f;
+            int lastPt = fp.homePt;
+            for (const auto& st : steps) {
+                const auto& [ci, j] = fp.laneRef[static_cast<std::size_t>(st.cell)];
+                const PlannedCell& pc = fp.cells[static_cast<std::size_t>(ci)];
+                const int entry = st.entry(fp.laneProblem);
+                if (lastPt >= 0) {
+                    Route r = router.route(lastPt, entry);
+                    f.broken = f.broken || !r.ok;
+                    f.leaving += r.leavesArea && !f.lanes.empty() ? 1 : 0; // the way from home may well
+                    if (f.lanes.empty())
+                        f.homeLink = std::move(r.mid);
+                    else
+                        f.links.push_back(std::move(r.mid));
+                }
+                f.lanes.emplace_back(&pc.lanes[static_cast<std::size_t>(j)], !st.reversed);
+                f.refs.emplace_back(ci, j);
+                lastPt = st.exit(fp.laneProblem);
+            }
+            if (fp.landingPt >= 0 && !steps.empty()) {
+                Route r = router.route(lastPt, fp.landingPt);
                 f.broken = f.broken || !r.ok;
-                f.leaving += r.leavesArea && !f.lanes.empty() ? 1 : 0; // the way from home may well
-                if (f.lanes.empty())
-                    f.homeLink = std::move(r.mid);
-                else
-                    f.links.push_back(std::move(r.mid));
+                f.landingLink = std::move(r.mid);
             }
-            f.lanes.emplace_back(&pc.lanes[static_cast<std::size_t>(j)], !st.reversed);
-            f.refs.emplace_back(ci, j);
-            lastPt = st.exit(fp.laneProblem);
-        }
-        if (fp.landingPt >= 0 && !steps.empty()) {
-            Route r = router.route(lastPt, fp.landingPt);
-            f.broken = f.broken || !r.ok;
-            f.landingLink = std::move(r.mid);
-        }
-        return f;
-    };
-    auto flownTime = [&](const Flown& f) {
-        FlightTimeAccumulator acc(opt.time);
-        if (home)
-            acc.add(*home);
-        for (const auto& p : f.homeLink)
-            acc.add(p);
-        for (std::size_t i = 0; i < f.lanes.size(); ++i) {
-            const auto& [l, ltr] = f.lanes[i];
-            acc.add(ltr ? l->span.first : l->span.last);
-            acc.add(ltr ? l->span.last : l->span.first);
-            if (i < f.links.size())
-                for (const auto& p : f.links[i])
-                    acc.add(p);
-        }
-        for (const auto& p : f.landingLink)
-            acc.add(p);
-        if (landing)
-            acc.add(*landing);
-        return acc.result();
-    };
-    Flown flown = fly(fp.steps);
-    FlightTime time = flownTime(flown);
-    {
-        // The search works on the same model; keep the construction should it ever fly faster.
-        Flown constructed = fly(fp.constructed);
-        const FlightTime ct = flownTime(constructed);
-        plan.stats.constructedTimeS = ct.totalS;
-        if (ct.totalS < time.totalS) {
-            flown = std::move(constructed);
-            time = ct;
-        }
-    }
-    plan.stats.transitionsLeavingArea = flown.leaving;
-    plan.time = time;
-    plan.homeLink = flown.homeLink;
-    plan.landingLink = flown.landingLink;
-    plan.links = std::move(flown.links);
-    plan.stats.laneSegments = static_cast<int>(flown.lanes.size());
-    plan.lanes.reserve(flown.lanes.size());
-    const Vec2 u = dp.d().frame.toWorld(Vec2(1, 0));
-    const double reach = 0.5 * realAlong;
-    std::vector<std::vector<Vec2>> links;
-    for (std::size_t i = 0; i < flown.lanes.size(); ++i) {
-        const auto& [l, ltr] = flown.lanes[i];
-        Lane lane = makeLane(l->stripA, l->stripB, ph, l->flyA, l->flyB);
-        if (!ltr) {
-            std::reverse(lane.photos.begin(), lane.photos.end());
-            std::swap(lane.stripStart, lane.stripEnd);
-            lane.headingDeg = std::fmod(lane.headingDeg + 180.0, 360.0);
-        }
-        plan.lanes.push_back(std::move(lane));
-        plan.laneCells.push_back(fp.cells[static_cast<std::size_t>(flown.refs[i].first)].merged);
-        if (i + 1 >= flown.lanes.size())
-            break;
-        std::vector<Vec2> link = std::move(plan.links[i]);
-        // A straight turn to the neighbour lane of the same cell that runs along the boundary past
-        // the end photos' reach, through ground only that turn flies over: photos on it.
-        const auto& [nl, nltr] = flown.lanes[i + 1];
-        const bool neighbours = flown.refs[i].first == flown.refs[i + 1].first &&
-                                std::abs(flown.refs[i].second - flown.refs[i + 1].second) == 1 && ltr != nltr;
-        if (neighbours && link.empty()) {
-            if (auto side = photographedTurn(*l, ltr, *nl, nltr, u, reach, ph)) {
-                links.push_back({});
-                plan.lanes.push_back(std::move(*side));
-                plan.laneCells.push_back(-1);
+            return f;
+        };
+        auto flownTime = [&](const Flown& f) {
+            FlightTimeAccumulator acc(opt.time);
+            if (home)
+                acc.add(*home);
+            for (const auto& p : f.homeLink)
+                acc.add(p);
+            for (std::size_t i = 0; i < f.lanes.size(); ++i) {
+                const auto& [l, ltr] = f.lanes[i];
+                acc.add(ltr ? l->span.first : l->span.last);
+                acc.add(ltr ? l->span.last : l->span.first);
+                if (i < f.links.size())
+                    for (const auto& p : f.links[i])
+                        acc.add(p);
+            }
+            for (const auto& p : f.landingLink)
+                acc.add(p);
+            if (landing)
+                acc.add(*landing);
+            return acc.result();
+        };
+        Flown flown = fly(fp.steps);
+        FlightTime time = flownTime(flown);
+        {
+            // The search works on the same model; keep the construction should it ever fly faster.
+            Flown constructed = fly(fp.constructed);
+            const FlightTime ct = flownTime(constructed);
+            plan.stats.constructedTimeS = ct.totalS;
+            if (ct.totalS < time.totalS) {
+                flown = std::move(constructed);
+                time = ct;
             }
         }
-        links.push_back(std::move(link));
-    }
-    plan.links = std::move(links);
-    if (opt.thinPhotos) {
-        PhotoThinningOptions to;
-        to.trackSpacingM = s;
-        to.photoSpacingM = ph;
-        to.realAcrossM = realAcross;
-        to.realAlongM = realAlong;
-        plan.stats.photosLeftOut = thinLanePhotos(plan.lanes, {}, to, [&ground](const Vec2& p) {
-            return ground.insideArea(p) && !ground.inZone(p);
-        });
-    }
-    if (opt.spotPhotos && !plan.lanes.empty()) {
-        SpotPhotoOptions so;
-        so.realAcrossM = realAcross;
-        so.realAlongM = realAlong;
-        so.headingDeg = std::fmod(450.0 - fp.angleDeg, 360.0);
-        addSpotPhotos(plan, region, noFly, field, grown, opt.keepInside ? region : vgo.keepInside, pockets, anchor,
-                      router, so, opt.time, home, landing);
-    }
-    if (flown.broken)
-        plan.warnings.push_back("Some transitions of the sweep found no safe way and fly straight: check the plan.");
-    if (flown.leaving > 0 && opt.keepInside)
-        plan.warnings.push_back(std::to_string(flown.leaving) +
-                                " transitions leave the area: no way over it keeps the safety margin.");
+        plan.stats.transitionsLeavingArea = flown.leaving;
+        plan.time = time;
+        plan.homeLink = flown.homeLink;
+        plan.landingLink = flown.landingLink;
+        plan.links = std::move(flown.links);
+        plan.stats.laneSegments = static_cast<int>(flown.lanes.size());
+        plan.lanes.reserve(flown.lanes.size());
+        const Vec2 u = dp.d().frame.toWorld(Vec2(1, 0));
+        const double reach = 0.5 * realAlong;
+        std::vector<std::vector<Vec2>> links;
+        for (std::size_t i = 0; i < flown.lanes.size(); ++i) {
+            const auto& [l, ltr] = flown.lanes[i];
+            Lane lane = makeLane(l->stripA, l->stripB, ph, l->flyA, l->flyB);
+            if (!ltr) {
+                std::reverse(lane.photos.begin(), lane.photos.end());
+                std::swap(lane.stripStart, lane.stripEnd);
+                lane.headingDeg = std::fmod(lane.headingDeg + 180.0, 360.0);
+            }
+            plan.lanes.push_back(std::move(lane));
+            plan.laneCells.push_back(fp.cells[static_cast<std::size_t>(flown.refs[i].first)].merged);
+            if (i + 1 >= flown.lanes.size())
+                break;
+            std::vector<Vec2> link = std::move(plan.links[i]);
+            // A straight turn to the neighbour lane of the same cell that runs along the boundary past
+            // the end photos' reach, through ground only that turn flies over: photos on it.
+            const auto& [nl, nltr] = flown.lanes[i + 1];
+            const bool neighbours = flown.refs[i].first == flown.refs[i + 1].first &&
+                                    std::abs(flown.refs[i].second - flown.refs[i + 1].second) == 1 && ltr != nltr;
+            if (neighbours && link.empty()) {
+                if (auto side = photographedTurn(*l, ltr, *nl, nltr, u, reach, ph)) {
+                    links.push_back({});
+                    plan.lanes.push_back(std::move(*side));
+                    plan.laneCells.push_back(-1);
+                }
+            }
+            links.push_back(std::move(link));
+        }
+        plan.links = std::move(links);
+        if (opt.thinPhotos) {
+            PhotoThinningOptions to;
+            to.trackSpacingM = s;
+            to.photoSpacingM = ph;
+            to.realAcrossM = realAcross;
+            to.realAlongM = realAlong;
+            plan.stats.photosLeftOut = thinLanePhotos(plan.lanes, {}, to, [&ground](const Vec2& p) {
+                return ground.insideArea(p) && !ground.inZone(p);
+            });
+        }
+        if (opt.spotPhotos && !plan.lanes.empty()) {
+            SpotPhotoOptions so;
+            so.realAcrossM = realAcross;
+            so.realAlongM = realAlong;
+            so.headingDeg = std::fmod(450.0 - fp.angleDeg, 360.0);
+            addSpotPhotos(plan, region, noFly, field, grown, opt.keepInside ? region : vgo.keepInside, pockets, anchor,
+                          router, so, opt.time, home, landing);
+        }
+        if (flown.broken)
+            plan.warnings.push_back("Some transitions of the sweep found no safe way and fly straight: check the plan.");
+        if (flown.leaving > 0 && opt.keepInside)
+            plan.warnings.push_back(std::to_string(flown.leaving) +
+                                    " transitions leave the area: no way over it keeps the safety margin.");
 
-    // --- ground no photo can see: pockets and ground between zones whose margins merge
-    reportUnseenGround(region, noFly, grown, freeSpace, pockets, anchor, realAcross, realAlong, plan);
-    return plan;
+        // --- ground no photo can see: pockets and ground between zones whose margins merge
+        reportUnseenGround(region, noFly, grown, freeSpace, pockets, anchor, realAcross, realAlong, plan);
+        return plan;
+    };
+    if (!best)
+        best = std::move(bestShared);
+    SweepPlan result = finish(*best);
+    if (bestShared) {
+        if (stopRequested())
+            return makeError(ErrorCode::Cancelled, "planning the sweep: cancelled");
+        SweepPlan shared = finish(*bestShared);
+        // Shared lines leave some ground to the spot photos; kept only when the real footprints see
+        // as much as the cells' own lanes do (within 0.05 % of the area) and the flight is faster.
+        if (shared.time.totalS < result.time.totalS) {
+            geo::MultiPolygon zones;
+            for (const auto& z : noFly)
+                zones.push_back(z);
+            const geo::MultiPolygon admissible = zones.empty() ? region : geo::difference(region, zones);
+            CoverageCheckOptions co;
+            co.resolutionM = 0.05 * std::min(realAcross, realAlong);
+            co.maxPatches = 0;
+            auto unseen = [&](const SweepPlan& sp) {
+                std::vector<PhotoFootprint> fps;
+                for (const auto& l : sp.lanes)
+                    for (const auto& p : l.photos)
+                        fps.push_back(PhotoFootprint{p, l.headingDeg, realAcross, realAlong});
+                auto r = checkCoverage(admissible, fps, co);
+                return r ? r->uncoveredAreaM2 : kInf;
+            };
+            if (unseen(shared) <= unseen(result) + 0.0005 * regionArea)
+                result = std::move(shared);
+        }
+    }
+    return result;
 }
 
 std::vector<geo::Vec2> sweepFlightPath(const SweepPlan& plan, const std::optional<geo::Vec2>& home,

@@ -67,6 +67,7 @@ struct SweepStats {
     std::int64_t linkEvaluations = 0;       // transitions costed by the order search
     double constructedTimeS = 0.0;          // the same lanes in the construction's order, before local search
     bool rowStart = false;                  // the order kept grew from the row-by-row start
+    bool sharedLines = false;               // the plan kept flies lanes on lines shared by all cells
     int unreachablePockets = 0;             // free pieces no safe path reaches
     double unreachableAreaM2 = 0.0;         // their ground the footprints from outside do not reach (estimate)
     int transitionsLeavingArea = 0;         // transitions leaving the area (keep-inside) or straying more

@@ -170,6 +170,9 @@ TEST(SpotPhotos, TheSweepSeesMoreAndStaysOutOfTheMargins) {
         const Area a = generateArea(seed + 500, 12 + static_cast<int>(seed % 8));
         SweepOptions o = options(cam);
         o.home = geo::bounds(a.region).min;
+        // The same lanes with and without spot photos: the cells' own spacing only (shared lines are
+        // kept only when their spot photos complete them, tested in sweep_planner_test).
+        o.sharedLines = false;
         o.spotPhotos = false;
         auto without = planSweep(a.region, a.zones, o);
         o.spotPhotos = true;

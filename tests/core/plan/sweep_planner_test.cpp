@@ -335,3 +335,36 @@ TEST(SweepPlanner, RowStartHardlySlowerAndFasterWithManyZones) {
     }
     EXPECT_GE(faster, 2);
 }
+
+// Shared lines (a Survey's transects round the zones, the wedges beside the zones left to spot
+// photos) are kept only when the finished flight is faster and the real footprints see as much as
+// with the cells' own lanes; on areas with many zones they often are, with fewer photos.
+TEST(SweepPlanner, SharedLinesKeptOnlyWhenFasterAndAsComplete) {
+    const Camera cam;
+    int kept = 0, photosShared = 0, photosOwn = 0;
+    for (unsigned seed = 11; seed <= 18; ++seed) {
+        const Area a = generateArea(seed, 10 + static_cast<int>(seed % 8));
+        SweepOptions o = options(cam);
+        o.home = geo::bounds(a.region).min;
+        auto shared = planSweep(a.region, a.zones, o);
+        o.sharedLines = false;
+        auto own = planSweep(a.region, a.zones, o);
+        ASSERT_TRUE(shared.ok() && own.ok()) << a.name;
+        EXPECT_FALSE(own->stats.sharedLines);
+        EXPECT_LE(shared->time.totalS, own->time.totalS + 1e-6) << a.name;
+        double unseenShared = 0.0, unseenOwn = 0.0;
+        coverage(a, *shared, cam, &unseenShared);
+        coverage(a, *own, cam, &unseenOwn);
+        // The planner's own check is coarser (5 % of the footprint's short side): a little slack.
+        EXPECT_LE(unseenShared, unseenOwn + 0.001 * geo::area(a.region)) << a.name;
+        if (shared->stats.sharedLines) {
+            ++kept;
+            EXPECT_LT(shared->time.totalS, own->time.totalS) << a.name;
+            photosShared += photoCount(*shared);
+            photosOwn += photoCount(*own);
+        }
+        expectSafeAndComplete(a, *shared, options(cam), cam);
+    }
+    EXPECT_GE(kept, 3);
+    EXPECT_LT(photosShared, photosOwn);
+}
