@@ -576,36 +576,46 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         reportUnseenGround(region, noFly, grown, freeSpace, pockets, anchor, realAcross, realAlong, plan);
         return plan;
     };
-    if (!best)
-        best = std::move(bestShared);
-    SweepPlan result = finish(*best);
-    if (bestShared) {
+    if (!best || !bestShared)
+        return finish(best ? *best : *bestShared);
+    // Shared lines leave some ground to the spot photos: kept only when the flight is faster and the
+    // real footprints see as much as with the cells' own lanes (within 0.05 % of the area). A finished
+    // flight is never faster than its search's time (the spot photos only add), so the second kind
+    // is finished only when it could still win.
+    geo::MultiPolygon zones(noFly.begin(), noFly.end());
+    const geo::MultiPolygon admissible = zones.empty() ? region : geo::difference(region, zones);
+    CoverageCheckOptions co;
+    co.resolutionM = 0.05 * std::min(realAcross, realAlong);
+    co.maxPatches = 0;
+    auto unseen = [&](const SweepPlan& sp) {
+        std::vector<PhotoFootprint> fps;
+        for (const auto& l : sp.lanes)
+            for (const auto& p : l.photos)
+                fps.push_back(PhotoFootprint{p, l.headingDeg, realAcross, realAlong});
+        auto r = checkCoverage(admissible, fps, co);
+        return r ? r->uncoveredAreaM2 : kInf;
+    };
+    const double tolerance = 0.0005 * regionArea;
+    auto cancelled = [] { return makeError(ErrorCode::Cancelled, "planning the sweep: cancelled"); };
+    if (best->timeS <= bestShared->timeS) {
+        SweepPlan own = finish(*best);
+        if (bestShared->timeS >= own.time.totalS)
+            return own;
         if (stopRequested())
-            return makeError(ErrorCode::Cancelled, "planning the sweep: cancelled");
+            return cancelled();
         SweepPlan shared = finish(*bestShared);
-        // Shared lines leave some ground to the spot photos; kept only when the real footprints see
-        // as much as the cells' own lanes do (within 0.05 % of the area) and the flight is faster.
-        if (shared.time.totalS < result.time.totalS) {
-            geo::MultiPolygon zones;
-            for (const auto& z : noFly)
-                zones.push_back(z);
-            const geo::MultiPolygon admissible = zones.empty() ? region : geo::difference(region, zones);
-            CoverageCheckOptions co;
-            co.resolutionM = 0.05 * std::min(realAcross, realAlong);
-            co.maxPatches = 0;
-            auto unseen = [&](const SweepPlan& sp) {
-                std::vector<PhotoFootprint> fps;
-                for (const auto& l : sp.lanes)
-                    for (const auto& p : l.photos)
-                        fps.push_back(PhotoFootprint{p, l.headingDeg, realAcross, realAlong});
-                auto r = checkCoverage(admissible, fps, co);
-                return r ? r->uncoveredAreaM2 : kInf;
-            };
-            if (unseen(shared) <= unseen(result) + 0.0005 * regionArea)
-                result = std::move(shared);
-        }
+        return shared.time.totalS < own.time.totalS && unseen(shared) <= unseen(own) + tolerance ? shared : own;
     }
-    return result;
+    SweepPlan shared = finish(*bestShared);
+    const double sharedUnseen = unseen(shared);
+    // What no footprint can reach stays unseen by any plan: seeing all else, shared lines need no
+    // comparison when the cells' own lanes cannot fly faster.
+    if (best->timeS >= shared.time.totalS && sharedUnseen <= shared.stats.unreachableAreaM2 + tolerance)
+        return shared;
+    if (stopRequested())
+        return cancelled();
+    SweepPlan own = finish(*best);
+    return shared.time.totalS < own.time.totalS && sharedUnseen <= unseen(own) + tolerance ? shared : own;
 }
 
 std::vector<geo::Vec2> sweepFlightPath(const SweepPlan& plan, const std::optional<geo::Vec2>& home,

@@ -145,8 +145,23 @@ void addSpotPhotos(SweepPlan& plan, const geo::MultiPolygon& region, const std::
     const double reach = 0.5 * std::hypot(options.realAcrossM, options.realAlongM);
     // Outside the grown zones is outside every margin (their polygons circumscribe it); the exact
     // check is kept for the photos chosen.
+    // Each polygon's box first: a probe meets one or two of the grown zones, not all of them.
+    auto boxes = [](const geo::MultiPolygon& m) {
+        std::vector<geo::Box> b;
+        b.reserve(m.size());
+        for (const auto& poly : m)
+            b.push_back(geo::bounds(poly));
+        return b;
+    };
+    const std::vector<geo::Box> grownBoxes = boxes(grown), flyBoxes = boxes(flyOver);
+    auto inside = [](const geo::MultiPolygon& m, const std::vector<geo::Box>& b, const Vec2& p) {
+        for (std::size_t i = 0; i < m.size(); ++i)
+            if (b[i].contains(p) && geo::contains(m[i], p))
+                return true;
+        return false;
+    };
     auto mayFlyAt = [&](const Vec2& p) {
-        return !geo::contains(grown, p) && geo::contains(flyOver, p) && pockets.of(p) == anchor;
+        return !inside(grown, grownBoxes, p) && inside(flyOver, flyBoxes, p) && pockets.of(p) == anchor;
     };
     const geo::MultiPolygon ground = geo::difference(region, geo::MultiPolygon(noFly.begin(), noFly.end()));
     struct Piece {
