@@ -2,7 +2,9 @@
 
 #include "core/geo/no_fly_field.h"
 #include "core/geo/visibility_graph.h"
+#include "core/geo/local_frame.h"
 #include "core/geo/polygon_ops.h"
+#include "core/plan/area_generator.h"
 #include "tests/core/plan/sweep_test_util.h"
 
 #include <gtest/gtest.h>
@@ -367,4 +369,41 @@ TEST(SweepPlanner, SharedLinesKeptOnlyWhenFasterAndAsComplete) {
     }
     EXPECT_GE(kept, 3);
     EXPECT_LT(photosShared, photosOwn);
+}
+
+// The eval's generated set: on a slanted outline, shared lines once left 900 m2 along the edge that
+// the spot photos (which look round the zones) do not reach; the kept plan must see as much as the
+// cells' own lanes on every area.
+TEST(SweepPlanner, SharedLinesNeverLeaveMoreUnseenOnTheEvalSet) {
+    const Camera cam;
+    AreaGeneratorOptions go;
+    go.count = 40;
+    go.seed = 1;
+    auto areas = generateAreas(go);
+    ASSERT_TRUE(areas.ok());
+    int kept = 0;
+    for (const auto& g : *areas) {
+        auto frame = geo::LocalFrame::forArea(g.area.area);
+        ASSERT_TRUE(frame.ok());
+        Area a;
+        a.name = g.area.name;
+        a.region = {frame->toLocal(g.area.area)};
+        for (const auto& z : g.area.noFly)
+            a.zones.push_back(frame->toLocal(z));
+        if (a.zones.empty())
+            continue;
+        SweepOptions o = options(cam);
+        o.home = geo::bounds(a.region).min;
+        auto shared = planSweep(a.region, a.zones, o);
+        o.sharedLines = false;
+        auto own = planSweep(a.region, a.zones, o);
+        ASSERT_TRUE(shared.ok() && own.ok()) << a.name;
+        double unseenShared = 0.0, unseenOwn = 0.0;
+        coverage(a, *shared, cam, &unseenShared);
+        coverage(a, *own, cam, &unseenOwn);
+        EXPECT_LE(unseenShared, unseenOwn + 0.001 * geo::area(a.region)) << a.name;
+        EXPECT_LE(shared->time.totalS, own->time.totalS + 1e-6) << a.name;
+        kept += shared->stats.sharedLines ? 1 : 0;
+    }
+    EXPECT_GE(kept, 10);
 }
