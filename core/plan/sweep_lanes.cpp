@@ -54,7 +54,9 @@ SweepGround::SweepGround(const geo::MultiPolygon& area, const std::vector<geo::P
 
 bool SweepGround::insideArea(const Vec2& p) const { return insideAny(m_area, m_areaBoxes, p); }
 
-bool SweepGround::inMargin(const Vec2& p) const { return insideArea(p) && insideAny(m_grown, m_grownBoxes, p); }
+bool SweepGround::inMargin(const Vec2& p) const { return insideArea(p) && inGrown(p); }
+
+bool SweepGround::inGrown(const Vec2& p) const { return insideAny(m_grown, m_grownBoxes, p); }
 
 bool SweepGround::inZone(const Vec2& p) const {
     for (std::size_t i = 0; i < m_zones.size(); ++i)

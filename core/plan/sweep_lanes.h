@@ -22,6 +22,8 @@ public:
     // Ground inside the area that only the margin of a zone keeps the aircraft from (admissible ground).
     bool inMargin(const geo::Vec2& p) const;
     bool inZone(const geo::Vec2& p) const;
+    // Inside a grown zone (which circumscribes its margin); probes off the boundary.
+    bool inGrown(const geo::Vec2& p) const;
     // How far from p (on a boundary) along unit direction u the first boundary beyond lies: a zone, a
     // grown margin's edge or the area's outline (at most cap). From a lane end into a margin, how far
     // its ground runs; from a lane end over the area's edge, where the line comes back.

@@ -98,6 +98,9 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     const geo::MultiPolygon& grown = freeGraph.inflatedZones();
     const geo::MultiPolygon freeSpace = grown.empty() ? region : geo::difference(region, grown);
     const SweepGround ground(region, noFly, grown);
+    // The ground the photos must see: the region less the zones.
+    const geo::MultiPolygon toSee =
+        noFly.empty() ? region : geo::difference(region, geo::MultiPolygon(noFly.begin(), noFly.end()));
 
     const std::optional<Vec2> home = opt.home;
     const std::optional<Vec2> landing = opt.landing ? opt.landing : opt.home;
@@ -424,7 +427,6 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     // --- a finished plan (flight order, photographed turns, thinned photos, spot photos) of a candidate
     auto finish = [&](FullPlan& fp) {
         SweepPlan plan = base;
-        // --- the plan of the best direction, in flight order
         Router& router = *fp.router;
         const DirectionPlan& dp = *fp.dir;
         plan.stats.angleDeg = fp.angleDeg;
@@ -563,8 +565,8 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
             so.realAcrossM = realAcross;
             so.realAlongM = realAlong;
             so.headingDeg = std::fmod(450.0 - fp.angleDeg, 360.0);
-            addSpotPhotos(plan, region, noFly, field, grown, opt.keepInside ? region : vgo.keepInside, pockets, anchor,
-                          router, so, opt.time, home, landing);
+            addSpotPhotos(plan, toSee, noFly, field, grown, ground, opt.keepInside ? region : vgo.keepInside, pockets,
+                          anchor, router, so, opt.time, home, landing);
         }
         if (flown.broken)
             plan.warnings.push_back("Some transitions of the sweep found no safe way and fly straight: check the plan.");
@@ -573,7 +575,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
                                     " transitions leave the area: no way over it keeps the safety margin.");
 
         // --- ground no photo can see: pockets and ground between zones whose margins merge
-        reportUnseenGround(region, noFly, grown, freeSpace, pockets, anchor, realAcross, realAlong, plan);
+        reportUnseenGround(toSee, noFly, grown, freeSpace, pockets, anchor, realAcross, realAlong, plan);
         return plan;
     };
     if (!best || !bestShared)
@@ -582,8 +584,6 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     // real footprints see as much as with the cells' own lanes (within 0.05 % of the area). A finished
     // flight is never faster than its search's time (the spot photos only add), so the second kind
     // is finished only when it could still win.
-    geo::MultiPolygon zones(noFly.begin(), noFly.end());
-    const geo::MultiPolygon admissible = zones.empty() ? region : geo::difference(region, zones);
     CoverageCheckOptions co;
     co.resolutionM = 0.05 * std::min(realAcross, realAlong);
     co.maxPatches = 0;
@@ -592,7 +592,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         for (const auto& l : sp.lanes)
             for (const auto& p : l.photos)
                 fps.push_back(PhotoFootprint{p, l.headingDeg, realAcross, realAlong});
-        auto r = checkCoverage(admissible, fps, co);
+        auto r = checkCoverage(toSee, fps, co);
         return r ? r->uncoveredAreaM2 : kInf;
     };
     const double tolerance = 0.0005 * regionArea;

@@ -66,7 +66,7 @@ int Pockets::of(const Vec2& p) const {
     return best;
 }
 
-void reportUnseenGround(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
+void reportUnseenGround(const geo::MultiPolygon& ground, const std::vector<geo::Polygon>& noFly,
                         const geo::MultiPolygon& grown, const geo::MultiPolygon& freeSpace, const Pockets& pockets,
                         int anchor, double realAcross, double realAlong, SweepPlan& plan) {
     std::vector<int> pocketIds;
@@ -102,7 +102,6 @@ void reportUnseenGround(const geo::MultiPolygon& region, const std::vector<geo::
         // Candidates: ground farther from the reachable free space than half the footprint's short
         // side; what the plan's photos leave of them, by the independent coverage check.
         const double reach = 0.5 * std::min(realAcross, realAlong);
-        const geo::MultiPolygon ground = geo::difference(region, geo::MultiPolygon(noFly.begin(), noFly.end()));
         const geo::MultiPolygon far = geo::difference(ground, geo::buffer(reachableFree, reach, 4));
         double left = 0.0;
         if (!far.empty()) {
@@ -133,9 +132,9 @@ void reportUnseenGround(const geo::MultiPolygon& region, const std::vector<geo::
     }
 }
 
-void addSpotPhotos(SweepPlan& plan, const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
-                   const geo::NoFlyField& field, const geo::MultiPolygon& grown, const geo::MultiPolygon& flyOver,
-                   const Pockets& pockets, int anchor, Router& router, const SpotPhotoOptions& options,
+void addSpotPhotos(SweepPlan& plan, const geo::MultiPolygon& ground, const std::vector<geo::Polygon>& noFly,
+                   const geo::NoFlyField& field, const geo::MultiPolygon& grown, const SweepGround& sweepGround,
+                   const geo::MultiPolygon& flyOver, const Pockets& pockets, int anchor, Router& router, const SpotPhotoOptions& options,
                    const FlightTimeModel& time, const std::optional<Vec2>& home, const std::optional<Vec2>& landing) {
     // The lanes leave ground unseen only round the zones (their margins, pockets and notches): each
     // piece of ground within two footprints' reach of a grown zone is checked on its own, with the
@@ -145,25 +144,9 @@ void addSpotPhotos(SweepPlan& plan, const geo::MultiPolygon& region, const std::
     const double reach = 0.5 * std::hypot(options.realAcrossM, options.realAlongM);
     // Outside the grown zones is outside every margin (their polygons circumscribe it); the exact
     // check is kept for the photos chosen.
-    // Each polygon's box first: a probe meets one or two of the grown zones, not all of them.
-    auto boxes = [](const geo::MultiPolygon& m) {
-        std::vector<geo::Box> b;
-        b.reserve(m.size());
-        for (const auto& poly : m)
-            b.push_back(geo::bounds(poly));
-        return b;
-    };
-    const std::vector<geo::Box> grownBoxes = boxes(grown), flyBoxes = boxes(flyOver);
-    auto inside = [](const geo::MultiPolygon& m, const std::vector<geo::Box>& b, const Vec2& p) {
-        for (std::size_t i = 0; i < m.size(); ++i)
-            if (b[i].contains(p) && geo::contains(m[i], p))
-                return true;
-        return false;
-    };
     auto mayFlyAt = [&](const Vec2& p) {
-        return !inside(grown, grownBoxes, p) && inside(flyOver, flyBoxes, p) && pockets.of(p) == anchor;
+        return !sweepGround.inGrown(p) && geo::contains(flyOver, p) && pockets.of(p) == anchor;
     };
-    const geo::MultiPolygon ground = geo::difference(region, geo::MultiPolygon(noFly.begin(), noFly.end()));
     struct Piece {
         geo::MultiPolygon near;
         geo::Box reached;                            // its box grown by a footprint's reach

@@ -7,6 +7,7 @@
 #include "core/geo/no_fly_field.h"
 #include "core/geo/types.h"
 #include "core/plan/spot_photos.h"
+#include "core/plan/sweep_lanes.h"
 #include "core/plan/sweep_planner.h"
 #include "core/plan/sweep_routing.h"
 
@@ -39,17 +40,18 @@ private:
 // footprint's short side reaches; what the plan's photos leave of it, by the independent coverage
 // check, goes into plan.stats (unreachablePockets, unreachableAreaM2) and a warning. Convex zones each
 // alone in its grown piece hide nothing, and then nothing is checked.
-void reportUnseenGround(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
+// `ground`: the region less the zones (what the photos must see).
+void reportUnseenGround(const geo::MultiPolygon& ground, const std::vector<geo::Polygon>& noFly,
                         const geo::MultiPolygon& grown, const geo::MultiPolygon& freeSpace, const Pockets& pockets,
                         int anchor, double realAcross, double realAlong, SweepPlan& plan);
 
-// Single photos for the ground the plan's lanes leave unseen (plan::chooseSpotPhotos over the region
-// less the zones), taken from safe places of the anchor's free space over `flyOver`, each flown where
+// Single photos for the ground the plan's lanes leave unseen (plan::chooseSpotPhotos over `ground`,
+// the region less the zones), taken from safe places (outside sweepGround's grown zones) of the anchor's free space over `flyOver`, each flown where
 // it adds least time on the router's ways (plan::placeSpotPhotos); the plan's time is counted again
 // over the whole flight. plan.stats.spotPhotos says how many.
-void addSpotPhotos(SweepPlan& plan, const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
-                   const geo::NoFlyField& field, const geo::MultiPolygon& grown, const geo::MultiPolygon& flyOver,
-                   const Pockets& pockets, int anchor, Router& router, const SpotPhotoOptions& options,
+void addSpotPhotos(SweepPlan& plan, const geo::MultiPolygon& ground, const std::vector<geo::Polygon>& noFly,
+                   const geo::NoFlyField& field, const geo::MultiPolygon& grown, const SweepGround& sweepGround,
+                   const geo::MultiPolygon& flyOver, const Pockets& pockets, int anchor, Router& router, const SpotPhotoOptions& options,
                    const FlightTimeModel& time, const std::optional<Vec2>& home, const std::optional<Vec2>& landing);
 
 } // namespace pf::plan::sweep_detail

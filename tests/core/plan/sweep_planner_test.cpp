@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <cstdlib>
 
 using namespace pf;
@@ -338,6 +339,30 @@ TEST(SweepPlanner, RowStartHardlySlowerAndFasterWithManyZones) {
     EXPECT_GE(faster, 2);
 }
 
+// An area planned with shared lines allowed and with the cells' own lanes only (home at its
+// bounds' corner), checked alike: never slower, never more ground unseen by the real footprints.
+struct KindsCompared {
+    SweepPlan shared, own;
+};
+static std::optional<KindsCompared> compareLaneKinds(const Area& a, const Camera& cam) {
+    SweepOptions o = options(cam);
+    o.home = geo::bounds(a.region).min;
+    auto shared = planSweep(a.region, a.zones, o);
+    o.sharedLines = false;
+    auto own = planSweep(a.region, a.zones, o);
+    EXPECT_TRUE(shared.ok() && own.ok()) << a.name;
+    if (!shared.ok() || !own.ok())
+        return std::nullopt;
+    EXPECT_FALSE(own->stats.sharedLines);
+    EXPECT_LE(shared->time.totalS, own->time.totalS + 1e-6) << a.name;
+    double unseenShared = 0.0, unseenOwn = 0.0;
+    coverage(a, *shared, cam, &unseenShared);
+    coverage(a, *own, cam, &unseenOwn);
+    // The planner's own check is coarser (5 % of the footprint's short side): a little slack.
+    EXPECT_LE(unseenShared, unseenOwn + 0.001 * geo::area(a.region)) << a.name;
+    return KindsCompared{std::move(*shared), std::move(*own)};
+}
+
 // Shared lines (a Survey's transects round the zones, the wedges beside the zones left to spot
 // photos) are kept only when the finished flight is faster and the real footprints see as much as
 // with the cells' own lanes; on areas with many zones they often are, with fewer photos.
@@ -346,19 +371,10 @@ TEST(SweepPlanner, SharedLinesKeptOnlyWhenFasterAndAsComplete) {
     int kept = 0, photosShared = 0, photosOwn = 0;
     for (unsigned seed = 11; seed <= 18; ++seed) {
         const Area a = generateArea(seed, 10 + static_cast<int>(seed % 8));
-        SweepOptions o = options(cam);
-        o.home = geo::bounds(a.region).min;
-        auto shared = planSweep(a.region, a.zones, o);
-        o.sharedLines = false;
-        auto own = planSweep(a.region, a.zones, o);
-        ASSERT_TRUE(shared.ok() && own.ok()) << a.name;
-        EXPECT_FALSE(own->stats.sharedLines);
-        EXPECT_LE(shared->time.totalS, own->time.totalS + 1e-6) << a.name;
-        double unseenShared = 0.0, unseenOwn = 0.0;
-        coverage(a, *shared, cam, &unseenShared);
-        coverage(a, *own, cam, &unseenOwn);
-        // The planner's own check is coarser (5 % of the footprint's short side): a little slack.
-        EXPECT_LE(unseenShared, unseenOwn + 0.001 * geo::area(a.region)) << a.name;
+        auto k = compareLaneKinds(a, cam);
+        ASSERT_TRUE(k) << a.name;
+        const SweepPlan* shared = &k->shared;
+        const SweepPlan* own = &k->own;
         if (shared->stats.sharedLines) {
             ++kept;
             EXPECT_LT(shared->time.totalS, own->time.totalS) << a.name;
@@ -392,18 +408,9 @@ TEST(SweepPlanner, SharedLinesNeverLeaveMoreUnseenOnTheEvalSet) {
             a.zones.push_back(frame->toLocal(z));
         if (a.zones.empty())
             continue;
-        SweepOptions o = options(cam);
-        o.home = geo::bounds(a.region).min;
-        auto shared = planSweep(a.region, a.zones, o);
-        o.sharedLines = false;
-        auto own = planSweep(a.region, a.zones, o);
-        ASSERT_TRUE(shared.ok() && own.ok()) << a.name;
-        double unseenShared = 0.0, unseenOwn = 0.0;
-        coverage(a, *shared, cam, &unseenShared);
-        coverage(a, *own, cam, &unseenOwn);
-        EXPECT_LE(unseenShared, unseenOwn + 0.001 * geo::area(a.region)) << a.name;
-        EXPECT_LE(shared->time.totalS, own->time.totalS + 1e-6) << a.name;
-        kept += shared->stats.sharedLines ? 1 : 0;
+        auto k = compareLaneKinds(a, cam);
+        ASSERT_TRUE(k) << a.name;
+        kept += k->shared.stats.sharedLines ? 1 : 0;
     }
     EXPECT_GE(kept, 10);
 }
