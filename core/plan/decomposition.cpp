@@ -10,16 +10,6 @@ namespace pf::plan {
 
 using geo::Vec2;
 
-geo::Vec2 SweepFrame::toFrame(const geo::Vec2& p) const {
-    const double c = std::cos(angleRad), s = std::sin(angleRad);
-    return Vec2(c * p.x() + s * p.y(), -s * p.x() + c * p.y());
-}
-
-geo::Vec2 SweepFrame::toWorld(const geo::Vec2& p) const {
-    const double c = std::cos(angleRad), s = std::sin(angleRad);
-    return Vec2(c * p.x() - s * p.y(), s * p.x() + c * p.y());
-}
-
 namespace {
 
 // The sweep's order: by y, then x (an infinitesimal rotation that makes every edge rise or fall).

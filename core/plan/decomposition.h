@@ -5,6 +5,7 @@
 #include "core/geo/types.h"
 #include "core/result.h"
 
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -12,9 +13,13 @@ namespace pf::plan {
 
 // The sweep frame: world coordinates rotated so that the lanes run along the frame's x axis.
 struct SweepFrame {
+    SweepFrame() = default;
+    explicit SweepFrame(double angle) : angleRad(angle), cosA(std::cos(angle)), sinA(std::sin(angle)) {}
     double angleRad = 0.0; // lane direction, counter-clockwise from east
-    geo::Vec2 toFrame(const geo::Vec2& p) const;
-    geo::Vec2 toWorld(const geo::Vec2& p) const;
+    // Its cosine and sine, computed once: the planner turns every lane point and photo through the frame.
+    double cosA = 1.0, sinA = 0.0;
+    geo::Vec2 toFrame(const geo::Vec2& p) const { return {cosA * p.x() + sinA * p.y(), -sinA * p.x() + cosA * p.y()}; }
+    geo::Vec2 toWorld(const geo::Vec2& p) const { return {cosA * p.x() - sinA * p.y(), sinA * p.x() + cosA * p.y()}; }
 };
 
 // One cell, in the sweep frame: every horizontal line between ylo and yhi meets it in one interval
