@@ -351,7 +351,7 @@ int dropCoveredLanes(const Decomposition& d, std::vector<std::vector<CellLane>>&
             for (double b = -hc + 0.5 * r; covered && b < hc; b += r)
                 for (double a = -ha + 0.5 * r; covered && a < ha; a += r) {
                     const Vec2 q = own[k] + a * u + b * v;
-                    if (ground.insideArea(q) && !ground.inZone(q) && !seen(q))
+                    if (!seen(q) && ground.insideArea(q) && !ground.inZone(q))
                         covered = false;
                 }
         }
