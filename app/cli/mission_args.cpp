@@ -66,15 +66,39 @@ Result<std::vector<io::ImportedPolygon>> polygonsOf(const std::string& path, con
     return polys;
 }
 
-Result<geo::GeoPolygon> areaFrom(const std::string& path, const std::string& flag) {
+// The area of an area file, and its no-fly zones where the file marks them: a file of several
+// polygons is an area with zones when exactly one has the attribute role "area" and every other has
+// role "nofly" (the files `eval --generate` writes and the sample areas).
+struct AreaFile {
+    geo::GeoPolygon area;
+    std::vector<mission::NoFlyZone> noFly;
+};
+
+Result<AreaFile> areaFrom(const std::string& path, const std::string& flag) {
     auto polys = polygonsOf(path, flag);
     if (!polys)
         return polys.error();
-    if (polys->size() > 1)
-        return makeError(ErrorCode::InvalidInput,
-                         (flag.empty() ? "" : "--" + flag + ": ") + path + " holds " + std::to_string(polys->size()) +
-                             " polygons, but the area must be a single polygon (give no-fly zones with --nofly FILE)");
-    return polys->front().polygon;
+    if (polys->size() == 1)
+        return AreaFile{polys->front().polygon, {}};
+    AreaFile out;
+    std::size_t areas = 0;
+    bool roles = true;
+    for (auto& p : *polys) {
+        if (p.role == "area") {
+            ++areas;
+            out.area = p.polygon;
+        } else if (p.role == "nofly") {
+            out.noFly.push_back({p.name, p.polygon});
+        } else {
+            roles = false;
+        }
+    }
+    if (roles && areas == 1)
+        return out;
+    return makeError(ErrorCode::InvalidInput,
+                     (flag.empty() ? "" : "--" + flag + ": ") + path + " holds " + std::to_string(polys->size()) +
+                         " polygons, but the area must be a single polygon (give no-fly zones with --nofly FILE, or "
+                         "mark one polygon with the attribute role \"area\" and the zones with role \"nofly\")");
 }
 
 const io::Catalog* catalogOrError(std::optional<io::Catalog>& cache, Error* err) {
@@ -349,7 +373,8 @@ Result<MissionInput> missionFromArgs(const Args& args, std::size_t positional) {
             auto area = areaFrom(in.source, "");
             if (!area)
                 return area.error();
-            m.area = std::move(area).value();
+            m.area = std::move(area->area);
+            m.noFlyZones = std::move(area->noFly);
             m.name = stem(in.source);
         }
     }
@@ -357,7 +382,9 @@ Result<MissionInput> missionFromArgs(const Args& args, std::size_t positional) {
         auto area = areaFrom(*a, "area");
         if (!area)
             return area.error();
-        m.area = std::move(area).value();
+        m.area = std::move(area->area);
+        for (auto& z : area->noFly)
+            m.noFlyZones.push_back(std::move(z));
         if (in.source.empty()) {
             in.source = *a;
             m.name = stem(*a);

@@ -127,6 +127,15 @@ std::string featureName(OGRFeature& f, OGRLayer& layer) {
     return std::string(layer.GetName()) + " #" + std::to_string(f.GetFID());
 }
 
+std::string featureRole(OGRFeature& f) {
+    const int idx = f.GetFieldIndex("role");
+    if (idx < 0 || !f.IsFieldSetAndNotNull(idx))
+        return {};
+    std::string v = f.GetFieldAsString(idx);
+    std::transform(v.begin(), v.end(), v.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return v;
+}
+
 } // namespace
 
 namespace detail {
@@ -251,10 +260,12 @@ Result<std::vector<ImportedPolygon>> importPolygons(const std::string& path) {
             std::vector<geo::GeoPolygon> polys;
             collectPolygons(g.get(), polys, otherGeometries);
             const std::string name = featureName(*feature, *layer);
+            const std::string role = featureRole(*feature);
             for (std::size_t i = 0; i < polys.size(); ++i) {
                 ImportedPolygon ip;
                 ip.name = polys.size() == 1 ? name : name + " (part " + std::to_string(i + 1) + ")";
                 ip.layer = layer->GetName();
+                ip.role = role;
                 ip.polygon = std::move(polys[i]);
                 out.push_back(std::move(ip));
             }

@@ -13,6 +13,9 @@ struct ImportedPolygon {
     std::string name;  // feature name or "<layer> #<fid>"
     std::string layer;
     geo::GeoPolygon polygon; // WGS84 lon/lat, 2D, one per polygon (multipolygons are split)
+    // The feature's "role" attribute, lower case, where it has one: "area" or "nofly" in the area
+    // files that `eval --generate` writes and the sample areas; empty otherwise.
+    std::string role;
 };
 
 // Reads every polygon of every layer, reprojected to WGS84 from the file's CRS, flattened to 2D.

@@ -54,6 +54,18 @@ TEST(CliValidate, BadPolygonsNameTheProblemAndWhere) {
                    "area_two_polygons.geojson holds 2 polygons, but the area must be a single polygon");
 }
 
+// An area file whose polygons carry the attribute role ("area", "nofly"), as the sample areas and
+// the generated sets do, is an area with its no-fly zones; without the roles it stays an error.
+TEST(CliValidate, AreaFileWithRolesBringsItsZones) {
+    const CliRun r = cli(std::string("validate '") + PF_RESOURCES_DIR + "/areas/d_nofly.geojson'");
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(has(r.out, "(area minus 5 no-fly zones)")) << r.out;
+    const CliRun extra = cli(std::string("validate '") + PF_RESOURCES_DIR + "/areas/d_nofly.geojson' --nofly " +
+                             data("cli/nofly_warehouse.geojson"));
+    EXPECT_EQ(extra.code, 0) << extra.err;
+    EXPECT_TRUE(has(extra.out, "6 no-fly zones")) << extra.out;
+}
+
 TEST(CliValidate, CoordinatesOutOfRange) {
     // Swapped lon/lat: the mission reader or the validation names the coordinate.
     const CliRun r = cli("validate " + data("bad/area_out_of_range.json"));
