@@ -47,7 +47,8 @@
     "  --gsd CM                     wanted ground sample distance in cm/px (sets the altitude instead)\n" \
     "  --overlap F                  front and side overlap, in [0, 1): 0.7 means 70 %\n" \
     "  --front F, --side F          front (along the track) and side (between tracks) overlap apart\n" \
-    "  --planner NAME               stride (default), raster or wavefront\n" \
+    "  --planner NAME               auto (default: per aircraft the planner that flies soonest), sweep,\n" \
+    "                               stride, raster, wavefront or lawnmower (the Survey reference)\n" \
     "  --grid-angle DEG|auto        grid rotation in degrees counter-clockwise from east, or auto\n" \
     "  --home LON,LAT               take-off and landing point (WGS84 degrees)\n" \
     "  --aircraft NAME[:ALT_M]      a catalog aircraft with its default camera and optionally its own\n" \
