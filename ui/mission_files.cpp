@@ -11,8 +11,6 @@
 #include "ui/commands/set_area_command.h"
 #include "ui/mission_document.h"
 
-#include <algorithm>
-
 #include <QPushButton>
 #include <QCoreApplication>
 #include <QFileDialog>
@@ -281,11 +279,14 @@ int MissionFiles::importAreas(const QString& path, ImportRole role, QString* err
     // The polygon whose attribute role is "area" is the area (the sample and generated area files);
     // without one, the largest (an area file often carries small features beside it).
     std::size_t largest = 0;
-    const auto roleArea = std::count_if(polys.begin(), polys.end(), [](const auto& p) { return p.role == "area"; });
-    if (areaFromFile && roleArea == 1) {
-        largest = std::size_t(std::find_if(polys.begin(), polys.end(), [](const auto& p) { return p.role == "area"; }) -
-                              polys.begin());
-    } else if (areaFromFile) {
+    std::size_t roleAreas = 0;
+    for (std::size_t i = 0; i < polys.size(); ++i)
+        if (polys[i].role == "area") {
+            ++roleAreas;
+            largest = i;
+        }
+    if (areaFromFile && roleAreas != 1) {
+        largest = 0;
         double best = -1;
         for (std::size_t i = 0; i < polys.size(); ++i) {
             const double a = geo::groundAreaM2(polys[i].polygon);
