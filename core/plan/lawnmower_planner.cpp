@@ -13,9 +13,8 @@ namespace pf::plan {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-// The angle search's coverage check: a coarser raster than the final check (1 m pixels against 0.5 m),
-// and at most this many of the fastest candidates.
-constexpr double kSearchCoverageResolutionM = 1.0;
+// The angle search's coverage check (LawnmowerOptions::searchCoverageResolutionM, by default a coarser
+// raster than the final check: 1 m pixels against 0.5 m) at most this many of the fastest candidates.
 constexpr std::size_t kMaxCoverageChecks = 40;
 // Transects across the area (or photos along a transect) beyond which the search would take minutes.
 constexpr double kMaxTransectsAcross = 20000.0;
@@ -243,7 +242,7 @@ Result<LawnmowerPlan> planLawnmower(const geo::MultiPolygon& area, const Lawnmow
     if (checkCover) {
         // The fastest candidate whose photos see enough of the area; the best-covering one if none does.
         CoverageCheckOptions co;
-        co.resolutionM = kSearchCoverageResolutionM;
+        co.resolutionM = o.searchCoverageResolutionM;
         // An angle whose fastest entry misses the target is not tried with its other entries (they fly
         // the same transects; only the trigger points shift).
         std::vector<char> failed(angles.size(), 0);

@@ -31,6 +31,9 @@ struct LawnmowerOptions {
     double footprintAcrossM = 0.0;
     double footprintAlongM = 0.0;
     double minCoverage = 0.995;
+    // The search's coverage raster (pixel side in metres, > 0): 1 m by default; a planner that only
+    // wants the Survey's direction as a candidate of its own checks coarser.
+    double searchCoverageResolutionM = 1.0;
 };
 
 struct LawnmowerPlan {

@@ -32,6 +32,10 @@ struct SweepOptions {
     double coarseStepDeg = 15.0;            // > 0
     int edgeDirections = 4;                 // >= 0
     int plannedDirections = 3;              // >= 1
+    // Also plan in full the directions a Survey would fly over the region (plan::planLawnmower's
+    // fastest angle, and its fastest whose photos see the area; the zones ignored), however the quick
+    // estimate ranks them; only without anglesDeg.
+    bool surveyDirection = true;
     bool mergeCells = true;                 // merge neighbouring cells that one pattern covers
     bool improveOrder = true;               // local search after the nearest-neighbour construction
     int maxOrderRounds = 50;                // local-search passes, >= 0
@@ -59,6 +63,9 @@ struct SweepOptions {
 struct SweepStats {
     int directionsEstimated = 0;
     int directionsPlanned = 0;
+    std::optional<double> surveyAngleDeg;   // the Survey's direction over the region whose photos see it,
+                                            // when searched
+    bool surveyDirectionPlanned = false;    // it was among the directions planned in full
     double angleDeg = 0.0;                  // the chosen lane direction, counter-clockwise from east, [0, 180)
     int cellsBeforeMerge = 0;               // decomposition cells (chosen direction)
     int cellsAfterMerge = 0;

@@ -171,13 +171,19 @@ TEST(SpotPhotos, TheSweepSeesMoreAndStaysOutOfTheMargins) {
         SweepOptions o = options(cam);
         o.home = geo::bounds(a.region).min;
         // The same lanes with and without spot photos: the cells' own spacing only (shared lines are
-        // kept only when their spot photos complete them, tested in sweep_planner_test).
+        // kept only when their spot photos complete them, tested in sweep_planner_test), and the
+        // direction the planner chooses with them (it compares the finished flights, spot photos
+        // included, so without them it may choose another).
         o.sharedLines = false;
+        auto chosen = planSweep(a.region, a.zones, o);
+        ASSERT_TRUE(chosen.ok()) << a.name;
+        o.anglesDeg = {chosen->stats.angleDeg};
         o.spotPhotos = false;
         auto without = planSweep(a.region, a.zones, o);
         o.spotPhotos = true;
         auto with = planSweep(a.region, a.zones, o);
         ASSERT_TRUE(with.ok() && without.ok()) << a.name;
+        EXPECT_EQ(photoCount(*with), photoCount(*chosen)) << a.name;
         double unseenWith = 0.0, unseenWithout = 0.0;
         const double covWith = coverage(a, *with, cam, &unseenWith);
         const double covWithout = coverage(a, *without, cam, &unseenWithout);
