@@ -387,25 +387,38 @@ TEST(SweepPlanner, SharedLinesKeptOnlyWhenFasterAndAsComplete) {
     EXPECT_LT(photosShared, photosOwn);
 }
 
-// The eval's generated set: on a slanted outline, shared lines once left 900 m2 along the edge that
-// the spot photos (which look round the zones) do not reach; the kept plan must see as much as the
-// cells' own lanes on every area.
-TEST(SweepPlanner, SharedLinesNeverLeaveMoreUnseenOnTheEvalSet) {
-    const Camera cam;
+// The eval's generated areas (seed 1, the first `count`) in local metres.
+static std::vector<Area> evalSet(int count) {
     AreaGeneratorOptions go;
-    go.count = 40;
+    go.count = count;
     go.seed = 1;
     auto areas = generateAreas(go);
-    ASSERT_TRUE(areas.ok());
-    int kept = 0;
+    EXPECT_TRUE(areas.ok());
+    std::vector<Area> out;
+    if (!areas.ok())
+        return out;
     for (const auto& g : *areas) {
         auto frame = geo::LocalFrame::forArea(g.area.area);
-        ASSERT_TRUE(frame.ok());
+        EXPECT_TRUE(frame.ok()) << g.area.name;
+        if (!frame.ok())
+            continue;
         Area a;
         a.name = g.area.name;
         a.region = {frame->toLocal(g.area.area)};
         for (const auto& z : g.area.noFly)
             a.zones.push_back(frame->toLocal(z));
+        out.push_back(std::move(a));
+    }
+    return out;
+}
+
+// The eval's generated set: on a slanted outline, shared lines once left 900 m2 along the edge that
+// the spot photos (which look round the zones) do not reach; the kept plan must see as much as the
+// cells' own lanes on every area.
+TEST(SweepPlanner, SharedLinesNeverLeaveMoreUnseenOnTheEvalSet) {
+    const Camera cam;
+    int kept = 0;
+    for (const Area& a : evalSet(40)) {
         if (a.zones.empty())
             continue;
         auto k = compareLaneKinds(a, cam);
@@ -423,22 +436,10 @@ TEST(SweepPlanner, SharedLinesNeverLeaveMoreUnseenOnTheEvalSet) {
 // by much; the plans stay safe and complete.
 TEST(SweepPlanner, SurveyDirectionPlannedAndFasterOnTheEvalSet) {
     const Camera cam;
-    AreaGeneratorOptions go;
-    go.count = 24;
-    go.seed = 1;
-    auto areas = generateAreas(go);
-    ASSERT_TRUE(areas.ok());
     double withTotal = 0, withoutTotal = 0;
     std::vector<double> ratios;
     int chosen = 0;
-    for (const auto& g : *areas) {
-        auto frame = geo::LocalFrame::forArea(g.area.area);
-        ASSERT_TRUE(frame.ok());
-        Area a;
-        a.name = g.area.name;
-        a.region = {frame->toLocal(g.area.area)};
-        for (const auto& z : g.area.noFly)
-            a.zones.push_back(frame->toLocal(z));
+    for (const Area& a : evalSet(24)) {
         SweepOptions o = options(cam);
         o.home = geo::bounds(a.region).min;
         auto with = planSweep(a.region, a.zones, o);
