@@ -9,6 +9,11 @@ namespace pf::plan::sweep_detail {
 
 using geo::Vec2;
 
+bool sameDirection(double aDeg, double bDeg) {
+    const double dd = std::fabs(std::fmod(aDeg - bDeg, 180.0));
+    return std::min(dd, 180.0 - dd) < 0.5;
+}
+
 std::vector<double> candidateDirections(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
                                         const SweepOptions& opt) {
     std::vector<double> angles;
@@ -16,11 +21,9 @@ std::vector<double> candidateDirections(const geo::MultiPolygon& region, const s
         deg = std::fmod(deg, 180.0);
         if (deg < 0)
             deg += 180.0;
-        for (double a : angles) {
-            const double dd = std::fabs(a - deg);
-            if (std::min(dd, 180.0 - dd) < 0.5)
+        for (double a : angles)
+            if (sameDirection(a, deg))
                 return;
-        }
         angles.push_back(deg);
     };
     if (!opt.anglesDeg.empty()) {

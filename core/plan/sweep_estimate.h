@@ -11,6 +11,9 @@
 
 namespace pf::plan::sweep_detail {
 
+// Whether two directions (degrees) are the same lane direction: within half a degree, modulo 180.
+bool sameDirection(double aDeg, double bDeg);
+
 // The directions to estimate, degrees counter-clockwise from east in [0, 180), none twice (within
 // half a degree): opt.anglesDeg when given, else the directions of the opt.edgeDirections longest
 // edges of the region and of the zones, then every opt.coarseStepDeg.

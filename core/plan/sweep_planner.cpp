@@ -149,13 +149,11 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     std::optional<double> surveyAngle;
     std::vector<double> alwaysPlanned; // the Survey's directions, as angles of the candidates
     auto keepAngle = [&](double deg) {
-        for (double a : angles) {
-            const double dd = std::fabs(a - deg);
-            if (std::min(dd, 180.0 - dd) < 0.5) {
+        for (double a : angles)
+            if (sameDirection(a, deg)) {
                 alwaysPlanned.push_back(a);
                 return a;
             }
-        }
         angles.push_back(deg);
         alwaysPlanned.push_back(deg);
         return deg;
@@ -665,10 +663,11 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     };
     // The fastest finished flight of one kind of lanes: the search's best, then the others in order of
     // their search's time while that is below the fastest finished so far (a finished flight is never
-    // faster than its search's time: the photographed turns and spot photos only add). What finishing adds
-    // differs a lot between directions (on a generated area with 19 zones: 1033 s searched, 1308 s
-    // finished at 60 degrees; 1036 s and 1207 s at 57.9): the search's time alone picked the slower. An own-lanes plan that leaves more
-    // ground to the wedges than allowed is not taken over one that does not.
+    // faster than its search's time: the photographed turns and spot photos only add). What finishing
+    // adds differs a lot between directions (on a generated area with 19 zones: 1033 s searched, 1308 s
+    // finished at 60 degrees; 1036 s and 1207 s at 57.9): the search's time alone picked the slower.
+    // An own-lanes plan that leaves more ground to the wedges than allowed is not taken over one that
+    // does not.
     auto finishFastest = [&](FullPlan& first, std::vector<std::unique_ptr<FullPlan>>& others, bool ownLanes,
                              double beatS = kInf) {
         SweepPlan fastest = finish(first);
