@@ -25,6 +25,48 @@ bool straightThrough(const geo::Vec2& a, const geo::Vec2& b, const geo::Vec2& c)
     return std::abs(cr) <= 1e-6 * u.norm() * v.norm() && u.dot(v) >= 0;
 }
 
+// Signed area of a ring (positive when counter-clockwise).
+double signedArea(const geo::Ring& r) {
+    double s = 0;
+    for (std::size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
+        s += r[j].x() * r[i].y() - r[i].x() * r[j].y();
+    return 0.5 * s;
+}
+
+// The area of the intersection of two convex rings (Sutherland-Hodgman: `a` clipped by each edge
+// of `b`). The footprints are rectangles, so this is exact up to rounding.
+double convexOverlapArea(const geo::Ring& a, const geo::Ring& b) {
+    const double orient = signedArea(b) >= 0 ? 1.0 : -1.0;
+    geo::Ring cur = a, next;
+    for (std::size_t i = 0, j = b.size() - 1; i < b.size() && !cur.empty(); j = i++) {
+        const geo::Vec2 p = b[j], d = b[i] - b[j];
+        const auto side = [&](const geo::Vec2& q) { return orient * (d.x() * (q.y() - p.y()) - d.y() * (q.x() - p.x())); };
+        next.clear();
+        for (std::size_t k = 0, l = cur.size() - 1; k < cur.size(); l = k++) {
+            const double sl = side(cur[l]), sk = side(cur[k]);
+            if ((sl >= 0) != (sk >= 0))
+                next.push_back(cur[l] + (sl / (sl - sk)) * (cur[k] - cur[l]));
+            if (sk >= 0)
+                next.push_back(cur[k]);
+        }
+        std::swap(cur, next);
+    }
+    return cur.size() < 3 ? 0.0 : std::abs(signedArea(cur));
+}
+
+// Whether every corner of `a` lies inside the convex ring `b` (within `tol` metres of its edges).
+bool convexContains(const geo::Ring& b, const geo::Ring& a, double tol) {
+    const double orient = signedArea(b) >= 0 ? 1.0 : -1.0;
+    for (std::size_t i = 0, j = b.size() - 1; i < b.size(); j = i++) {
+        const geo::Vec2 p = b[j], d = b[i] - b[j];
+        const double len = d.norm();
+        for (const auto& q : a)
+            if (orient * (d.x() * (q.y() - p.y()) - d.y() * (q.x() - p.x())) < -tol * len)
+                return false;
+    }
+    return true;
+}
+
 } // namespace
 
 Result<DedupReport> dropDuplicatePhotos(std::vector<AircraftPhotos>& fleet) {
@@ -87,8 +129,20 @@ Result<DedupReport> dropDuplicatePhotos(std::vector<AircraftPhotos>& fleet) {
             if (cover.empty())
                 continue;
             const double effArea = fleet[k].effectiveAcrossM * fleet[k].effectiveAlongM;
-            if (geo::area(geo::difference(eff, cover)) > 1e-6 * effArea)
-                continue;
+            // Exact shortcuts before the polygon difference (most photos near a subarea's edge are
+            // decided by them): inside one photo of the neighbour, it is covered; if the overlaps
+            // with the neighbours' photos do not even add up to the photo's area, it is not.
+            const bool inOne = std::any_of(cover.begin(), cover.end(),
+                                           [&](const geo::Polygon& c) { return convexContains(c.outer, eff.outer, 1e-9); });
+            if (!inOne) {
+                double overlaps = 0;
+                for (const auto& c : cover)
+                    overlaps += convexOverlapArea(eff.outer, c.outer);
+                if (overlaps < (1.0 - 1e-5) * effArea)
+                    continue;
+                if (geo::area(geo::difference(eff, cover)) > 1e-6 * effArea)
+                    continue;
+            }
             kept[static_cast<std::size_t>(id)] = 0;
             for (int c : coverIds)
                 pinned[static_cast<std::size_t>(c)] = 1;

@@ -149,3 +149,56 @@ TEST(PhotoDedup, BadFootprintIsRejected) {
     ASSERT_FALSE(rep.ok());
     EXPECT_EQ(rep.error().message, "Aircraft 1 has a photo footprint side that is not positive.");
 }
+
+namespace {
+
+AircraftPhotos photosAt(std::vector<std::pair<Vec2, double>> posHeading, double effAcross, double effAlong,
+                        double realAcross, double realAlong) {
+    AircraftPhotos a;
+    a.effectiveAcrossM = effAcross;
+    a.effectiveAlongM = effAlong;
+    a.realAcrossM = realAcross;
+    a.realAlongM = realAlong;
+    for (const auto& [p, h] : posHeading) {
+        route::LocalWaypoint w;
+        w.pos = p;
+        w.headingDeg = h;
+        a.waypoints.push_back(w);
+    }
+    return a;
+}
+
+} // namespace
+
+// The three ways a photo is decided: inside one neighbour's photo (even turned 45 degrees to it),
+// under two neighbours' photos together (neither alone covers it), and under two photos whose
+// overlaps add up to more than its area while a strip of it stays unseen.
+TEST(PhotoDedup, CoveredAloneJointlyOrNotAtAll) {
+    // A 10 x 10 m effective footprint at (5, 5), heading 45: its corners 7.07 m from the centre,
+    // inside a 16 x 16 m photo of the other aircraft.
+    {
+        std::vector<AircraftPhotos> fleet{photosAt({{Vec2(5, 5), 45}}, 10, 10, 12, 12),
+                                          photosAt({{Vec2(5, 5), 0}}, 11, 11, 16, 16)};
+        auto rep = dropDuplicatePhotos(fleet);
+        ASSERT_TRUE(rep.ok());
+        EXPECT_EQ(rep->photosSaved[0], 1);
+    }
+    // Heading 90: along = x. Two 14 x 8 m photos at y 2 and 8 span y -2..12 together.
+    {
+        std::vector<AircraftPhotos> fleet{photosAt({{Vec2(5, 5), 90}}, 10, 10, 12, 12),
+                                          photosAt({{Vec2(5, 2), 90}, {Vec2(5, 8), 90}}, 11, 11, 8, 14)};
+        auto rep = dropDuplicatePhotos(fleet);
+        ASSERT_TRUE(rep.ok());
+        EXPECT_EQ(rep->photosSaved[0], 1);
+        EXPECT_EQ(photoCount(fleet[1]), 2);
+    }
+    // At y 3 and 3.5 they see 70 and 75 m2 of the 100 m2, 145 m2 in all, but nothing above y 7.5.
+    {
+        std::vector<AircraftPhotos> fleet{photosAt({{Vec2(5, 5), 90}}, 10, 10, 12, 12),
+                                          photosAt({{Vec2(5, 3), 90}, {Vec2(5, 3.5), 90}}, 11, 11, 8, 14)};
+        auto rep = dropDuplicatePhotos(fleet);
+        ASSERT_TRUE(rep.ok());
+        EXPECT_EQ(rep->photosSaved[0], 0);
+        EXPECT_EQ(photoCount(fleet[0]), 1);
+    }
+}
