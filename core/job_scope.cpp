@@ -13,6 +13,8 @@ JobScope::JobScope(Progress* progress, double lo, double hi, std::string prefix)
     t_scope = this;
 }
 
+JobScope::JobScope(Progress* progress, CancelOnly) : JobScope(progress) { m_silent = true; }
+
 JobScope::JobScope(double lo, double hi, const std::string& prefix) : m_outer(t_scope) {
     const JobScope* o = m_outer;
     m_progress = o ? o->m_progress : nullptr;
@@ -20,6 +22,7 @@ JobScope::JobScope(double lo, double hi, const std::string& prefix) : m_outer(t_
     m_lo = olo + (ohi - olo) * lo;
     m_hi = olo + (ohi - olo) * hi;
     m_prefix = (o ? o->m_prefix : std::string()) + prefix;
+    m_silent = o && o->m_silent;
     t_scope = this;
 }
 
@@ -39,7 +42,7 @@ void reportProgress(double fraction, const std::string& stage) {
 }
 
 void JobScope::report(double fraction, const std::string& stage) const {
-    if (m_progress)
+    if (m_progress && !m_silent)
         m_progress->report(m_lo + (m_hi - m_lo) * std::clamp(fraction, 0.0, 1.0), m_prefix + stage);
 }
 

@@ -20,6 +20,10 @@ public:
     // Installs `progress` (may be null: nothing to report, never cancelled) for this thread,
     // reporting into [lo, hi] of it with `prefix` before each stage name.
     explicit JobScope(Progress* progress, double lo = 0.0, double hi = 1.0, std::string prefix = {});
+    // For a worker thread that does a side job beside the one reporting: it stops when `progress`
+    // is cancelled, but its reports (and those of scopes nested in it) go nowhere.
+    struct CancelOnly {};
+    JobScope(Progress* progress, CancelOnly);
     // A part [lo, hi] of the current scope's range (of this thread), its stage names prefixed.
     JobScope(double lo, double hi, const std::string& prefix = {});
     ~JobScope();
@@ -36,6 +40,7 @@ private:
     double m_lo;
     double m_hi;
     std::string m_prefix;
+    bool m_silent = false;
     JobScope* m_outer;
 };
 

@@ -5,11 +5,24 @@
 #include "core/geo/polygon_ops.h"
 #include "core/grid/grid.h"
 
+#include <algorithm>
+
 namespace pf::fleet {
 
 Result<AreaSplit> splitArea(const geo::Polygon& area, const std::vector<geo::Polygon>& noFly,
                             const std::vector<Capability>& fleet, const AreaSplitOptions& opt,
                             const RegionTimeEstimator& estimate) {
+    CellsTimeEstimator byCells;
+    if (estimate)
+        byCells = [&](int k, const std::vector<int>& cells, const grid::Grid& base) {
+            return estimate(k, cellsPolygon(base, cells, base.admissible()));
+        };
+    return splitArea(area, noFly, fleet, opt, byCells);
+}
+
+Result<AreaSplit> splitArea(const geo::Polygon& area, const std::vector<geo::Polygon>& noFly,
+                            const std::vector<Capability>& fleet, const AreaSplitOptions& opt,
+                            const CellsTimeEstimator& estimate) {
     const double areaM2 = geo::area(area);
     AreaSplit out;
     auto shares = capabilityShares(fleet, areaM2);
@@ -39,7 +52,9 @@ Result<AreaSplit> splitArea(const geo::Polygon& area, const std::vector<geo::Pol
     if (estimate) {
         auto rep = balanceByTime(out.base, out.partition,
                                  [&](int k, const std::vector<int>& cells) -> Result<double> {
-                                     return estimate(k, cellsPolygon(out.base, cells, admissible));
+                                     std::vector<int> sorted = cells;
+                                     std::sort(sorted.begin(), sorted.end());
+                                     return estimate(k, sorted, out.base);
                                  },
                                  opt.balance);
         if (!rep)

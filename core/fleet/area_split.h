@@ -25,6 +25,13 @@ struct AreaSplitOptions {
 // single-aircraft planner.
 using RegionTimeEstimator = std::function<Result<double>(int aircraft, const geo::MultiPolygon& subarea)>;
 
+// The same given the subarea as cells of the split's base grid (sorted, with the grid to make its
+// polygon from: cellsPolygon(base, cells, base.admissible())): for a caller that remembers estimates
+// across splits of one area (the base grid is the same for the same area, zones, fleet and options,
+// and a balance search asks for the same subareas again, round after round).
+using CellsTimeEstimator =
+    std::function<Result<double>(int aircraft, const std::vector<int>& sortedCells, const grid::Grid& base)>;
+
 struct AreaSplit {
     double baseCellSizeM = 0.0;
     std::vector<double> shares;             // capability shares (paper 001, section V.A)
@@ -42,5 +49,8 @@ struct AreaSplit {
 Result<AreaSplit> splitArea(const geo::Polygon& area, const std::vector<geo::Polygon>& noFly,
                             const std::vector<Capability>& fleet, const AreaSplitOptions& opt = {},
                             const RegionTimeEstimator& estimate = nullptr);
+Result<AreaSplit> splitArea(const geo::Polygon& area, const std::vector<geo::Polygon>& noFly,
+                            const std::vector<Capability>& fleet, const AreaSplitOptions& opt,
+                            const CellsTimeEstimator& estimate);
 
 } // namespace pf::fleet

@@ -35,6 +35,29 @@ TEST(AutoChoice, NeverFinishesLaterThanAPlannerItChoseFrom) {
     EXPECT_FALSE(chosen->plannerChoice.empty());
 }
 
+// The whole mission planned with each planner alone runs on worker threads beside the automatic
+// choice: the plan is the same, waypoint for waypoint, however the threads were scheduled.
+TEST(AutoChoice, FleetPlanIsTheSameEveryTime) {
+    auto m = io::readMissionFile(std::string(PF_RESOURCES_DIR) + "/demo/demo_mission.json");
+    ASSERT_TRUE(m.ok()) << m.error().message;
+    m->options.planner = PlannerKind::Auto;
+    auto first = planMission(*m);
+    ASSERT_TRUE(first.ok()) << first.error().message;
+    for (int run = 0; run < 2; ++run) {
+        auto again = planMission(*m);
+        ASSERT_TRUE(again.ok()) << again.error().message;
+        EXPECT_EQ(again->plannerChoice, first->plannerChoice);
+        ASSERT_EQ(again->aircraft.size(), first->aircraft.size());
+        for (std::size_t k = 0; k < first->aircraft.size(); ++k) {
+            const auto& a = first->aircraft[k].localWaypoints;
+            const auto& b = again->aircraft[k].localWaypoints;
+            ASSERT_EQ(a.size(), b.size()) << "aircraft " << k;
+            for (std::size_t i = 0; i < a.size(); ++i)
+                ASSERT_EQ(a[i].pos, b[i].pos) << "aircraft " << k << " waypoint " << i;
+        }
+    }
+}
+
 // The CLI's plan of an area file with the given aircraft and planner; the makespan, coverage and
 // margin breaches from its metrics.json.
 struct CliPlan {

@@ -1,5 +1,6 @@
 // Tests that a cancelled plan stops in every stage of the chain, well before the plan would have ended.
 #include "core/geo/local_frame.h"
+#include "core/io/mission_file.h"
 #include "core/mission/plan_mission.h"
 #include "core/progress.h"
 #include "tests/sample_missions.h"
@@ -72,4 +73,28 @@ TEST(PlanCancel, StopsInEveryStageWellBeforeThePlanWouldEnd) {
         EXPECT_EQ(plan.error().code, ErrorCode::Cancelled) << stage;
         EXPECT_LT(latency, 0.5 * rest) << stage << ": the plan needed " << rest << " s more";
     }
+}
+
+// The demo's two aircraft under the automatic choice: the whole mission is planned with each
+// planner alone on worker threads beside the per-aircraft choice. Cancelled at its first report,
+// the plan returns Cancelled, every worker stopped too, in a fraction of the whole plan's time.
+TEST(PlanCancel, AutomaticFleetPlanStopsItsWorkerThreads) {
+    auto m = io::readMissionFile(std::string(PF_RESOURCES_DIR) + "/demo/demo_mission.json");
+    ASSERT_TRUE(m.ok()) << m.error().message;
+    ASSERT_GE(m->aircraft.size(), 2u);
+    m->options.planner = PlannerKind::Auto;
+    const auto t0 = Clock::now();
+    auto full = planMission(*m);
+    const double whole = std::chrono::duration<double>(Clock::now() - t0).count();
+    ASSERT_TRUE(full) << full.error().message;
+    Progress* self = nullptr;
+    Progress progress([&](double, const std::string&) { self->cancel(); });
+    self = &progress;
+    const auto t1 = Clock::now();
+    auto plan = planMission(*m, &progress);
+    const double took = std::chrono::duration<double>(Clock::now() - t1).count();
+    ASSERT_TRUE(progress.cancelled());
+    ASSERT_FALSE(plan);
+    EXPECT_EQ(plan.error().code, ErrorCode::Cancelled);
+    EXPECT_LT(took, 0.5 * whole) << "the whole plan took " << whole << " s";
 }
