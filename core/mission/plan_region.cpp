@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 
 namespace pf::mission {
 
@@ -109,9 +110,33 @@ constexpr double kCoarseAboveCells = 500'000;
 constexpr double kCoarseCells = 60'000;
 constexpr std::size_t kCoarseKeep = 3;
 
+// The grids the grid planners built over one region, by angle and cell size: under the automatic
+// choice stride and raster plan the same region on the same grids (every candidate angle when the
+// angle is searched), so the second finds them built. Bounded by the cells it holds.
+class GridCache {
+public:
+    static constexpr double kMaxCells = 2'000'000;
+    const grid::Grid* find(double angle, double cellSize) const {
+        const auto it = m_grids.find({angle, cellSize});
+        return it == m_grids.end() ? nullptr : &it->second;
+    }
+    void keep(double angle, double cellSize, const grid::Grid& g) {
+        const double cells = static_cast<double>(g.cellCount());
+        if (m_cells + cells > kMaxCells)
+            return;
+        m_cells += cells;
+        m_grids.emplace(std::make_pair(angle, cellSize), g);
+    }
+
+private:
+    std::map<std::pair<double, double>, grid::Grid> m_grids;
+    double m_cells = 0;
+};
+
 Result<AircraftPlan> gridRegion(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
                                 const Aircraft& a, PlannerKind kind, const PlannerOptions& options,
-                                const std::optional<geo::Vec2>& home, const std::optional<geo::Vec2>& landing) {
+                                const std::optional<geo::Vec2>& home, const std::optional<geo::Vec2>& landing,
+                                GridCache* cache) {
     std::vector<double> angles =
         options.gridAngleDeg ? std::vector<double>{*options.gridAngleDeg} : candidateAngles(region);
     plan::PlanOptions popt;
@@ -123,13 +148,19 @@ Result<AircraftPlan> gridRegion(const geo::MultiPolygon& region, const std::vect
     mopt.diagonalSteps = popt.kind == plan::PlannerKind::Wavefront && popt.wavefront.moore;
     mopt.turnLowerBound = false;
     // The grid at an angle and cell size, and the cell path's request on it (from and back to home).
-    auto buildGrid = [&](double angle, double cellSize) {
+    auto buildGrid = [&](double angle, double cellSize) -> Result<grid::Grid> {
+        if (cache)
+            if (const grid::Grid* known = cache->find(angle, cellSize))
+                return *known;
         grid::GridOptions gopt;
         gopt.cellSize = cellSize;
         gopt.angleDeg = angle;
         gopt.safetyMarginM = options.safetyMarginM;
         gopt.maxCells = options.maxCells;
-        return grid::Grid::build(region, noFly, gopt);
+        auto g = grid::Grid::build(region, noFly, gopt);
+        if (g && cache)
+            cache->keep(angle, cellSize, *g);
+        return g;
     };
     auto requestOn = [&](const grid::Grid& g) {
         plan::CoverageRequest req;
@@ -339,7 +370,7 @@ std::string minutes(double s) {
 Result<AircraftPlan> planOne(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly, const Aircraft& a,
                              PlannerKind kind, const PlannerOptions& options, const geo::LocalFrame& frame,
                              const std::optional<geo::Vec2>& home, const std::optional<geo::Vec2>& landing,
-                             const route::LaneSpacingFn& laneSpacing) {
+                             const route::LaneSpacingFn& laneSpacing, GridCache* grids = nullptr) {
     Result<AircraftPlan> p = makeError(ErrorCode::Internal, "no planner");
     switch (kind) {
     case PlannerKind::Sweep:
@@ -349,7 +380,7 @@ Result<AircraftPlan> planOne(const geo::MultiPolygon& region, const std::vector<
         p = lawnmowerRegion(region, a, options, home);
         break;
     default:
-        p = gridRegion(region, noFly, a, kind, options, home, landing);
+        p = gridRegion(region, noFly, a, kind, options, home, landing, grids);
         break;
     }
     if (stopRequested())
@@ -413,11 +444,12 @@ Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vect
         const route::SafePathFinder finder(route::NoFlyField(noFly, options.safetyMarginM));
         std::string note;
         auto soonest = plan::soonestTime(); // on a tie the planner listed first wins
+        GridCache grids;
         std::optional<Error> firstError;
         for (PlannerKind k : {PlannerKind::Sweep, PlannerKind::Stride, PlannerKind::Raster}) {
             if (stopRequested())
                 return makeError(ErrorCode::Cancelled, "planning cancelled");
-            auto p = planOne(region, noFly, *a, k, options, frame, home, landing, laneSpacing);
+            auto p = planOne(region, noFly, *a, k, options, frame, home, landing, laneSpacing, &grids);
             const char* id = plannerKindInfo(k).id;
             if (!p) {
                 if (!firstError)
