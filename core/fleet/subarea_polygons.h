@@ -13,6 +13,10 @@ namespace pf::fleet {
 // area is left out), clipped to `clipTo`. Neighbouring subareas share their boundary.
 std::vector<geo::MultiPolygon> subareaPolygons(const grid::Grid& g, const Partition& p,
                                                const geo::MultiPolygon& clipTo);
+// The union of a set of grid cells (duplicates allowed), exact: one polygon per 4-connected group
+// of cells (cells touching only at a corner are separate polygons, so every ring is simple), outer
+// rings counter-clockwise, holes clockwise, collinear corners left out. Empty for no cells.
+geo::MultiPolygon cellsUnion(const grid::Grid& g, const std::vector<int>& cells);
 // One set of cells as polygons (for estimators that plan over a candidate subarea).
 geo::MultiPolygon cellsPolygon(const grid::Grid& g, const std::vector<int>& cells, const geo::MultiPolygon& clipTo);
 

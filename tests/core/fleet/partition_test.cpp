@@ -275,3 +275,80 @@ TEST(SubareaPolygons, CellSquaresFollowTheGridRotation) {
         }
     }
 }
+
+// The traced union of cells equals GEOS's union of their squares on random sets (checkerboards
+// of cells touching at corners, groups closing round a hole diagonally, holes, single cells) on a
+// rotated grid: the same ground, one valid polygon per 4-connected group.
+TEST(SubareaPolygons, TracedUnionEqualsThePolygonUnionOfTheCells) {
+    const geo::Polygon field{{geo::Vec2(0, 0), geo::Vec2(160, 0), geo::Vec2(160, 130), geo::Vec2(0, 130)}, {}};
+    grid::GridOptions opt;
+    opt.cellSize = 10.0;
+    opt.angleDeg = 30.0;
+    auto g = grid::Grid::build(field, {}, opt);
+    ASSERT_TRUE(g.ok()) << g.error().message;
+    std::mt19937 rng(11);
+    std::vector<std::vector<int>> sets;
+    for (double density : {0.2, 0.4, 0.5, 0.6, 0.8})
+        for (int rep = 0; rep < 8; ++rep) {
+            std::vector<int> s;
+            std::bernoulli_distribution in(density);
+            for (int c = 0; c < g->cellCount(); ++c)
+                if (in(rng))
+                    s.push_back(c);
+            sets.push_back(s);
+        }
+    // A ring of cells whose ends touch diagonally round a one-cell hole, and a checkerboard.
+    const int C = g->cols();
+    sets.push_back({0 * C + 1, 0 * C + 2, 1 * C + 2, 2 * C + 2, 2 * C + 1, 2 * C + 0, 1 * C + 0});
+    std::vector<int> checker;
+    for (int c = 0; c < g->cellCount(); ++c)
+        if ((c % C + c / C) % 2 == 0)
+            checker.push_back(c);
+    sets.push_back(checker);
+    sets.push_back({5 * C + 5});
+    for (std::size_t si = 0; si < sets.size(); ++si) {
+        const auto& s = sets[si];
+        if (s.empty())
+            continue;
+        const geo::MultiPolygon traced = cellsUnion(*g, s);
+        geo::MultiPolygon squares;
+        for (int c : s)
+            squares.push_back(geo::Polygon{g->cellCorners(c), {}});
+        const geo::MultiPolygon reference = geo::unite(squares);
+        ASSERT_FALSE(traced.empty()) << "set " << si;
+        for (const auto& p : traced) {
+            std::string why;
+            EXPECT_TRUE(geo::isValid(p, &why)) << "set " << si << ": " << why;
+        }
+        EXPECT_NEAR(geo::area(traced), 100.0 * static_cast<double>(s.size()), 1e-6) << "set " << si;
+        EXPECT_NEAR(geo::area(geo::difference(reference, traced)), 0.0, 1e-6) << "set " << si;
+        EXPECT_NEAR(geo::area(geo::difference(traced, reference)), 0.0, 1e-6) << "set " << si;
+        // Polygons: one per 4-connected group of cells.
+        std::vector<int> seen(static_cast<std::size_t>(g->cellCount()), 0), inSet(seen.size(), 0);
+        for (int c : s)
+            inSet[static_cast<std::size_t>(c)] = 1;
+        std::size_t groups = 0;
+        for (int c : s) {
+            if (seen[static_cast<std::size_t>(c)])
+                continue;
+            ++groups;
+            std::vector<int> st{c};
+            seen[static_cast<std::size_t>(c)] = 1;
+            while (!st.empty()) {
+                const int x = st.back();
+                st.pop_back();
+                const int cx = x % C, cy = x / C;
+                for (const auto& [nx, ny] : {std::pair{cx + 1, cy}, {cx - 1, cy}, {cx, cy + 1}, {cx, cy - 1}}) {
+                    if (nx < 0 || ny < 0 || nx >= C || ny >= g->rows())
+                        continue;
+                    const int n = ny * C + nx;
+                    if (inSet[static_cast<std::size_t>(n)] && !seen[static_cast<std::size_t>(n)]) {
+                        seen[static_cast<std::size_t>(n)] = 1;
+                        st.push_back(n);
+                    }
+                }
+            }
+        }
+        EXPECT_EQ(traced.size(), groups) << "set " << si;
+    }
+}
