@@ -154,9 +154,16 @@ Result<Grid> GridBuilder::build(const geo::MultiPolygon& area, const std::vector
     // The zones are united once, for both the admissible area and the buffer.
     const geo::MultiPolygon zoneUnion = zones.empty() ? geo::MultiPolygon{} : geo::unite(zones);
     geo::MultiPolygon admissible = whole;
-    if (!zoneUnion.empty()) {
+    // Only the zones that reach the area's box can change it (a subarea of a fleet split touches a
+    // few of the mission's zones): the difference is asked of those.
+    const geo::Box wholeBox = geo::bounds(whole);
+    geo::MultiPolygon nearZones;
+    for (const auto& z : zoneUnion)
+        if (geo::bounds(z).intersects(wholeBox))
+            nearZones.push_back(z);
+    if (!nearZones.empty()) {
         const auto wa = geo::detail::toOgr(whole);
-        const auto zu = geo::detail::toOgr(zoneUnion);
+        const auto zu = geo::detail::toOgr(nearZones);
         geo::detail::OgrGeomPtr d(wa->Difference(zu.get()));
         admissible = geo::detail::fromOgr(d.get());
     }
