@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 
 namespace pf::fleet {
 
@@ -33,25 +34,65 @@ double signedArea(const geo::Ring& r) {
     return 0.5 * s;
 }
 
+// The part of the convex ring `in` on the inner side of edge j -> i of the convex ring `b` whose
+// orientation is `orient` (+1 counter-clockwise), or on its outer side (`inner` false), into `out`.
+void clipByEdge(const geo::Ring& in, geo::Ring& out, const geo::Vec2& p, const geo::Vec2& d, double orient, bool inner) {
+    const double s = inner ? orient : -orient;
+    const auto side = [&](const geo::Vec2& q) { return s * (d.x() * (q.y() - p.y()) - d.y() * (q.x() - p.x())); };
+    out.clear();
+    for (std::size_t k = 0, l = in.size() - 1; k < in.size(); l = k++) {
+        const double sl = side(in[l]), sk = side(in[k]);
+        if ((sl >= 0) != (sk >= 0))
+            out.push_back(in[l] + (sl / (sl - sk)) * (in[k] - in[l]));
+        if (sk >= 0)
+            out.push_back(in[k]);
+    }
+}
+
 // The area of the intersection of two convex rings (Sutherland-Hodgman: `a` clipped by each edge
 // of `b`). The footprints are rectangles, so this is exact up to rounding.
 double convexOverlapArea(const geo::Ring& a, const geo::Ring& b) {
     const double orient = signedArea(b) >= 0 ? 1.0 : -1.0;
     geo::Ring cur = a, next;
     for (std::size_t i = 0, j = b.size() - 1; i < b.size() && !cur.empty(); j = i++) {
-        const geo::Vec2 p = b[j], d = b[i] - b[j];
-        const auto side = [&](const geo::Vec2& q) { return orient * (d.x() * (q.y() - p.y()) - d.y() * (q.x() - p.x())); };
-        next.clear();
-        for (std::size_t k = 0, l = cur.size() - 1; k < cur.size(); l = k++) {
-            const double sl = side(cur[l]), sk = side(cur[k]);
-            if ((sl >= 0) != (sk >= 0))
-                next.push_back(cur[l] + (sl / (sl - sk)) * (cur[k] - cur[l]));
-            if (sk >= 0)
-                next.push_back(cur[k]);
-        }
+        clipByEdge(cur, next, b[j], b[i] - b[j], orient, true);
         std::swap(cur, next);
     }
     return cur.size() < 3 ? 0.0 : std::abs(signedArea(cur));
+}
+
+// The area of the convex ring `a` that none of the convex rings `covers` sees: `a` minus each cover
+// in turn, what is left kept as convex pieces (a piece minus a convex ring is its parts outside
+// each of the ring's edges, one after the other). Slivers below `ignore` m2 are dropped. Empty when
+// the pieces grow past a bound (the caller then asks GEOS).
+std::optional<double> uncoveredArea(const geo::Ring& a, const std::vector<const geo::Ring*>& covers, double ignore) {
+    constexpr std::size_t kMaxPieces = 256;
+    std::vector<geo::Ring> pieces{a}, next;
+    geo::Ring rest, part, tmp;
+    for (const geo::Ring* c : covers) {
+        const geo::Ring& b = *c;
+        const double orient = signedArea(b) >= 0 ? 1.0 : -1.0;
+        next.clear();
+        for (const geo::Ring& piece : pieces) {
+            rest = piece;
+            for (std::size_t i = 0, j = b.size() - 1; i < b.size() && rest.size() >= 3; j = i++) {
+                clipByEdge(rest, part, b[j], b[i] - b[j], orient, false);
+                if (part.size() >= 3 && std::abs(signedArea(part)) > ignore)
+                    next.push_back(part);
+                clipByEdge(rest, tmp, b[j], b[i] - b[j], orient, true);
+                std::swap(rest, tmp);
+            }
+        }
+        if (next.size() > kMaxPieces)
+            return std::nullopt;
+        std::swap(pieces, next);
+        if (pieces.empty())
+            return 0.0;
+    }
+    double sum = 0;
+    for (const auto& piece : pieces)
+        sum += std::abs(signedArea(piece));
+    return sum;
 }
 
 // Whether every corner of `a` lies inside the convex ring `b` (within `tol` metres of its edges).
@@ -129,9 +170,10 @@ Result<DedupReport> dropDuplicatePhotos(std::vector<AircraftPhotos>& fleet) {
             if (cover.empty())
                 continue;
             const double effArea = fleet[k].effectiveAcrossM * fleet[k].effectiveAlongM;
-            // Exact shortcuts before the polygon difference (most photos near a subarea's edge are
-            // decided by them): inside one photo of the neighbour, it is covered; if the overlaps
-            // with the neighbours' photos do not even add up to the photo's area, it is not.
+            // Exact tests, cheapest first: inside one photo of the neighbour, it is covered; if the
+            // overlaps with the neighbours' photos do not even add up to the photo's area, it is
+            // not; otherwise what the neighbours leave of it is measured piece by piece (convex
+            // rectangles), with GEOS's difference only should the pieces multiply.
             const bool inOne = std::any_of(cover.begin(), cover.end(),
                                            [&](const geo::Polygon& c) { return convexContains(c.outer, eff.outer, 1e-9); });
             if (!inOne) {
@@ -140,7 +182,11 @@ Result<DedupReport> dropDuplicatePhotos(std::vector<AircraftPhotos>& fleet) {
                     overlaps += convexOverlapArea(eff.outer, c.outer);
                 if (overlaps < (1.0 - 1e-5) * effArea)
                     continue;
-                if (geo::area(geo::difference(eff, cover)) > 1e-6 * effArea)
+                std::vector<const geo::Ring*> rings;
+                for (const auto& c : cover)
+                    rings.push_back(&c.outer);
+                const std::optional<double> left = uncoveredArea(eff.outer, rings, 1e-9 * effArea);
+                if ((left ? *left : geo::area(geo::difference(eff, cover))) > 1e-6 * effArea)
                     continue;
             }
             kept[static_cast<std::size_t>(id)] = 0;
