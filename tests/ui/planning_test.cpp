@@ -346,6 +346,13 @@ TEST(Planning, ComparisonFillsARowPerPlannerKind) {
         EXPECT_TRUE(row.ok) << row.error.toStdString();
         EXPECT_GT(row.totals.photos, 0);
     }
+    // The turns shown are the flown routes' (those the Plan tab and the CLI show), per planner.
+    const auto& rows = w->planController()->comparison();
+    for (std::size_t r = 0; r < rows.size(); ++r)
+        if (rows[r].ok) {
+            EXPECT_EQ(table->item(int(r), StatisticsPanel::CTurns)->text(), QString::number(rows[r].totals.flightTurns))
+                << kinds[r].id;
+        }
     // Every metric column has its best value highlighted (the last column holds the Use buttons).
     for (int c = 1; c < StatisticsPanel::CUse; ++c) {
         int bold = 0;

@@ -25,6 +25,10 @@ namespace {
 
 const QString kDash = QStringLiteral("–");
 
+// The turns of the flown routes (what the aircraft stops for), as the plan's own table and the CLI
+// show them; the cell paths' turns only when no route was flown out.
+int flownTurns(const mission::PlanTotals& t) { return t.flightTurns > 0 ? t.flightTurns : t.turns; }
+
 QString minutes(double seconds) {
     const int s = int(std::lround(seconds));
     return QStringLiteral("%1:%2").arg(s / 60).arg(s % 60, 2, 10, QLatin1Char('0'));
@@ -354,7 +358,7 @@ void StatisticsPanel::refreshComparison() {
         case CPhotos: return row.totals.photos;
         case CKm: return row.totals.pathLengthM;
         case CTime: return row.totals.estimatedTimeS;
-        case CTurns: return row.totals.turns;
+        case CTurns: return flownTurns(row.totals);
         case CCover: return -row.coveragePercent;
         case CNoFly: return row.noFlyCrossings;
         case CPlanMs: return row.wallMs;
@@ -396,7 +400,7 @@ void StatisticsPanel::refreshComparison() {
         const QStringList values = {QString::number(t.photos),
                                     QString::number(t.pathLengthM / 1000.0, 'f', 2),
                                     minutes(t.estimatedTimeS),
-                                    QString::number(t.turns),
+                                    QString::number(flownTurns(t)),
                                     QString::number(row->coveragePercent, 'f', 1),
                                     QString::number(row->noFlyCrossings),
                                     QString::number(row->wallMs, 'f', 0)};
