@@ -157,18 +157,24 @@ TEST(Planning, TableEditsReverseInsertAndDeleteAreUndoable) {
     const route::Route before = routeOf(w.get(), 0);
     auto* stack = w->document()->undoStack();
     const int start = stack->index();
-    EXPECT_TRUE(model->setData(model->index(1, WaypointTableModel::Heading), 370.0));
-    EXPECT_DOUBLE_EQ(routeOf(w.get(), 0).waypoints[1].headingDeg, 10.0);
+    // The first photo waypoint after the first waypoint (where the plan begins with transits from
+    // home, they come first).
+    int k = 1;
+    while (k < int(before.waypoints.size()) && before.waypoints[std::size_t(k)].kind != route::WaypointKind::Photo)
+        ++k;
+    ASSERT_LT(k, int(before.waypoints.size()));
+    EXPECT_TRUE(model->setData(model->index(k, WaypointTableModel::Heading), 370.0));
+    EXPECT_DOUBLE_EQ(routeOf(w.get(), 0).waypoints[std::size_t(k)].headingDeg, 10.0);
     EXPECT_TRUE(
-        model->setData(model->index(1, WaypointTableModel::Action), QStringLiteral("transit")));
-    EXPECT_EQ(routeOf(w.get(), 0).waypoints[1].kind, route::WaypointKind::Transit);
-    EXPECT_TRUE(model->setData(model->index(1, WaypointTableModel::Latitude), 49.0111));
-    EXPECT_DOUBLE_EQ(routeOf(w.get(), 0).waypoints[1].position.lat, 49.0111);
+        model->setData(model->index(k, WaypointTableModel::Action), QStringLiteral("transit")));
+    EXPECT_EQ(routeOf(w.get(), 0).waypoints[std::size_t(k)].kind, route::WaypointKind::Transit);
+    EXPECT_TRUE(model->setData(model->index(k, WaypointTableModel::Latitude), 49.0111));
+    EXPECT_DOUBLE_EQ(routeOf(w.get(), 0).waypoints[std::size_t(k)].position.lat, 49.0111);
     // Bad values are refused without an undo step.
-    EXPECT_FALSE(model->setData(model->index(1, WaypointTableModel::Altitude), -3.0));
-    EXPECT_FALSE(model->setData(model->index(1, WaypointTableModel::Latitude), 95.0));
+    EXPECT_FALSE(model->setData(model->index(k, WaypointTableModel::Altitude), -3.0));
+    EXPECT_FALSE(model->setData(model->index(k, WaypointTableModel::Latitude), 95.0));
     EXPECT_FALSE(
-        model->setData(model->index(1, WaypointTableModel::Action), QStringLiteral("loiter")));
+        model->setData(model->index(k, WaypointTableModel::Action), QStringLiteral("loiter")));
     EXPECT_EQ(stack->index(), start + 3);
 
     w->waypointPanel()->reverseRoute();
