@@ -114,6 +114,7 @@ Result<SpotPhotoChoice> chooseSpotPhotos(const geo::MultiPolygon& ground,
     co.resolutionM = o.resolutionM;
     co.maxPatches = 2000;
     co.maxPixels = 16'000'000;
+    co.patchShapes = false; // the probes are looked up in the patches' pixels
     auto cov = checkCoverage(ground, photos, co);
     if (!cov.ok())
         return cov.error();
@@ -128,11 +129,19 @@ Result<SpotPhotoChoice> chooseSpotPhotos(const geo::MultiPolygon& ground,
     for (const auto& patch : cov->patches) {
         if (patch.areaM2 < o.minPatchM2)
             continue;
-        const geo::Box b = geo::bounds(patch.shape);
+        // The centres of the patch's pixels: each lies half a pixel from the pixels' edges, so the
+        // pixel it falls in is never in doubt.
+        const geo::Box b = patch.box;
         const std::size_t first = probes.size();
+        auto own = [&](const Vec2& q) {
+            const auto i = static_cast<std::size_t>(std::floor((q.x() - b.min.x()) / res));
+            const auto j = static_cast<std::size_t>(std::floor((q.y() - b.min.y()) / res));
+            const auto cols = static_cast<std::size_t>(patch.columns);
+            return i < cols && j * cols + i < patch.mask.size() && patch.mask[j * cols + i] != 0;
+        };
         for (double y = b.min.y() + 0.5 * res; y < b.max.y(); y += res)
             for (double x = b.min.x() + 0.5 * res; x < b.max.x(); x += res)
-                if (geo::contains(patch.shape, Vec2(x, y)))
+                if (own(Vec2(x, y)))
                     probes.push_back(Probe{Vec2(x, y)});
         if (probes.size() > first) {
             patchProbes.emplace_back(first, probes.size());
