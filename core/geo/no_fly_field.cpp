@@ -86,6 +86,9 @@ NoFlyField::NoFlyField(std::vector<geo::Polygon> zones, double marginM)
         const auto b = geo::bounds(z);
         m_boxes.emplace_back(b.min, b.max);
         m_circles.emplace_back(0.5 * (b.min + b.max), 0.5 * (b.max - b.min).norm());
+        double reach = 0.0;
+        forEachEdge(z, [&](const Vec2& c, const Vec2&) { reach = std::max(reach, (c - m_circles.back().first).norm()); });
+        m_reach.push_back(reach);
         forEachEdge(z, [&](const Vec2& c, const Vec2& d) { m_edges.push_back(Edge{c, d, c.cwiseMin(d), c.cwiseMax(d)}); });
         m_edgeBegin.push_back(m_edges.size());
     }
@@ -169,7 +172,8 @@ bool NoFlyField::segmentIsSafe(const Vec2& a, const Vec2& b) const {
     // of the cross products (~1e-9 m at 10^6 m from the origin), so the answer stays the exact test's.
     // The cross products are the ones segmentsIntersect computes.
     const Vec2 ab = b - a;
-    const double lineNeed = (need + kLineSlackM) * ab.norm();
+    const double abLength = ab.norm();
+    const double lineNeed = (need + kLineSlackM) * abLength;
     for (std::size_t i = 0; i < m_zones.size(); ++i) {
         if (boxesApart(smin, smax, m_boxes[i].first, m_boxes[i].second, need))
             continue;
@@ -177,6 +181,13 @@ bool NoFlyField::segmentIsSafe(const Vec2& a, const Vec2& b) const {
         // the zone prunes them.
         const double reach = m_circles[i].second + need;
         if (pointSegDist2(m_circles[i].first, a, b) > reach * reach)
+            continue;
+        // A zone wholly beyond the margin (and the slack) from the segment's line, by its farthest
+        // vertex from the centre (round zones fill their box's circle only to 1 / sqrt 2): each edge
+        // would pass the line test below, and a, on the line, lies outside the zone.
+        const double side = cross(ab, m_circles[i].first - a);
+        const double zoneNeed = lineNeed + m_reach[i] * abLength;
+        if (side > zoneNeed || side < -zoneNeed)
             continue;
         for (std::size_t k = m_edgeBegin[i]; k < m_edgeBegin[i + 1]; ++k) {
             const Edge& e = m_edges[k];
