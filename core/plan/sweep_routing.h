@@ -22,6 +22,8 @@ constexpr double kNoWayS = 1e7;
 
 // The angle between two directions, degrees in [0, 180]; 0 when either is zero.
 double angleDeg(const Vec2& u, const Vec2& v);
+// The same with the directions' lengths known (u.norm(), v.norm()).
+double angleDeg(const Vec2& u, double nu, const Vec2& v, double nv);
 
 // Time of a transition by the one model: straight legs from a through mid to b, a turn at every
 // vertex. `arrive` is the direction the aircraft arrives at a with, `leave` the one it leaves b with
@@ -84,6 +86,7 @@ public:
 
     int add(const EndPoint& e) {
         m_pts.push_back(e);
+        m_inNorm.push_back(e.in.norm());
         return static_cast<int>(m_pts.size()) - 1;
     }
     const EndPoint& point(int i) const { return m_pts[static_cast<std::size_t>(i)]; }
@@ -96,24 +99,33 @@ public:
             std::reverse(r.mid.begin(), r.mid.end());
         return r;
     }
-    // route(u, v).timeS without copying the way: what the order search asks for every link.
-    double timeS(int u, int v) { return cached(u, v).timeS; }
+    // route(u, v).timeS without copying the way: what the order search asks for every link (from
+    // the pair map's slot, without touching the route).
+    double timeS(int u, int v) { return entry(u, v).timeS; }
 
     double lowerBound(int u, int v) const {
         const auto& a = point(u);
         const auto& b = point(v);
-        return (a.p - b.p).norm() / m_model.speedMps + angleDeg(-a.in, b.in) / m_model.turnRateDegS;
+        // |-in| is |in|: the lengths kept at add() spare the order search two roots per bound.
+        return (a.p - b.p).norm() / m_model.speedMps +
+               angleDeg(-a.in, m_inNorm[static_cast<std::size_t>(u)], b.in, m_inNorm[static_cast<std::size_t>(v)]) /
+                   m_model.turnRateDegS;
     }
 
 private:
-    const Route& cached(int u, int v) {
-        const std::uint64_t key = PairMap<std::size_t>::key(u, v);
-        if (const std::size_t* at = m_routeAt.find(key))
-            return m_routes[*at];
+    struct Entry {
+        double timeS = 0.0;
+        std::size_t at = 0; // index into m_routes
+    };
+    const Entry& entry(int u, int v) {
+        const std::uint64_t key = PairMap<Entry>::key(u, v);
+        if (const Entry* e = m_routeAt.find(key))
+            return *e;
         m_routes.push_back(compute(std::min(u, v), std::max(u, v)));
-        m_routeAt.insert(key, m_routes.size() - 1);
-        return m_routes.back();
+        m_routeAt.insert(key, Entry{m_routes.back().timeS, m_routes.size() - 1});
+        return *m_routeAt.find(key);
     }
+    const Route& cached(int u, int v) { return m_routes[entry(u, v).at]; }
     // Per end point id (the ids are dense): its visible nodes and its tree, once computed.
     struct Cache {
         std::vector<std::unique_ptr<const std::vector<int>>> visible;
@@ -175,8 +187,9 @@ private:
     std::vector<RouteGraph> m_graphs;
     std::vector<Cache> m_caches;
     std::vector<EndPoint> m_pts;
+    std::vector<double> m_inNorm; // per end point: in.norm()
     std::vector<Route> m_routes;           // in the order first asked
-    PairMap<std::size_t> m_routeAt;        // pair of end points -> index into m_routes
+    PairMap<Entry> m_routeAt;              // pair of end points -> its time and index into m_routes
 };
 
 // For each of `pts` (end point ids of the router), the k nearest others of `pts`, on a grid of cell h.
