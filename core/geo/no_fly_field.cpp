@@ -26,6 +26,10 @@ inline double pointSegDist(const Vec2& p, const Vec2& a, const Vec2& b) {
 
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
+// How much farther than the margin from a segment's line an edge must lie for segmentIsSafe to skip
+// its exact test: far above the rounding of the test, far below any distance that matters.
+constexpr double kLineSlackM = 1e-4;
+
 inline bool segmentsIntersect(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
     const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
     const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
@@ -82,6 +86,9 @@ NoFlyField::NoFlyField(std::vector<geo::Polygon> zones, double marginM)
         const auto b = geo::bounds(z);
         m_boxes.emplace_back(b.min, b.max);
         m_circles.emplace_back(0.5 * (b.min + b.max), 0.5 * (b.max - b.min).norm());
+        double reach = 0.0;
+        forEachEdge(z, [&](const Vec2& c, const Vec2&) { reach = std::max(reach, (c - m_circles.back().first).norm()); });
+        m_reach.push_back(reach);
         forEachEdge(z, [&](const Vec2& c, const Vec2& d) { m_edges.push_back(Edge{c, d, c.cwiseMin(d), c.cwiseMax(d)}); });
         m_edgeBegin.push_back(m_edges.size());
     }
@@ -159,6 +166,14 @@ bool NoFlyField::segmentIsSafe(const Vec2& a, const Vec2& b) const {
                 return false;
         return true;
     }
+    // An edge with both ends on one side of the segment's line, farther from it than `need` by
+    // kLineSlackM, is far enough from the segment (every point of the segment lies on that line), so
+    // each of the four distances below would pass: the test is skipped. The slack dwarfs the rounding
+    // of the cross products (~1e-9 m at 10^6 m from the origin), so the answer stays the exact test's.
+    // The cross products are the ones segmentsIntersect computes.
+    const Vec2 ab = b - a;
+    const double abLength = ab.norm();
+    const double lineNeed = (need + kLineSlackM) * abLength;
     for (std::size_t i = 0; i < m_zones.size(); ++i) {
         if (boxesApart(smin, smax, m_boxes[i].first, m_boxes[i].second, need))
             continue;
@@ -167,10 +182,20 @@ bool NoFlyField::segmentIsSafe(const Vec2& a, const Vec2& b) const {
         const double reach = m_circles[i].second + need;
         if (pointSegDist2(m_circles[i].first, a, b) > reach * reach)
             continue;
+        // A zone wholly beyond the margin (and the slack) from the segment's line, by its farthest
+        // vertex from the centre (round zones fill their box's circle only to 1 / sqrt 2): each edge
+        // would pass the line test below, and a, on the line, lies outside the zone.
+        const double side = cross(ab, m_circles[i].first - a);
+        const double zoneNeed = lineNeed + m_reach[i] * abLength;
+        if (side > zoneNeed || side < -zoneNeed)
+            continue;
         for (std::size_t k = m_edgeBegin[i]; k < m_edgeBegin[i + 1]; ++k) {
             const Edge& e = m_edges[k];
             // An edge whose box lies at least `need` beyond the segment's box is far enough.
             if (boxesApart(smin, smax, e.lo, e.hi, need))
+                continue;
+            const double d1 = cross(ab, e.c - a), d2 = cross(ab, e.d - a);
+            if ((d1 > lineNeed && d2 > lineNeed) || (d1 < -lineNeed && d2 < -lineNeed))
                 continue;
             // isSafeClearance(segSegDist(a, b, c, d)): safe when clear of each of the four end-to-segment
             // distances, so the first one too close settles it.

@@ -73,6 +73,7 @@ private:
     std::vector<Polygon> m_zones;
     std::vector<std::pair<Vec2, Vec2>> m_boxes; // per zone: min, max
     std::vector<std::pair<Vec2, double>> m_circles; // per zone: a circle holding it (centre, radius)
+    std::vector<double> m_reach;                    // per zone: its farthest vertex from that centre
     // Every zone's edges with their boxes, zone after zone (zone i: m_edgeBegin[i] to m_edgeBegin[i + 1]),
     // so that the segment test reads them in order without working them out again.
     struct Edge {

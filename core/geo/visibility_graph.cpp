@@ -391,11 +391,15 @@ double VisibilityGraph::bestPair(const Vec2& a, const std::vector<int>& aVisible
                                  const std::vector<int>& bVisible, int* from, int* to) const {
     const std::size_t n = m_nodes.size();
     double best = kInf;
+    // The first legs' lengths once, not once per last node (the same values, summed in the same order).
+    std::vector<double> head(aVisible.size());
+    for (std::size_t k = 0; k < aVisible.size(); ++k)
+        head[k] = (m_nodes[static_cast<std::size_t>(aVisible[k])].p - a).norm();
     for (int j : bVisible) {
         const double tail = (m_nodes[static_cast<std::size_t>(j)].p - b).norm();
-        for (int i : aVisible) {
-            const double d = (m_nodes[static_cast<std::size_t>(i)].p - a).norm() +
-                             m_pairDist[static_cast<std::size_t>(i) * n + static_cast<std::size_t>(j)] + tail;
+        for (std::size_t k = 0; k < aVisible.size(); ++k) {
+            const int i = aVisible[k];
+            const double d = head[k] + m_pairDist[static_cast<std::size_t>(i) * n + static_cast<std::size_t>(j)] + tail;
             if (d < best) {
                 best = d;
                 *from = i;

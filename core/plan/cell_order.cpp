@@ -143,6 +143,7 @@ OrderResult orderCells(const OrderProblem& problem, const OrderOptions& options)
         }
     }
     out.constructedCostS = bestC;
+    out.constructed = out.steps;
     if (options.improve) {
         s.improve(out.steps, options, out);
         if (!problem.near && n >= 4) {
@@ -186,6 +187,7 @@ OrderResult improveOrder(const OrderProblem& problem, std::vector<OrderStep> ste
     OrderResult out;
     Search s(problem);
     out.steps = std::move(steps);
+    out.constructed = out.steps;
     out.constructedCostS = s.cost(out.steps);
     if (options.improve)
         s.improve(out.steps, options, out);

@@ -61,6 +61,7 @@ struct OrderResult {
     std::vector<OrderStep> steps;
     double costS = 0.0;            // start + cells + links + finish
     double constructedCostS = 0.0; // the same for the construction before local search
+    std::vector<OrderStep> constructed; // the construction's sequence itself (what options.improve = false returns)
     int rounds = 0;                // local-search passes run
     int moves = 0;                 // improving moves applied
     std::int64_t linkEvaluations = 0;

@@ -191,6 +191,7 @@ Result<CoverageReport> checkCoverage(const geo::MultiPolygon& admissible, const 
         patch.areaM2 = static_cast<double>(pixels.size()) * pixelArea;
         geo::Vec2 sum(0, 0);
         geo::MultiPolygon rects;
+        int iLo = ras.nx, iHi = -1, jLo = ras.ny, jHi = -1;
         for (std::size_t a = 0; a < pixels.size();) {
             std::size_t b = a;
             while (b + 1 < pixels.size() && pixels[b + 1] == pixels[b] + 1 &&
@@ -201,12 +202,33 @@ Result<CoverageReport> checkCoverage(const geo::MultiPolygon& admissible, const 
             const int j = static_cast<int>(pixels[a] / static_cast<std::size_t>(ras.nx));
             const double x0 = ras.min.x() + i0 * ras.r, x1 = ras.min.x() + i1 * ras.r;
             const double y0 = ras.min.y() + j * ras.r, y1 = y0 + ras.r;
+            if (i0 < iLo)
+                patch.box.min.x() = x0;
+            if (i1 - 1 > iHi)
+                patch.box.max.x() = x1;
+            if (j < jLo)
+                patch.box.min.y() = y0;
+            if (j > jHi)
+                patch.box.max.y() = y1;
+            iLo = std::min(iLo, i0);
+            iHi = std::max(iHi, i1 - 1);
+            jLo = std::min(jLo, j);
+            jHi = std::max(jHi, j);
             rects.push_back(geo::Polygon{{geo::Vec2(x0, y0), geo::Vec2(x1, y0), geo::Vec2(x1, y1), geo::Vec2(x0, y1)}, {}});
             sum += static_cast<double>(i1 - i0) * geo::Vec2(0.5 * (x0 + x1), 0.5 * (y0 + y1));
             a = b + 1;
         }
         patch.centroid = sum / static_cast<double>(pixels.size());
-        patch.shape = geo::unite(rects);
+        patch.columns = iHi - iLo + 1;
+        patch.mask.assign(static_cast<std::size_t>(patch.columns) * static_cast<std::size_t>(jHi - jLo + 1), 0);
+        for (const std::size_t p : pixels) {
+            const int i = static_cast<int>(p % static_cast<std::size_t>(ras.nx));
+            const int j = static_cast<int>(p / static_cast<std::size_t>(ras.nx));
+            patch.mask[static_cast<std::size_t>(j - jLo) * static_cast<std::size_t>(patch.columns) +
+                       static_cast<std::size_t>(i - iLo)] = 1;
+        }
+        if (opt.patchShapes)
+            patch.shape = geo::unite(rects);
         rep.patches.push_back(std::move(patch));
     }
     return rep;

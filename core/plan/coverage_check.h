@@ -2,6 +2,7 @@
 // reports what is left uncovered, plus the waypoints and legs that break a no-fly margin.
 #pragma once
 
+#include "core/geo/polygon_ops.h"
 #include "core/geo/types.h"
 #include "core/result.h"
 #include "core/sensor/footprint.h"
@@ -25,12 +26,20 @@ struct CoverageCheckOptions {
     std::size_t maxPixels = 64'000'000;
     // Patches listed with a polygon, largest first; smaller ones still count in uncoveredAreaM2.
     std::size_t maxPatches = 100;
+    // false: the patches come without their polygon (no union of pixels), with their pixels only
+    // (UncoveredPatch::box and mask), for callers that only look pixels up.
+    bool patchShapes = true;
 };
 
 struct UncoveredPatch {
-    geo::MultiPolygon shape; // union of its pixels, local metres
+    geo::MultiPolygon shape; // union of its pixels, local metres (empty without patchShapes)
     double areaM2 = 0.0;
     geo::Vec2 centroid{0, 0};
+    // Its pixels: the box of their edges (the bounds of shape), `columns` pixels across it, and per
+    // pixel of the box row by row from its lower left, 1 for the patch's own.
+    geo::Box box;
+    int columns = 0;
+    std::vector<char> mask;
 };
 
 struct CoverageReport {

@@ -143,7 +143,7 @@ bool OrderMoves::twoOptNear(std::vector<OrderStep>& seq, int budget) {
             continue;
         for (int end = 0; end < 2; ++end) {
             const int p = end ? exit(seq[static_cast<std::size_t>(i)]) : entry(seq[static_cast<std::size_t>(i)]);
-            const std::vector<int> cand = m_p.near(p);
+            const std::vector<int>& cand = m_p.near(p);
             for (int q : cand) {
                 const int j = stepOf(q);
                 if (j < 0 || j == i)
@@ -173,7 +173,7 @@ bool OrderMoves::orOptNear(std::vector<OrderStep>& seq, int budget) {
             const int bi = entry(seq[static_cast<std::size_t>(i)]), bx = exit(seq[static_cast<std::size_t>(last)]);
             bool moved = false;
             for (int endp : {bi, bx}) {
-                const std::vector<int> cand = m_p.near(endp);
+                const std::vector<int>& cand = m_p.near(endp);
                 for (int q : cand) {
                     const int j = stepOf(q);
                     if (j < 0 || (j >= i && j <= last))

@@ -1,5 +1,6 @@
-// A map from an unordered pair of end points to a cost: open addressing in one flat array, for the
-// order search, which looks up link costs for every candidate move.
+// A map from an unordered pair of end points to a value (a cost, an index): open addressing in one
+// flat array, for the order search, which looks up link costs for every candidate move, and the
+// sweep's router, which keeps every transition it worked out.
 #pragma once
 
 #include <cstdint>
@@ -7,7 +8,7 @@
 
 namespace pf::plan {
 
-class PairCostCache {
+template <class Value> class PairMap {
 public:
     // The key of the pair (u, v), the same for (v, u). u, v >= 0.
     static std::uint64_t key(int u, int v) {
@@ -15,8 +16,8 @@ public:
         return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(lo)) << 32) |
                static_cast<std::uint32_t>(hi);
     }
-    // The cost kept for the key, or nullptr.
-    const double* find(std::uint64_t k) const {
+    // The value kept for the key, or nullptr.
+    const Value* find(std::uint64_t k) const {
         if (m_slots.empty())
             return nullptr;
         for (std::size_t i = slot(k);; i = (i + 1) & m_mask) {
@@ -27,8 +28,8 @@ public:
                 return nullptr;
         }
     }
-    // Keeps the cost of a key not yet kept.
-    void insert(std::uint64_t k, double value) {
+    // Keeps the value of a key not yet kept.
+    void insert(std::uint64_t k, Value value) {
         if (2 * (m_size + 1) > m_slots.size())
             grow();
         for (std::size_t i = slot(k);; i = (i + 1) & m_mask) {
@@ -47,7 +48,7 @@ private:
     static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
     struct Slot {
         std::uint64_t key = kEmpty;
-        double value = 0.0;
+        Value value{};
     };
     std::size_t slot(std::uint64_t k) const {
         // Fibonacci hashing: the high bits of the product spread consecutive ids over the table.
@@ -72,5 +73,7 @@ private:
     int m_shift = 64;
     std::size_t m_size = 0;
 };
+
+using PairCostCache = PairMap<double>;
 
 } // namespace pf::plan

@@ -30,7 +30,73 @@ struct Probe {
     bool seen = false;
 };
 
+// Whether a photo at c along the axes sees q: the footprint rectangle, the one test of this file.
+inline bool seesAt(const Vec2& c, const Axes& ax, double halfAlong, double halfAcross, const Vec2& q) {
+    const Vec2 d = q - c;
+    return std::abs(d.dot(ax.along)) <= halfAlong && std::abs(d.dot(ax.right)) <= halfAcross;
+}
+
+
 } // namespace
+
+namespace spot_detail {
+
+ScoredProbes::ScoredProbes(std::vector<Vec2> pts, double headingDeg0, double headingDeg1, double halfAlong,
+                           double halfAcross)
+    : m_pts(std::move(pts)), m_halfAlong(halfAlong), m_halfAcross(halfAcross) {
+    const Axes a0(headingDeg0), a1(headingDeg1);
+    m_axes = {{{a0.along, a0.right}, {a1.along, a1.right}}};
+    double big = 0.0;
+    for (const auto& q : m_pts)
+        big = std::max({big, std::abs(q.x()), std::abs(q.y())});
+    m_slack = 1e-9 * (1.0 + 4.0 * (big + halfAlong + halfAcross));
+    for (std::size_t first = 0; first < m_pts.size(); first += kRun) {
+        Run r;
+        r.first = first;
+        r.last = std::min(m_pts.size(), first + kRun);
+        for (std::size_t h = 0; h < 2; ++h) {
+            auto& e = r.extent[h];
+            e = {kInf, -kInf, kInf, -kInf};
+            for (std::size_t k = r.first; k < r.last; ++k) {
+                const double u = m_pts[k].dot(m_axes[h][0]), v = m_pts[k].dot(m_axes[h][1]);
+                e[0] = std::min(e[0], u);
+                e[1] = std::max(e[1], u);
+                e[2] = std::min(e[2], v);
+                e[3] = std::max(e[3], v);
+            }
+        }
+        m_runs.push_back(r);
+    }
+}
+
+bool ScoredProbes::sees(const Vec2& c, int h, const Vec2& q) const {
+    const auto& ax = m_axes[static_cast<std::size_t>(h)];
+    const Vec2 d = q - c;
+    return std::abs(d.dot(ax[0])) <= m_halfAlong && std::abs(d.dot(ax[1])) <= m_halfAcross;
+}
+
+std::size_t ScoredProbes::count(const Vec2& c, int h) const {
+    const auto& ax = m_axes[static_cast<std::size_t>(h)];
+    const double uc = c.dot(ax[0]), vc = c.dot(ax[1]);
+    const double inA = m_halfAlong - m_slack, inC = m_halfAcross - m_slack;
+    const double outA = m_halfAlong + m_slack, outC = m_halfAcross + m_slack;
+    std::size_t n = 0;
+    for (const Run& r : m_runs) {
+        const auto& e = r.extent[static_cast<std::size_t>(h)];
+        const double u0 = e[0] - uc, u1 = e[1] - uc, v0 = e[2] - vc, v1 = e[3] - vc;
+        if (u0 > outA || u1 < -outA || v0 > outC || v1 < -outC)
+            continue;
+        if (u0 >= -inA && u1 <= inA && v0 >= -inC && v1 <= inC) {
+            n += r.last - r.first;
+            continue;
+        }
+        for (std::size_t k = r.first; k < r.last; ++k)
+            n += sees(c, h, m_pts[k]) ? 1 : 0;
+    }
+    return n;
+}
+
+} // namespace spot_detail
 
 Result<SpotPhotoChoice> chooseSpotPhotos(const geo::MultiPolygon& ground,
                                          const std::vector<sensor::PhotoFootprint>& photos,
@@ -48,6 +114,7 @@ Result<SpotPhotoChoice> chooseSpotPhotos(const geo::MultiPolygon& ground,
     co.resolutionM = o.resolutionM;
     co.maxPatches = 2000;
     co.maxPixels = 16'000'000;
+    co.patchShapes = false; // the probes are looked up in the patches' pixels
     auto cov = checkCoverage(ground, photos, co);
     if (!cov.ok())
         return cov.error();
@@ -62,11 +129,19 @@ Result<SpotPhotoChoice> chooseSpotPhotos(const geo::MultiPolygon& ground,
     for (const auto& patch : cov->patches) {
         if (patch.areaM2 < o.minPatchM2)
             continue;
-        const geo::Box b = geo::bounds(patch.shape);
+        // The centres of the patch's pixels: each lies half a pixel from the pixels' edges, so the
+        // pixel it falls in is never in doubt.
+        const geo::Box b = patch.box;
         const std::size_t first = probes.size();
+        auto own = [&](const Vec2& q) {
+            const auto i = static_cast<std::size_t>(std::floor((q.x() - b.min.x()) / res));
+            const auto j = static_cast<std::size_t>(std::floor((q.y() - b.min.y()) / res));
+            const auto cols = static_cast<std::size_t>(patch.columns);
+            return i < cols && j * cols + i < patch.mask.size() && patch.mask[j * cols + i] != 0;
+        };
         for (double y = b.min.y() + 0.5 * res; y < b.max.y(); y += res)
             for (double x = b.min.x() + 0.5 * res; x < b.max.x(); x += res)
-                if (geo::contains(patch.shape, Vec2(x, y)))
+                if (own(Vec2(x, y)))
                     probes.push_back(Probe{Vec2(x, y)});
         if (probes.size() > first) {
             patchProbes.emplace_back(first, probes.size());
@@ -77,10 +152,7 @@ Result<SpotPhotoChoice> chooseSpotPhotos(const geo::MultiPolygon& ground,
     const double halfAlong = 0.5 * o.realAlongM, halfAcross = 0.5 * o.realAcrossM;
     const double reach = std::hypot(halfAlong, halfAcross);
     const std::array<double, 2> headings{o.headingDeg, std::fmod(o.headingDeg + 90.0, 360.0)};
-    auto sees = [&](const Vec2& c, const Axes& ax, const Vec2& q) {
-        const Vec2 d = q - c;
-        return std::abs(d.dot(ax.along)) <= halfAlong && std::abs(d.dot(ax.right)) <= halfAcross;
-    };
+    auto sees = [&](const Vec2& c, const Axes& ax, const Vec2& q) { return seesAt(c, ax, halfAlong, halfAcross, q); };
 
     const double allowedUnseen = (1.0 - o.coverageGoal) * cov->admissibleAreaM2;
     for (std::size_t pi = 0; pi < patchProbes.size(); ++pi) {
@@ -130,15 +202,16 @@ Result<SpotPhotoChoice> chooseSpotPhotos(const geo::MultiPolygon& ground,
             // Score on at most about 600 of the probes left (every stride-th); the count scales
             // back.
             const std::size_t stride = std::max<std::size_t>(1, left.size() / 600);
+            std::vector<Vec2> scored;
+            for (std::size_t i = 0; i < left.size(); i += stride)
+                scored.push_back(probes[left[i]].p);
+            const spot_detail::ScoredProbes scoredProbes(std::move(scored), headings[0], headings[1], halfAlong, halfAcross);
             std::array<std::vector<double>, 2> seenAt;
             double most = 0.0;
             for (std::size_t hi = 0; hi < headings.size(); ++hi) {
-                const Axes ax(headings[hi]);
                 seenAt[hi].resize(places.size());
                 for (std::size_t ci = 0; ci < places.size(); ++ci) {
-                    std::size_t n = 0;
-                    for (std::size_t i = 0; i < left.size(); i += stride)
-                        n += sees(places[ci], ax, probes[left[i]].p) ? 1 : 0;
+                    const std::size_t n = scoredProbes.count(places[ci], static_cast<int>(hi));
                     seenAt[hi][ci] = static_cast<double>(n * stride) * px;
                     most = std::max(most, seenAt[hi][ci]);
                 }
@@ -147,7 +220,7 @@ Result<SpotPhotoChoice> chooseSpotPhotos(const geo::MultiPolygon& ground,
             // spot photo costs hardly a detour.
             double bestSeen = 0.0, bestDist = std::numeric_limits<double>::infinity();
             Vec2 bestPos(0, 0);
-            double bestHeading = headings[0];
+            std::size_t bestHi = 0;
             for (std::size_t hi = 0; hi < headings.size(); ++hi)
                 for (std::size_t ci = 0; ci < places.size(); ++ci) {
                     const double seen = seenAt[hi][ci];
@@ -158,15 +231,15 @@ Result<SpotPhotoChoice> chooseSpotPhotos(const geo::MultiPolygon& ground,
                         bestSeen = seen;
                         bestDist = d;
                         bestPos = places[ci];
-                        bestHeading = headings[hi];
+                        bestHi = hi;
                     }
                 }
             if (bestSeen <= 0.0)
                 break;
             // A finer look round the best place: the grid may stop a step short of what the photo
             // sees.
+            const double bestHeading = headings[bestHi];
             {
-                const Axes ax(bestHeading);
                 const Vec2 c0 = bestPos;
                 for (int i = -3; i <= 3; ++i)
                     for (int j = -3; j <= 3; ++j) {
@@ -174,9 +247,7 @@ Result<SpotPhotoChoice> chooseSpotPhotos(const geo::MultiPolygon& ground,
                         if ((i == 0 && j == 0) || !mayFlyAt(c) ||
                             distToFlight(c) > bestDist + 0.5 * step)
                             continue;
-                        std::size_t n = 0;
-                        for (std::size_t k = 0; k < left.size(); k += stride)
-                            n += sees(c, ax, probes[left[k]].p) ? 1 : 0;
+                        const std::size_t n = scoredProbes.count(c, static_cast<int>(bestHi));
                         const double seen = static_cast<double>(n * stride) * px;
                         if (seen > bestSeen) {
                             bestSeen = seen;

@@ -10,7 +10,10 @@
 #include "core/result.h"
 #include "core/sensor/footprint.h"
 
+#include <array>
+#include <cstddef>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -81,5 +84,36 @@ int placeSpotPhotos(std::vector<Lane>& lanes, std::vector<std::vector<geo::Vec2>
                     std::vector<int>& laneCells, const std::vector<SpotPhoto>& spots,
                     const std::optional<geo::Vec2>& home, const std::optional<geo::Vec2>& landing,
                     const SpotRouting& routing);
+
+namespace spot_detail {
+
+// The probes chooseSpotPhotos scores a candidate place on, in runs of consecutive probes (a patch's
+// probes come row by row, so a run is a short stretch of ground) with each run's extent along and
+// across both headings: a run wholly inside a footprint counts whole, one wholly outside not at all,
+// and only the runs its edge cuts are tested probe by probe. The extents carry a slack far above the
+// rounding of the projections, so a run is decided whole only where every probe's own test agrees:
+// count() is the number of probes sees() accepts, found faster.
+class ScoredProbes {
+public:
+    ScoredProbes(std::vector<geo::Vec2> pts, double headingDeg0, double headingDeg1, double halfAlong, double halfAcross);
+    // Whether a photo at c along heading h (0 or 1; clockwise from north) sees q: the footprint rectangle.
+    bool sees(const geo::Vec2& c, int h, const geo::Vec2& q) const;
+    // How many of the probes a photo at c along heading h sees.
+    std::size_t count(const geo::Vec2& c, int h) const;
+
+private:
+    static constexpr std::size_t kRun = 16;
+    static constexpr double kInf = std::numeric_limits<double>::infinity();
+    struct Run {
+        std::size_t first = 0, last = 0;
+        std::array<std::array<double, 4>, 2> extent{}; // per heading: along min, max, across min, max
+    };
+    std::vector<geo::Vec2> m_pts;
+    std::array<std::array<geo::Vec2, 2>, 2> m_axes; // per heading: along, right
+    double m_halfAlong, m_halfAcross, m_slack = 0.0;
+    std::vector<Run> m_runs;
+};
+
+} // namespace spot_detail
 
 } // namespace pf::plan

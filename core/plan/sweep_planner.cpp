@@ -429,11 +429,8 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
             }
             return out;
         };
-        {
-            OrderOptions co;
-            co.improve = false;
-            fp->constructed = toLanes(orderCells(fp->problem, co).steps);
-        }
+        // The construction alone: the sequence the search above started from.
+        fp->constructed = toLanes(fp->order.constructed);
         fp->laneProblem.link = fp->problem.link;
         fp->laneProblem.lowerBound = fp->problem.lowerBound;
         fp->laneProblem.start = fp->problem.start;

@@ -5,8 +5,9 @@
 
 namespace pf::plan::sweep_detail {
 
-double angleDeg(const Vec2& u, const Vec2& v) {
-    const double nu = u.norm(), nv = v.norm();
+double angleDeg(const Vec2& u, const Vec2& v) { return angleDeg(u, u.norm(), v, v.norm()); }
+
+double angleDeg(const Vec2& u, double nu, const Vec2& v, double nv) {
     if (nu == 0.0 || nv == 0.0)
         return 0.0;
     const double c = std::fabs(u.x() * v.y() - u.y() * v.x()), d = u.dot(v);

@@ -7,10 +7,10 @@
 #include "core/geo/types.h"
 #include "core/geo/visibility_graph.h"
 #include "core/plan/flight_time.h"
+#include "core/plan/pair_cache.h"
 
 #include <cstdint>
 #include <memory>
-#include <unordered_map>
 #include <vector>
 
 namespace pf::plan::sweep_detail {
@@ -22,6 +22,8 @@ constexpr double kNoWayS = 1e7;
 
 // The angle between two directions, degrees in [0, 180]; 0 when either is zero.
 double angleDeg(const Vec2& u, const Vec2& v);
+// The same with the directions' lengths known (u.norm(), v.norm()).
+double angleDeg(const Vec2& u, double nu, const Vec2& v, double nv);
 
 // Time of a transition by the one model: straight legs from a through mid to b, a turn at every
 // vertex. `arrive` is the direction the aircraft arrives at a with, `leave` the one it leaves b with
@@ -84,6 +86,7 @@ public:
 
     int add(const EndPoint& e) {
         m_pts.push_back(e);
+        m_inNorm.push_back(e.in.norm());
         return static_cast<int>(m_pts.size()) - 1;
     }
     const EndPoint& point(int i) const { return m_pts[static_cast<std::size_t>(i)]; }
@@ -96,53 +99,73 @@ public:
             std::reverse(r.mid.begin(), r.mid.end());
         return r;
     }
-    // route(u, v).timeS without copying the way: what the order search asks for every link.
-    double timeS(int u, int v) { return cached(u, v).timeS; }
+    // route(u, v).timeS without copying the way: what the order search asks for every link (from
+    // the pair map's slot, without touching the route).
+    double timeS(int u, int v) { return entry(u, v).timeS; }
 
     double lowerBound(int u, int v) const {
         const auto& a = point(u);
         const auto& b = point(v);
-        return (a.p - b.p).norm() / m_model.speedMps + angleDeg(-a.in, b.in) / m_model.turnRateDegS;
+        // |-in| is |in|: the lengths kept at add() spare the order search two roots per bound.
+        return (a.p - b.p).norm() / m_model.speedMps +
+               angleDeg(-a.in, m_inNorm[static_cast<std::size_t>(u)], b.in, m_inNorm[static_cast<std::size_t>(v)]) /
+                   m_model.turnRateDegS;
     }
 
 private:
-    const Route& cached(int u, int v) {
-        const int lo = std::min(u, v), hi = std::max(u, v);
-        const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(lo)) << 32) |
-                                  static_cast<std::uint32_t>(hi);
-        auto it = m_routes.find(key);
-        if (it == m_routes.end())
-            it = m_routes.emplace(key, compute(lo, hi)).first;
-        return it->second;
+    struct Entry {
+        double timeS = 0.0;
+        std::size_t at = 0; // index into m_routes
+    };
+    const Entry& entry(int u, int v) {
+        const std::uint64_t key = PairMap<Entry>::key(u, v);
+        if (const Entry* e = m_routeAt.find(key))
+            return *e;
+        m_routes.push_back(compute(std::min(u, v), std::max(u, v)));
+        m_routeAt.insert(key, Entry{m_routes.back().timeS, m_routes.size() - 1});
+        return *m_routeAt.find(key);
     }
+    const Route& cached(int u, int v) { return m_routes[entry(u, v).at]; }
+    // Per end point id (the ids are dense): its visible nodes and its tree, once computed.
     struct Cache {
-        std::unordered_map<int, std::vector<int>> visible;
-        std::unordered_map<int, geo::VisibilityGraph::Tree> trees;
+        std::vector<std::unique_ptr<const std::vector<int>>> visible;
+        std::vector<std::unique_ptr<const geo::VisibilityGraph::Tree>> trees;
     };
     const std::vector<int>& visible(const geo::VisibilityGraph& g, Cache& c, int i) {
-        auto it = c.visible.find(i);
-        if (it == c.visible.end())
-            it = c.visible.emplace(i, g.visibleNodes(point(i).p)).first;
-        return it->second;
+        const auto k = static_cast<std::size_t>(i);
+        if (k >= c.visible.size())
+            c.visible.resize(m_pts.size());
+        if (!c.visible[k])
+            c.visible[k] = std::make_unique<const std::vector<int>>(g.visibleNodes(point(i).p));
+        return *c.visible[k];
     }
     const geo::VisibilityGraph::Tree& tree(const geo::VisibilityGraph& g, Cache& c, int i) {
-        auto it = c.trees.find(i);
-        if (it == c.trees.end())
-            it = c.trees.emplace(i, g.tree(point(i).p, visible(g, c, i))).first;
-        return it->second;
+        const auto k = static_cast<std::size_t>(i);
+        if (k >= c.trees.size())
+            c.trees.resize(m_pts.size());
+        if (!c.trees[k])
+            c.trees[k] = std::make_unique<const geo::VisibilityGraph::Tree>(g.tree(point(i).p, visible(g, c, i)));
+        return *c.trees[k];
     }
-    // The shortest free way on graph g, or false.
+    // The shortest free way on graph g, or false. An end point that sees no node has no way round
+    // (the straight segment is not free): the other end's nodes are not needed then.
     bool via(const geo::VisibilityGraph& g, Cache& c, int u, int v, std::vector<Vec2>& mid) {
         const Vec2 &a = point(u).p, &b = point(v).p;
         if (g.segmentIsFree(a, b)) {
             mid.clear();
             return true;
         }
+        const std::vector<int>& fromU = visible(g, c, u);
+        if (fromU.empty())
+            return false;
+        const std::vector<int>& toV = visible(g, c, v);
+        if (toV.empty())
+            return false;
         if (g.hasAllPairs())
-            return g.pathAround(a, visible(g, c, u), b, visible(g, c, v), mid);
+            return g.pathAround(a, fromU, b, toV, mid);
         // Search from the end point with the larger tree cache hit chance: the lower id (cells' order).
         const auto& t = tree(g, c, u);
-        return g.pathAround(t, b, visible(g, c, v), mid);
+        return g.pathAround(t, b, toV, mid);
     }
     Route compute(int u, int v) {
         Route r;
@@ -164,7 +187,9 @@ private:
     std::vector<RouteGraph> m_graphs;
     std::vector<Cache> m_caches;
     std::vector<EndPoint> m_pts;
-    std::unordered_map<std::uint64_t, Route> m_routes;
+    std::vector<double> m_inNorm; // per end point: in.norm()
+    std::vector<Route> m_routes;           // in the order first asked
+    PairMap<Entry> m_routeAt;              // pair of end points -> its time and index into m_routes
 };
 
 // For each of `pts` (end point ids of the router), the k nearest others of `pts`, on a grid of cell h.

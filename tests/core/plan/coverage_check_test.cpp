@@ -149,3 +149,41 @@ TEST(NoFlyViolations, CountsWaypointsAndLegs) {
     EXPECT_EQ(countNoFlyViolations(paths, zones, 0.0).total(), 1);
     EXPECT_EQ(countNoFlyViolations(paths, {}, 5.0).total(), 0);
 }
+
+// A patch's pixels (box and mask) are its polygon's: the box is the polygon's bounds and a pixel
+// centre is the patch's exactly when the polygon contains it; without patchShapes the pixels are
+// the same and the polygon is left out.
+TEST(CoverageCheck, PatchPixelsMatchTheirPolygon) {
+    // A rotated footprint's corner triangles and a courtyard left by a missing tile beside a hole.
+    geo::Polygon area = square(0, 0, 100);
+    area.holes.push_back({Vec2(45, 45), Vec2(45, 55), Vec2(55, 55), Vec2(55, 45)});
+    for (const auto& photos : {std::vector<PhotoFootprint>{{Vec2(50, 50), 37.0, 95.0, 90.0}}, tiles(2, 2), tiles(0, 4, 10.0)}) {
+        CoverageCheckOptions o;
+        o.resolutionM = 0.7;
+        auto rep = checkCoverage({area}, photos, o);
+        ASSERT_TRUE(rep.ok()) << rep.error().message;
+        ASSERT_FALSE(rep->patches.empty());
+        o.patchShapes = false;
+        auto bare = checkCoverage({area}, photos, o);
+        ASSERT_TRUE(bare.ok());
+        ASSERT_EQ(bare->patches.size(), rep->patches.size());
+        const double r = rep->resolutionM;
+        for (std::size_t k = 0; k < rep->patches.size(); ++k) {
+            const auto& p = rep->patches[k];
+            const geo::Box b = geo::bounds(p.shape);
+            EXPECT_EQ(p.box.min, b.min);
+            EXPECT_EQ(p.box.max, b.max);
+            const int rows = static_cast<int>(p.mask.size()) / p.columns;
+            ASSERT_EQ(static_cast<std::size_t>(rows * p.columns), p.mask.size());
+            for (int j = 0; j < rows; ++j)
+                for (int i = 0; i < p.columns; ++i) {
+                    const Vec2 c = b.min + r * Vec2(i + 0.5, j + 0.5);
+                    EXPECT_EQ(p.mask[static_cast<std::size_t>(j * p.columns + i)] != 0, geo::contains(p.shape, c))
+                        << "patch " << k << " pixel " << i << ", " << j;
+                }
+            EXPECT_TRUE(bare->patches[k].shape.empty());
+            EXPECT_EQ(bare->patches[k].mask, p.mask);
+            EXPECT_EQ(bare->patches[k].box.min, p.box.min);
+        }
+    }
+}

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 using namespace pf;
 using namespace pf::plan;
@@ -35,6 +36,40 @@ bool inFootprint(const SpotPhoto& s, const Vec2& q, const SpotPhotoOptions& o) {
 }
 
 } // namespace
+
+// The places' scores count the probes in runs (whole runs inside or outside a footprint at once):
+// the counts must be those of the footprint test on every probe, also for footprints whose edge runs
+// exactly through probes, at headings along and across the lanes, and far from the origin.
+TEST(SpotPhotos, ScoredProbesCountAsTheTestOnEveryProbe) {
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> unit(0, 1);
+    for (const Vec2& origin : {Vec2(0, 0), Vec2(2.5e6, -1.5e6)}) {
+        for (double heading : {0.0, 37.5, 90.0}) {
+            // A patch's probes: pixel centres row by row, some pixels missing, every 1st or 3rd kept.
+            std::vector<Vec2> pts;
+            const double res = 0.5;
+            for (int j = 0; j < 40; ++j)
+                for (int i = 0; i < 60; ++i)
+                    if (unit(rng) < 0.8)
+                        pts.push_back(origin + Vec2((i + 0.5) * res, (j + 0.5) * res));
+            const double halfAlong = 0.5 * 25.9, halfAcross = 0.5 * 34.6;
+            const spot_detail::ScoredProbes sp(pts, heading, std::fmod(heading + 90.0, 360.0), halfAlong, halfAcross);
+            const double h = heading * M_PI / 180.0;
+            const Vec2 along(std::sin(h), std::cos(h)), right(std::cos(h), -std::sin(h));
+            for (int k = 0; k < 400; ++k) {
+                Vec2 c = origin + Vec2(-30 + 90 * unit(rng), -30 + 80 * unit(rng));
+                if (k % 4 == 0) // a footprint edge through a probe
+                    c = pts[static_cast<std::size_t>(k) % pts.size()] - (k % 8 ? halfAlong * along : halfAcross * right);
+                for (int hi = 0; hi < 2; ++hi) {
+                    std::size_t n = 0;
+                    for (const auto& q : pts)
+                        n += sp.sees(c, hi, q) ? 1 : 0;
+                    ASSERT_EQ(sp.count(c, hi), n) << heading << " at " << (c - origin).transpose();
+                }
+            }
+        }
+    }
+}
 
 TEST(SpotPhotos, OnePhotoSeesASmallUnseenSquare) {
     const geo::MultiPolygon ground{rect(0, 0, 10, 10)};
