@@ -26,14 +26,6 @@ bool straightThrough(const geo::Vec2& a, const geo::Vec2& b, const geo::Vec2& c)
     return std::abs(cr) <= 1e-6 * u.norm() * v.norm() && u.dot(v) >= 0;
 }
 
-// Signed area of a ring (positive when counter-clockwise).
-double signedArea(const geo::Ring& r) {
-    double s = 0;
-    for (std::size_t i = 0, j = r.size() - 1; i < r.size(); j = i++)
-        s += r[j].x() * r[i].y() - r[i].x() * r[j].y();
-    return 0.5 * s;
-}
-
 // The part of the convex ring `in` on the inner side of edge j -> i of the convex ring `b` whose
 // orientation is `orient` (+1 counter-clockwise), or on its outer side (`inner` false), into `out`.
 void clipByEdge(const geo::Ring& in, geo::Ring& out, const geo::Vec2& p, const geo::Vec2& d, double orient, bool inner) {
@@ -52,13 +44,13 @@ void clipByEdge(const geo::Ring& in, geo::Ring& out, const geo::Vec2& p, const g
 // The area of the intersection of two convex rings (Sutherland-Hodgman: `a` clipped by each edge
 // of `b`). The footprints are rectangles, so this is exact up to rounding.
 double convexOverlapArea(const geo::Ring& a, const geo::Ring& b) {
-    const double orient = signedArea(b) >= 0 ? 1.0 : -1.0;
+    const double orient = geo::signedArea(b) >= 0 ? 1.0 : -1.0;
     geo::Ring cur = a, next;
     for (std::size_t i = 0, j = b.size() - 1; i < b.size() && !cur.empty(); j = i++) {
         clipByEdge(cur, next, b[j], b[i] - b[j], orient, true);
         std::swap(cur, next);
     }
-    return cur.size() < 3 ? 0.0 : std::abs(signedArea(cur));
+    return cur.size() < 3 ? 0.0 : std::abs(geo::signedArea(cur));
 }
 
 // The area of the convex ring `a` that none of the convex rings `covers` sees: `a` minus each cover
@@ -71,13 +63,13 @@ std::optional<double> uncoveredArea(const geo::Ring& a, const std::vector<const 
     geo::Ring rest, part, tmp;
     for (const geo::Ring* c : covers) {
         const geo::Ring& b = *c;
-        const double orient = signedArea(b) >= 0 ? 1.0 : -1.0;
+        const double orient = geo::signedArea(b) >= 0 ? 1.0 : -1.0;
         next.clear();
         for (const geo::Ring& piece : pieces) {
             rest = piece;
             for (std::size_t i = 0, j = b.size() - 1; i < b.size() && rest.size() >= 3; j = i++) {
                 clipByEdge(rest, part, b[j], b[i] - b[j], orient, false);
-                if (part.size() >= 3 && std::abs(signedArea(part)) > ignore)
+                if (part.size() >= 3 && std::abs(geo::signedArea(part)) > ignore)
                     next.push_back(part);
                 clipByEdge(rest, tmp, b[j], b[i] - b[j], orient, true);
                 std::swap(rest, tmp);
@@ -91,13 +83,13 @@ std::optional<double> uncoveredArea(const geo::Ring& a, const std::vector<const 
     }
     double sum = 0;
     for (const auto& piece : pieces)
-        sum += std::abs(signedArea(piece));
+        sum += std::abs(geo::signedArea(piece));
     return sum;
 }
 
 // Whether every corner of `a` lies inside the convex ring `b` (within `tol` metres of its edges).
 bool convexContains(const geo::Ring& b, const geo::Ring& a, double tol) {
-    const double orient = signedArea(b) >= 0 ? 1.0 : -1.0;
+    const double orient = geo::signedArea(b) >= 0 ? 1.0 : -1.0;
     for (std::size_t i = 0, j = b.size() - 1; i < b.size(); j = i++) {
         const geo::Vec2 p = b[j], d = b[i] - b[j];
         const double len = d.norm();
