@@ -202,23 +202,19 @@ Result<CoverageReport> checkCoverage(const geo::MultiPolygon& admissible, const 
             const int j = static_cast<int>(pixels[a] / static_cast<std::size_t>(ras.nx));
             const double x0 = ras.min.x() + i0 * ras.r, x1 = ras.min.x() + i1 * ras.r;
             const double y0 = ras.min.y() + j * ras.r, y1 = y0 + ras.r;
-            if (i0 < iLo)
-                patch.box.min.x() = x0;
-            if (i1 - 1 > iHi)
-                patch.box.max.x() = x1;
-            if (j < jLo)
-                patch.box.min.y() = y0;
-            if (j > jHi)
-                patch.box.max.y() = y1;
             iLo = std::min(iLo, i0);
             iHi = std::max(iHi, i1 - 1);
             jLo = std::min(jLo, j);
             jHi = std::max(jHi, j);
-            rects.push_back(geo::Polygon{{geo::Vec2(x0, y0), geo::Vec2(x1, y0), geo::Vec2(x1, y1), geo::Vec2(x0, y1)}, {}});
+            if (opt.patchShapes)
+                rects.push_back(geo::Polygon{{geo::Vec2(x0, y0), geo::Vec2(x1, y0), geo::Vec2(x1, y1), geo::Vec2(x0, y1)}, {}});
             sum += static_cast<double>(i1 - i0) * geo::Vec2(0.5 * (x0 + x1), 0.5 * (y0 + y1));
             a = b + 1;
         }
         patch.centroid = sum / static_cast<double>(pixels.size());
+        // The box of the pixels' edges, each worked out as the pixel rows above do (same rounding).
+        patch.box.min = geo::Vec2(ras.min.x() + iLo * ras.r, ras.min.y() + jLo * ras.r);
+        patch.box.max = geo::Vec2(ras.min.x() + (iHi + 1) * ras.r, ras.min.y() + jHi * ras.r + ras.r);
         patch.columns = iHi - iLo + 1;
         patch.mask.assign(static_cast<std::size_t>(patch.columns) * static_cast<std::size_t>(jHi - jLo + 1), 0);
         for (const std::size_t p : pixels) {
