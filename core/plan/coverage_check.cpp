@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <numeric>
 
@@ -59,6 +60,38 @@ template <class F> void scanRings(const Raster& ras, const std::vector<const geo
                 f(j, i0, i1);
         }
     }
+}
+
+// The pixel loops below are most of a check's time (a plan's photos cover their ground several times
+// over): they work on eight pixels at once, in a 64-bit word.
+constexpr std::uint64_t kOnes = 0x0101010101010101ULL;
+
+// Pixels 0 <-> 1 (inside the admissible area by the even-odd rule).
+void flipInside(std::uint8_t* p, int n) {
+    int i = 0;
+    for (; i + 8 <= n; i += 8) {
+        std::uint64_t w;
+        std::memcpy(&w, p + i, 8);
+        w ^= kOnes;
+        std::memcpy(p + i, &w, 8);
+    }
+    for (; i < n; ++i)
+        p[i] ^= 1;
+}
+
+// Pixels 1 (admissible, uncovered) become 2 (covered); 0 (outside) and 2 stay. The pixels hold 0, 1
+// or 2 here: a byte is 1 when its bit 0 is set and its bit 1 is not, and adding that bit carries
+// into no other byte.
+void markCovered(std::uint8_t* p, int n) {
+    int i = 0;
+    for (; i + 8 <= n; i += 8) {
+        std::uint64_t w;
+        std::memcpy(&w, p + i, 8);
+        w += w & ~(w >> 1) & kOnes;
+        std::memcpy(p + i, &w, 8);
+    }
+    for (; i < n; ++i)
+        p[i] = static_cast<std::uint8_t>(p[i] + (p[i] == 1));
 }
 
 } // namespace
@@ -116,8 +149,7 @@ Result<CoverageReport> checkCoverage(const geo::MultiPolygon& admissible, const 
             stopped = stopRequested();
         if (stopped)
             return;
-        for (int i = i0; i < i1; ++i)
-            px[ras.index(i, j)] ^= 1; // even-odd across separate parts too
+        flipInside(px.data() + ras.index(i0, j), i1 - i0); // even-odd across separate parts too
     });
     if (stopped)
         return makeError(ErrorCode::Cancelled, "checking the coverage: cancelled");
@@ -128,13 +160,7 @@ Result<CoverageReport> checkCoverage(const geo::MultiPolygon& admissible, const 
             reportProgress(static_cast<double>(k) / static_cast<double>(photos.size()), "coverage check");
         }
         const geo::Ring ring = outlines ? (*outlines)[k] : footprintRing(photos[k]);
-        scanRings(ras, {&ring}, [&](int j, int i0, int i1) {
-            for (int i = i0; i < i1; ++i) {
-                auto& v = px[ras.index(i, j)];
-                if (v == 1)
-                    v = 2;
-            }
-        });
+        scanRings(ras, {&ring}, [&](int j, int i0, int i1) { markCovered(px.data() + ras.index(i0, j), i1 - i0); });
     }
     const double pixelArea = ras.r * ras.r;
     std::size_t inside = 0, covered = 0;

@@ -187,3 +187,45 @@ TEST(CoverageCheck, PatchPixelsMatchTheirPolygon) {
         }
     }
 }
+
+// The raster's word-wide pixel loops against a count pixel by pixel: pixel centres inside the area
+// (with a hole) and inside at least one rotated footprint, rows of every length and offset (not
+// multiples of eight), photos overlapping each other and the area's edge.
+TEST(CoverageCheck, CoveredAreaEqualsPixelByPixelCount) {
+    const geo::Polygon area{{Vec2(0.3, 0.1), Vec2(97.7, 3.9), Vec2(88.1, 71.3), Vec2(41.9, 93.3), Vec2(2.2, 60.7)},
+                            {{Vec2(40.1, 30.2), Vec2(40.4, 52.9), Vec2(61.3, 47.1), Vec2(58.2, 29.6)}}};
+    std::vector<PhotoFootprint> photos;
+    for (int k = 0; k < 23; ++k)
+        photos.push_back({Vec2(7.3 + 4.1 * k, 5.9 + 3.7 * (k % 7) + 1.3 * k), 17.0 * k, 13.0 + (k % 3), 9.0 + (k % 4)});
+    CoverageCheckOptions opt;
+    opt.resolutionM = 0.37;
+    auto rep = checkCoverage({area}, photos, opt);
+    ASSERT_TRUE(rep.ok()) << rep.error().message;
+    ASSERT_DOUBLE_EQ(rep->resolutionM, 0.37);
+    // The raster's origin is the area's box corner; pixel (i, j) has its centre half a pixel in.
+    const geo::Box box = geo::bounds(geo::MultiPolygon{area});
+    const double r = rep->resolutionM;
+    const int nx = static_cast<int>(std::ceil((box.max.x() - box.min.x()) / r));
+    const int ny = static_cast<int>(std::ceil((box.max.y() - box.min.y()) / r));
+    std::vector<geo::Polygon> rings;
+    for (const auto& p : photos)
+        rings.push_back(geo::Polygon{footprintRing(p), {}});
+    long inside = 0, covered = 0;
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            const Vec2 c = box.min + Vec2((i + 0.5) * r, (j + 0.5) * r);
+            if (!geo::contains(area, c))
+                continue;
+            ++inside;
+            for (const auto& ring : rings)
+                if (geo::contains(ring, c)) {
+                    ++covered;
+                    break;
+                }
+        }
+    ASSERT_GT(covered, 1000);
+    ASSERT_LT(covered, inside); // some ground left uncovered
+    // Pixel centres on an edge may fall either way: a handful at most.
+    EXPECT_NEAR(rep->admissibleAreaM2 / (r * r), static_cast<double>(inside), 3.0);
+    EXPECT_NEAR(rep->coveredAreaM2 / (r * r), static_cast<double>(covered), 3.0);
+}
