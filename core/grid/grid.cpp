@@ -81,8 +81,10 @@ double nearestOnSegment(const Vec2& p, const Vec2& a, const Vec2& b, Vec2* q) {
 
 class GridBuilder {
 public:
-    static Result<Grid> build(const geo::MultiPolygon& area, const std::vector<geo::Polygon>& noFly,
-                              const GridOptions& opt);
+    static std::optional<Error> checkOptions(const GridOptions& opt);
+    static Result<GridGround> prepare(const geo::MultiPolygon& area, const std::vector<geo::Polygon>& noFly,
+                                      double safetyMarginM);
+    static Result<Grid> build(const GridGround& ground, const GridOptions& opt);
 };
 
 Grid::Size Grid::sizeFor(const geo::MultiPolygon& region, double cellSize, double angleDeg) {
@@ -114,16 +116,29 @@ double Grid::cellSizeToFit(const geo::MultiPolygon& region, double cellSize, dou
 }
 
 Result<Grid> Grid::build(const geo::Polygon& area, const std::vector<geo::Polygon>& noFly, const GridOptions& opt) {
-    return GridBuilder::build(geo::MultiPolygon{area}, noFly, opt);
+    return build(geo::MultiPolygon{area}, noFly, opt);
 }
 
 Result<Grid> Grid::build(const geo::MultiPolygon& area, const std::vector<geo::Polygon>& noFly,
                          const GridOptions& opt) {
-    return GridBuilder::build(area, noFly, opt);
+    if (auto e = GridBuilder::checkOptions(opt))
+        return *e;
+    auto ground = GridBuilder::prepare(area, noFly, opt.safetyMarginM);
+    if (!ground)
+        return ground.error();
+    return GridBuilder::build(*ground, opt);
 }
 
-Result<Grid> GridBuilder::build(const geo::MultiPolygon& area, const std::vector<geo::Polygon>& noFly,
-                                const GridOptions& opt) {
+Result<Grid> Grid::build(const GridGround& ground, const GridOptions& opt) { return GridBuilder::build(ground, opt); }
+
+std::optional<Error> Grid::checkOptions(const GridOptions& opt) { return GridBuilder::checkOptions(opt); }
+
+Result<GridGround> GridGround::prepare(const geo::MultiPolygon& area, const std::vector<geo::Polygon>& noFly,
+                                       double safetyMarginM) {
+    return GridBuilder::prepare(area, noFly, safetyMarginM);
+}
+
+std::optional<Error> GridBuilder::checkOptions(const GridOptions& opt) {
     char buf[512];
     if (!std::isfinite(opt.cellSize) || opt.cellSize <= 0) {
         std::snprintf(buf, sizeof buf, "the grid cell size must be a positive number of metres (got %g)",
@@ -135,6 +150,17 @@ Result<Grid> GridBuilder::build(const geo::MultiPolygon& area, const std::vector
     if (!std::isfinite(opt.safetyMarginM) || opt.safetyMarginM < 0) {
         std::snprintf(buf, sizeof buf, "the safety margin must be zero or a positive number of metres (got %g)",
                       opt.safetyMarginM);
+        return makeError(ErrorCode::InvalidInput, buf);
+    }
+    return std::nullopt;
+}
+
+Result<GridGround> GridBuilder::prepare(const geo::MultiPolygon& area, const std::vector<geo::Polygon>& noFly,
+                                        double safetyMarginM) {
+    if (!std::isfinite(safetyMarginM) || safetyMarginM < 0) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "the safety margin must be zero or a positive number of metres (got %g)",
+                      safetyMarginM);
         return makeError(ErrorCode::InvalidInput, buf);
     }
     if (area.empty())
@@ -174,6 +200,52 @@ Result<Grid> GridBuilder::build(const geo::MultiPolygon& area, const std::vector
         return makeError(ErrorCode::InvalidGeometry,
                          "the no-fly zones cover the whole area: nothing admissible is left to photograph");
 
+    GridGround gr;
+    gr.m_safetyMarginM = safetyMarginM;
+    gr.m_areaBox = geo::bounds(area);
+    gr.m_admissible = std::move(admissible);
+    // GEOS approximates the buffer's round corners by chords inscribed in the true offset curve (8 per
+    // quarter circle), which would cut up to 0.5 % off the margin there; buffering a little more makes
+    // the polygonal zone contain the true offset, so the margin is always honoured in full.
+    geo::MultiPolygon buffered;
+    if (!zoneUnion.empty())
+        buffered = safetyMarginM > 0 ? geo::buffer(zoneUnion, safetyMarginM / std::cos(M_PI / 16), 8) : zoneUnion;
+    // Pockets: ground enclosed by margins that merge round it (zones a few metres apart, a U-shaped zone
+    // whose margin closes the U) is a hole of the buffered zones. No safe path leads into it, so it is
+    // flown like a margin: never entered, its ground photographed from outside as far as the
+    // footprints reach. The holes are filled; what they held of the admissible area is kept for reports.
+    {
+        geo::MultiPolygon pockets;
+        for (auto& z : buffered) {
+            for (auto& h : z.holes)
+                pockets.push_back(geo::Polygon{std::move(h), {}});
+            z.holes.clear();
+        }
+        if (!pockets.empty()) {
+            for (const auto& p : pockets)
+                for (const auto& part : geo::intersection(gr.m_admissible, p))
+                    gr.m_pockets.push_back(part);
+            buffered.insert(buffered.end(), pockets.begin(), pockets.end());
+            buffered = geo::unite(buffered);
+        }
+    }
+    // The grid's safety questions go to the no-fly model, asked of these zones.
+    gr.m_noFly = geo::NoFlyField::ofGrownZones(std::move(buffered));
+    for (const auto& z : gr.m_noFly.zones()) {
+        gr.m_zoneBoxes.push_back(geo::bounds(z));
+        gr.m_zonesOgr.push_back(std::shared_ptr<const OGRPolygon>(geo::detail::toOgr(z).release()));
+    }
+    return gr;
+}
+
+Result<Grid> GridBuilder::build(const GridGround& ground, const GridOptions& opt) {
+    char buf[512];
+    if (auto e = checkOptions(opt))
+        return *e;
+    if (opt.safetyMarginM != ground.m_safetyMarginM)
+        return makeError(ErrorCode::Internal, "a grid was asked of ground prepared for another safety margin");
+    const geo::MultiPolygon& admissible = ground.m_admissible;
+
     // Budget check before any per-cell allocation.
     const Grid::Size size = Grid::sizeFor(admissible, opt.cellSize, opt.angleDeg);
     const double budget = static_cast<double>(std::min<std::size_t>(opt.maxCells, INT_MAX));
@@ -200,7 +272,7 @@ Result<Grid> GridBuilder::build(const geo::MultiPolygon& area, const std::vector
 
     // The grid is rotated about the centre of the area's bounding box and centred on the admissible
     // area's rotated bounding box; origin is corner (col 0, row 0) in the local frame.
-    const geo::Box areaBox = geo::bounds(area);
+    const geo::Box& areaBox = ground.m_areaBox;
     const Vec2 pivot = 0.5 * (areaBox.min + areaBox.max);
     geo::MultiPolygon centred = admissible;
     for (auto& poly : centred)
@@ -217,39 +289,11 @@ Result<Grid> GridBuilder::build(const geo::MultiPolygon& area, const std::vector
     frame.s = g.m_sin;
     frame.size = opt.cellSize;
 
-    g.m_admissible = std::move(admissible);
-    // GEOS approximates the buffer's round corners by chords inscribed in the true offset curve (8 per
-    // quarter circle), which would cut up to 0.5 % off the margin there; buffering a little more makes
-    // the polygonal zone contain the true offset, so the margin is always honoured in full.
-    geo::MultiPolygon buffered;
-    if (!zoneUnion.empty())
-        buffered = opt.safetyMarginM > 0 ? geo::buffer(zoneUnion, opt.safetyMarginM / std::cos(M_PI / 16), 8)
-                                         : zoneUnion;
-    // Pockets: ground enclosed by margins that merge round it (zones a few metres apart, a U-shaped zone
-    // whose margin closes the U) is a hole of the buffered zones. No safe path leads into it, so it is
-    // flown like a margin: never entered, its ground photographed from outside as far as the
-    // footprints reach. The holes are filled; what they held of the admissible area is kept for reports.
-    {
-        geo::MultiPolygon pockets;
-        for (auto& z : buffered) {
-            for (auto& h : z.holes)
-                pockets.push_back(geo::Polygon{std::move(h), {}});
-            z.holes.clear();
-        }
-        if (!pockets.empty()) {
-            for (const auto& p : pockets)
-                for (const auto& part : geo::intersection(g.m_admissible, p))
-                    g.m_pockets.push_back(part);
-            buffered.insert(buffered.end(), pockets.begin(), pockets.end());
-            buffered = geo::unite(buffered);
-        }
-    }
-    // The grid's safety questions go to the no-fly model, asked of these zones.
-    g.m_noFly = geo::NoFlyField::ofGrownZones(std::move(buffered));
+    g.m_admissible = admissible;
+    g.m_pockets = ground.m_pockets;
+    g.m_noFly = ground.m_noFly;
     const geo::MultiPolygon& bufferedZones = g.m_noFly.zones();
-    std::vector<geo::Box> zoneBoxes; // to skip far zones fast when cutting cells
-    for (const auto& z : bufferedZones)
-        zoneBoxes.push_back(geo::bounds(z));
+    const std::vector<geo::Box>& zoneBoxes = ground.m_zoneBoxes; // to skip far zones fast when cutting cells
 
     // Which cells overlap the admissible area.
     const std::vector<URing> admRings = makeURings(g.m_admissible, frame);
@@ -261,9 +305,7 @@ Result<Grid> GridBuilder::build(const geo::MultiPolygon& area, const std::vector
     const std::vector<std::uint8_t> fly =
         flyRings.empty() ? std::vector<std::uint8_t>(inArea.size(), kOut) : rasterise(flyRings, g.m_cols, g.m_rows);
 
-    std::vector<std::unique_ptr<OGRPolygon>> zonesOgr;
-    for (const auto& z : bufferedZones)
-        zonesOgr.push_back(geo::detail::toOgr(z));
+    const auto& zonesOgr = ground.m_zonesOgr;
 
     const int n = g.m_cols * g.m_rows;
     g.m_state.assign(static_cast<std::size_t>(n), static_cast<std::uint8_t>(CellState::Outside));

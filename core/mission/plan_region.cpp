@@ -120,6 +120,16 @@ public:
         const auto it = m_grids.find({angle, cellSize});
         return it == m_grids.end() ? nullptr : &it->second;
     }
+    // The region's ground (admissible area, buffered zones), prepared at the first grid and shared by
+    // every angle and cell size after it.
+    const Result<grid::GridGround>& ground(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
+                                           double safetyMarginM) {
+        if (!m_ground || m_groundMarginM != safetyMarginM) {
+            m_ground = grid::GridGround::prepare(region, noFly, safetyMarginM);
+            m_groundMarginM = safetyMarginM;
+        }
+        return *m_ground;
+    }
     void keep(double angle, double cellSize, const grid::Grid& g) {
         const double cells = static_cast<double>(g.cellCount());
         if (m_cells + cells > kMaxCells)
@@ -131,6 +141,8 @@ public:
 private:
     std::map<std::pair<double, double>, grid::Grid> m_grids;
     double m_cells = 0;
+    std::optional<Result<grid::GridGround>> m_ground;
+    double m_groundMarginM = 0.0;
 };
 
 Result<AircraftPlan> gridRegion(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
@@ -148,6 +160,9 @@ Result<AircraftPlan> gridRegion(const geo::MultiPolygon& region, const std::vect
     mopt.diagonalSteps = popt.kind == plan::PlannerKind::Wavefront && popt.wavefront.moore;
     mopt.turnLowerBound = false;
     // The grid at an angle and cell size, and the cell path's request on it (from and back to home).
+    // The ground every angle's grid is built from, prepared once (the cache's when there is one).
+    GridCache own;
+    GridCache& grounds = cache ? *cache : own;
     auto buildGrid = [&](double angle, double cellSize) -> Result<grid::Grid> {
         if (cache)
             if (const grid::Grid* known = cache->find(angle, cellSize))
@@ -157,7 +172,12 @@ Result<AircraftPlan> gridRegion(const geo::MultiPolygon& region, const std::vect
         gopt.angleDeg = angle;
         gopt.safetyMarginM = options.safetyMarginM;
         gopt.maxCells = options.maxCells;
-        auto g = grid::Grid::build(region, noFly, gopt);
+        if (auto e = grid::Grid::checkOptions(gopt)) // the option errors first, as Grid::build gives them
+            return *e;
+        const auto& ground = grounds.ground(region, noFly, options.safetyMarginM);
+        if (!ground)
+            return ground.error();
+        auto g = grid::Grid::build(*ground, gopt);
         if (g && cache)
             cache->keep(angle, cellSize, *g);
         return g;

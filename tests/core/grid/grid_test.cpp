@@ -204,6 +204,56 @@ TEST(Grid, ErrorsNameTheProblem) {
         << big.error().message;
 }
 
+// Ground prepared once serves every angle and cell size: each grid equals the one built from the area
+// and zones directly (states, flight positions bit for bit, moves, pockets, zones).
+TEST(Grid, PreparedGroundGivesTheSameGrids) {
+    const geo::MultiPolygon area{geo::Polygon{{Vec2(0, 0), Vec2(120, 0), Vec2(120, 50), Vec2(60, 50), Vec2(60, 100),
+                                               Vec2(0, 100)}, {}}};
+    // Two zones 4 m apart (their 5 m margins merge: a pocket) and a rotated one.
+    const std::vector<geo::Polygon> zones{rect(20, 20, 30, 40), rect(34, 20, 44, 40),
+                                          geo::Polygon{{Vec2(80, 10), Vec2(95, 18), Vec2(90, 28), Vec2(75, 20)}, {}}};
+    auto ground = GridGround::prepare(area, zones, 5.0);
+    ASSERT_TRUE(ground.ok()) << ground.error().message;
+    EXPECT_DOUBLE_EQ(ground->safetyMarginM(), 5.0);
+    for (double angle : {0.0, 17.5, 45.0, 90.0, 133.0})
+        for (double cell : {4.0, 7.3}) {
+            const GridOptions opt{cell, angle, 5.0};
+            auto direct = Grid::build(area, zones, opt);
+            auto shared = Grid::build(*ground, opt);
+            ASSERT_TRUE(direct.ok() && shared.ok());
+            ASSERT_EQ(direct->cols(), shared->cols());
+            ASSERT_EQ(direct->rows(), shared->rows());
+            EXPECT_EQ(direct->origin(), shared->origin());
+            EXPECT_EQ(direct->visitCount(), shared->visitCount());
+            int shifted = 0;
+            for (int i = 0; i < direct->cellCount(); ++i) {
+                ASSERT_EQ(direct->state(i), shared->state(i)) << "angle " << angle << " cell " << i;
+                shifted += direct->state(i) == CellState::Shifted;
+                if (direct->needsVisit(i)) {
+                    EXPECT_EQ(direct->flightPosition(i), shared->flightPosition(i));
+                    for (Dir d : kDirs)
+                        EXPECT_EQ(direct->canMove(i, d), shared->canMove(i, d));
+                }
+            }
+            EXPECT_GT(shifted, 0);
+            EXPECT_EQ(direct->pockets().size(), shared->pockets().size());
+            EXPECT_DOUBLE_EQ(geo::area(direct->pockets()), geo::area(shared->pockets()));
+            EXPECT_DOUBLE_EQ(geo::area(direct->bufferedNoFly()), geo::area(shared->bufferedNoFly()));
+        }
+    EXPECT_GT(geo::area(ground->admissible()), 0.0);
+    // Another margin than the ground's is refused, not silently planned with the wrong one.
+    auto wrong = Grid::build(*ground, GridOptions{4.0, 0.0, 2.0});
+    ASSERT_FALSE(wrong.ok());
+    EXPECT_NE(wrong.error().message.find("another safety margin"), std::string::npos);
+    // The area's errors come from prepare, the options' from the build.
+    auto covered = GridGround::prepare(geo::MultiPolygon{rect(0, 0, 10, 10)}, {rect(-1, -1, 11, 11)}, 0.0);
+    ASSERT_FALSE(covered.ok());
+    EXPECT_NE(covered.error().message.find("cover the whole area"), std::string::npos);
+    auto badCell = Grid::build(*ground, GridOptions{0.0, 0.0, 5.0});
+    ASSERT_FALSE(badCell.ok());
+    EXPECT_NE(badCell.error().message.find("cell size must be a positive"), std::string::npos);
+}
+
 TEST(Grid, CellSizeToFitIsTheSmallestThatFits) {
     const geo::MultiPolygon region{rect(0, 0, 1000, 300)};
     for (std::size_t budget : {10u, 1000u, 12345u}) {
