@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
+#include <thread>
+#include <vector>
 
 using namespace pf::geo;
 
@@ -95,4 +98,47 @@ TEST(LocalFrame, CopiesAreIndependentAndEquivalent) {
     const LonLat p{8.43, 49.02};
     EXPECT_EQ(copy.toLocal(p), f->toLocal(p));
     EXPECT_NE(copy.projString().find("+proj=tmerc"), std::string::npos);
+}
+
+// A copy (its transformations cloned, not built anew) transforms bit for bit as its source, both ways,
+// and keeps working after the source is gone; copies used on two threads at once agree too.
+TEST(LocalFrame, CopiesTransformBitForBitAndOutliveTheirSource) {
+    std::optional<LocalFrame> source;
+    {
+        auto f = LocalFrame::create(kKarlsruhe);
+        ASSERT_TRUE(f.ok());
+        source.emplace(std::move(*f));
+    }
+    std::vector<LonLat> geo;
+    std::vector<Vec2> local;
+    for (int k = 0; k < 200; ++k) {
+        geo.push_back({kKarlsruhe.lon + 0.0003 * (k - 100), kKarlsruhe.lat + 0.0002 * ((k * 37) % 200 - 100)});
+        local.push_back(Vec2(13.7 * (k - 100), 9.1 * ((k * 53) % 200 - 100)));
+    }
+    std::vector<Vec2> wantLocal;
+    std::vector<LonLat> wantGeo;
+    for (std::size_t k = 0; k < geo.size(); ++k) {
+        wantLocal.push_back(source->toLocal(geo[k]));
+        wantGeo.push_back(source->toGeo(local[k]));
+    }
+    LocalFrame copy = *source;
+    LocalFrame copyOfCopy = copy;
+    source.reset();
+    auto check = [&](const LocalFrame& f) {
+        int same = 0;
+        for (std::size_t k = 0; k < geo.size(); ++k) {
+            const Vec2 l = f.toLocal(geo[k]);
+            const LonLat g = f.toGeo(local[k]);
+            same += l == wantLocal[k] && g.lon == wantGeo[k].lon && g.lat == wantGeo[k].lat;
+        }
+        return same;
+    };
+    EXPECT_EQ(check(copyOfCopy), 200);
+    LocalFrame other = copy;
+    int onThread = 0;
+    std::thread t([&] { onThread = check(other); });
+    const int here = check(copy);
+    t.join();
+    EXPECT_EQ(here, 200);
+    EXPECT_EQ(onThread, 200);
 }
