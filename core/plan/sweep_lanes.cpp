@@ -16,9 +16,9 @@ double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(
 
 // The ground model probes points a few centimetres off a boundary, never on one: the even-odd rule
 // alone is exact there.
-bool insideAny(const geo::MultiPolygon& polys, const std::vector<geo::Box>& boxes, const Vec2& p) {
+bool insideAny(const std::vector<geo::EvenOddIndex>& polys, const std::vector<geo::Box>& boxes, const Vec2& p) {
     for (std::size_t i = 0; i < polys.size(); ++i)
-        if (boxes[i].contains(p) && geo::insideEvenOdd(polys[i], p))
+        if (boxes[i].contains(p) && polys[i].inside(p))
             return true;
     return false;
 }
@@ -46,21 +46,27 @@ SweepGround::SweepGround(const geo::MultiPolygon& area, const std::vector<geo::P
         add(g);
     for (const auto& a : area)
         add(a);
-    for (const auto& a : area)
+    for (const auto& a : area) {
         m_areaBoxes.push_back(geo::bounds(a));
-    for (const auto& g : grownZones)
+        m_areaIndex.emplace_back(a);
+    }
+    for (const auto& g : grownZones) {
         m_grownBoxes.push_back(geo::bounds(g));
+        m_grownIndex.emplace_back(g);
+    }
+    for (const auto& z : zones)
+        m_zoneIndex.emplace_back(z);
 }
 
-bool SweepGround::insideArea(const Vec2& p) const { return insideAny(m_area, m_areaBoxes, p); }
+bool SweepGround::insideArea(const Vec2& p) const { return insideAny(m_areaIndex, m_areaBoxes, p); }
 
 bool SweepGround::inMargin(const Vec2& p) const { return insideArea(p) && inGrown(p); }
 
-bool SweepGround::inGrown(const Vec2& p) const { return insideAny(m_grown, m_grownBoxes, p); }
+bool SweepGround::inGrown(const Vec2& p) const { return insideAny(m_grownIndex, m_grownBoxes, p); }
 
 bool SweepGround::inZone(const Vec2& p) const {
     for (std::size_t i = 0; i < m_zones.size(); ++i)
-        if (m_blockers[i].box.contains(p) && geo::insideEvenOdd(m_zones[i], p))
+        if (m_blockers[i].box.contains(p) && m_zoneIndex[i].inside(p))
             return true;
     return false;
 }

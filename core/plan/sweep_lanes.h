@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/geo/polygon_ops.h"
+#include "core/geo/even_odd.h"
 #include "core/geo/types.h"
 #include "core/plan/decomposition.h"
 #include "core/plan/lane.h"
@@ -42,6 +43,8 @@ private:
     const std::vector<geo::Polygon>& m_zones;
     std::vector<Rings> m_blockers; // per zone and per grown polygon; the area last
     std::vector<geo::Box> m_areaBoxes, m_grownBoxes;
+    // The point tests' edges by height (the same answers as geo::insideEvenOdd).
+    std::vector<geo::EvenOddIndex> m_areaIndex, m_grownIndex, m_zoneIndex;
 };
 
 struct SweepLaneParams {

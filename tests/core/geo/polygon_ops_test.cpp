@@ -1,6 +1,11 @@
 #include "core/geo/polygon_ops.h"
 
+#include "core/geo/even_odd.h"
+
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
 
 using namespace pf::geo;
 
@@ -69,4 +74,39 @@ TEST(PolygonOps, ValidityReportsSelfIntersection) {
     std::string why;
     EXPECT_FALSE(isValid(bowtie, &why));
     EXPECT_TRUE(isValid(square(0, 0, 1)));
+}
+
+// The slab index answers as insideEvenOdd does, bit for bit: staircases with hundreds of edges (as a
+// subarea traced from grid cells), a hole, points on vertices' heights and far outside.
+TEST(EvenOddIndex, AnswersAsInsideEvenOdd) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-5.0, 105.0);
+    for (int shape = 0; shape < 6; ++shape) {
+        Polygon poly;
+        const int steps = 20 + 40 * shape;
+        const double h = 100.0 / steps;
+        for (int k = 0; k < steps; ++k) { // a staircase up the left side
+            poly.outer.push_back(Vec2(3.0 * k * h / 10.0 + (k % 3), k * h));
+            poly.outer.push_back(Vec2(3.0 * (k + 1) * h / 10.0 + (k % 3), k * h));
+        }
+        poly.outer.push_back(Vec2(100.0, 100.0));
+        poly.outer.push_back(Vec2(100.0, 0.0));
+        std::reverse(poly.outer.begin(), poly.outer.end());
+        if (shape % 2 == 1)
+            poly.holes.push_back({Vec2(60, 40), Vec2(60, 60), Vec2(80, 55), Vec2(75, 42)});
+        const EvenOddIndex index(poly);
+        int inside = 0, n = 0;
+        for (int k = 0; k < 4000; ++k) {
+            // Every fourth point at a vertex's height: an edge's end lies on the slab boundary there.
+            const double y = k % 4 == 0 ? poly.outer[static_cast<std::size_t>(k) % poly.outer.size()].y() : u(rng);
+            const Vec2 p(u(rng), y);
+            const bool want = insideEvenOdd(poly, p);
+            ASSERT_EQ(index.inside(p), want) << "shape " << shape << " point " << p.transpose();
+            inside += want;
+            ++n;
+        }
+        EXPECT_GT(inside, n / 5);
+        EXPECT_LT(inside, n);
+    }
+    EXPECT_FALSE(EvenOddIndex().inside(Vec2(0, 0)));
 }
