@@ -77,6 +77,66 @@ double nearestOnSegment(const Vec2& p, const Vec2& a, const Vec2& b, Vec2* q) {
     return (*q - p).squaredNorm();
 }
 
+
+// The nearest point to `centre` of the cell (its corners, a square) outside the zones' interiors, by
+// squared distance into `best` / `bestP` (unchanged when there is none). The region's boundary is
+// made of pieces of the cell's and the zones' edges, and the nearest point of a piece is the foot of
+// the perpendicular from `centre` or one of its ends: a vertex, or where a zone edge crosses a cell
+// edge. Each such candidate that `valid` accepts is measured.
+template <class Valid>
+void nearestFreePoint(const std::vector<Vec2>& corners, const Vec2& centre, const geo::MultiPolygon& zones,
+                      const std::vector<geo::Box>& zoneBoxes, const geo::Box& cellBox, Valid valid, double& best,
+                      Vec2& bestP) {
+    auto offer = [&](const Vec2& q) {
+        const double d = (q - centre).squaredNorm();
+        if (d < best && valid(q)) {
+            best = d;
+            bestP = q;
+        }
+    };
+    const std::size_t nc = corners.size();
+    for (std::size_t k = 0; k < nc; ++k) {
+        offer(corners[k]);
+        Vec2 q;
+        nearestOnSegment(centre, corners[k], corners[(k + 1) % nc], &q);
+        offer(q);
+    }
+    auto scan = [&](const geo::Ring& ring) {
+        const std::size_t n = ring.size();
+        for (std::size_t k = 0; k < n; ++k) {
+            const Vec2& a = ring[k];
+            const Vec2& b = ring[k + 1 < n ? k + 1 : 0];
+            const geo::Box eb{a.cwiseMin(b), a.cwiseMax(b)};
+            if (!eb.intersects(cellBox))
+                continue;
+            offer(a);
+            Vec2 q;
+            nearestOnSegment(centre, a, b, &q);
+            offer(q);
+            const Vec2 d = b - a;
+            for (std::size_t c = 0; c < nc; ++c) {
+                const Vec2& p = corners[c];
+                const Vec2 e = corners[(c + 1) % nc] - p;
+                const double den = d.x() * e.y() - d.y() * e.x();
+                if (den == 0.0)
+                    continue;
+                const Vec2 ap = p - a;
+                const double t = (ap.x() * e.y() - ap.y() * e.x()) / den;
+                const double s = (ap.x() * d.y() - ap.y() * d.x()) / den;
+                if (t >= 0.0 && t <= 1.0 && s >= 0.0 && s <= 1.0)
+                    offer(a + t * d);
+            }
+        }
+    };
+    for (std::size_t z = 0; z < zones.size(); ++z) {
+        if (!zoneBoxes[z].intersects(cellBox))
+            continue;
+        scan(zones[z].outer);
+        for (const auto& h : zones[z].holes)
+            scan(h);
+    }
+}
+
 } // namespace
 
 class GridBuilder {
@@ -233,7 +293,6 @@ Result<GridGround> GridBuilder::prepare(const geo::MultiPolygon& area, const std
     gr.m_noFly = geo::NoFlyField::ofGrownZones(std::move(buffered));
     for (const auto& z : gr.m_noFly.zones()) {
         gr.m_zoneBoxes.push_back(geo::bounds(z));
-        gr.m_zonesOgr.push_back(std::shared_ptr<const OGRPolygon>(geo::detail::toOgr(z).release()));
     }
     return gr;
 }
@@ -305,7 +364,6 @@ Result<Grid> GridBuilder::build(const GridGround& ground, const GridOptions& opt
     const std::vector<std::uint8_t> fly =
         flyRings.empty() ? std::vector<std::uint8_t>(inArea.size(), kOut) : rasterise(flyRings, g.m_cols, g.m_rows);
 
-    const auto& zonesOgr = ground.m_zonesOgr;
 
     const int n = g.m_cols * g.m_rows;
     g.m_state.assign(static_cast<std::size_t>(n), static_cast<std::uint8_t>(CellState::Outside));
@@ -322,29 +380,17 @@ Result<Grid> GridBuilder::build(const GridGround& ground, const GridOptions& opt
             // The centre is unsafe: look for the nearest safe point of the cell (cell minus zones).
             const auto corners = g.cellCorners(i);
             const Vec2 centre = g.cellCenter(i);
-            geo::Box cellBox = geo::bounds(corners);
-            geo::detail::OgrGeomPtr rest(geo::detail::toOgr(geo::Polygon{corners, {}}).release());
-            for (std::size_t k = 0; k < zonesOgr.size() && rest && !rest->IsEmpty(); ++k)
-                if (zoneBoxes[k].intersects(cellBox))
-                    rest.reset(rest->Difference(zonesOgr[k].get()));
-            const geo::MultiPolygon free = rest ? geo::detail::fromOgr(rest.get()) : geo::MultiPolygon{};
+            const geo::Box cellBox = geo::bounds(corners);
+            const int cc = g.col(i), cr = g.row(i);
             double best = std::numeric_limits<double>::infinity();
             Vec2 bestP = centre;
-            for (const auto& poly : free) {
-                auto scan = [&](const geo::Ring& ring) {
-                    for (std::size_t k = 0; k < ring.size(); ++k) {
-                        Vec2 q;
-                        const double d = nearestOnSegment(centre, ring[k], ring[(k + 1) % ring.size()], &q);
-                        if (d < best) {
-                            best = d;
-                            bestP = q;
-                        }
-                    }
-                };
-                scan(poly.outer);
-                for (const auto& h : poly.holes)
-                    scan(h);
-            }
+            nearestFreePoint(corners, centre, bufferedZones, zoneBoxes, cellBox, [&](const Vec2& q) {
+                // In the closed cell (its edges up to rounding) and outside every zone's interior.
+                const Vec2 u = frame.toGrid(q);
+                const double eps = 1e-9;
+                return u.x() >= cc - eps && u.x() <= cc + 1 + eps && u.y() >= cr - eps && u.y() <= cr + 1 + eps &&
+                       g.pointIsSafe(q);
+            }, best, bestP);
             st = CellState::Unflyable;
             if (std::isfinite(best) && g.pointIsSafe(bestP)) {
                 st = CellState::Shifted;

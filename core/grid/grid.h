@@ -7,11 +7,8 @@
 #include "core/result.h"
 
 #include <cstdint>
-#include <memory>
 #include <optional>
 #include <vector>
-
-class OGRPolygon;
 
 namespace pf::grid {
 
@@ -68,7 +65,6 @@ private:
     geo::MultiPolygon m_pockets;
     geo::NoFlyField m_noFly;            // the buffered zones, pockets filled
     std::vector<geo::Box> m_zoneBoxes;  // per buffered zone
-    std::vector<std::shared_ptr<const OGRPolygon>> m_zonesOgr; // per buffered zone, for the edge cells
 
     friend class GridBuilder;
 };

@@ -254,6 +254,50 @@ TEST(Grid, PreparedGroundGivesTheSameGrids) {
     EXPECT_NE(badCell.error().message.find("cell size must be a positive"), std::string::npos);
 }
 
+// A shifted cell flies at the nearest point of its square outside the buffered zones: checked against
+// the square minus the zones computed by GEOS (its boundary scanned for the point nearest the centre),
+// before the 1 mm nudge; an unflyable cell touching the zones has no free ground left of its square.
+TEST(Grid, ShiftedPositionIsTheNearestFreePointOfItsCell) {
+    std::mt19937 rng(11);
+    int shifted = 0, unflyable = 0;
+    for (int shape = 0; shape < 8; ++shape) {
+        const geo::Polygon area = rect(0, 0, 150, 120);
+        std::vector<geo::Polygon> zones;
+        for (int z = 0; z < 4; ++z)
+            zones.push_back(randomStar(rng, Vec2(25 + 33 * z, 30 + 20 * (shape % 3) + 10 * z % 40), 4, 14, 5, 9));
+        const double angle = 13.0 * shape;
+        auto g = Grid::build(area, zones, GridOptions{6.0, angle, 3.0});
+        ASSERT_TRUE(g.ok()) << g.error().message;
+        for (int i = 0; i < g->cellCount(); ++i) {
+            const CellState st = g->state(i);
+            if (st != CellState::Shifted && st != CellState::Unflyable)
+                continue;
+            const geo::MultiPolygon free = geo::difference(geo::MultiPolygon{geo::Polygon{g->cellCorners(i), {}}},
+                                                           g->bufferedNoFly());
+            if (st == CellState::Unflyable) {
+                ++unflyable;
+                EXPECT_LT(geo::area(free), 1e-6) << "cell " << i;
+                continue;
+            }
+            ++shifted;
+            const Vec2 c = g->cellCenter(i);
+            double best = std::numeric_limits<double>::infinity();
+            for (const auto& poly : free)
+                for (std::size_t k = 0; k < poly.outer.size(); ++k) {
+                    const Vec2 a = poly.outer[k], b = poly.outer[(k + 1) % poly.outer.size()];
+                    const Vec2 ab = b - a;
+                    const double t = std::clamp((c - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+                    best = std::min(best, (a + t * ab - c).norm());
+                }
+            ASSERT_TRUE(std::isfinite(best)) << "cell " << i;
+            // The flight position is that point, nudged 1 mm further from the zone when the cell allows.
+            EXPECT_NEAR((g->flightPosition(i) - c).norm(), best, 1.5e-3) << "cell " << i;
+            EXPECT_TRUE(g->pointIsSafe(g->flightPosition(i)));
+        }
+    }
+    EXPECT_GT(shifted, 50);
+}
+
 TEST(Grid, CellSizeToFitIsTheSmallestThatFits) {
     const geo::MultiPolygon region{rect(0, 0, 1000, 300)};
     for (std::size_t budget : {10u, 1000u, 12345u}) {
