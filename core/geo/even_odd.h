@@ -31,11 +31,11 @@ inline bool insideEvenOdd(const Polygon& poly, const Vec2& p) {
 }
 
 // insideEvenOdd for many points against one polygon (outer ring and holes): its edges are sorted
-// into horizontal slabs, and a point looks only at the edges of its own slab (an edge can change the
-// parity at p only when it spans p's height, and then it lies in p's slab). Each edge is tested with
-// insideEvenOdd's expression, the same operands in the same order: the same answer bit for bit, in
-// time that grows with the edges near p's height rather than with all of them (a subarea traced from
-// grid cells has hundreds).
+// into horizontal slabs, and a point looks only at the edges of its own slab (an edge can change
+// the parity at p only when it spans p's height, and then it lies in p's slab). Each edge is tested
+// with insideEvenOdd's expression, the same operands in the same order: the same answer bit for
+// bit, in time that grows with the edges near p's height rather than with all of them (a subarea
+// traced from grid cells has hundreds).
 class EvenOddIndex {
 public:
     EvenOddIndex() = default;
@@ -93,7 +93,8 @@ private:
     struct Edge {
         Vec2 i, j; // r[i] and r[j] of insideEvenOdd's loop (j the vertex before i)
     };
-    // floor((y - y0) * inv) is monotone in y: an edge's slabs run from its lowest point's to its highest's.
+    // floor((y - y0) * inv) is monotone in y: an edge's slabs run from its lowest point's to its
+    // highest's.
     int slab(double y) const {
         const double t = std::floor((y - m_y0) * m_inv);
         return t < 0 ? 0 : (t >= m_slabs - 1 ? m_slabs - 1 : static_cast<int>(t));

@@ -70,8 +70,8 @@ Result<LocalFrame> LocalFrame::forArea(const GeoPolygon& area) {
     return create({0.5 * (minLon + maxLon), 0.5 * (minLat + maxLat)});
 }
 
-// A copy clones the transformations (each copy has its own: a transformation is not to be used by two
-// threads at once): the same PROJ operations, at a fortieth of the cost of building them anew.
+// A copy clones the transformations (each copy has its own: a transformation is not to be used by
+// two threads at once): the same PROJ operations, at a fortieth of the cost of building them anew.
 LocalFrame::LocalFrame(const LocalFrame& other) : m_origin(other.m_origin) {
     if (other.m_impl) {
         auto impl = std::make_unique<Impl>();

@@ -77,16 +77,15 @@ double nearestOnSegment(const Vec2& p, const Vec2& a, const Vec2& b, Vec2* q) {
     return (*q - p).squaredNorm();
 }
 
-
-// The nearest point to `centre` of the cell (its corners, a square) outside the zones' interiors, by
-// squared distance into `best` / `bestP` (unchanged when there is none). The region's boundary is
-// made of pieces of the cell's and the zones' edges, and the nearest point of a piece is the foot of
-// the perpendicular from `centre` or one of its ends: a vertex, or where a zone edge crosses a cell
-// edge. Each such candidate that `valid` accepts is measured.
+// The nearest point to `centre` of the cell (its corners, a square) outside the zones' interiors,
+// by squared distance into `best` / `bestP` (unchanged when there is none). The region's boundary
+// is made of pieces of the cell's and the zones' edges, and the nearest point of a piece is the
+// foot of the perpendicular from `centre` or one of its ends: a vertex, or where a zone edge
+// crosses a cell edge. Each such candidate that `valid` accepts is measured.
 template <class Valid>
-void nearestFreePoint(const std::vector<Vec2>& corners, const Vec2& centre, const geo::MultiPolygon& zones,
-                      const std::vector<geo::Box>& zoneBoxes, const geo::Box& cellBox, Valid valid, double& best,
-                      Vec2& bestP) {
+void nearestFreePoint(const std::vector<Vec2>& corners, const Vec2& centre,
+                      const geo::MultiPolygon& zones, const std::vector<geo::Box>& zoneBoxes,
+                      const geo::Box& cellBox, Valid valid, double& best, Vec2& bestP) {
     auto offer = [&](const Vec2& q) {
         const double d = (q - centre).squaredNorm();
         if (d < best && valid(q)) {
@@ -142,8 +141,8 @@ void nearestFreePoint(const std::vector<Vec2>& corners, const Vec2& centre, cons
 class GridBuilder {
 public:
     static std::optional<Error> checkOptions(const GridOptions& opt);
-    static Result<GridGround> prepare(const geo::MultiPolygon& area, const std::vector<geo::Polygon>& noFly,
-                                      double safetyMarginM);
+    static Result<GridGround> prepare(const geo::MultiPolygon& area,
+                                      const std::vector<geo::Polygon>& noFly, double safetyMarginM);
     static Result<Grid> build(const GridGround& ground, const GridOptions& opt);
 };
 
@@ -189,11 +188,16 @@ Result<Grid> Grid::build(const geo::MultiPolygon& area, const std::vector<geo::P
     return GridBuilder::build(*ground, opt);
 }
 
-Result<Grid> Grid::build(const GridGround& ground, const GridOptions& opt) { return GridBuilder::build(ground, opt); }
+Result<Grid> Grid::build(const GridGround& ground, const GridOptions& opt) {
+    return GridBuilder::build(ground, opt);
+}
 
-std::optional<Error> Grid::checkOptions(const GridOptions& opt) { return GridBuilder::checkOptions(opt); }
+std::optional<Error> Grid::checkOptions(const GridOptions& opt) {
+    return GridBuilder::checkOptions(opt);
+}
 
-Result<GridGround> GridGround::prepare(const geo::MultiPolygon& area, const std::vector<geo::Polygon>& noFly,
+Result<GridGround> GridGround::prepare(const geo::MultiPolygon& area,
+                                       const std::vector<geo::Polygon>& noFly,
                                        double safetyMarginM) {
     return GridBuilder::prepare(area, noFly, safetyMarginM);
 }
@@ -215,11 +219,13 @@ std::optional<Error> GridBuilder::checkOptions(const GridOptions& opt) {
     return std::nullopt;
 }
 
-Result<GridGround> GridBuilder::prepare(const geo::MultiPolygon& area, const std::vector<geo::Polygon>& noFly,
+Result<GridGround> GridBuilder::prepare(const geo::MultiPolygon& area,
+                                        const std::vector<geo::Polygon>& noFly,
                                         double safetyMarginM) {
     if (!std::isfinite(safetyMarginM) || safetyMarginM < 0) {
         char buf[160];
-        std::snprintf(buf, sizeof buf, "the safety margin must be zero or a positive number of metres (got %g)",
+        std::snprintf(buf, sizeof buf,
+                      "the safety margin must be zero or a positive number of metres (got %g)",
                       safetyMarginM);
         return makeError(ErrorCode::InvalidInput, buf);
     }
@@ -264,16 +270,20 @@ Result<GridGround> GridBuilder::prepare(const geo::MultiPolygon& area, const std
     gr.m_safetyMarginM = safetyMarginM;
     gr.m_areaBox = geo::bounds(area);
     gr.m_admissible = std::move(admissible);
-    // GEOS approximates the buffer's round corners by chords inscribed in the true offset curve (8 per
-    // quarter circle), which would cut up to 0.5 % off the margin there; buffering a little more makes
-    // the polygonal zone contain the true offset, so the margin is always honoured in full.
+    // GEOS approximates the buffer's round corners by chords inscribed in the true offset curve (8
+    // per quarter circle), which would cut up to 0.5 % off the margin there; buffering a little
+    // more makes the polygonal zone contain the true offset, so the margin is always honoured in
+    // full.
     geo::MultiPolygon buffered;
     if (!zoneUnion.empty())
-        buffered = safetyMarginM > 0 ? geo::buffer(zoneUnion, safetyMarginM / std::cos(M_PI / 16), 8) : zoneUnion;
-    // Pockets: ground enclosed by margins that merge round it (zones a few metres apart, a U-shaped zone
-    // whose margin closes the U) is a hole of the buffered zones. No safe path leads into it, so it is
-    // flown like a margin: never entered, its ground photographed from outside as far as the
-    // footprints reach. The holes are filled; what they held of the admissible area is kept for reports.
+        buffered = safetyMarginM > 0
+                       ? geo::buffer(zoneUnion, safetyMarginM / std::cos(M_PI / 16), 8)
+                       : zoneUnion;
+    // Pockets: ground enclosed by margins that merge round it (zones a few metres apart, a U-shaped
+    // zone whose margin closes the U) is a hole of the buffered zones. No safe path leads into it,
+    // so it is flown like a margin: never entered, its ground photographed from outside as far as
+    // the footprints reach. The holes are filled; what they held of the admissible area is kept for
+    // reports.
     {
         geo::MultiPolygon pockets;
         for (auto& z : buffered) {
@@ -302,7 +312,8 @@ Result<Grid> GridBuilder::build(const GridGround& ground, const GridOptions& opt
     if (auto e = checkOptions(opt))
         return *e;
     if (opt.safetyMarginM != ground.m_safetyMarginM)
-        return makeError(ErrorCode::Internal, "a grid was asked of ground prepared for another safety margin");
+        return makeError(ErrorCode::Internal,
+                         "a grid was asked of ground prepared for another safety margin");
     const geo::MultiPolygon& admissible = ground.m_admissible;
 
     // Budget check before any per-cell allocation.
@@ -352,7 +363,8 @@ Result<Grid> GridBuilder::build(const GridGround& ground, const GridOptions& opt
     g.m_pockets = ground.m_pockets;
     g.m_noFly = ground.m_noFly;
     const geo::MultiPolygon& bufferedZones = g.m_noFly.zones();
-    const std::vector<geo::Box>& zoneBoxes = ground.m_zoneBoxes; // to skip far zones fast when cutting cells
+    const std::vector<geo::Box>& zoneBoxes =
+        ground.m_zoneBoxes; // to skip far zones fast when cutting cells
 
     // Which cells overlap the admissible area.
     const std::vector<URing> admRings = makeURings(g.m_admissible, frame);
@@ -363,7 +375,6 @@ Result<Grid> GridBuilder::build(const GridGround& ground, const GridOptions& opt
     const std::vector<URing> flyRings = makeURings(bufferedZones, frame);
     const std::vector<std::uint8_t> fly =
         flyRings.empty() ? std::vector<std::uint8_t>(inArea.size(), kOut) : rasterise(flyRings, g.m_cols, g.m_rows);
-
 
     const int n = g.m_cols * g.m_rows;
     g.m_state.assign(static_cast<std::size_t>(n), static_cast<std::uint8_t>(CellState::Outside));
@@ -384,13 +395,17 @@ Result<Grid> GridBuilder::build(const GridGround& ground, const GridOptions& opt
             const int cc = g.col(i), cr = g.row(i);
             double best = std::numeric_limits<double>::infinity();
             Vec2 bestP = centre;
-            nearestFreePoint(corners, centre, bufferedZones, zoneBoxes, cellBox, [&](const Vec2& q) {
-                // In the closed cell (its edges up to rounding) and outside every zone's interior.
-                const Vec2 u = frame.toGrid(q);
-                const double eps = 1e-9;
-                return u.x() >= cc - eps && u.x() <= cc + 1 + eps && u.y() >= cr - eps && u.y() <= cr + 1 + eps &&
-                       g.pointIsSafe(q);
-            }, best, bestP);
+            nearestFreePoint(
+                corners, centre, bufferedZones, zoneBoxes, cellBox,
+                [&](const Vec2& q) {
+                    // In the closed cell (its edges up to rounding) and outside every zone's
+                    // interior.
+                    const Vec2 u = frame.toGrid(q);
+                    const double eps = 1e-9;
+                    return u.x() >= cc - eps && u.x() <= cc + 1 + eps && u.y() >= cr - eps &&
+                           u.y() <= cr + 1 + eps && g.pointIsSafe(q);
+                },
+                best, bestP);
             st = CellState::Unflyable;
             if (std::isfinite(best) && g.pointIsSafe(bestP)) {
                 st = CellState::Shifted;

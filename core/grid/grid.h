@@ -46,25 +46,25 @@ struct GridOptions {
     std::size_t maxCells = 4'000'000; // cell budget over the grid's bounding box
 };
 
-// What a grid is built from that depends on neither its cell size nor its angle: the admissible area
-// (area minus the no-fly zones) and the zones buffered by the margin, pockets filled (see Grid). These
-// GEOS booleans are most of a small grid's build; a planner that searches many angles and cell sizes
-// over one region prepares them once. Immutable once prepared.
+// What a grid is built from that depends on neither its cell size nor its angle: the admissible
+// area (area minus the no-fly zones) and the zones buffered by the margin, pockets filled (see
+// Grid). These GEOS booleans are most of a small grid's build; a planner that searches many angles
+// and cell sizes over one region prepares them once. Immutable once prepared.
 class GridGround {
 public:
     // Errors as Grid::build's for the area (invalid or empty polygon, zones covering it all).
-    static Result<GridGround> prepare(const geo::MultiPolygon& area, const std::vector<geo::Polygon>& noFly,
-                                      double safetyMarginM);
+    static Result<GridGround> prepare(const geo::MultiPolygon& area,
+                                      const std::vector<geo::Polygon>& noFly, double safetyMarginM);
     double safetyMarginM() const { return m_safetyMarginM; }
     const geo::MultiPolygon& admissible() const { return m_admissible; }
 
 private:
     double m_safetyMarginM = 0.0;
-    geo::Box m_areaBox;                 // the area's own box: the grids turn about its centre
+    geo::Box m_areaBox; // the area's own box: the grids turn about its centre
     geo::MultiPolygon m_admissible;
     geo::MultiPolygon m_pockets;
-    geo::NoFlyField m_noFly;            // the buffered zones, pockets filled
-    std::vector<geo::Box> m_zoneBoxes;  // per buffered zone
+    geo::NoFlyField m_noFly;           // the buffered zones, pockets filled
+    std::vector<geo::Box> m_zoneBoxes; // per buffered zone
 
     friend class GridBuilder;
 };
@@ -80,8 +80,8 @@ public:
     // The same for an area made of several polygons (a subarea assigned to one aircraft).
     static Result<Grid> build(const geo::MultiPolygon& area, const std::vector<geo::Polygon>& noFly,
                               const GridOptions& opt);
-    // The same on ground prepared once (opt.safetyMarginM must be the one it was prepared with): the
-    // same grid as building from the area and zones.
+    // The same on ground prepared once (opt.safetyMarginM must be the one it was prepared with):
+    // the same grid as building from the area and zones.
     static Result<Grid> build(const GridGround& ground, const GridOptions& opt);
     // The errors Grid::build gives for its options alone (cell size, angle, margin), if any.
     static std::optional<Error> checkOptions(const GridOptions& opt);

@@ -120,9 +120,10 @@ public:
         const auto it = m_grids.find({angle, cellSize});
         return it == m_grids.end() ? nullptr : &it->second;
     }
-    // The region's ground (admissible area, buffered zones), prepared at the first grid and shared by
-    // every angle and cell size after it.
-    const Result<grid::GridGround>& ground(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
+    // The region's ground (admissible area, buffered zones), prepared at the first grid and shared
+    // by every angle and cell size after it.
+    const Result<grid::GridGround>& ground(const geo::MultiPolygon& region,
+                                           const std::vector<geo::Polygon>& noFly,
                                            double safetyMarginM) {
         if (!m_ground || m_groundMarginM != safetyMarginM) {
             m_ground = grid::GridGround::prepare(region, noFly, safetyMarginM);
@@ -159,10 +160,10 @@ Result<AircraftPlan> gridRegion(const geo::MultiPolygon& region, const std::vect
     mopt.time = a.model;
     mopt.diagonalSteps = popt.kind == plan::PlannerKind::Wavefront && popt.wavefront.moore;
     mopt.turnLowerBound = false;
-    // The grid at an angle and cell size, and the cell path's request on it (from and back to home).
     // The ground every angle's grid is built from, prepared once (the cache's when there is one).
     GridCache own;
     GridCache& grounds = cache ? *cache : own;
+    // The grid at an angle and cell size, and the cell path's request on it (from and back to home).
     auto buildGrid = [&](double angle, double cellSize) -> Result<grid::Grid> {
         if (cache)
             if (const grid::Grid* known = cache->find(angle, cellSize))
@@ -172,7 +173,8 @@ Result<AircraftPlan> gridRegion(const geo::MultiPolygon& region, const std::vect
         gopt.angleDeg = angle;
         gopt.safetyMarginM = options.safetyMarginM;
         gopt.maxCells = options.maxCells;
-        if (auto e = grid::Grid::checkOptions(gopt)) // the option errors first, as Grid::build gives them
+        // The option errors first, as Grid::build gives them.
+        if (auto e = grid::Grid::checkOptions(gopt))
             return *e;
         const auto& ground = grounds.ground(region, noFly, options.safetyMarginM);
         if (!ground)

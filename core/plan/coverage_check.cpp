@@ -62,8 +62,8 @@ template <class F> void scanRings(const Raster& ras, const std::vector<const geo
     }
 }
 
-// The pixel loops below are most of a check's time (a plan's photos cover their ground several times
-// over): they work on eight pixels at once, in a 64-bit word.
+// The pixel loops below are most of a check's time (a plan's photos cover their ground several
+// times over): they work on eight pixels at once, in a 64-bit word.
 constexpr std::uint64_t kOnes = 0x0101010101010101ULL;
 
 // Pixels 0 <-> 1 (inside the admissible area by the even-odd rule).
@@ -160,7 +160,9 @@ Result<CoverageReport> checkCoverage(const geo::MultiPolygon& admissible, const 
             reportProgress(static_cast<double>(k) / static_cast<double>(photos.size()), "coverage check");
         }
         const geo::Ring ring = outlines ? (*outlines)[k] : footprintRing(photos[k]);
-        scanRings(ras, {&ring}, [&](int j, int i0, int i1) { markCovered(px.data() + ras.index(i0, j), i1 - i0); });
+        scanRings(ras, {&ring}, [&](int j, int i0, int i1) {
+            markCovered(px.data() + ras.index(i0, j), i1 - i0);
+        });
     }
     const double pixelArea = ras.r * ras.r;
     std::size_t inside = 0, covered = 0;

@@ -16,7 +16,8 @@ double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(
 
 // The ground model probes points a few centimetres off a boundary, never on one: the even-odd rule
 // alone is exact there.
-bool insideAny(const std::vector<geo::EvenOddIndex>& polys, const std::vector<geo::Box>& boxes, const Vec2& p) {
+bool insideAny(const std::vector<geo::EvenOddIndex>& polys, const std::vector<geo::Box>& boxes,
+               const Vec2& p) {
     for (std::size_t i = 0; i < polys.size(); ++i)
         if (boxes[i].contains(p) && polys[i].inside(p))
             return true;
@@ -58,11 +59,15 @@ SweepGround::SweepGround(const geo::MultiPolygon& area, const std::vector<geo::P
         m_zoneIndex.emplace_back(z);
 }
 
-bool SweepGround::insideArea(const Vec2& p) const { return insideAny(m_areaIndex, m_areaBoxes, p); }
+bool SweepGround::insideArea(const Vec2& p) const {
+    return insideAny(m_areaIndex, m_areaBoxes, p);
+}
 
 bool SweepGround::inMargin(const Vec2& p) const { return insideArea(p) && inGrown(p); }
 
-bool SweepGround::inGrown(const Vec2& p) const { return insideAny(m_grownIndex, m_grownBoxes, p); }
+bool SweepGround::inGrown(const Vec2& p) const {
+    return insideAny(m_grownIndex, m_grownBoxes, p);
+}
 
 bool SweepGround::inZone(const Vec2& p) const {
     for (std::size_t i = 0; i < m_zones.size(); ++i)

@@ -2,8 +2,8 @@
 // it is flown, given what lies around the cell (the area's edge, a no-fly margin).
 #pragma once
 
-#include "core/geo/polygon_ops.h"
 #include "core/geo/even_odd.h"
+#include "core/geo/polygon_ops.h"
 #include "core/geo/types.h"
 #include "core/plan/decomposition.h"
 #include "core/plan/lane.h"

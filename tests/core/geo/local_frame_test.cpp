@@ -100,8 +100,8 @@ TEST(LocalFrame, CopiesAreIndependentAndEquivalent) {
     EXPECT_NE(copy.projString().find("+proj=tmerc"), std::string::npos);
 }
 
-// A copy (its transformations cloned, not built anew) transforms bit for bit as its source, both ways,
-// and keeps working after the source is gone; copies used on two threads at once agree too.
+// A copy (its transformations cloned, not built anew) transforms bit for bit as its source, both
+// ways, and keeps working after the source is gone; copies used on two threads at once agree too.
 TEST(LocalFrame, CopiesTransformBitForBitAndOutliveTheirSource) {
     std::optional<LocalFrame> source;
     {
@@ -112,7 +112,8 @@ TEST(LocalFrame, CopiesTransformBitForBitAndOutliveTheirSource) {
     std::vector<LonLat> geo;
     std::vector<Vec2> local;
     for (int k = 0; k < 200; ++k) {
-        geo.push_back({kKarlsruhe.lon + 0.0003 * (k - 100), kKarlsruhe.lat + 0.0002 * ((k * 37) % 200 - 100)});
+        geo.push_back({kKarlsruhe.lon + 0.0003 * (k - 100),
+                       kKarlsruhe.lat + 0.0002 * ((k * 37) % 200 - 100)});
         local.push_back(Vec2(13.7 * (k - 100), 9.1 * ((k * 53) % 200 - 100)));
     }
     std::vector<Vec2> wantLocal;

@@ -76,8 +76,8 @@ TEST(PolygonOps, ValidityReportsSelfIntersection) {
     EXPECT_TRUE(isValid(square(0, 0, 1)));
 }
 
-// The slab index answers as insideEvenOdd does, bit for bit: staircases with hundreds of edges (as a
-// subarea traced from grid cells), a hole, points on vertices' heights and far outside.
+// The slab index answers as insideEvenOdd does, bit for bit: staircases with hundreds of edges (as
+// a subarea traced from grid cells), a hole, points on vertices' heights and far outside.
 TEST(EvenOddIndex, AnswersAsInsideEvenOdd) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> u(-5.0, 105.0);
@@ -97,8 +97,11 @@ TEST(EvenOddIndex, AnswersAsInsideEvenOdd) {
         const EvenOddIndex index(poly);
         int inside = 0, n = 0;
         for (int k = 0; k < 4000; ++k) {
-            // Every fourth point at a vertex's height: an edge's end lies on the slab boundary there.
-            const double y = k % 4 == 0 ? poly.outer[static_cast<std::size_t>(k) % poly.outer.size()].y() : u(rng);
+            // Every fourth point at a vertex's height: an edge's end lies on the slab boundary
+            // there.
+            const double y = k % 4 == 0
+                                 ? poly.outer[static_cast<std::size_t>(k) % poly.outer.size()].y()
+                                 : u(rng);
             const Vec2 p(u(rng), y);
             const bool want = insideEvenOdd(poly, p);
             ASSERT_EQ(index.inside(p), want) << "shape " << shape << " point " << p.transpose();

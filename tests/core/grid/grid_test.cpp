@@ -204,14 +204,15 @@ TEST(Grid, ErrorsNameTheProblem) {
         << big.error().message;
 }
 
-// Ground prepared once serves every angle and cell size: each grid equals the one built from the area
-// and zones directly (states, flight positions bit for bit, moves, pockets, zones).
+// Ground prepared once serves every angle and cell size: each grid equals the one built from the
+// area and zones directly (states, flight positions bit for bit, moves, pockets, zones).
 TEST(Grid, PreparedGroundGivesTheSameGrids) {
-    const geo::MultiPolygon area{geo::Polygon{{Vec2(0, 0), Vec2(120, 0), Vec2(120, 50), Vec2(60, 50), Vec2(60, 100),
-                                               Vec2(0, 100)}, {}}};
+    const geo::MultiPolygon area{geo::Polygon{
+        {Vec2(0, 0), Vec2(120, 0), Vec2(120, 50), Vec2(60, 50), Vec2(60, 100), Vec2(0, 100)}, {}}};
     // Two zones 4 m apart (their 5 m margins merge: a pocket) and a rotated one.
-    const std::vector<geo::Polygon> zones{rect(20, 20, 30, 40), rect(34, 20, 44, 40),
-                                          geo::Polygon{{Vec2(80, 10), Vec2(95, 18), Vec2(90, 28), Vec2(75, 20)}, {}}};
+    const std::vector<geo::Polygon> zones{
+        rect(20, 20, 30, 40), rect(34, 20, 44, 40),
+        geo::Polygon{{Vec2(80, 10), Vec2(95, 18), Vec2(90, 28), Vec2(75, 20)}, {}}};
     auto ground = GridGround::prepare(area, zones, 5.0);
     ASSERT_TRUE(ground.ok()) << ground.error().message;
     EXPECT_DOUBLE_EQ(ground->safetyMarginM(), 5.0);
@@ -238,7 +239,8 @@ TEST(Grid, PreparedGroundGivesTheSameGrids) {
             EXPECT_GT(shifted, 0);
             EXPECT_EQ(direct->pockets().size(), shared->pockets().size());
             EXPECT_DOUBLE_EQ(geo::area(direct->pockets()), geo::area(shared->pockets()));
-            EXPECT_DOUBLE_EQ(geo::area(direct->bufferedNoFly()), geo::area(shared->bufferedNoFly()));
+            EXPECT_DOUBLE_EQ(geo::area(direct->bufferedNoFly()),
+                             geo::area(shared->bufferedNoFly()));
         }
     EXPECT_GT(geo::area(ground->admissible()), 0.0);
     // Another margin than the ground's is refused, not silently planned with the wrong one.
@@ -246,7 +248,8 @@ TEST(Grid, PreparedGroundGivesTheSameGrids) {
     ASSERT_FALSE(wrong.ok());
     EXPECT_NE(wrong.error().message.find("another safety margin"), std::string::npos);
     // The area's errors come from prepare, the options' from the build.
-    auto covered = GridGround::prepare(geo::MultiPolygon{rect(0, 0, 10, 10)}, {rect(-1, -1, 11, 11)}, 0.0);
+    auto covered =
+        GridGround::prepare(geo::MultiPolygon{rect(0, 0, 10, 10)}, {rect(-1, -1, 11, 11)}, 0.0);
     ASSERT_FALSE(covered.ok());
     EXPECT_NE(covered.error().message.find("cover the whole area"), std::string::npos);
     auto badCell = Grid::build(*ground, GridOptions{0.0, 0.0, 5.0});
@@ -254,9 +257,10 @@ TEST(Grid, PreparedGroundGivesTheSameGrids) {
     EXPECT_NE(badCell.error().message.find("cell size must be a positive"), std::string::npos);
 }
 
-// A shifted cell flies at the nearest point of its square outside the buffered zones: checked against
-// the square minus the zones computed by GEOS (its boundary scanned for the point nearest the centre),
-// before the 1 mm nudge; an unflyable cell touching the zones has no free ground left of its square.
+// A shifted cell flies at the nearest point of its square outside the buffered zones: checked
+// against the square minus the zones computed by GEOS (its boundary scanned for the point nearest
+// the centre), before the 1 mm nudge; an unflyable cell touching the zones has no free ground left
+// of its square.
 TEST(Grid, ShiftedPositionIsTheNearestFreePointOfItsCell) {
     std::mt19937 rng(11);
     int shifted = 0, unflyable = 0;
@@ -264,7 +268,8 @@ TEST(Grid, ShiftedPositionIsTheNearestFreePointOfItsCell) {
         const geo::Polygon area = rect(0, 0, 150, 120);
         std::vector<geo::Polygon> zones;
         for (int z = 0; z < 4; ++z)
-            zones.push_back(randomStar(rng, Vec2(25 + 33 * z, 30 + 20 * (shape % 3) + 10 * z % 40), 4, 14, 5, 9));
+            zones.push_back(randomStar(rng, Vec2(25 + 33 * z, 30 + 20 * (shape % 3) + 10 * z % 40),
+                                       4, 14, 5, 9));
         const double angle = 13.0 * shape;
         auto g = Grid::build(area, zones, GridOptions{6.0, angle, 3.0});
         ASSERT_TRUE(g.ok()) << g.error().message;
@@ -272,8 +277,8 @@ TEST(Grid, ShiftedPositionIsTheNearestFreePointOfItsCell) {
             const CellState st = g->state(i);
             if (st != CellState::Shifted && st != CellState::Unflyable)
                 continue;
-            const geo::MultiPolygon free = geo::difference(geo::MultiPolygon{geo::Polygon{g->cellCorners(i), {}}},
-                                                           g->bufferedNoFly());
+            const geo::MultiPolygon free = geo::difference(
+                geo::MultiPolygon{geo::Polygon{g->cellCorners(i), {}}}, g->bufferedNoFly());
             if (st == CellState::Unflyable) {
                 ++unflyable;
                 EXPECT_LT(geo::area(free), 1e-6) << "cell " << i;
@@ -290,7 +295,8 @@ TEST(Grid, ShiftedPositionIsTheNearestFreePointOfItsCell) {
                     best = std::min(best, (a + t * ab - c).norm());
                 }
             ASSERT_TRUE(std::isfinite(best)) << "cell " << i;
-            // The flight position is that point, nudged 1 mm further from the zone when the cell allows.
+            // The flight position is that point, nudged 1 mm further from the zone when the cell
+            // allows.
             EXPECT_NEAR((g->flightPosition(i) - c).norm(), best, 1.5e-3) << "cell " << i;
             EXPECT_TRUE(g->pointIsSafe(g->flightPosition(i)));
         }

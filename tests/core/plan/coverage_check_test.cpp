@@ -192,11 +192,13 @@ TEST(CoverageCheck, PatchPixelsMatchTheirPolygon) {
 // (with a hole) and inside at least one rotated footprint, rows of every length and offset (not
 // multiples of eight), photos overlapping each other and the area's edge.
 TEST(CoverageCheck, CoveredAreaEqualsPixelByPixelCount) {
-    const geo::Polygon area{{Vec2(0.3, 0.1), Vec2(97.7, 3.9), Vec2(88.1, 71.3), Vec2(41.9, 93.3), Vec2(2.2, 60.7)},
-                            {{Vec2(40.1, 30.2), Vec2(40.4, 52.9), Vec2(61.3, 47.1), Vec2(58.2, 29.6)}}};
+    const geo::Polygon area{
+        {Vec2(0.3, 0.1), Vec2(97.7, 3.9), Vec2(88.1, 71.3), Vec2(41.9, 93.3), Vec2(2.2, 60.7)},
+        {{Vec2(40.1, 30.2), Vec2(40.4, 52.9), Vec2(61.3, 47.1), Vec2(58.2, 29.6)}}};
     std::vector<PhotoFootprint> photos;
     for (int k = 0; k < 23; ++k)
-        photos.push_back({Vec2(7.3 + 4.1 * k, 5.9 + 3.7 * (k % 7) + 1.3 * k), 17.0 * k, 13.0 + (k % 3), 9.0 + (k % 4)});
+        photos.push_back({Vec2(7.3 + 4.1 * k, 5.9 + 3.7 * (k % 7) + 1.3 * k), 17.0 * k,
+                          13.0 + (k % 3), 9.0 + (k % 4)});
     CoverageCheckOptions opt;
     opt.resolutionM = 0.37;
     auto rep = checkCoverage({area}, photos, opt);
