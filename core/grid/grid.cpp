@@ -136,6 +136,16 @@ void nearestFreePoint(const std::vector<Vec2>& corners, const Vec2& centre,
     }
 }
 
+// The error for a safety margin that is not a number of metres >= 0, if it is not.
+std::optional<Error> marginError(double marginM) {
+    if (std::isfinite(marginM) && marginM >= 0)
+        return std::nullopt;
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "the safety margin must be zero or a positive number of metres (got %g)",
+                  marginM);
+    return makeError(ErrorCode::InvalidInput, buf);
+}
+
 } // namespace
 
 class GridBuilder {
@@ -211,24 +221,14 @@ std::optional<Error> GridBuilder::checkOptions(const GridOptions& opt) {
     }
     if (!std::isfinite(opt.angleDeg))
         return makeError(ErrorCode::InvalidInput, "the grid angle must be a finite number of degrees");
-    if (!std::isfinite(opt.safetyMarginM) || opt.safetyMarginM < 0) {
-        std::snprintf(buf, sizeof buf, "the safety margin must be zero or a positive number of metres (got %g)",
-                      opt.safetyMarginM);
-        return makeError(ErrorCode::InvalidInput, buf);
-    }
-    return std::nullopt;
+    return marginError(opt.safetyMarginM);
 }
 
 Result<GridGround> GridBuilder::prepare(const geo::MultiPolygon& area,
                                         const std::vector<geo::Polygon>& noFly,
                                         double safetyMarginM) {
-    if (!std::isfinite(safetyMarginM) || safetyMarginM < 0) {
-        char buf[160];
-        std::snprintf(buf, sizeof buf,
-                      "the safety margin must be zero or a positive number of metres (got %g)",
-                      safetyMarginM);
-        return makeError(ErrorCode::InvalidInput, buf);
-    }
+    if (auto e = marginError(safetyMarginM))
+        return *e;
     if (area.empty())
         return makeError(ErrorCode::InvalidGeometry, "the area is empty: there is nothing to photograph");
     for (const auto& p : area) {

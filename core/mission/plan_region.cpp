@@ -121,7 +121,8 @@ public:
         return it == m_grids.end() ? nullptr : &it->second;
     }
     // The region's ground (admissible area, buffered zones), prepared at the first grid and shared
-    // by every angle and cell size after it.
+    // by every angle and cell size after it (a cache serves one region, like its grids: region and
+    // zones are read at the first call).
     const Result<grid::GridGround>& ground(const geo::MultiPolygon& region,
                                            const std::vector<geo::Polygon>& noFly,
                                            double safetyMarginM) {
