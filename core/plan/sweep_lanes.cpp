@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
+#include <limits>
 
 namespace pf::plan {
 
@@ -303,10 +305,10 @@ std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, con
     if (m.parts.size() == 1 && w[0].hi >= w[1].lo && fixed.empty()) {
         // One lane does: in the middle of what it may take (on a shared line when one lies there).
         const double lo = std::max(ylo + eps, w[1].lo), hi = std::min(yhi - eps, w[0].hi);
-        if (p.latticeY0 && lo <= hi) {
-            const double y = *p.latticeY0 + std::ceil((lo - *p.latticeY0) / s) * s;
-            if (y <= hi)
-                return {y};
+        if (!p.sharedLines.empty() && lo <= hi) {
+            const auto it = std::lower_bound(p.sharedLines.begin(), p.sharedLines.end(), lo);
+            if (it != p.sharedLines.end() && *it <= hi)
+                return {*it};
         }
         return {lo <= hi ? 0.5 * (lo + hi) : 0.5 * (ylo + yhi)};
     }
@@ -316,19 +318,14 @@ std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, con
         if (win.lo > win.hi)
             win.lo = win.hi;
     }
-    if (p.latticeY0) {
-        // The shared lines within the cell, then, for every window no lane meets yet (by their upper
-        // ends, as the greedy choice that meets all with the fewest lanes goes), a lane at the end
-        // farthest from the boundary its strip must reach. Lines are s apart, so the spacing holds;
-        // the outer windows keep the cell's edges covered.
-        const double y0 = *p.latticeY0;
-        std::vector<double> ys;
-        for (double k = std::ceil((ylo + eps - y0) / s);; k += 1.0) {
-            const double y = y0 + k * s;
-            if (y > yhi - eps)
-                break;
-            ys.push_back(y);
-        }
+    if (!p.sharedLines.empty()) {
+        // The shared lines within the cell, then, for every window no lane meets yet (by their
+        // upper ends, as the greedy choice that meets all with the fewest lanes goes), a lane at
+        // the end farthest from the boundary its strip must reach. Lines are at most s apart, so
+        // the spacing holds; the outer windows keep the cell's edges covered.
+        std::vector<double> ys(
+            std::lower_bound(p.sharedLines.begin(), p.sharedLines.end(), ylo + eps),
+            std::upper_bound(p.sharedLines.begin(), p.sharedLines.end(), yhi - eps));
         // A cut or a step inside the cell gets no lane of its own: the shared lines run on (the
         // neighbour cell's line beyond the cut covers what the line below leaves, on the same
         // lattice), and what they leave beside a zone's edge there (a wedge less than half a spacing
@@ -537,6 +534,107 @@ std::vector<CellLane> cellLanes(const Decomposition& d, const MergedCell& m, con
         l.wedgeLeftAbove = std::max(0.0, wla - flownLeft);
         out.push_back(l);
     }
+    return out;
+}
+
+std::vector<double> latticeLines(double y0, double spacingM, double ylo, double yhi) {
+    std::vector<double> out;
+    if (!(spacingM > 0) || !(yhi >= ylo))
+        return out;
+    for (double k = std::floor((ylo - y0) / spacingM) - 1.0;; k += 1.0) {
+        const double y = y0 + k * spacingM;
+        if (y > yhi + spacingM)
+            break;
+        out.push_back(y);
+    }
+    return out;
+}
+
+std::vector<double> placeSharedLines(const Decomposition& d, double spacingM,
+                                     const std::function<double(double, int)>& lineCost) {
+    const double s = spacingM;
+    if (d.cells.empty() || !(s > 0))
+        return {};
+    double ymin = std::numeric_limits<double>::infinity(), ymax = -ymin;
+    for (const auto& c : d.cells) {
+        ymin = std::min(ymin, c.ylo);
+        ymax = std::max(ymax, c.yhi);
+    }
+    // The same reach at the outer edges as the lattice laid from the lowest edge (0.02 m inside
+    // half a spacing), and lines just off every cut: a line 3 cm under a zone's lowest point or
+    // over its highest passes it.
+    const double edge = 0.5 * s - 0.02, off = 0.03;
+    const double bottomMax = ymin + edge, topMin = ymax - edge;
+    if (bottomMax >= topMin)
+        return {0.5 * (ymin + ymax)};
+    std::vector<double> ys;
+    const double step = s / 32.0;
+    for (double y = ymin + off; y < ymax; y += step)
+        ys.push_back(y);
+    ys.push_back(bottomMax);
+    ys.push_back(topMin);
+    for (const auto& c : d.cells)
+        for (double y : {c.ylo - off, c.ylo + off, c.yhi - off, c.yhi + off})
+            if (y > ymin && y < ymax)
+                ys.push_back(y);
+    std::sort(ys.begin(), ys.end());
+    ys.erase(std::unique(ys.begin(), ys.end(), [](double a, double b) { return b - a < 1e-6; }),
+             ys.end());
+    // Each candidate's cost: the cells it crosses (a sweep over the cells by height).
+    std::vector<std::size_t> byLo(d.cells.size());
+    for (std::size_t i = 0; i < byLo.size(); ++i)
+        byLo[i] = i;
+    std::sort(byLo.begin(), byLo.end(),
+              [&](std::size_t a, std::size_t b) { return d.cells[a].ylo < d.cells[b].ylo; });
+    std::vector<double> cost(ys.size());
+    std::vector<std::size_t> active;
+    std::size_t next = 0;
+    for (std::size_t i = 0; i < ys.size(); ++i) {
+        const double y = ys[i];
+        while (next < byLo.size() && d.cells[byLo[next]].ylo < y)
+            active.push_back(byLo[next++]);
+        active.erase(std::remove_if(active.begin(), active.end(),
+                                    [&](std::size_t c) { return d.cells[c].yhi <= y; }),
+                     active.end());
+        double len = 0.0;
+        for (std::size_t c : active)
+            len += std::max(0.0, d.cells[c].xRight(y) - d.cells[c].xLeft(y));
+        cost[i] = lineCost(len, static_cast<int>(active.size()));
+    }
+    // best[i]: the least cost of lines from the bottom up to one at ys[i]; the window of lines
+    // below within a spacing slides up with i (a deque of increasing best).
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    std::vector<double> best(ys.size(), kInf);
+    std::vector<std::ptrdiff_t> prev(ys.size(), -1);
+    std::deque<std::size_t> window;
+    std::size_t enter = 0;
+    for (std::size_t i = 0; i < ys.size(); ++i) {
+        while (enter < i && ys[enter] < ys[i]) {
+            if (best[enter] < kInf) {
+                while (!window.empty() && best[window.back()] >= best[enter])
+                    window.pop_back();
+                window.push_back(enter);
+            }
+            ++enter;
+        }
+        while (!window.empty() && ys[i] - ys[window.front()] > s)
+            window.pop_front();
+        if (ys[i] <= bottomMax) {
+            best[i] = cost[i];
+        } else if (!window.empty()) {
+            best[i] = best[window.front()] + cost[i];
+            prev[i] = static_cast<std::ptrdiff_t>(window.front());
+        }
+    }
+    std::ptrdiff_t end = -1;
+    for (std::size_t i = 0; i < ys.size(); ++i)
+        if (ys[i] >= topMin && best[i] < kInf &&
+            (end < 0 || best[i] < best[static_cast<std::size_t>(end)]))
+            end = static_cast<std::ptrdiff_t>(i);
+    std::vector<double> out;
+    for (std::ptrdiff_t i = end; i >= 0; i = prev[static_cast<std::size_t>(i)])
+        out.push_back(ys[static_cast<std::size_t>(i)]);
+    std::reverse(out.begin(), out.end());
     return out;
 }
 

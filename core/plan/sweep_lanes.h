@@ -60,13 +60,15 @@ struct SweepLaneParams {
     // How far into a neighbour lane's strip the real footprint reaches ((real across - spacing) / 2):
     // that part of a half band is the neighbour's, not a wedge of this lane.
     double neighbourReachM = 0.0;
-    // Lanes on shared lines: given, a cell's lanes lie at latticeY0 + k * trackSpacingM (frame y), with
-    // a lane of its own only where no line meets the cell's bottom or top window (plan::trimCoveredLanes
-    // then shortens it to that stretch), so that the lanes of cells side by side continue one another
-    // as a Survey's transects do round a zone; the wedges the lines leave beside a zone's edge inside
-    // a cell go to spot photos. Unset: each cell spaces its lanes on its own (fewest lanes for the
-    // cell, neighbours' lines not aligned, a lane in every window).
-    std::optional<double> latticeY0;
+    // Lanes on shared lines: given (frame y, increasing, at most trackSpacingM apart over the free
+    // space's height), a cell's lanes lie on these lines, with a lane of its own only where no line
+    // meets the cell's bottom or top window (plan::trimCoveredLanes then shortens it to that
+    // stretch), so that the lanes of cells side by side continue one another as a Survey's
+    // transects do round a zone; the wedges the lines leave beside a zone's edge inside a cell go
+    // to spot photos. Empty: each cell spaces its lanes on its own (fewest lanes for the cell,
+    // neighbours' lines not aligned, a lane in every window). See latticeLines and
+    // placeSharedLines.
+    std::vector<double> sharedLines;
 };
 
 // One lane of a cell, left to right in the sweep frame (world coordinates).
@@ -107,5 +109,20 @@ std::vector<std::vector<double>> allLaneHeights(const Decomposition& d, const st
 std::vector<CellLane> cellLanes(const Decomposition& d, const MergedCell& m, const std::vector<double>& heights,
                                 const SweepLaneParams& p, const SweepGround& ground,
                                 const std::function<bool(const geo::Vec2&, const geo::Vec2&)>& safe);
+
+// Shared lines trackSpacingM apart through y0, over [ylo, yhi] (a Survey's transects).
+std::vector<double> latticeLines(double y0, double spacingM, double ylo, double yhi);
+
+// Shared lines placed round the zones: heights at most spacingM apart, the lowest within half a
+// spacing of the free space's bottom and the highest of its top, chosen by dynamic programming over
+// candidate heights (a fine grid plus just below and above every cut of the decomposition) to
+// minimise the sum over the lines of lineCost(length, runs), where runs is how many cells the line
+// crosses (how many lanes it becomes) and length their summed width. A zone no wider than a spacing
+// with its margins then often lies between two lines (one just under it, one just over it) instead
+// of cutting one, and a wider one cuts the fewest lines; extra lines are bought only where the cost
+// says the saved lane ends pay for them.
+std::vector<double>
+placeSharedLines(const Decomposition& d, double spacingM,
+                 const std::function<double(double lengthM, int runs)>& lineCost);
 
 } // namespace pf::plan

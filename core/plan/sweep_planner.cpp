@@ -46,6 +46,11 @@ constexpr double kSharedLinesEstimateRatio = 1.1;
 constexpr std::size_t kSharedLinesMaxLanes = 600;
 // Phases of the shared lines compared by the quick estimate (see the variants).
 constexpr int kSharedLinePhases = 4;
+// What a lane of the placed shared lines costs for placeSharedLines, in U-turns (each lane a line
+// becomes has two ends and a link to another).
+constexpr double kPlacedRunCost = 3.0;
+// How many more shared-line variants are finished when the fastest one leaves ground unseen.
+constexpr int kSharedRetries = 3;
 // The most pixels of the coverage check in the search for the Survey's direction.
 constexpr double kSurveyCheckPixels = 1.0e5;
 
@@ -189,7 +194,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     // Lane heights of a variant and its quick estimate: lanes, turns, cell changes.
     auto estimate = [&](DirectionPlan& dp) {
         SweepLaneParams vp = lp;
-        vp.latticeY0 = dp.latticeY0;
+        vp.sharedLines = dp.sharedLines;
         dp.heights = allLaneHeights(dp.d(), dp.merged(), vp, ground, &dp.pinned);
         return quickEstimateS(dp.d(), dp.merged(), dp.heights, ph, opt.time, s);
     };
@@ -262,21 +267,23 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         toPlan.push_back(&base);
         if (!opt.sharedLines || base.d().cells.empty())
             continue;
-        double ymin = kInf;
-        for (const auto& c : base.d().cells)
+        double ymin = kInf, ymax = -kInf;
+        for (const auto& c : base.d().cells) {
             ymin = std::min(ymin, c.ylo);
+            ymax = std::max(ymax, c.yhi);
+        }
         DirectionPlan v;
         v.angleDeg = base.angleDeg;
         v.dec = base.dec;
         v.mc = base.mc;
-        v.latticeY0 = ymin + 0.5 * s - 0.02;
+        const double y0 = ymin + 0.5 * s - 0.02;
+        v.sharedLines = latticeLines(y0, s, ymin, ymax);
         v.estimateS = estimate(v);
         std::size_t laneCount = 0;
         for (const auto& hs : v.heights)
             laneCount += hs.size();
         if (laneCount > kSharedLinesMaxLanes || (r > 0 && v.estimateS > kSharedLinesEstimateRatio * base.estimateS))
             continue;
-        const double y0 = *v.latticeY0;
         variants.push_back(std::move(v));
         toPlan.push_back(&variants.back());
         // The lines' phase decides which of them a zone cuts (a zone 20 m across with its margins cuts
@@ -291,7 +298,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
             w.angleDeg = base.angleDeg;
             w.dec = base.dec;
             w.mc = base.mc;
-            w.latticeY0 = y0 - 0.5 * s * k / kSharedLinePhases;
+            w.sharedLines = latticeLines(y0 - 0.5 * s * k / kSharedLinePhases, s, ymin, ymax);
             w.estimateS = estimate(w);
             if (!shifted || w.estimateS < shifted->estimateS)
                 shifted = std::move(w);
@@ -299,6 +306,20 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         if (shifted) {
             variants.push_back(std::move(*shifted));
             toPlan.push_back(&variants.back());
+        }
+        if (opt.placedLines) {
+            DirectionPlan w;
+            w.angleDeg = base.angleDeg;
+            w.dec = base.dec;
+            w.mc = base.mc;
+            w.sharedLines = placeSharedLines(base.d(), s, [&](double lengthM, int runs) {
+                return lengthM / opt.time.speedMps + kPlacedRunCost * runs * uTurnS;
+            });
+            if (!w.sharedLines.empty()) {
+                w.estimateS = estimate(w);
+                variants.push_back(std::move(w));
+                toPlan.push_back(&variants.back());
+            }
         }
     }
     for (const DirectionPlan* planning : toPlan) {
@@ -485,7 +506,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         // Shared lines leave the ground beside a zone's edge to spot photos (their wedges are counted
         // as missed): among them the search's time decides, the finished flights then weigh the spots.
         // The others are kept: finished too while one could still fly sooner (finishFastest).
-        if (dp.latticeY0) {
+        if (!dp.sharedLines.empty()) {
             if (bestShared && bestShared->timeS > fp->timeS)
                 std::swap(bestShared, fp);
             if (!bestShared)
@@ -516,7 +537,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         plan.stats.orderMoves = fp.order.moves + fp.laneMoves;
         plan.stats.linkEvaluations = fp.order.linkEvaluations;
         plan.stats.rowStart = fp.rowStart;
-        plan.stats.sharedLines = dp.latticeY0.has_value();
+        plan.stats.sharedLines = !dp.sharedLines.empty();
         for (const auto& m : dp.merged()) {
             geo::Polygon poly;
             for (const auto& p : mergedRing(dp.d(), m))
@@ -698,6 +719,22 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         return r ? r->uncoveredAreaM2 : kInf;
     };
     const double tolerance = 0.0005 * regionArea;
+    // The fastest shared lines left more ground unseen than the cells' own lanes: the next shared
+    // variants by the search's time (the lines of another phase or placement leave other wedges)
+    // while they could still fly sooner, the first that sees as much taken; else the own lanes.
+    auto otherSharedSeeing = [&](SweepPlan& own, double ownUnseen) {
+        std::stable_sort(otherShared.begin(), otherShared.end(),
+                         [](const auto& a, const auto& b) { return a->timeS < b->timeS; });
+        int tried = 0;
+        for (auto& o : otherShared) {
+            if (o->timeS >= own.time.totalS || tried++ >= kSharedRetries || stopRequested())
+                break;
+            SweepPlan p = finish(*o);
+            if (p.time.totalS < own.time.totalS && unseen(p) <= ownUnseen + tolerance)
+                return p;
+        }
+        return std::move(own);
+    };
     auto cancelled = [] { return makeError(ErrorCode::Cancelled, "planning the sweep: cancelled"); };
     if (best->timeS <= bestShared->timeS) {
         SweepPlan own = finishFastest(*best, otherOwn, true);
@@ -706,7 +743,9 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
         if (stopRequested())
             return cancelled();
         SweepPlan shared = finishFastest(*bestShared, otherShared, false, own.time.totalS);
-        return shared.time.totalS < own.time.totalS && unseen(shared) <= unseen(own) + tolerance ? shared : own;
+        return shared.time.totalS < own.time.totalS && unseen(shared) <= unseen(own) + tolerance
+                   ? shared
+                   : otherSharedSeeing(own, unseen(own));
     }
     SweepPlan shared = finishFastest(*bestShared, otherShared, false);
     const double sharedUnseen = unseen(shared);
@@ -719,7 +758,10 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     if (stopRequested())
         return cancelled();
     SweepPlan own = finishFastest(*best, otherOwn, true, sharedSeesAll ? shared.time.totalS : kInf);
-    return shared.time.totalS < own.time.totalS && sharedUnseen <= unseen(own) + tolerance ? shared : own;
+    if (shared.time.totalS >= own.time.totalS)
+        return own;
+    const double ownUnseen = unseen(own);
+    return sharedUnseen <= ownUnseen + tolerance ? shared : otherSharedSeeing(own, ownUnseen);
 }
 
 std::vector<geo::Vec2> sweepFlightPath(const SweepPlan& plan, const std::optional<geo::Vec2>& home,

@@ -55,6 +55,9 @@ struct SweepOptions {
     // transects; a cell adds lanes only where the lines beside a zone leave ground), keeping the
     // faster plan.
     bool sharedLines = true;
+    // With shared lines, also plan lines placed round the zones (plan::placeSharedLines: not evenly
+    // spaced, so that a zone lies between two lines where it can rather than cutting one).
+    bool placedLines = true;
     // Segments per quarter circle of the margin polygon the lanes end at and transitions turn around:
     // few segments, few turns (each a stop) on a transition. >= 1.
     int quadrantSegments = 2;

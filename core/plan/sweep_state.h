@@ -35,7 +35,7 @@ struct DirectionPlan {
     double estimateS = 0.0;
     std::shared_ptr<const Decomposition> dec;           // shared by the lane-height variants of a direction
     std::shared_ptr<const std::vector<MergedCell>> mc;
-    std::optional<double> latticeY0;                    // the variant's shared lines (SweepLaneParams)
+    std::vector<double> sharedLines; // the variant's shared lines (SweepLaneParams), or none
     std::vector<std::vector<double>> heights;
     std::vector<std::vector<char>> pinned; // lanes that neighbours lean on
     const Decomposition& d() const { return *dec; }

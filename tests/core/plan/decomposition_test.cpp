@@ -1,4 +1,5 @@
 #include "core/plan/decomposition.h"
+#include "core/plan/sweep_lanes.h"
 
 #include "core/geo/polygon_ops.h"
 #include "tests/core/plan/sweep_test_util.h"
@@ -162,4 +163,104 @@ TEST(Decomposition, CellsCoverGeneratedAreasExactly) {
         }
     }
     EXPECT_EQ(checked, 96);
+}
+
+namespace {
+
+// What placeSharedLines is asked to minimise in the planner: flying a line's length at 10 m/s plus
+// 3 U-turns of 8 s for every lane it becomes.
+double lineCostS(double lengthM, int runs) {
+    return lengthM / 10.0 + 3.0 * 8.0 * runs;
+}
+
+// The lines' promises: increasing, at most a spacing apart, the outer ones within half a spacing of
+// the free space's bottom and top.
+void expectLinesReachEverywhere(const Decomposition& d, const std::vector<double>& ys, double s,
+                                const std::string& what) {
+    ASSERT_FALSE(ys.empty()) << what;
+    double ymin = 1e300, ymax = -1e300;
+    for (const auto& c : d.cells) {
+        ymin = std::min(ymin, c.ylo);
+        ymax = std::max(ymax, c.yhi);
+    }
+    EXPECT_LE(ys.front(), ymin + 0.5 * s) << what;
+    EXPECT_GE(ys.back(), ymax - 0.5 * s) << what;
+    for (std::size_t i = 1; i < ys.size(); ++i) {
+        EXPECT_GT(ys[i], ys[i - 1]) << what;
+        EXPECT_LE(ys[i] - ys[i - 1], s + 1e-9)
+            << what << ": a gap wider than the spacing between lines " << i - 1 << " and " << i;
+    }
+}
+
+// How many cells the line at y crosses (the lanes it becomes).
+int runsAt(const Decomposition& d, double y) {
+    int n = 0;
+    for (const auto& c : d.cells)
+        if (c.ylo < y && y < c.yhi)
+            ++n;
+    return n;
+}
+
+} // namespace
+
+// A zone lower than a spacing lies between two placed lines (one just under it, one just over it):
+// no line is cut in two by it, and no more lines are flown than the evenly spaced ones need.
+TEST(SharedLines, ThreadAZoneLowerThanASpacing) {
+    const double s = 27.7;
+    geo::Polygon p = sweeptest::rect(0, 0, 300, 200);
+    p.holes.push_back({Vec2(100, 91), Vec2(100, 111), Vec2(130, 111), Vec2(130, 91)});
+    auto d = decompose({p}, SweepFrame{0.0});
+    ASSERT_TRUE(d.ok()) << d.error().message;
+    const std::vector<double> ys = placeSharedLines(*d, s, lineCostS);
+    expectLinesReachEverywhere(*d, ys, s, "rectangle with a zone");
+    for (double y : ys) {
+        EXPECT_FALSE(y > 91.0 && y < 111.0) << "the line at " << y << " m is cut by the zone";
+        EXPECT_EQ(runsAt(*d, y), 1) << y;
+    }
+    // the evenly spaced lines from the bottom need as many lines (the top one beyond the area), and
+    // one of them is cut by the zone
+    const std::vector<double> even = latticeLines(0.5 * s - 0.02, s, 0.0, 200.0);
+    int evenNeeded = 0, evenCut = 0;
+    for (double y : even)
+        if (y >= 0.5 * s - 0.03 && y - s < 200.0 - 0.5 * s) {
+            ++evenNeeded;
+            evenCut += runsAt(*d, y) > 1 ? 1 : 0;
+        }
+    EXPECT_LE(static_cast<int>(ys.size()), evenNeeded);
+    EXPECT_EQ(evenCut, 1) << "the evenly spaced lines should cross the zone in this layout";
+}
+
+// A zone higher than a spacing cuts lines whatever their placement: the placed lines then cut no
+// more of them than needed (the zone's height over the spacing, rounded up, at most one more).
+TEST(SharedLines, ATallZoneCutsTheFewestLines) {
+    const double s = 27.7;
+    geo::Polygon p = sweeptest::rect(0, 0, 300, 200);
+    p.holes.push_back({Vec2(100, 60), Vec2(100, 130), Vec2(130, 130), Vec2(130, 60)});
+    auto d = decompose({p}, SweepFrame{0.0});
+    ASSERT_TRUE(d.ok()) << d.error().message;
+    const std::vector<double> ys = placeSharedLines(*d, s, lineCostS);
+    expectLinesReachEverywhere(*d, ys, s, "rectangle with a tall zone");
+    int cut = 0;
+    for (double y : ys)
+        cut += runsAt(*d, y) > 1 ? 1 : 0;
+    EXPECT_EQ(cut, static_cast<int>(std::floor(70.0 / s)))
+        << "70 m of zone between lines at most s apart";
+}
+
+// On generated areas and directions the placed lines keep their promises and are deterministic.
+TEST(SharedLines, ReachTheWholeFreeSpaceOnGeneratedAreas) {
+    const double s = 27.7;
+    for (unsigned seed = 1; seed <= 16; ++seed) {
+        const auto area = sweeptest::generateArea(seed, static_cast<int>(seed % 21));
+        const geo::MultiPolygon space = freeSpace(area);
+        for (double deg : {0.0, 61.0, 137.0}) {
+            const std::string what =
+                area.name + " at " + std::to_string(static_cast<int>(deg)) + " deg";
+            auto d = decompose(space, SweepFrame{deg * M_PI / 180});
+            ASSERT_TRUE(d.ok()) << what << ": " << d.error().message;
+            const std::vector<double> ys = placeSharedLines(*d, s, lineCostS);
+            expectLinesReachEverywhere(*d, ys, s, what);
+            EXPECT_EQ(ys, placeSharedLines(*d, s, lineCostS)) << what;
+        }
+    }
 }

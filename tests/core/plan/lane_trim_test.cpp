@@ -83,27 +83,38 @@ TEST(LaneTrim, OfTwoLanesOnOneLineOneStays) {
 
 // On generated areas with zones, in one direction with and without trimming: the effective footprints
 // (the overlap the operator set) and the real ones cover no less ground, no lane takes more photos,
-// and the set as a whole takes fewer.
+// and the set as a whole takes fewer. The photo counts compare like with like only when both runs fly
+// the same lane variant: with the placed shared lines (one more variant per direction) the two runs
+// may choose different ones (T-304-z11: 464 photos trimmed, 460 not, on other lines), so the counts
+// are compared without them and the coverage both ways.
 TEST(LaneTrim, KeepsTheOverlapOnGeneratedAreas) {
     const Camera cam;
     Camera effective;
     effective.realAcross = cam.track();
     effective.realAlong = cam.photo();
-    int before = 0, after = 0;
-    for (unsigned seed = 1; seed <= 8; ++seed) {
-        const Area a = generateArea(seed + 300, 6 + static_cast<int>(seed % 3) * 5);
-        SweepOptions o = options(cam);
-        o.anglesDeg = {seed * 20.0};
-        o.trimLanes = false;
-        auto plain = planSweep(a.region, a.zones, o);
-        o.trimLanes = true;
-        auto trimmed = planSweep(a.region, a.zones, o);
-        ASSERT_TRUE(plain.ok() && trimmed.ok()) << a.name;
-        before += photoCount(*plain);
-        after += photoCount(*trimmed);
-        EXPECT_LE(photoCount(*trimmed), photoCount(*plain) + 2) << a.name;
-        EXPECT_GE(coverage(a, *trimmed, effective), coverage(a, *plain, effective) - 0.001) << a.name;
-        EXPECT_GE(coverage(a, *trimmed, cam), coverage(a, *plain, cam) - 0.001) << a.name;
+    for (bool placed : {false, true}) {
+        int before = 0, after = 0;
+        for (unsigned seed = 1; seed <= 8; ++seed) {
+            const Area a = generateArea(seed + 300, 6 + static_cast<int>(seed % 3) * 5);
+            const std::string what = a.name + (placed ? " (placed lines)" : "");
+            SweepOptions o = options(cam);
+            o.anglesDeg = {seed * 20.0};
+            o.placedLines = placed;
+            o.trimLanes = false;
+            auto plain = planSweep(a.region, a.zones, o);
+            o.trimLanes = true;
+            auto trimmed = planSweep(a.region, a.zones, o);
+            ASSERT_TRUE(plain.ok() && trimmed.ok()) << what;
+            before += photoCount(*plain);
+            after += photoCount(*trimmed);
+            if (!placed) {
+                EXPECT_LE(photoCount(*trimmed), photoCount(*plain) + 2) << what;
+            }
+            EXPECT_GE(coverage(a, *trimmed, effective), coverage(a, *plain, effective) - 0.001) << what;
+            EXPECT_GE(coverage(a, *trimmed, cam), coverage(a, *plain, cam) - 0.001) << what;
+        }
+        if (!placed) {
+            EXPECT_LT(after, before);
+        }
     }
-    EXPECT_LT(after, before);
 }
