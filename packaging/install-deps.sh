@@ -13,6 +13,8 @@ packages=(
   # validators, dpkg-shlibdeps for the package's dependencies, and the X tools the kill-recovery
   # test uses to see and answer the application's recovery question on a virtual screen.
   clang libclang-rt-14-dev desktop-file-utils appstream dpkg-dev xdotool x11-utils
+  # The manual pages come from the programs' --help (help2man); lintian checks the package.
+  help2man lintian
   # The simulated MAVLink vehicle of the upload tests (tests/peers/, node-mavlink from npm).
   nodejs
 )
