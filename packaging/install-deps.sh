@@ -9,6 +9,8 @@ packages=(
   libgdal-dev gdal-bin libproj-dev libgeos-dev libeigen3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth
+  # The user guide is rendered from docs/*.md at build time.
+  pandoc
   # Release checks: fuzzers (clang's libFuzzer and sanitizer runtimes), desktop-file and AppStream
   # validators, dpkg-shlibdeps for the package's dependencies, and the X tools the kill-recovery
   # test uses to see and answer the application's recovery question on a virtual screen.

@@ -6,6 +6,7 @@
 #include "ui/dialogs/export_dialog.h"
 #include "ui/geo_adapter.h"
 #include "ui/ground_station.h"
+#include "ui/help/help_menu.h"
 #include "ui/map/base_maps.h"
 #include "ui/map/hillshade_layer.h"
 #include "ui/map/map_view.h"
@@ -318,14 +319,8 @@ void MainWindow::buildActions() {
     });
     uploadAct->setObjectName(QStringLiteral("ConnectAndUploadAction"));
 
-    // Help
-    QMenu* help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(tr("&About Photoflight"), this, [this] {
-        QMessageBox::about(this, tr("About Photoflight"),
-                           tr("<b>Photoflight %1</b><br>Photo-survey flight planning for one or several UAVs.<br><br>"
-                              "The demo map is synthetic: it is drawn by the program and shows no real place.")
-                               .arg(QStringLiteral(PF_VERSION)));
-    });
+    // Help: the user guide, the keyboard shortcuts, What's this and About (ui/help/).
+    addHelpMenu(this);
 
     // Tool bars
     QToolBar* main = addToolBar(tr("Main"));
