@@ -6,9 +6,10 @@
 
 #include <QCheckBox>
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QDialogButtonBox>
+#include <QDoubleSpinBox>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -36,6 +37,7 @@ ExportDialog::ExportDialog(MissionDocument* doc, PlanController* planner, const 
     for (const auto& info : io::waypointFormats()) {
         auto* box = new QCheckBox(QStringLiteral("%1 (%2)").arg(
             QString::fromLatin1(info.description), QString::fromLatin1(info.extension)));
+        box->setObjectName(QStringLiteral("ExportFormat_%1").arg(QString::fromLatin1(info.name)));
         box->setChecked(info.format == io::WaypointFormat::QgcPlan ||
                         info.format == io::WaypointFormat::Kml);
         fl->addWidget(box);
@@ -46,7 +48,10 @@ ExportDialog::ExportDialog(MissionDocument* doc, PlanController* planner, const 
     m_routeLayout = new QVBoxLayout;
     al->addLayout(m_routeLayout);
     rebuildRouteBoxes();
-    m_perAircraft = new QCheckBox(tr("One file per aircraft"));
+    m_perAircraft = new QCheckBox(tr("One file per aircraft (KML, GPX, GeoJSON)"));
+    m_perAircraft->setToolTip(
+        tr("Vehicle files (.plan, .waypoints, Litchi .csv) are always one per aircraft, "
+           "and one per battery for an aircraft that needs several"));
     m_perAircraft->setChecked(true);
     m_combined =
         new QCheckBox(tr("One combined file where the format allows it (KML, GPX, GeoJSON)"));
@@ -68,6 +73,7 @@ ExportDialog::ExportDialog(MissionDocument* doc, PlanController* planner, const 
     folderRow->addWidget(browse);
     m_stem = new QLineEdit(QStringLiteral("mission"));
     m_firmware = new QComboBox;
+    m_firmware->setObjectName(QStringLiteral("ExportFirmware"));
     m_firmware->addItem(tr("ArduPilot"), int(io::QgcFirmware::ArduPilot));
     m_firmware->addItem(tr("PX4"), int(io::QgcFirmware::PX4));
     m_end = new QComboBox;
@@ -164,31 +170,77 @@ QStringList ExportDialog::runExport() {
         routes.push_back(r.route);
     ExportRequest req = request();
     QString error;
-    QStringList problems, notes;
-    QStringList written = exportRoutes(m_doc->mission(), routes, req, &error, &problems, &notes);
+    QStringList problems, notes, warnings;
+    QStringList written =
+        exportRoutes(m_doc->mission(), routes, req, &error, &problems, &notes, &warnings);
     if (!problems.isEmpty()) {
         if (!confirmRouteErrors(problems)) {
-            report({}, error, {});
+            report({}, error, {}, {});
             return {};
         }
         req.allowRouteErrors = true;
-        written = exportRoutes(m_doc->mission(), routes, req, &error, nullptr, &notes);
+        written = exportRoutes(m_doc->mission(), routes, req, &error, nullptr, &notes, &warnings);
     }
-    report(written, error, notes);
+    report(written, error, notes, warnings);
     return written;
 }
 
-void ExportDialog::report(const QStringList& written, const QString& error, const QStringList& notes) {
+void ExportDialog::report(const QStringList& written, const QString& error,
+                          const QStringList& notes, const QStringList& warnings) {
     QString text;
     if (!written.isEmpty())
         text = tr("Wrote %n file(s):", nullptr, written.size()) + QLatin1Char('\n') +
                written.join(QLatin1Char('\n'));
+    for (const QString& w : warnings)
+        text += QStringLiteral("\n") + tr("Warning: %1").arg(w);
     for (const QString& n : notes)
         text += QStringLiteral("\n") + tr("Note: %1").arg(n);
     if (!error.isEmpty())
         text += (text.isEmpty() ? QString() : QStringLiteral("\n")) + tr("Error: %1").arg(error);
     m_report->setPlainText(text);
+    if (!written.isEmpty())
+        showWritten(written, notes, warnings);
     emit exported(written);
+}
+
+// What was written, in a message of its own: the file names (a flight per battery shows as one file
+// per sortie), then the warnings and notes. Opened with open(): the export returns at once.
+void ExportDialog::showWritten(const QStringList& written, const QStringList& notes,
+                               const QStringList& warnings) {
+    delete m_result.data(); // the previous export's
+    const QString folder = request().folder;
+    QStringList names;
+    for (const QString& f : written)
+        names << QFileInfo(f).fileName();
+    m_result = new QMessageBox(warnings.isEmpty() ? QMessageBox::Information : QMessageBox::Warning,
+                               tr("Export waypoints"),
+                               written.size() == 1
+                                   ? tr("Wrote 1 file into %1.").arg(folder)
+                                   : tr("Wrote %1 files into %2.").arg(written.size()).arg(folder),
+                               QMessageBox::Ok, this);
+    m_result->setObjectName(QStringLiteral("ExportResult"));
+    constexpr int kShown = 16;
+    QString info = names.mid(0, kShown).join(QLatin1Char('\n'));
+    if (names.size() > kShown)
+        info += QLatin1Char('\n') +
+                tr("… and %n more (Show Details)", nullptr, int(names.size()) - kShown);
+    QStringList lines;
+    for (const QString& w : warnings)
+        lines << QStringLiteral("⚠ ") + w;
+    lines << notes;
+    if (!lines.isEmpty())
+        info += QStringLiteral("\n\n") + lines.join(QStringLiteral("\n\n"));
+    m_result->setInformativeText(info);
+    m_result->setDetailedText(
+        written.join(QLatin1Char('\n')) +
+        (lines.isEmpty() ? QString() : QStringLiteral("\n\n") + lines.join(QLatin1Char('\n'))));
+    m_result->setAttribute(Qt::WA_DeleteOnClose);
+    m_result->open();
+}
+
+QString ExportDialog::resultText() const {
+    return m_result ? m_result->text() + QLatin1Char('\n') + m_result->informativeText()
+                    : QString();
 }
 
 void ExportDialog::rebuildRouteBoxes() {
@@ -255,10 +307,11 @@ void ExportDialog::onPlanStateChanged() {
     // Not busy, still outdated, nothing pending: the new plan failed or was cancelled.
     m_waiting = false;
     refreshBanner();
-    report({}, m_planner->lastError().isEmpty()
-                   ? tr("Not exported: planning was cancelled, and the routes are outdated.")
-                   : tr("Not exported: the new plan could not be made: %1").arg(m_planner->lastError()),
-           {});
+    report({},
+           m_planner->lastError().isEmpty()
+               ? tr("Not exported: planning was cancelled, and the routes are outdated.")
+               : tr("Not exported: the new plan could not be made: %1").arg(m_planner->lastError()),
+           {}, {});
 }
 
 bool ExportDialog::confirmCurrentPlan() {

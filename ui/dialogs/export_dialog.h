@@ -5,6 +5,8 @@
 #include "ui/planning/route_export.h"
 
 #include <QDialog>
+#include <QMessageBox>
+#include <QPointer>
 
 #include <map>
 
@@ -39,6 +41,9 @@ public:
     // The banner above the controls ("Outdated plan: …", route problems); empty when hidden.
     QString bannerText() const;
     QPushButton* exportButton() const { return m_exportButton; }
+    // The message listing the files the last export wrote (title line, files, warnings, notes);
+    // empty when it is closed or nothing was written.
+    QString resultText() const;
 
 signals:
     // After an export that ran (the files written, or the error), e.g. one that waited for a plan.
@@ -51,7 +56,10 @@ private:
     void onPlanStateChanged();
     void refreshBanner();
     void rebuildRouteBoxes();
-    void report(const QStringList& written, const QString& error, const QStringList& notes);
+    void report(const QStringList& written, const QString& error, const QStringList& notes,
+                const QStringList& warnings);
+    void showWritten(const QStringList& written, const QStringList& notes,
+                     const QStringList& warnings);
 
     MissionDocument* m_doc;
     PlanController* m_planner;
@@ -72,6 +80,7 @@ private:
     QComboBox* m_trigger;
     QDoubleSpinBox* m_homeElevation;
     QPlainTextEdit* m_report;
+    QPointer<QMessageBox> m_result;
 };
 
 } // namespace pf::ui

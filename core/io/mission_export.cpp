@@ -1,0 +1,217 @@
+#include "core/io/mission_export.h"
+
+#include "core/io/mission_items.h"
+#include "core/io/waypoint_format_util.h"
+#include "core/route/route_sorties.h"
+
+namespace pf::io {
+
+namespace {
+
+// The routes `indices` of ctx as a context of their own (what one aircraft's display file holds).
+ExportContext subContext(const ExportContext& ctx, const std::vector<std::size_t>& indices) {
+    ExportContext out;
+    out.mission = ctx.mission;
+    for (std::size_t i : indices) {
+        out.routes.push_back(ctx.routes[i]);
+        out.footprints.push_back(ctx.footprintFor(i));
+        out.trajectories.push_back(i < ctx.trajectories.size() ? ctx.trajectories[i]
+                                                               : std::vector<geo::LonLat>{});
+        out.labels.push_back(ctx.routeLabel(i));
+    }
+    return out;
+}
+
+// What a display file draws: every route, an aircraft needing several batteries as one route per
+// sortie ("Falcon 8, sortie 2 of 5") when `perSortie`; `owner[k]` is the route of ctx that route k
+// comes from.
+ExportContext displayContext(const ExportContext& ctx, bool perSortie,
+                             std::vector<std::size_t>& owner) {
+    ExportContext out;
+    out.mission = ctx.mission;
+    owner.clear();
+    bool split = false;
+    for (std::size_t i = 0; i < ctx.routes.size(); ++i) {
+        auto sorties = perSortie ? route::splitSorties(ctx.routes[i], ctx.homeFor(i))
+                                 : std::vector<route::Route>{};
+        if (sorties.size() < 2) {
+            out.routes.push_back(ctx.routes[i]);
+            out.footprints.push_back(ctx.footprintFor(i));
+            out.labels.push_back(ctx.routeLabel(i));
+            owner.push_back(i);
+            continue;
+        }
+        split = true;
+        for (std::size_t s = 0; s < sorties.size(); ++s) {
+            out.routes.push_back(std::move(sorties[s]));
+            out.footprints.push_back(ctx.footprintFor(i));
+            out.labels.push_back(ctx.routeLabel(i) + ", sortie " + std::to_string(s + 1) + " of " +
+                                 std::to_string(sorties.size()));
+            owner.push_back(i);
+        }
+    }
+    // Trajectories drawn for the routes as given still fit them when no route was cut.
+    if (!split)
+        out.trajectories = ctx.trajectories;
+    return out;
+}
+
+Status appendReport(MissionExportReport& to, const Result<ExportReport>& r) {
+    if (!r)
+        return r.error();
+    to.files.insert(to.files.end(), r->files.begin(), r->files.end());
+    to.notes.insert(to.notes.end(), r->notes.begin(), r->notes.end());
+    return {};
+}
+
+std::string folderPrefix(const MissionExportRequest& request) {
+    return request.folder.empty() ? std::string() : request.folder + "/";
+}
+
+// One aircraft's vehicle files: one per sortie, each checked against its autopilot's item limit.
+Status exportVehicleRoute(const ExportContext& ctx, std::size_t i, WaypointFormat format,
+                          const MissionExportRequest& request, MissionExportReport& report) {
+    const std::string ext = formatInfo(format).extension;
+    const std::string base =
+        folderPrefix(request) + request.stem + "-" + fileNameSafe(ctx.routeLabel(i));
+    const auto autopilot = autopilotFor(format, request.options);
+    const ExportContext flights = sortieContext(ctx, i);
+    const bool several = flights.routes.size() > 1;
+    std::vector<std::string> firstFiles;
+    for (std::size_t s = 0; s < flights.routes.size(); ++s) {
+        const std::string path =
+            base + (several ? "-sortie" + std::to_string(s + 1) : std::string()) + ext;
+        auto r = exportRouteFiles(flights, s, format, path, request.options);
+        if (auto st = appendReport(report, r); !st)
+            return st;
+        firstFiles.push_back(detail::baseName(r->files.front()));
+        if (autopilot)
+            if (auto w =
+                    flightItemWarning(flights, s, request.options, autopilot,
+                                      flights.routeLabel(s) + " (" + detail::baseName(path) + ")");
+                !w.empty())
+                report.warnings.push_back(w);
+    }
+    if (several)
+        report.notes.push_back(
+            ctx.routeLabel(i) + " needs " + std::to_string(flights.routes.size()) +
+            " batteries: written as " + std::to_string(flights.routes.size()) +
+            " flights, one per battery, each from home and back home (" + firstFiles.front() +
+            " to " + firstFiles.back() + "); no " + ext +
+            " file flies them all. Fly them in order, changing the battery at home.");
+    return {};
+}
+
+Status exportDisplayFormat(const ExportContext& ctx, WaypointFormat format,
+                           const MissionExportRequest& request, MissionExportReport& report) {
+    const auto& info = formatInfo(format);
+    // KML is for looking at the flights: each sortie in a folder of its own. GPX and GeoJSON are
+    // read back for editing, so they keep each aircraft's route whole (through home between
+    // sorties).
+    std::vector<std::size_t> owner;
+    ExportContext shown = displayContext(ctx, format == WaypointFormat::Kml, owner);
+    if (format == WaypointFormat::Kml && request.kmlTrajectories)
+        (void)addTrajectories(shown); // without them the KML still holds every waypoint
+    const std::string prefix = folderPrefix(request) + request.stem;
+    if (request.perAircraft)
+        for (std::size_t i = 0; i < ctx.routes.size(); ++i) {
+            std::vector<std::size_t> mine;
+            for (std::size_t k = 0; k < owner.size(); ++k)
+                if (owner[k] == i)
+                    mine.push_back(k);
+            const std::string path =
+                prefix + "-" + fileNameSafe(ctx.routeLabel(i)) + info.extension;
+            if (auto st = exportCombined(subContext(shown, mine), format, path, request.options);
+                !st)
+                return st;
+            report.files.push_back(path);
+        }
+    if (request.combined && (ctx.routes.size() > 1 || !request.perAircraft)) {
+        const std::string path = prefix + info.extension;
+        if (auto st = exportCombined(shown, format, path, request.options); !st)
+            return st;
+        report.files.push_back(path);
+    }
+    return {};
+}
+
+} // namespace
+
+std::optional<Autopilot> autopilotFor(WaypointFormat format, const ExportOptions& options) {
+    if (format == WaypointFormat::QgcPlan)
+        return options.firmware == QgcFirmware::PX4 ? Autopilot::PX4 : Autopilot::ArduPilot;
+    if (format == WaypointFormat::QgcWpl)
+        return Autopilot::ArduPilot;
+    return std::nullopt;
+}
+
+std::string flightItemWarning(const ExportContext& ctx, std::size_t routeIndex,
+                              const ExportOptions& options, std::optional<Autopilot> autopilot,
+                              const std::string& name) {
+    auto items = missionItems(ctx, routeIndex, options);
+    if (!items)
+        return {}; // the writer reports why the route cannot be written
+    std::optional<std::size_t> byDistance;
+    if (options.trigger == CameraTrigger::PerPhoto) {
+        ExportOptions d = options;
+        d.trigger = CameraTrigger::Distance;
+        if (auto fewer = missionItems(ctx, routeIndex, d))
+            byDistance = fewer->size();
+    }
+    return itemLimitWarning(name.empty() ? ctx.routeLabel(routeIndex) : name, items->size(),
+                            autopilot, byDistance);
+}
+
+ExportContext sortieContext(const ExportContext& ctx, std::size_t i) {
+    auto sorties = route::splitSorties(ctx.routes[i], ctx.homeFor(i));
+    if (sorties.size() < 2)
+        return subContext(ctx, {i});
+    ExportContext out;
+    out.mission = ctx.mission;
+    // Every sortie comes back home, the last one too (the plan's flight times count them so).
+    out.mission.landing.reset();
+    for (std::size_t s = 0; s < sorties.size(); ++s) {
+        if (!sorties[s].home)
+            sorties[s].home = ctx.homeFor(i);
+        out.routes.push_back(std::move(sorties[s]));
+        out.footprints.push_back(ctx.footprintFor(i));
+        out.labels.push_back(ctx.routeLabel(i) + ", sortie " + std::to_string(s + 1));
+    }
+    return out;
+}
+
+Result<MissionExportReport> exportFormat(const ExportContext& ctx, WaypointFormat format,
+                                         const MissionExportRequest& request) {
+    MissionExportReport report;
+    if (formatInfo(format).vehicle) {
+        for (std::size_t i = 0; i < ctx.routes.size(); ++i)
+            if (auto st = exportVehicleRoute(ctx, i, format, request, report); !st)
+                return st.error();
+    } else if (auto st = exportDisplayFormat(ctx, format, request, report); !st) {
+        return st.error();
+    }
+    return report;
+}
+
+Result<MissionExportReport> exportMission(const mission::Mission& mission,
+                                          const std::vector<route::Route>& routes,
+                                          const MissionExportRequest& request) {
+    if (routes.empty())
+        return makeError(ErrorCode::InvalidInput,
+                         "nothing to export: no route is planned or chosen");
+    if (request.formats.empty())
+        return makeError(ErrorCode::InvalidInput, "no waypoint format chosen");
+    const ExportContext ctx = makeExportContext(mission, routes);
+    MissionExportReport all;
+    for (const auto format : request.formats) {
+        auto r = exportFormat(ctx, format, request);
+        if (!r)
+            return r.error();
+        all.files.insert(all.files.end(), r->files.begin(), r->files.end());
+        all.notes.insert(all.notes.end(), r->notes.begin(), r->notes.end());
+        all.warnings.insert(all.warnings.end(), r->warnings.begin(), r->warnings.end());
+    }
+    return all;
+}
+
+} // namespace pf::io
