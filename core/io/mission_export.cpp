@@ -4,6 +4,8 @@
 #include "core/io/waypoint_format_util.h"
 #include "core/route/route_sorties.h"
 
+#include <algorithm>
+
 namespace pf::io {
 
 namespace {
@@ -178,6 +180,19 @@ ExportContext sortieContext(const ExportContext& ctx, std::size_t i) {
         out.labels.push_back(ctx.routeLabel(i) + ", sortie " + std::to_string(s + 1));
     }
     return out;
+}
+
+std::size_t sortieCount(const ExportContext& ctx, std::size_t i) {
+    return std::max<std::size_t>(1, route::sortieRanges(ctx.routes[i], ctx.homeFor(i)).size());
+}
+
+ExportContext sortieFlight(const ExportContext& ctx, std::size_t i, std::size_t sortie) {
+    const ExportContext all = sortieContext(ctx, i);
+    const std::size_t s = std::min(sortie, all.routes.size() - 1);
+    ExportContext one = subContext(all, {s});
+    if (all.routes.size() > 1)
+        one.labels = {all.routeLabel(s) + " of " + std::to_string(all.routes.size())};
+    return one;
 }
 
 Result<MissionExportReport> exportFormat(const ExportContext& ctx, WaypointFormat format,

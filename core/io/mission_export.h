@@ -67,5 +67,10 @@ std::string flightItemWarning(const ExportContext& ctx, std::size_t routeIndex,
 // unused: every sortie comes back home), labelled "<aircraft>, sortie N"; the route itself when it
 // is one sortie.
 ExportContext sortieContext(const ExportContext& ctx, std::size_t routeIndex);
+// The route's number of sorties (at least 1).
+std::size_t sortieCount(const ExportContext& ctx, std::size_t routeIndex);
+// One flight to upload: sortie `sortie` (0-based) of the route as route 0 of a context of its own,
+// labelled "<aircraft>, sortie 2 of 5" (the aircraft's name when it flies one sortie).
+ExportContext sortieFlight(const ExportContext& ctx, std::size_t routeIndex, std::size_t sortie);
 
 } // namespace pf::io
