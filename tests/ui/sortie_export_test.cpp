@@ -7,13 +7,17 @@
 
 #include "core/io/mission_file.h"
 #include "ui/dialogs/export_dialog.h"
+#include "ui/map/plan_layer.h"
 #include "ui/mission_document.h"
+#include "ui/panels/waypoint_panel.h"
+#include "ui/panels/waypoint_table_model.h"
 #include "ui/planning/plan_controller.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -148,4 +152,56 @@ TEST(SortieExport, AFlightOverTheAutopilotsItemLimitIsWarnedOfInTheMessage) {
     auto* box = dialog.findChild<QMessageBox*>(QStringLiteral("ExportResult"));
     ASSERT_NE(box, nullptr);
     EXPECT_EQ(box->icon(), QMessageBox::Warning);
+}
+
+// Shown as one flight per sortie: the Waypoints table numbers each row's sortie (the waypoint at
+// home between two is the battery change) and the map badges each sortie's start, also once the
+// route is edited by hand; the export then still writes one file per sortie.
+TEST(SortieExport, TheTableAndTheMapShowEachSortieAlsoOnAnEditedRoute) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    auto w = openAndPlan(pf::test::shortBatteryDemo(), dir.filePath(QStringLiteral("short.json")));
+    const auto& plan = *w->planController()->plan();
+    const auto& falcon = plan.aircraft.front();
+    ASSERT_EQ(falcon.sorties.size(), 2u);
+    auto* model = w->waypointPanel()->model();
+    ASSERT_EQ(model->rowCount(), int(falcon.route.waypoints.size()));
+    auto sortieText = [&](int row) {
+        return model->data(model->index(row, WaypointTableModel::Sortie)).toString();
+    };
+    const int home = falcon.sorties[1].firstWaypoint - 1;
+    EXPECT_EQ(sortieText(0), QStringLiteral("1"));
+    EXPECT_EQ(sortieText(home - 1), QStringLiteral("1"));
+    EXPECT_EQ(sortieText(home), QStringLiteral("home"));
+    EXPECT_EQ(sortieText(home + 1), QStringLiteral("2"));
+    EXPECT_EQ(sortieText(model->rowCount() - 1), QStringLiteral("2"));
+    EXPECT_TRUE(model->data(model->index(home + 1, WaypointTableModel::Sortie), Qt::ToolTipRole)
+                    .toString()
+                    .contains(QStringLiteral("Sortie 2 of 2")));
+
+    // An edit: the second sortie's first photo waypoint moved. The route is marked edited, and its
+    // sorties are still shown and exported.
+    int k = home + 1;
+    while (k < model->rowCount() &&
+           w->document()->routes()[0].route.waypoints[std::size_t(k)].kind !=
+               route::WaypointKind::Photo)
+        ++k;
+    ASSERT_TRUE(model->setData(
+        model->index(k, WaypointTableModel::Latitude),
+        w->document()->routes()[0].route.waypoints[std::size_t(k)].position.lat + 2e-5));
+    ASSERT_TRUE(w->document()->routes()[0].edited);
+    const auto& starts = w->planLayer()->routeItems()[0]->data().sortieStarts;
+    ASSERT_EQ(starts.size(), 2);
+    EXPECT_EQ(starts[0], 0);
+    EXPECT_EQ(starts[1], home + 1);
+    EXPECT_EQ(sortieText(home), QStringLiteral("home"));
+    ExportDialog dialog(w->document(), w->planController(), dir.filePath(QStringLiteral("out")));
+    dialog.show();
+    const QStringList written = dialog.runExport();
+    QStringList names;
+    for (const QString& f : written)
+        names << QFileInfo(f).fileName();
+    EXPECT_TRUE(names.contains(QStringLiteral("mission-Falcon_8-sortie2.plan")))
+        << names.join(' ').toStdString();
+    EXPECT_FALSE(names.contains(QStringLiteral("mission-Falcon_8.plan")));
 }
