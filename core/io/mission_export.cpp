@@ -70,7 +70,63 @@ std::string folderPrefix(const MissionExportRequest& request) {
     return request.folder.empty() ? std::string() : request.folder + "/";
 }
 
-// One aircraft's vehicle files: one per sortie, each checked against its autopilot's item limit.
+// A flight's mission items with the request's options, and with the camera triggered by distance
+// (what the warning offers instead); nothing when the route cannot be made into items.
+struct FlightItems {
+    std::size_t items = 0;
+    std::optional<std::size_t> byDistance;
+};
+std::optional<FlightItems> countItems(const ExportContext& ctx, std::size_t routeIndex,
+                                      const ExportOptions& options) {
+    auto items = missionItems(ctx, routeIndex, options);
+    if (!items)
+        return std::nullopt; // the writer reports why the route cannot be written
+    FlightItems out{items->size(), std::nullopt};
+    if (options.trigger == CameraTrigger::PerPhoto) {
+        ExportOptions d = options;
+        d.trigger = CameraTrigger::Distance;
+        if (auto fewer = missionItems(ctx, routeIndex, d))
+            out.byDistance = fewer->size();
+    }
+    return out;
+}
+
+// "sortie 3", "sorties 1 and 2", "sorties 1 to 5", "sorties 1, 2 and 4" (0-based in, 1-based out).
+std::string sortieList(const std::vector<std::size_t>& s) {
+    if (s.size() == 1)
+        return "sortie " + std::to_string(s[0] + 1);
+    if (s.size() > 2 && s.back() - s.front() + 1 == s.size())
+        return "sorties " + std::to_string(s.front() + 1) + " to " + std::to_string(s.back() + 1);
+    std::string out = "sorties ";
+    for (std::size_t i = 0; i < s.size(); ++i)
+        out += (i == 0 ? "" : i + 1 == s.size() ? " and " : ", ") + std::to_string(s[i] + 1);
+    return out;
+}
+
+// The one warning of an aircraft whose flights `over` hold more items than its autopilot stores.
+std::string itemWarning(const std::string& aircraft, bool several,
+                        const std::vector<std::size_t>& over,
+                        const std::vector<FlightItems>& counts,
+                        const std::vector<std::string>& files, Autopilot autopilot) {
+    std::vector<std::size_t> items, byDistance;
+    for (std::size_t s : over) {
+        items.push_back(counts[s].items);
+        if (counts[s].byDistance)
+            byDistance.push_back(*counts[s].byDistance);
+    }
+    std::string where = files[over.front()];
+    if (over.size() > 2 && over.back() - over.front() + 1 == over.size())
+        where += " to " + files[over.back()];
+    else
+        for (std::size_t k = 1; k < over.size(); ++k)
+            where += (k + 1 == over.size() ? " and " : ", ") + files[over[k]];
+    return itemLimitWarning(aircraft + (several ? ", " + sortieList(over) : std::string()) + " (" +
+                                where + ")",
+                            items, autopilot, byDistance);
+}
+
+// One aircraft's vehicle files: one per sortie; the flights over their autopilot's item limit are
+// named in one warning.
 Status exportVehicleRoute(const ExportContext& ctx, std::size_t i, WaypointFormat format,
                           const MissionExportRequest& request, MissionExportReport& report) {
     const std::string ext = formatInfo(format).extension;
@@ -79,27 +135,33 @@ Status exportVehicleRoute(const ExportContext& ctx, std::size_t i, WaypointForma
     const auto autopilot = autopilotFor(format, request.options);
     const ExportContext flights = sortieContext(ctx, i);
     const bool several = flights.routes.size() > 1;
-    std::vector<std::string> firstFiles;
+    std::vector<std::string> files;
+    std::vector<FlightItems> counts(flights.routes.size());
+    std::vector<std::size_t> over;
     for (std::size_t s = 0; s < flights.routes.size(); ++s) {
         const std::string path =
             base + (several ? "-sortie" + std::to_string(s + 1) : std::string()) + ext;
         auto r = exportRouteFiles(flights, s, format, path, request.options);
         if (auto st = appendReport(report, r); !st)
             return st;
-        firstFiles.push_back(detail::baseName(r->files.front()));
-        if (autopilot)
-            if (auto w =
-                    flightItemWarning(flights, s, request.options, autopilot,
-                                      flights.routeLabel(s) + " (" + detail::baseName(path) + ")");
-                !w.empty())
-                report.warnings.push_back(w);
+        files.push_back(detail::baseName(r->files.front()));
+        if (!autopilot)
+            continue;
+        if (auto n = countItems(flights, s, request.options);
+            n && !fitsAutopilot(n->items, autopilot)) {
+            counts[s] = *n;
+            over.push_back(s);
+        }
     }
+    if (!over.empty())
+        report.warnings.push_back(
+            itemWarning(ctx.routeLabel(i), several, over, counts, files, *autopilot));
     if (several)
         report.notes.push_back(
             ctx.routeLabel(i) + " needs " + std::to_string(flights.routes.size()) +
             " batteries: written as " + std::to_string(flights.routes.size()) +
-            " flights, one per battery, each from home and back home (" + firstFiles.front() +
-            " to " + firstFiles.back() + "); no " + ext +
+            " flights, one per battery, each from home and back home (" + files.front() + " to " +
+            files.back() + "); no " + ext +
             " file flies them all. Fly them in order, changing the battery at home.");
     return {};
 }
@@ -150,18 +212,11 @@ std::optional<Autopilot> autopilotFor(WaypointFormat format, const ExportOptions
 std::string flightItemWarning(const ExportContext& ctx, std::size_t routeIndex,
                               const ExportOptions& options, std::optional<Autopilot> autopilot,
                               const std::string& name) {
-    auto items = missionItems(ctx, routeIndex, options);
-    if (!items)
-        return {}; // the writer reports why the route cannot be written
-    std::optional<std::size_t> byDistance;
-    if (options.trigger == CameraTrigger::PerPhoto) {
-        ExportOptions d = options;
-        d.trigger = CameraTrigger::Distance;
-        if (auto fewer = missionItems(ctx, routeIndex, d))
-            byDistance = fewer->size();
-    }
-    return itemLimitWarning(name.empty() ? ctx.routeLabel(routeIndex) : name, items->size(),
-                            autopilot, byDistance);
+    const auto n = countItems(ctx, routeIndex, options);
+    if (!n)
+        return {};
+    return itemLimitWarning(name.empty() ? ctx.routeLabel(routeIndex) : name, n->items, autopilot,
+                            n->byDistance);
 }
 
 ExportContext sortieContext(const ExportContext& ctx, std::size_t i) {

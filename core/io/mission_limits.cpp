@@ -42,30 +42,53 @@ std::size_t storedItems(std::size_t missionItems, Autopilot autopilot) {
     return autopilot == Autopilot::ArduPilot ? missionItems + 1 : missionItems;
 }
 
+bool fitsAutopilot(std::size_t missionItems, std::optional<Autopilot> autopilot) {
+    if (autopilot)
+        return storedItems(missionItems, *autopilot) <= missionItemLimit(*autopilot).items;
+    return fitsAutopilot(missionItems, Autopilot::ArduPilot) &&
+           fitsAutopilot(missionItems, Autopilot::PX4);
+}
+
 std::string itemLimitWarning(const std::string& flight, std::size_t missionItems,
                              std::optional<Autopilot> autopilot,
                              std::optional<std::size_t> itemsByDistance) {
-    const MissionItemLimit& a = missionItemLimit(Autopilot::ArduPilot);
-    const MissionItemLimit& p = missionItemLimit(Autopilot::PX4);
-    auto fits = [&](std::size_t items) {
-        if (autopilot)
-            return storedItems(items, *autopilot) <= missionItemLimit(*autopilot).items;
-        return storedItems(items, Autopilot::ArduPilot) <= a.items &&
-               storedItems(items, Autopilot::PX4) <= p.items;
-    };
-    if (fits(missionItems))
+    if (fitsAutopilot(missionItems, autopilot))
         return {};
-    const std::string limitText =
-        autopilot ? missionItemLimit(*autopilot).where : p.where + ", " + a.where;
-    std::string out = flight + ": " + thousands(missionItems) +
+    return itemLimitWarning(flight, std::vector<std::size_t>{missionItems}, autopilot,
+                            itemsByDistance ? std::vector<std::size_t>{*itemsByDistance}
+                                            : std::vector<std::size_t>{});
+}
+
+std::string itemLimitWarning(const std::string& flights,
+                             const std::vector<std::size_t>& missionItems,
+                             std::optional<Autopilot> autopilot,
+                             const std::vector<std::size_t>& itemsByDistance) {
+    if (missionItems.empty())
+        return {};
+    auto counts = [](const std::vector<std::size_t>& n) {
+        std::string out;
+        for (std::size_t i = 0; i < n.size(); ++i)
+            out += (i == 0 ? "" : i + 1 == n.size() ? " and " : ", ") + thousands(n[i]);
+        return out;
+    };
+    const std::string limitText = autopilot ? missionItemLimit(*autopilot).where
+                                            : missionItemLimit(Autopilot::PX4).where + ", " +
+                                                  missionItemLimit(Autopilot::ArduPilot).where;
+    const bool one = missionItems.size() == 1;
+    std::string out = flights + ": " + counts(missionItems) +
                       " mission items, more than an autopilot holds: " + limitText +
-                      ". The vehicle may refuse the mission or keep only part of it";
-    if (itemsByDistance && *itemsByDistance < missionItems)
-        out += "; with photos by distance along lanes it takes " + thousands(*itemsByDistance) +
-               " items" +
-               (fits(*itemsByDistance)
-                    ? std::string()
-                    : std::string(", still too many: a higher altitude needs fewer photos"));
+                      ". The vehicle may refuse " + (one ? "the mission" : "such a mission") +
+                      " or keep only part of it";
+    bool fewer = itemsByDistance.size() == missionItems.size();
+    bool allFit = fewer;
+    for (std::size_t i = 0; fewer && i < missionItems.size(); ++i) {
+        fewer = itemsByDistance[i] < missionItems[i];
+        allFit = allFit && fitsAutopilot(itemsByDistance[i], autopilot);
+    }
+    if (fewer)
+        out += std::string("; with photos by distance along lanes ") +
+               (one ? "it takes " : "they take ") + counts(itemsByDistance) + " items" +
+               (allFit ? "" : ", still too many: a higher altitude needs fewer photos");
     return out;
 }
 

@@ -149,9 +149,11 @@ TEST(SortieExport, AFlightOverTheAutopilotsItemLimitIsWarnedOfInTheMessage) {
         << result.toStdString();
     EXPECT_FALSE(result.contains(QStringLiteral("Phantom 4 Pro (mission-")))
         << result.toStdString();
-    auto* box = dialog.findChild<QMessageBox*>(QStringLiteral("ExportResult"));
+    auto* box = dialog.findChild<QDialog*>(QStringLiteral("ExportResult"));
     ASSERT_NE(box, nullptr);
-    EXPECT_EQ(box->icon(), QMessageBox::Warning);
+    EXPECT_TRUE(box->property("warned").toBool());
+    EXPECT_TRUE(result.contains(QStringLiteral("Read the warnings before flying them.")))
+        << result.toStdString();
 }
 
 // Shown as one flight per sortie: the Waypoints table numbers each row's sortie (the waypoint at

@@ -18,6 +18,8 @@
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QStyle>
+#include <QTextBrowser>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -203,44 +205,71 @@ void ExportDialog::report(const QStringList& written, const QString& error,
     emit exported(written);
 }
 
-// What was written, in a message of its own: the file names (a flight per battery shows as one file
-// per sortie), then the warnings and notes. Opened with open(): the export returns at once.
+// What was written, in a window of its own that scrolls: the warnings first (a flight over its
+// autopilot's item limit), the notes (one file per sortie, merged waypoints, Litchi parts), the
+// file names. Opened with open(): the export returns at once.
 void ExportDialog::showWritten(const QStringList& written, const QStringList& notes,
                                const QStringList& warnings) {
     delete m_result.data(); // the previous export's
     const QString folder = request().folder;
+    auto* box = new QDialog(this);
+    box->setObjectName(QStringLiteral("ExportResult"));
+    box->setWindowTitle(tr("Files written"));
+    box->setProperty("warned", !warnings.isEmpty());
+    auto* icon = new QLabel;
+    icon->setPixmap(style()
+                        ->standardIcon(warnings.isEmpty() ? QStyle::SP_MessageBoxInformation
+                                                          : QStyle::SP_MessageBoxWarning)
+                        .pixmap(32, 32));
+    QString head = written.size() == 1
+                       ? tr("Wrote 1 file into %1.").arg(folder)
+                       : tr("Wrote %1 files into %2.").arg(written.size()).arg(folder);
+    if (!warnings.isEmpty())
+        head += QLatin1Char(' ') + tr("Read the warnings before flying them.");
+    auto* summary = new QLabel(head);
+    summary->setObjectName(QStringLiteral("ExportResultSummary"));
+    summary->setWordWrap(true);
+    auto list = [](const QString& title, const QStringList& items, const QString& colour) {
+        if (items.isEmpty())
+            return QString();
+        QString html =
+            QStringLiteral(
+                "<p style=\"margin-bottom:2px\"><b>%1</b></p><ul style=\"margin-top:0\">")
+                .arg(title.toHtmlEscaped());
+        for (const QString& i : items)
+            html += QStringLiteral("<li style=\"color:%1\">%2</li>").arg(colour, i.toHtmlEscaped());
+        return html + QStringLiteral("</ul>");
+    };
     QStringList names;
     for (const QString& f : written)
         names << QFileInfo(f).fileName();
-    m_result = new QMessageBox(warnings.isEmpty() ? QMessageBox::Information : QMessageBox::Warning,
-                               tr("Export waypoints"),
-                               written.size() == 1
-                                   ? tr("Wrote 1 file into %1.").arg(folder)
-                                   : tr("Wrote %1 files into %2.").arg(written.size()).arg(folder),
-                               QMessageBox::Ok, this);
-    m_result->setObjectName(QStringLiteral("ExportResult"));
-    constexpr int kShown = 16;
-    QString info = names.mid(0, kShown).join(QLatin1Char('\n'));
-    if (names.size() > kShown)
-        info += QLatin1Char('\n') +
-                tr("… and %n more (Show Details)", nullptr, int(names.size()) - kShown);
-    QStringList lines;
-    for (const QString& w : warnings)
-        lines << QStringLiteral("⚠ ") + w;
-    lines << notes;
-    if (!lines.isEmpty())
-        info += QStringLiteral("\n\n") + lines.join(QStringLiteral("\n\n"));
-    m_result->setInformativeText(info);
-    m_result->setDetailedText(
-        written.join(QLatin1Char('\n')) +
-        (lines.isEmpty() ? QString() : QStringLiteral("\n\n") + lines.join(QLatin1Char('\n'))));
-    m_result->setAttribute(Qt::WA_DeleteOnClose);
-    m_result->open();
+    auto* text = new QTextBrowser;
+    text->setObjectName(QStringLiteral("ExportResultText"));
+    text->setHtml(list(tr("Warnings"), warnings, QStringLiteral("#8a4b00")) +
+                  list(tr("Notes"), notes, QStringLiteral("palette(text)")) +
+                  list(tr("Files"), names, QStringLiteral("palette(text)")));
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok);
+    connect(buttons, &QDialogButtonBox::accepted, box, &QDialog::accept);
+    auto* top = new QHBoxLayout;
+    top->addWidget(icon, 0, Qt::AlignTop);
+    top->addWidget(summary, 1);
+    auto* lay = new QVBoxLayout(box);
+    lay->addLayout(top);
+    lay->addWidget(text, 1);
+    lay->addWidget(buttons);
+    box->resize(720, 440);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    m_result = box;
+    box->open();
 }
 
 QString ExportDialog::resultText() const {
-    return m_result ? m_result->text() + QLatin1Char('\n') + m_result->informativeText()
-                    : QString();
+    if (!m_result)
+        return {};
+    const auto* summary = m_result->findChild<QLabel*>(QStringLiteral("ExportResultSummary"));
+    const auto* text = m_result->findChild<QTextBrowser*>(QStringLiteral("ExportResultText"));
+    return (summary ? summary->text() : QString()) + QLatin1Char('\n') +
+           (text ? text->toPlainText() : QString());
 }
 
 void ExportDialog::rebuildRouteBoxes() {

@@ -5,7 +5,6 @@
 #include "ui/planning/route_export.h"
 
 #include <QDialog>
-#include <QMessageBox>
 #include <QPointer>
 
 #include <map>
@@ -41,8 +40,8 @@ public:
     // The banner above the controls ("Outdated plan: …", route problems); empty when hidden.
     QString bannerText() const;
     QPushButton* exportButton() const { return m_exportButton; }
-    // The message listing the files the last export wrote (title line, files, warnings, notes);
-    // empty when it is closed or nothing was written.
+    // The window listing what the last export wrote (summary line, warnings, notes, files); empty
+    // when it is closed or nothing was written.
     QString resultText() const;
 
 signals:
@@ -80,7 +79,7 @@ private:
     QComboBox* m_trigger;
     QDoubleSpinBox* m_homeElevation;
     QPlainTextEdit* m_report;
-    QPointer<QMessageBox> m_result;
+    QPointer<QDialog> m_result;
 };
 
 } // namespace pf::ui

@@ -58,6 +58,22 @@ QTableWidget* makeTable(const QStringList& headers) {
     return t;
 }
 
+// One line below the comparison for a planner shown as the yardstick only (the tooltip of its
+// button says more).
+QString yardstickNote(mission::PlannerKind kind, const std::vector<PlannerComparisonRow>& rows,
+                      bool outdated) {
+    for (const auto& row : rows)
+        if (!outdated && row.planner == kind && row.ok && !row.zonesCrossed.isEmpty())
+            return StatisticsPanel::tr(
+                       "%1 is the yardstick here: its routes cross %2, so it is not offered as "
+                       "this mission's planner.")
+                .arg(plannerName(kind), row.zonesCrossed.join(QStringLiteral(", ")));
+    return StatisticsPanel::tr(
+               "%1 is the yardstick here: it flies straight over no-fly zones (compare to "
+               "see which it crosses).")
+        .arg(plannerName(kind));
+}
+
 QLabel* banner() {
     auto* l = new QLabel;
     l->setWordWrap(true);
@@ -397,13 +413,13 @@ void StatisticsPanel::refreshComparison() {
         // A planner flying over the mission's no-fly zones stays visible as the yardstick only.
         const QString refusal = inUse ? QString() : m_planner->plannerRefusal(info.kind);
         if (!refusal.isEmpty())
-            refused << refusal;
+            refused << yardstickNote(info.kind, rows, m_planner->isComparisonOutdated());
         use->setText(inUse ? tr("In use") : refusal.isEmpty() ? tr("Use") : tr("Yardstick"));
         use->setEnabled(!inUse && refusal.isEmpty());
         use->setToolTip(inUse ? tr("The mission's planner")
                         : refusal.isEmpty()
                             ? tr("Plan the mission with %1").arg(plannerName(info.kind))
-                            : refusal);
+                            : QStringLiteral("<p>%1</p>").arg(refusal.toHtmlEscaped())); // wrapped
         const PlannerComparisonRow* row = nullptr;
         for (const auto& x : rows)
             if (x.planner == info.kind)

@@ -117,8 +117,9 @@ void PlanningToolBar::syncControls() {
             const QString refusal =
                 info.kind == o.planner ? QString() : m_planner->plannerRefusal(info.kind);
             items->item(i)->setEnabled(refusal.isEmpty());
-            items->item(i)->setToolTip(refusal.isEmpty() ? QString::fromLatin1(info.summary)
-                                                         : refusal);
+            items->item(i)->setToolTip(
+                refusal.isEmpty() ? QString::fromLatin1(info.summary)
+                                  : QStringLiteral("<p>%1</p>").arg(refusal.toHtmlEscaped()));
         }
     m_plannerBox->setCurrentIndex(m_plannerBox->findData(int(o.planner)));
     m_keepInside->setChecked(o.keepInsideArea);

@@ -139,7 +139,7 @@ UploadDialog::UploadDialog(MissionDocument* doc, QWidget* parent, std::map<QStri
                               kRowHeight * std::min(row, 6));
     m_table->resizeColumnsToContents();
     m_table->setColumnWidth(0, std::max(m_table->columnWidth(0), 150));
-    m_table->setColumnWidth(1, 90);
+    m_table->setColumnWidth(1, 115);
     m_table->setColumnWidth(2, 230);
     m_table->setColumnWidth(3, 80);
     m_table->setColumnWidth(4, 130);

@@ -260,6 +260,35 @@ TEST(MissionExport, TheItemLimitWarningFiresOnlyOverTheAutopilotsLimit) {
     EXPECT_TRUE(warningsFor(400, WaypointFormat::Kml, ardupilot).empty());
 }
 
+// An aircraft with three sorties of which the first and the last are over ArduPilot's 650: one
+// warning naming both sorties, their files and counts; the sortie that fits is not named.
+TEST(MissionExport, TheSortiesOverTheLimitAreNamedInOneWarning) {
+    const mission::Mission m = test::demoMission();
+    route::Route r = lane(323); // 650 items
+    r.home = m.home;
+    const route::Waypoint atHome{*m.home, 30.0, 0.0, route::WaypointKind::Transit};
+    r.waypoints.push_back(atHome);
+    const route::Route fits = lane(100);
+    r.waypoints.insert(r.waypoints.end(), fits.waypoints.begin(), fits.waypoints.end());
+    r.waypoints.push_back(atHome);
+    const route::Route last = lane(330); // 664 items
+    r.waypoints.insert(r.waypoints.end(), last.waypoints.begin(), last.waypoints.end());
+    MissionExportRequest request;
+    request.folder = freshDir("grouped");
+    auto report = exportFormat(makeExportContext(m, {r}), WaypointFormat::QgcWpl, request);
+    ASSERT_TRUE(report.ok()) << report.error().message;
+    EXPECT_EQ(report->files.size(), 3u);
+    ASSERT_EQ(report->warnings.size(), 1u);
+    EXPECT_EQ(report->warnings[0].rfind(
+                  "Test copter, sorties 1 and 3 (mission-Test_copter-sortie1.waypoints and "
+                  "mission-Test_copter-sortie3.waypoints): 650 and 664 mission items, more "
+                  "than an autopilot holds: ArduPilot 650",
+                  0),
+              0u)
+        << report->warnings[0];
+    EXPECT_NE(report->warnings[0].find("they take "), std::string::npos) << report->warnings[0];
+}
+
 TEST(MissionExport, TheLimitWarningNamesTheFlightTheCountAndTheLimit) {
     EXPECT_EQ(itemLimitWarning("A", 649, Autopilot::ArduPilot), "");
     EXPECT_NE(itemLimitWarning("A", 650, Autopilot::ArduPilot), "");
