@@ -125,30 +125,33 @@ std::string itemWarning(const std::string& aircraft, bool several,
                             items, autopilot, byDistance);
 }
 
-// One aircraft's vehicle files: one per sortie; the flights over their autopilot's item limit are
-// named in one warning.
-Status exportVehicleRoute(const ExportContext& ctx, std::size_t i, WaypointFormat format,
-                          const MissionExportRequest& request, MissionExportReport& report) {
-    const std::string ext = formatInfo(format).extension;
-    const std::string base =
-        folderPrefix(request) + request.stem + "-" + fileNameSafe(ctx.routeLabel(i));
-    const auto autopilot = autopilotFor(format, request.options);
+} // namespace
+
+Result<MissionExportReport> exportVehicleFlights(const ExportContext& ctx, std::size_t i,
+                                                 WaypointFormat format, const std::string& path,
+                                                 const ExportOptions& options) {
+    if (i >= ctx.routes.size())
+        return makeError(ErrorCode::InvalidInput,
+                         "there is no route " + std::to_string(i + 1) + " to export");
+    MissionExportReport report;
+    const std::size_t extLength = detail::extensionOf(path).size();
+    const std::string stem = path.substr(0, path.size() - extLength);
+    const std::string ext = path.substr(path.size() - extLength);
+    const auto autopilot = autopilotFor(format, options);
     const ExportContext flights = sortieContext(ctx, i);
     const bool several = flights.routes.size() > 1;
     std::vector<std::string> files;
     std::vector<FlightItems> counts(flights.routes.size());
     std::vector<std::size_t> over;
     for (std::size_t s = 0; s < flights.routes.size(); ++s) {
-        const std::string path =
-            base + (several ? "-sortie" + std::to_string(s + 1) : std::string()) + ext;
-        auto r = exportRouteFiles(flights, s, format, path, request.options);
+        const std::string file = several ? stem + "-sortie" + std::to_string(s + 1) + ext : path;
+        auto r = exportRouteFiles(flights, s, format, file, options);
         if (auto st = appendReport(report, r); !st)
-            return st;
+            return st.error();
         files.push_back(detail::baseName(r->files.front()));
         if (!autopilot)
             continue;
-        if (auto n = countItems(flights, s, request.options);
-            n && !fitsAutopilot(n->items, autopilot)) {
+        if (auto n = countItems(flights, s, options); n && !fitsAutopilot(n->items, autopilot)) {
             counts[s] = *n;
             over.push_back(s);
         }
@@ -161,8 +164,24 @@ Status exportVehicleRoute(const ExportContext& ctx, std::size_t i, WaypointForma
             ctx.routeLabel(i) + " needs " + std::to_string(flights.routes.size()) +
             " batteries: written as " + std::to_string(flights.routes.size()) +
             " flights, one per battery, each from home and back home (" + files.front() + " to " +
-            files.back() + "); no " + ext +
+            files.back() + "); no " + formatInfo(format).extension +
             " file flies them all. Fly them in order, changing the battery at home.");
+    return report;
+}
+
+namespace {
+
+// One aircraft's vehicle files: "<stem>-<aircraft>.<ext>", or one per sortie.
+Status exportVehicleRoute(const ExportContext& ctx, std::size_t i, WaypointFormat format,
+                          const MissionExportRequest& request, MissionExportReport& report) {
+    const std::string path = folderPrefix(request) + request.stem + "-" +
+                             fileNameSafe(ctx.routeLabel(i)) + formatInfo(format).extension;
+    auto r = exportVehicleFlights(ctx, i, format, path, request.options);
+    if (!r)
+        return r.error();
+    report.files.insert(report.files.end(), r->files.begin(), r->files.end());
+    report.notes.insert(report.notes.end(), r->notes.begin(), r->notes.end());
+    report.warnings.insert(report.warnings.end(), r->warnings.begin(), r->warnings.end());
     return {};
 }
 

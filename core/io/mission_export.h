@@ -48,6 +48,13 @@ Result<MissionExportReport> exportMission(const mission::Mission& mission,
                                           const std::vector<route::Route>& routes,
                                           const MissionExportRequest& request);
 
+// Route `routeIndex` of ctx written in a vehicle format: to `path` when it flies one sortie, else
+// one file per sortie, "<path without extension>-sortieN.<ext>" (a note names them); a warning
+// names its flights holding more mission items than their autopilot stores.
+Result<MissionExportReport> exportVehicleFlights(const ExportContext& ctx, std::size_t routeIndex,
+                                                 WaypointFormat format, const std::string& path,
+                                                 const ExportOptions& options = {});
+
 // The same for one format of a context already made (request.formats is not read).
 Result<MissionExportReport> exportFormat(const ExportContext& ctx, WaypointFormat format,
                                          const MissionExportRequest& request);

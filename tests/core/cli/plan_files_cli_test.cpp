@@ -88,3 +88,46 @@ TEST(CliPlanFiles, AFlightOverTheAutopilotsItemLimitIsWarnedOf) {
 }
 
 } // namespace
+
+namespace {
+
+// convert of a route that flies through home between sorties (a GeoJSON export keeps the whole
+// route for editing) writes one vehicle file per battery, never one flying both.
+TEST(CliPlanFiles, ConvertWritesAVehicleFilePerSortie) {
+    const auto dir = std::filesystem::path(testing::TempDir()) / "pf_cli_convert_sorties";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::string mission = slurp(std::string(PF_RESOURCES_DIR) + "/demo/demo_mission.json");
+    const std::string from = "\"endurance_min\": 20.0";
+    const auto at = mission.find(from);
+    ASSERT_NE(at, std::string::npos);
+    mission.replace(at, from.size(), "\"endurance_min\": 4.0");
+    const auto missionPath = dir / "short_battery.json";
+    std::ofstream(missionPath) << mission;
+    const CliRun planned =
+        cli("plan '" + missionPath.string() + "' --format geojson --out '" + dir.string() + "'");
+    ASSERT_EQ(planned.code, 0) << planned.err;
+    const CliRun r = cli("convert '" + (dir / "mission-Falcon_8.geojson").string() + "' '" +
+                         (dir / "f.plan").string() + "'");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "f-sortie1.plan"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "f-sortie2.plan"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "f.plan"));
+    EXPECT_NE(r.err.find("note: Falcon 8 needs 2 batteries"), std::string::npos) << r.err;
+    EXPECT_NE(r.out.find("f-sortie1.plan"), std::string::npos) << r.out;
+    // Each holds one take-off and one return.
+    for (const char* f : {"f-sortie1.plan", "f-sortie2.plan"}) {
+        const std::string text = slurp((dir / f).string());
+        std::size_t takeoffs = 0, returns = 0;
+        for (auto p = text.find("\"command\":22,"); p != std::string::npos;
+             p = text.find("\"command\":22,", p + 1))
+            ++takeoffs;
+        for (auto p = text.find("\"command\":20,"); p != std::string::npos;
+             p = text.find("\"command\":20,", p + 1))
+            ++returns;
+        EXPECT_EQ(takeoffs, 1u) << f;
+        EXPECT_EQ(returns, 1u) << f;
+    }
+}
+
+} // namespace
