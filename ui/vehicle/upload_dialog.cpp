@@ -41,6 +41,23 @@ QWidget* centred(QWidget* w) {
     return box;
 }
 
+// The row's battery choice: one item per sortie ("2 of 5"); disabled for a single flight.
+QComboBox* sortieBox(const QString& aircraft, int sorties, int row) {
+    auto* box = new QComboBox;
+    box->setObjectName(QStringLiteral("UploadSortie_%1").arg(row));
+    for (int k = 1; k <= sorties; ++k)
+        box->addItem(sorties == 1 ? UploadDialog::tr("one flight")
+                                  : UploadDialog::tr("%1 of %2").arg(k).arg(sorties));
+    box->setEnabled(sorties > 1);
+    box->setToolTip(sorties == 1
+                        ? UploadDialog::tr("%1 flies the whole plan on one battery").arg(aircraft)
+                        : UploadDialog::tr("%1 needs %2 batteries: each upload sends one battery's "
+                                           "flight, from home back home")
+                              .arg(aircraft)
+                              .arg(sorties));
+    return box;
+}
+
 QString settingsKey(const QString& what, const QString& aircraft) {
     QString a = aircraft;
     a.replace(QLatin1Char('/'), QLatin1Char('_'));
@@ -53,15 +70,13 @@ UploadDialog::UploadDialog(MissionDocument* doc, QWidget* parent, std::map<QStri
     : QDialog(parent), m_doc(doc), m_manager(new UploadManager(this)), m_sent(sent) {
     setWindowTitle(tr("Connect and Upload"));
     setObjectName(QStringLiteral("UploadDialog"));
-    auto* intro = new QLabel(tr(
-        "Each aircraft's mission goes to its vehicle: the waypoints as exported, the no-fly zones "
-        "as "
-        "geofence and the rally point. It is then read back and compared item by item. A mission "
-        "is one battery's flight: for an aircraft that needs several, choose the battery and "
-        "upload "
-        "the next one when it has landed. "
-        "Connections: udp:HOST:PORT (Photoflight sends first), udp::PORT (listen, e.g. 14550), "
-        "tcp:HOST:PORT, serial:DEVICE:BAUD. System id 0 takes the first vehicle heard."));
+    auto* intro = new QLabel(
+        tr("Each aircraft's mission goes to its vehicle: the waypoints as exported, the no-fly "
+           "zones as geofence and the rally point. It is then read back and compared item by item. "
+           "A mission is one battery's flight: for an aircraft that needs several, choose the "
+           "battery and upload the next one when it has landed. Connections: udp:HOST:PORT "
+           "(Photoflight sends first), udp::PORT (listen, e.g. 14550), tcp:HOST:PORT, "
+           "serial:DEVICE:BAUD. System id 0 takes the first vehicle heard."));
     intro->setWordWrap(true);
 
     m_table = new QTableWidget(0, 6);
@@ -91,17 +106,7 @@ UploadDialog::UploadDialog(MissionDocument* doc, QWidget* parent, std::map<QStri
         // The battery: by default the one after the last verified upload, else the first.
         const int sorties =
             r.route.waypoints.empty() ? 1 : int(io::sortieCount(ctx, std::size_t(row)));
-        w.sortie = new QComboBox;
-        w.sortie->setObjectName(QStringLiteral("UploadSortie_%1").arg(row));
-        for (int k = 1; k <= sorties; ++k)
-            w.sortie->addItem(sorties == 1 ? tr("one flight") : tr("%1 of %2").arg(k).arg(sorties));
-        w.sortie->setEnabled(sorties > 1);
-        w.sortie->setToolTip(
-            sorties == 1 ? tr("%1 flies the whole plan on one battery").arg(name)
-                         : tr("%1 needs %2 batteries: each upload sends one battery's flight, "
-                              "from home back home")
-                               .arg(name)
-                               .arg(sorties));
+        w.sortie = sortieBox(name, sorties, row);
         if (m_sent && m_sent->count(name) && m_sent->at(name) < sorties)
             w.sortie->setCurrentIndex(m_sent->at(name));
         w.connection = new QComboBox;
