@@ -16,6 +16,9 @@ constexpr std::size_t kArduPilotItems = 650;
 // mission items", default 500 (src/modules/dataman/Kconfig); a board's build may set more. PX4
 // lowered it from 2000 to 500 so that missions also fit the RAM backend (SYS_DM_BACKEND).
 constexpr std::size_t kPx4Items = 500;
+// The ground stations add no limit of their own (Mission Planner's is "open ended", its issue 1644;
+// QGroundControl leaves it to the vehicle): the autopilot finds out on upload, ArduPilot answering a
+// MISSION_COUNT over its storage with MAV_MISSION_NO_SPACE. Hence the warning before a file is flown.
 
 std::string thousands(std::size_t n) {
     std::string s = std::to_string(n);
