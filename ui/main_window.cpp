@@ -124,6 +124,7 @@ MainWindow::MainWindow(QWidget* parent, bool interactive) : QMainWindow(parent),
     connect(m_view, &MapView::viewChanged, this, &MainWindow::onViewChanged);
     connect(m_view, &MapView::filesDropped, this, &MainWindow::openDropped);
     connect(m_doc, &MissionDocument::dirtyChanged, this, &MainWindow::updateTitle);
+    connect(m_doc, &MissionDocument::routesChanged, this, [this] { m_sortiesSent.clear(); });
     connect(m_doc, &MissionDocument::filePathChanged, this, &MainWindow::updateTitle);
     connect(m_doc, &MissionDocument::changed, this, &MainWindow::updateTitle);
     connect(m_layer, &MissionLayer::problemsChanged, this, [this](const QStringList& problems) {
@@ -314,7 +315,7 @@ void MainWindow::buildActions() {
             showError(tr("Connect and Upload"), tr("Nothing to upload yet: plan the mission first (F5)."));
             return;
         }
-        UploadDialog dialog(m_doc, this);
+        UploadDialog dialog(m_doc, this, &m_sortiesSent);
         dialog.exec();
     });
     uploadAct->setObjectName(QStringLiteral("ConnectAndUploadAction"));

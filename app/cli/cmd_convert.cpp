@@ -4,6 +4,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/export_args.h"
 
+#include "core/io/mission_export.h"
 #include "core/io/waypoint_formats.h"
 #include "core/mission/route_check.h"
 
@@ -40,6 +41,9 @@ const char* const kConvertUsage =
     "Take-off, capture, return and landing items are regenerated from the waypoints; a .plan's "
     "geofence\n"
     "and home are kept when the output can hold them.\n"
+    "A route that passes through home between sorties (a GPX or GeoJSON route exported with every\n"
+    "battery's flight) becomes one .plan, .waypoints or .csv per battery, OUT-sortieN.EXT: a vehicle\n"
+    "file never flies several batteries.\n"
     "Exit codes: 0 written, 2 bad input (the message names the file and the line or JSON key).\n";
 
 int runConvert(const std::vector<std::string>& argv) {
@@ -115,7 +119,17 @@ int runConvert(const std::vector<std::string>& argv) {
     const auto& info = io::formatInfo(*outFormat);
     Status written;
     std::vector<std::string> files{out};
-    if (ctx.routes.size() == 1) {
+    if (ctx.routes.size() == 1 && info.vehicle) {
+        // A route passing through home between sorties is written one file per battery.
+        auto r = io::exportVehicleFlights(ctx, 0, *outFormat, out, opt);
+        if (!r)
+            return reportError(r.error());
+        for (const auto& n : r->notes)
+            std::cerr << "photoflight-cli: note: " << n << '\n';
+        for (const auto& w : r->warnings)
+            std::cerr << "photoflight-cli: warning: " << w << '\n';
+        files = r->files;
+    } else if (ctx.routes.size() == 1) {
         auto r = io::exportRouteFiles(ctx, 0, *outFormat, out, opt);
         if (!r)
             return reportError(r.error());

@@ -4,6 +4,7 @@
 #include "app/cli/export_args.h"
 #include "app/cli/mission_args.h"
 
+#include "core/io/mission_export.h"
 #include "core/io/plan_export.h"
 #include "core/io/waypoint_formats.h"
 #include "core/mission/plan_geojson.h"
@@ -51,10 +52,14 @@ const char* const kPlanUsage =
     "                 photos_saved, detours, ...}], \"total\": {..., coverage_ratio, nofly_violations,\n"
     "                 makespan_s, ideal_s, photos_saved}, \"coverage_ratio\", \"nofly_violations\",\n"
     "                 \"warnings\": [...]}\n"
-    "  and per format of --format, one file per aircraft, mission-AIRCRAFT.EXT, plus mission.EXT with\n"
-    "  every aircraft for kml, gpx and geojson; an aircraft needing several batteries also gets one file\n"
-    "  per sortie, mission-AIRCRAFT-sortieN.EXT (the per-aircraft file flies them one after the other,\n"
-    "  through home between two)\n"
+    "  and per format of --format (the desktop application's export writes the same files):\n"
+    "    plan, waypoints, csv (a vehicle flies them): one file per flight, mission-AIRCRAFT.EXT for an\n"
+    "                 aircraft flying one sortie, mission-AIRCRAFT-sortieN.EXT per battery for one that\n"
+    "                 needs several (each from home back home; no file flies them all: fly them in\n"
+    "                 order); a flight holding more mission items than its autopilot stores (ArduPilot\n"
+    "                 650 on 16 KB boards, PX4 500 by default) is written with a warning on stderr\n"
+    "    kml, gpx, geojson: mission-AIRCRAFT.EXT with the aircraft's whole path (KML: a folder per\n"
+    "                 sortie) plus mission.EXT with every aircraft\n"
     "\n"
     "Options:\n"
     "  --out DIR                    output directory (created if missing)\n"
@@ -84,7 +89,8 @@ const char* const kPlanUsage =
     "raster (row or column boustrophedon, the paper's baseline, may jump over holes), wavefront\n"
     "(gradient ascent on a navigation function, 8-connected, the candidate with the smallest completion\n"
     "time), lawnmower (what a ground station's Survey flies: one angle, straight over the no-fly zones;\n"
-    "a yardstick whose crossings the route check refuses unless --force). Every grid planner's path is\n"
+    "a yardstick whose crossings the route check refuses unless --force, and a warning names the zones\n"
+    "it crosses: not a planner for a mission with no-fly zones). Every grid planner's path is\n"
     "flown as straight lanes: photos at the trigger distance, lanes ending where the area ends.\n"
     "--grid-angle auto tries 0, 5, ..., 175 degrees and the directions of the longest edges of each\n"
     "aircraft's part and keeps the plan with the smallest estimated time T = length / speed + turn\n"
@@ -236,39 +242,22 @@ int runPlan(const std::vector<std::string>& argv) {
         written.push_back((dir / "plan.geojson").string());
         written.push_back((dir / "metrics.json").string());
         if (!formats.empty()) {
+            // The desktop application's export writes the same files (core/io/mission_export.h).
             std::vector<route::Route> routes;
             for (const auto& a : plan->aircraft)
                 routes.push_back(a.route);
-            const io::ExportContext ctx = io::makeExportContext(m, routes);
-            for (const auto fmt : formats) {
-                std::vector<std::string> notes;
-                auto files = io::exportAll(ctx, fmt, dir.string(), "mission", *exportOptions, &notes);
-                if (!files)
-                    return reportError(files.error());
-                for (const auto& n : notes)
-                    std::cerr << "photoflight-cli: note: " << n << '\n';
-                written.insert(written.end(), files->begin(), files->end());
-                // Each battery as a flight of its own, for ground stations that fly one at a time.
-                for (std::size_t i = 0; i < plan->aircraft.size(); ++i) {
-                    const auto& sr = plan->aircraft[i].sortieRoutes;
-                    if (sr.size() < 2)
-                        continue;
-                    const io::ExportContext sctx = io::makeExportContext(m, sr);
-                    for (std::size_t s = 0; s < sr.size(); ++s) {
-                        std::string name = io::routeFileName(sctx, s, fmt);
-                        const std::string ext = io::formatInfo(fmt).extension;
-                        name = name.substr(0, name.size() - ext.size()) + "-sortie" + std::to_string(s + 1) + ext;
-                        const std::string path = (dir / ("mission-" + name)).string();
-                        auto report = io::exportRouteFiles(sctx, s, fmt, path, *exportOptions);
-                        if (!report)
-                            return reportError(report.error());
-                        // A sortie over the format's waypoint limit is written in parts: name those.
-                        for (const auto& n : report->notes)
-                            std::cerr << "photoflight-cli: note: sortie " << (s + 1) << ": " << n << '\n';
-                        written.insert(written.end(), report->files.begin(), report->files.end());
-                    }
-                }
-            }
+            io::MissionExportRequest request;
+            request.formats = formats;
+            request.folder = dir.string();
+            request.options = *exportOptions;
+            auto files = io::exportMission(m, routes, request);
+            if (!files)
+                return reportError(files.error());
+            for (const auto& n : files->notes)
+                std::cerr << "photoflight-cli: note: " << n << '\n';
+            for (const auto& w : files->warnings)
+                std::cerr << "photoflight-cli: warning: " << w << '\n';
+            written.insert(written.end(), files->files.begin(), files->files.end());
         }
     }
 

@@ -3,6 +3,7 @@
 #include "core/io/gpx.h"
 #include "core/io/kml_export.h"
 #include "core/io/litchi_csv.h"
+#include "core/io/mission_export.h"
 #include "core/io/qgc_plan.h"
 #include "core/io/qgc_wpl.h"
 #include "core/io/trigger_lanes.h"
@@ -23,9 +24,11 @@ const std::vector<WaypointFormatInfo>& waypointFormats() {
         {WaypointFormat::QgcWpl, "waypoints", ".waypoints",
          "QGC WPL 110 waypoint list (Mission Planner)", true, false, 0.1, 0},
         {WaypointFormat::Kml, "kml", ".kml", "KML for Google Earth (export only)", false, true, 0.1,
-         0},
-        {WaypointFormat::Gpx, "gpx", ".gpx", "GPX 1.1 waypoints and routes", true, true, 0.1, 0},
-        {WaypointFormat::GeoJson, "geojson", ".geojson", "GeoJSON features", true, true, 0.1, 0},
+         0, false},
+        {WaypointFormat::Gpx, "gpx", ".gpx", "GPX 1.1 waypoints and routes", true, true, 0.1, 0,
+         false},
+        {WaypointFormat::GeoJson, "geojson", ".geojson", "GeoJSON features", true, true, 0.1, 0,
+         false},
         {WaypointFormat::LitchiCsv, "csv", ".csv", "Litchi mission hub CSV", true, false, 0.6, 99},
     };
     return kFormats;
@@ -245,24 +248,19 @@ Result<std::vector<std::string>> exportAll(const ExportContext& ctx, WaypointFor
                                            const std::string& dir, const std::string& stem,
                                            const ExportOptions& options,
                                            std::vector<std::string>* notes) {
-    std::vector<std::string> written;
-    const std::string base = dir.empty() ? std::string() : dir + "/";
-    for (std::size_t i = 0; i < ctx.routes.size(); ++i) {
-        const std::string path = base + stem + "-" + routeFileName(ctx, i, format);
-        auto r = exportRouteFiles(ctx, i, format, path, options);
-        if (!r)
-            return r.error();
-        written.insert(written.end(), r->files.begin(), r->files.end());
-        if (notes)
-            notes->insert(notes->end(), r->notes.begin(), r->notes.end());
+    MissionExportRequest request;
+    request.folder = dir;
+    request.stem = stem;
+    request.options = options;
+    request.kmlTrajectories = false; // the context's own, if any
+    auto r = exportFormat(ctx, format, request);
+    if (!r)
+        return r.error();
+    if (notes) {
+        notes->insert(notes->end(), r->notes.begin(), r->notes.end());
+        notes->insert(notes->end(), r->warnings.begin(), r->warnings.end());
     }
-    if (formatInfo(format).combined && ctx.routes.size() > 1) {
-        const std::string path = base + stem + formatInfo(format).extension;
-        if (auto st = exportCombined(ctx, format, path, options); !st)
-            return st.error();
-        written.push_back(path);
-    }
-    return written;
+    return r->files;
 }
 
 Result<ImportedWaypoints> importWaypoints(const std::string& path) {

@@ -10,7 +10,8 @@
 //   if (io::formatInfo(fmt).combined)
 //       io::exportCombined(ctx, fmt, dir + "/mission.kml", opts);
 //
-// or all at once: io::exportAll(ctx, fmt, dir, "mission", opts) -> the list of files written.
+// or all at once: io::exportAll(ctx, fmt, dir, "mission", opts) -> the list of files written, or
+// for a planned mission io::exportMission (core/io/mission_export.h): one vehicle file per sortie.
 // Reading a file back for editing: io::importWaypoints(path) (format from the extension).
 #pragma once
 
@@ -34,6 +35,10 @@ struct WaypointFormatInfo {
     bool combined;           // one file can hold every aircraft (KML, GPX, GeoJSON)
     double minSpacingM;      // closer waypoints are merged: DJI (Litchi) refuses under 0.6 m
     std::size_t maxWaypoints; // more are split into numbered files (Litchi: 99); 0: no limit
+    // A vehicle flies the file (.plan, .waypoints, Litchi .csv, ...): it is written per battery,
+    // one file per sortie, never one flying them all. Display formats (KML, GPX, GeoJSON) draw
+    // the whole path. A format is a vehicle's unless it says otherwise.
+    bool vehicle = true;
 };
 
 const std::vector<WaypointFormatInfo>& waypointFormats();
@@ -70,8 +75,9 @@ Status exportCombined(const ExportContext& ctx, WaypointFormat format, const std
 std::string fileNameSafe(const std::string& name);
 // "<aircraft>.<ext>" by fileNameSafe ("Route N" if unnamed).
 std::string routeFileName(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat format);
-// Writes "<dir>/<stem>-<aircraft>.<ext>" per route, plus "<dir>/<stem>.<ext>" with every route when
-// the format allows; returns the paths written (and the notes in `notes` if given).
+// Writes "<dir>/<stem>-<aircraft>.<ext>" per route (a vehicle format: one file per sortie of an
+// aircraft needing several batteries, see exportMission), plus "<dir>/<stem>.<ext>" with every
+// route when the format allows; returns the paths written (and the notes and warnings in `notes`).
 Result<std::vector<std::string>> exportAll(const ExportContext& ctx, WaypointFormat format,
                                            const std::string& dir, const std::string& stem,
                                            const ExportOptions& options = {},

@@ -1,17 +1,16 @@
 #include "ui/planning/route_export.h"
 
+#include "core/io/mission_export.h"
 #include "core/mission/route_check.h"
 
 #include <QCoreApplication>
 #include <QDir>
 
-#include <algorithm>
-
 namespace pf::ui {
 
 QStringList exportRoutes(const mission::Mission& mission, const std::vector<route::Route>& routes,
                          const ExportRequest& request, QString* error, QStringList* routeProblems,
-                         QStringList* notes) {
+                         QStringList* notes, QStringList* warnings) {
     if (routeProblems)
         routeProblems->clear();
     QStringList written;
@@ -49,36 +48,25 @@ QStringList exportRoutes(const mission::Mission& mission, const std::vector<rout
     if (request.folder.isEmpty() || (!dir.exists() && !dir.mkpath(QStringLiteral("."))))
         return fail(QCoreApplication::translate("Export", "The folder %1 cannot be created.")
                         .arg(request.folder));
-    io::ExportContext ctx = io::makeExportContext(mission, chosen);
-    // The KML export draws the smoothed path; without it the KML still holds the waypoints.
-    if (std::find(request.formats.begin(), request.formats.end(), io::WaypointFormat::Kml) !=
-        request.formats.end())
-        (void)io::addTrajectories(ctx);
-    for (auto fmt : request.formats) {
-        const auto& info = io::formatInfo(fmt);
-        if (request.perAircraft || !info.combined) {
-            for (std::size_t i = 0; i < ctx.routes.size(); ++i) {
-                const QString path =
-                    dir.filePath(request.stem + QLatin1Char('-') +
-                                 QString::fromStdString(io::routeFileName(ctx, i, fmt)));
-                auto st = io::exportRouteFiles(ctx, i, fmt, path.toStdString(), request.options);
-                if (!st)
-                    return fail(QString::fromStdString(st.error().message));
-                for (const auto& f : st->files)
-                    written << QString::fromStdString(f);
-                if (notes)
-                    for (const auto& n : st->notes)
-                        *notes << QString::fromStdString(n);
-            }
-        }
-        if (request.combined && info.combined) {
-            const QString path = dir.filePath(request.stem + QString::fromLatin1(info.extension));
-            auto st = io::exportCombined(ctx, fmt, path.toStdString(), request.options);
-            if (!st)
-                return fail(QString::fromStdString(st.error().message));
-            written << path;
-        }
-    }
+    // The same files as `photoflight-cli plan --format` (one vehicle file per sortie).
+    io::MissionExportRequest files;
+    files.formats = request.formats;
+    files.folder = dir.path().toStdString();
+    files.stem = request.stem.toStdString();
+    files.perAircraft = request.perAircraft;
+    files.combined = request.combined;
+    files.options = request.options;
+    auto report = io::exportMission(mission, chosen, files);
+    if (!report)
+        return fail(QString::fromStdString(report.error().message));
+    for (const auto& f : report->files)
+        written << QString::fromStdString(f);
+    if (notes)
+        for (const auto& n : report->notes)
+            *notes << QString::fromStdString(n);
+    if (warnings)
+        for (const auto& w : report->warnings)
+            *warnings << QString::fromStdString(w);
     if (error)
         error->clear();
     return written;
