@@ -23,7 +23,6 @@ Rect rectOf(const Decomposition& d, const CellLane& l, double photoSpacing) {
     return Rect{l.y, std::min(a, b) - 0.5 * photoSpacing, std::max(a, b) + 0.5 * photoSpacing, false};
 }
 
-
 struct LaneRef {
     std::size_t cell, lane;
 };
@@ -31,8 +30,8 @@ struct LaneRef {
 // The first point, from the left, of the gaps of line y (sorted, disjoint) where ground needs a
 // photo, probed every h; below `lo`, which it lowers. `needs(x, y)`: ground to photograph.
 template <class Needs>
-void lowerFirstNeeded(const std::vector<std::pair<double, double>>& gaps, double y, double h, double& lo,
-                      const Needs& needs) {
+void lowerFirstNeeded(const std::vector<std::pair<double, double>>& gaps, double y, double h,
+                      double& lo, const Needs& needs) {
     for (const auto& [g0, g1] : gaps) {
         if (g0 >= lo)
             break;
@@ -52,8 +51,8 @@ void lowerFirstNeeded(const std::vector<std::pair<double, double>>& gaps, double
 
 // As lowerFirstNeeded from the right: raises `hi` to the last needing point above it.
 template <class Needs>
-void raiseLastNeeded(const std::vector<std::pair<double, double>>& gaps, double y, double h, double& hi,
-                     const Needs& needs) {
+void raiseLastNeeded(const std::vector<std::pair<double, double>>& gaps, double y, double h,
+                     double& hi, const Needs& needs) {
     for (auto it = gaps.rbegin(); it != gaps.rend(); ++it) {
         const auto& [g0, g1] = *it;
         if (g1 <= hi)
@@ -75,14 +74,16 @@ void raiseLastNeeded(const std::vector<std::pair<double, double>>& gaps, double 
 // The lanes' effective rectangles while they are trimmed, and what each still needs to fly.
 class LaneTrimmer {
 public:
-    LaneTrimmer(const Decomposition& d, std::vector<std::vector<CellLane>>& lanes, const SweepLaneParams& p,
-                const SweepGround& ground, double stepM, const std::vector<char>* flownCells)
-        : m_d(d), m_lanes(lanes), m_p(p), m_ground(ground), m_s(p.trackSpacingM), m_ph(p.photoSpacingM),
-          m_h(std::max(0.25, stepM)) {
+    LaneTrimmer(const Decomposition& d, std::vector<std::vector<CellLane>>& lanes,
+                const SweepLaneParams& p, const SweepGround& ground, double stepM,
+                const std::vector<char>* flownCells)
+        : m_d(d), m_lanes(lanes), m_p(p), m_ground(ground), m_s(p.trackSpacingM),
+          m_ph(p.photoSpacingM), m_h(std::max(0.25, stepM)) {
         for (std::size_t c = 0; c < lanes.size(); ++c)
             for (std::size_t j = 0; j < lanes[c].size(); ++j) {
                 if (flownCells && c < flownCells->size() && !(*flownCells)[c])
-                    continue; // never flown: it sees nothing, and nothing is gained by shortening it
+                    continue; // never flown: it sees nothing, and nothing is gained by shortening
+                              // it
                 m_refs.push_back(LaneRef{c, j});
                 m_rects.push_back(rectOf(d, lanes[c][j], m_ph));
             }
@@ -148,7 +149,8 @@ private:
     // sees); the lane's own line first: in an open field it alone shows the lane needed end to end.
     void probeLines() {
         const double s = m_s;
-        m_beyond = m_p.neighbourReachM > 0.1 ? 0.5 * s + m_p.neighbourReachM - 0.05 : 0.5 * s - 0.02;
+        m_beyond =
+            m_p.neighbourReachM > 0.1 ? 0.5 * s + m_p.neighbourReachM - 0.05 : 0.5 * s - 0.02;
         m_offsets = {0.0, -0.5 * s + 0.02, 0.5 * s - 0.02};
         const int n = std::max(4, static_cast<int>(std::ceil(2.0 * m_beyond / m_h)));
         for (int i = 0; i <= n; ++i)
@@ -156,7 +158,8 @@ private:
     }
 
     // What others leave uncovered of line y over [a, b]: sorted disjoint intervals.
-    std::vector<std::pair<double, double>> uncovered(std::size_t self, double y, double a, double b) const {
+    std::vector<std::pair<double, double>> uncovered(std::size_t self, double y, double a,
+                                                     double b) const {
         const double s = m_s;
         std::vector<std::pair<double, double>> cov;
         const auto lo = std::lower_bound(m_ys.begin(), m_ys.end(), y - 0.5 * s - 1e-9);
@@ -242,8 +245,10 @@ private:
         // (the strip may run on through a margin's ground that only the real footprint sees).
         // Whole trigger distances come off an end, so that the photos kept stay where they were (the
         // lane's photos are centred on its strip): what they saw, they still see.
-        const double na = lo <= m_rects[k].x0 + h ? sa : sa + std::floor(std::max(0.0, lo - h - sa) / ph) * ph;
-        const double nb = hi >= m_rects[k].x1 - h ? sb : sb - std::floor(std::max(0.0, sb - hi - h) / ph) * ph;
+        const double na =
+            lo <= m_rects[k].x0 + h ? sa : sa + std::floor(std::max(0.0, lo - h - sa) / ph) * ph;
+        const double nb =
+            hi >= m_rects[k].x1 - h ? sb : sb - std::floor(std::max(0.0, sb - hi - h) / ph) * ph;
         if (na >= nb)
             return; // what it alone sees lies past its photos' reach along: it stays as it is
         if (na <= sa + 1e-6 && nb >= sb - 1e-6)
@@ -284,7 +289,7 @@ private:
     std::vector<Rect> m_rects;   // per ref
     std::vector<std::size_t> m_byY;
     std::vector<double> m_ys;
-    double m_beyond = 0.0;        // how far past its line a lane's real footprint sees
+    double m_beyond = 0.0;         // how far past its line a lane's real footprint sees
     std::vector<double> m_offsets; // the probe lines, from a lane's line
     std::vector<char> m_stale;
     LaneTrimStats m_stats;
@@ -294,7 +299,8 @@ private:
 // one.
 class LaneBoxes {
 public:
-    LaneBoxes(const std::vector<std::vector<CellLane>>& lanes, const std::vector<LaneRef>& all, double pad) {
+    LaneBoxes(const std::vector<std::vector<CellLane>>& lanes, const std::vector<LaneRef>& all,
+              double pad) {
         m_whole = geo::Box{lanes[all.front().cell][all.front().lane].stripA,
                            lanes[all.front().cell][all.front().lane].stripA};
         m_boxes.reserve(all.size());
@@ -331,13 +337,18 @@ public:
 
 private:
     template <class Fn> void forCells(const geo::Box& b, Fn fn) {
-        const int x0 = std::clamp(static_cast<int>((b.min.x() - m_whole.min.x()) / m_g), 0, m_nx - 1);
-        const int y0 = std::clamp(static_cast<int>((b.min.y() - m_whole.min.y()) / m_g), 0, m_ny - 1);
-        const int x1 = std::clamp(static_cast<int>((b.max.x() - m_whole.min.x()) / m_g), 0, m_nx - 1);
-        const int y1 = std::clamp(static_cast<int>((b.max.y() - m_whole.min.y()) / m_g), 0, m_ny - 1);
+        const int x0 =
+            std::clamp(static_cast<int>((b.min.x() - m_whole.min.x()) / m_g), 0, m_nx - 1);
+        const int y0 =
+            std::clamp(static_cast<int>((b.min.y() - m_whole.min.y()) / m_g), 0, m_ny - 1);
+        const int x1 =
+            std::clamp(static_cast<int>((b.max.x() - m_whole.min.x()) / m_g), 0, m_nx - 1);
+        const int y1 =
+            std::clamp(static_cast<int>((b.max.y() - m_whole.min.y()) / m_g), 0, m_ny - 1);
         for (int y = y0; y <= y1; ++y)
             for (int x = x0; x <= x1; ++x)
-                fn(m_grid[static_cast<std::size_t>(y) * static_cast<std::size_t>(m_nx) + static_cast<std::size_t>(x)]);
+                fn(m_grid[static_cast<std::size_t>(y) * static_cast<std::size_t>(m_nx) +
+                          static_cast<std::size_t>(x)]);
     }
 
     geo::Box m_whole;
@@ -350,8 +361,8 @@ private:
 // Whether every point of ground the photos `own` see (footprints across x along, aligned with the
 // lanes' direction u) is seen by a photo of `others` too, probed every r metres (1 m spare for
 // rounding where the footprints may meet).
-bool seenByOthers(const std::vector<Vec2>& own, const std::vector<Vec2>& others, const Vec2& u, double hc,
-                  double ha, double r, const SweepGround& ground) {
+bool seenByOthers(const std::vector<Vec2>& own, const std::vector<Vec2>& others, const Vec2& u,
+                  double hc, double ha, double r, const SweepGround& ground) {
     std::vector<Vec2> close;
     auto seen = [&](const Vec2& q) {
         for (const auto& c : close) {
@@ -367,7 +378,8 @@ bool seenByOthers(const std::vector<Vec2>& own, const std::vector<Vec2>& others,
         close.clear();
         for (const auto& c : others) {
             const Vec2 dc = own[k] - c;
-            if (std::abs(dc.dot(u)) <= 2 * ha + 1.0 && std::abs(u.x() * dc.y() - u.y() * dc.x()) <= 2 * hc + 1.0)
+            if (std::abs(dc.dot(u)) <= 2 * ha + 1.0 &&
+                std::abs(u.x() * dc.y() - u.y() * dc.x()) <= 2 * hc + 1.0)
                 close.push_back(c);
         }
         for (double b = -hc + 0.5 * r; covered && b < hc; b += r)
