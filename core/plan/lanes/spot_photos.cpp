@@ -36,7 +36,6 @@ inline bool seesAt(const Vec2& c, const Axes& ax, double halfAlong, double halfA
     return std::abs(d.dot(ax.along)) <= halfAlong && std::abs(d.dot(ax.right)) <= halfAcross;
 }
 
-
 // A patch of unseen ground large enough to pay for a detour: its probes [first, last), its box.
 struct UnseenPatch {
     std::size_t first = 0, last = 0;
@@ -46,7 +45,8 @@ struct UnseenPatch {
 
 // The probes of every patch of at least minPatchM2: the centres of its unseen pixels (each half a
 // pixel from the pixels' edges, so the pixel it falls in is never in doubt).
-std::vector<UnseenPatch> unseenPatches(const CoverageReport& cov, double minPatchM2, std::vector<Probe>& probes) {
+std::vector<UnseenPatch> unseenPatches(const CoverageReport& cov, double minPatchM2,
+                                       std::vector<Probe>& probes) {
     const double res = cov.resolutionM;
     std::vector<UnseenPatch> out;
     for (const auto& patch : cov.patches) {
@@ -113,10 +113,11 @@ struct PatchPlaces {
     }
 };
 
-// The next spot photo for a patch: of the places that see nearly the most of the probes left (scored
-// on at most about 600 of them, every stride-th; the count scales back), the one nearest the flight
-// (on its way, a spot photo costs hardly a detour), then a finer look round it (the grid may stop a
-// step short of what the photo sees). `seen`: the ground it sees by the scored probes, 0 if none.
+// The next spot photo for a patch: of the places that see nearly the most of the probes left
+// (scored on at most about 600 of them, every stride-th; the count scales back), the one nearest
+// the flight (on its way, a spot photo costs hardly a detour), then a finer look round it (the grid
+// may stop a step short of what the photo sees). `seen`: the ground it sees by the scored probes, 0
+// if none.
 struct SpotCandidate {
     Vec2 pos{0, 0};
     std::size_t heading = 0; // index into the headings
@@ -124,14 +125,15 @@ struct SpotCandidate {
 };
 
 SpotCandidate bestSpot(const std::vector<std::size_t>& left, const std::vector<Probe>& probes,
-                       const PatchPlaces& pp, const std::array<double, 2>& headings, double halfAlong,
-                       double halfAcross, double px, const SpotPhotoOptions& o,
+                       const PatchPlaces& pp, const std::array<double, 2>& headings,
+                       double halfAlong, double halfAcross, double px, const SpotPhotoOptions& o,
                        const std::function<bool(const geo::Vec2&)>& mayFlyAt) {
     const std::size_t stride = std::max<std::size_t>(1, left.size() / 600);
     std::vector<Vec2> scored;
     for (std::size_t i = 0; i < left.size(); i += stride)
         scored.push_back(probes[left[i]].p);
-    const spot_detail::ScoredProbes scoredProbes(std::move(scored), headings[0], headings[1], halfAlong, halfAcross);
+    const spot_detail::ScoredProbes scoredProbes(std::move(scored), headings[0], headings[1],
+                                                 halfAlong, halfAcross);
     const auto& places = pp.places;
     std::array<std::vector<double>, 2> seenAt;
     double most = 0.0;
@@ -187,7 +189,8 @@ constexpr int kNotAdded = -2;
 // stay out of it).
 class FlightStops {
 public:
-    FlightStops(const SpotRouting& routing, const std::optional<Vec2>& home, const std::optional<Vec2>& landing)
+    FlightStops(const SpotRouting& routing, const std::optional<Vec2>& home,
+                const std::optional<Vec2>& landing)
         : m_routing(routing), m_home(home), m_landing(landing) {}
 
     // The lanes in flight order; false when a lane has no photos (no flight to place spots in).
@@ -211,7 +214,8 @@ public:
         return true;
     }
 
-    // Spot photo si at s, flown where it adds the least time; links, homeLink and landingLink follow.
+    // Spot photo si at s, flown where it adds the least time; links, homeLink and landingLink
+    // follow.
     void insertSpot(std::size_t si, const Vec2& s, std::vector<std::vector<Vec2>>& links,
                     std::vector<Vec2>& homeLink, std::vector<Vec2>& landingLink) {
         const int sid = m_routing.add(s, Vec2(0, 0));
@@ -264,8 +268,10 @@ private:
         const std::size_t n = m_seq.size();
         std::vector<std::pair<double, std::size_t>> est;
         for (std::size_t k = 0; k <= n; ++k) {
-            const std::optional<Vec2> prev = k == 0 ? m_home : std::optional<Vec2>(m_seq[k - 1].exitPos);
-            const std::optional<Vec2> next = k == n ? m_landing : std::optional<Vec2>(m_seq[k].entryPos);
+            const std::optional<Vec2> prev =
+                k == 0 ? m_home : std::optional<Vec2>(m_seq[k - 1].exitPos);
+            const std::optional<Vec2> next =
+                k == n ? m_landing : std::optional<Vec2>(m_seq[k].entryPos);
             double e = 0.0;
             if (prev)
                 e += (s - *prev).norm();
