@@ -25,7 +25,7 @@ Result<SweepPlan> planSweep(const geo::MultiPolygon& region, const std::vector<g
     if (auto ok = checkSweepInput(region, opt); !ok)
         return ok.error();
     const PreparedGround g(region, noFly, opt);
-    if (auto ok = g.checkEnds(); !ok)
+    if (auto ok = checkSweepEnds(g.field, g.home, g.landing, opt.safetyMarginM); !ok)
         return ok.error();
     SweepPlan plan;
     plan.stats.graphNodes = static_cast<int>(g.keepGraph.nodeCount());

@@ -3,19 +3,11 @@
 #include "core/geo/polygon_ops.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <string>
 #include <unordered_map>
 
 namespace pf::plan::sweep_detail {
 
 namespace {
-
-std::string fmt(double v, int decimals = 1) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-    return buf;
-}
 
 // The coarse graphs: corners of the grown zones only, every pair of nodes joined ahead of time.
 geo::VisibilityGraphOptions coarseOptions(const SweepOptions& opt,
@@ -94,16 +86,5 @@ PreparedGround::PreparedGround(const geo::MultiPolygon& region_,
       anchor(anchorPocket(pockets, home, freeSpace)),
       lanes(laneParams(opt, freeGraph.inflatedMarginM(), realAcrossM, realAlongM)),
       uTurnS(2.0 * turnCostS(90.0, opt.time) + spacingM / opt.time.speedMps) {}
-
-Status PreparedGround::checkEnds() const {
-    for (const auto* p : {&home, &landing})
-        if (*p && !field.pointIsSafe(**p))
-            return makeError(ErrorCode::NoPath,
-                             std::string(p == &home ? "The home point" : "The landing point") +
-                                 " (" + fmt((*p)->x()) + ", " + fmt((*p)->y()) +
-                                 ") m lies within the " + fmt(opt.safetyMarginM) +
-                                 " m safety margin of a no-fly zone.");
-    return {};
-}
 
 } // namespace pf::plan::sweep_detail

@@ -26,8 +26,6 @@ struct PreparedGround {
     PreparedGround(const PreparedGround&) = delete;
     PreparedGround& operator=(const PreparedGround&) = delete;
 
-    // NoPath when the home or the landing point lies within a zone's safety margin.
-    Status checkEnds() const;
     // The zones grown by their margin (the free space's holes).
     const geo::MultiPolygon& grown() const { return freeGraph.inflatedZones(); }
 

@@ -20,6 +20,17 @@ Error cancelled() {
     return makeError(ErrorCode::Cancelled, "planning the sweep: cancelled");
 }
 
+// Calls fn(ci, cell) for each reachable planned cell in turn; Cancelled when asked to stop.
+template <class Fn> Status forReachableCells(const FullPlan& fp, Fn fn) {
+    for (std::size_t ci = 0; ci < fp.cells.size(); ++ci) {
+        if (stopRequested())
+            return cancelled();
+        if (fp.cells[ci].reachable)
+            fn(ci, fp.cells[ci]);
+    }
+    return {};
+}
+
 // The lanes of every merged cell, less those other lanes make redundant; per cell whether a safe
 // path reaches it (cells in a pocket no safe path reaches are not flown: their lanes see nothing).
 std::vector<std::vector<CellLane>> cellLaneSets(const PreparedGround& g, const DirectionPlan& dp,
@@ -81,12 +92,7 @@ void planCells(const PreparedGround& g, const DirectionPlan& dp, FullPlan& fp) {
 // The order problem over the reachable cells, two ways each (the first lane's direction), with the
 // sweep's own order: cells by where they begin across the lanes, then along them.
 Status cellProblem(const DirectionPlan& dp, FullPlan& fp) {
-    for (std::size_t ci = 0; ci < fp.cells.size(); ++ci) {
-        if (stopRequested())
-            return cancelled();
-        const auto& pc = fp.cells[ci];
-        if (!pc.reachable)
-            continue;
+    Status st = forReachableCells(fp, [&](std::size_t ci, const PlannedCell& pc) {
         const std::size_t n = pc.lanes.size();
         OrderCell oc;
         for (int parity = 0; parity < (n > 1 ? 2 : 1); ++parity) {
@@ -100,7 +106,9 @@ Status cellProblem(const DirectionPlan& dp, FullPlan& fp) {
         }
         fp.problem.cells.push_back(oc);
         fp.orderCellOf.push_back(static_cast<int>(ci));
-    }
+    });
+    if (!st)
+        return st;
     std::vector<int> order(fp.orderCellOf.size());
     for (std::size_t k = 0; k < order.size(); ++k)
         order[k] = static_cast<int>(k);
@@ -131,12 +139,7 @@ Status cellProblem(const DirectionPlan& dp, FullPlan& fp) {
 // cells' problem.
 Status laneProblem(const PreparedGround& g, FullPlan& fp) {
     fp.laneBase.assign(fp.cells.size(), -1);
-    for (std::size_t ci = 0; ci < fp.cells.size(); ++ci) {
-        if (stopRequested())
-            return cancelled();
-        const auto& pc = fp.cells[ci];
-        if (!pc.reachable)
-            continue;
+    Status st = forReachableCells(fp, [&](std::size_t ci, const PlannedCell& pc) {
         fp.laneBase[ci] = static_cast<int>(fp.laneRef.size());
         for (std::size_t j = 0; j < pc.lanes.size(); ++j) {
             fp.laneRef.emplace_back(static_cast<int>(ci), static_cast<int>(j));
@@ -146,7 +149,9 @@ Status laneProblem(const PreparedGround& g, FullPlan& fp) {
                                        (l.span.last - l.span.first).norm() / g.opt.time.speedMps});
             fp.laneProblem.cells.push_back(oc);
         }
-    }
+    });
+    if (!st)
+        return st;
     fp.laneProblem.link = fp.problem.link;
     fp.laneProblem.lowerBound = fp.problem.lowerBound;
     fp.laneProblem.start = fp.problem.start;
