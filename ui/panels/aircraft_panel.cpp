@@ -12,6 +12,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -149,7 +150,7 @@ AircraftPanel::AircraftPanel(MissionDocument* doc, io::Catalog catalog, QWidget*
     m_kind->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     m_kind->setMinimumContentsLength(10);
     // Wide ranges: validation names a value a plane cannot fly, as for the altitude.
-    m_turnRadius = spin(0.0, 5000.0, 0, 5.0, tr(" m"));
+    m_turnRadius = spin(0.0, 5000.0, 1, 5.0, tr(" m"));
     m_turnRadius->setObjectName(QStringLiteral("TurnRadiusBox"));
     m_turnRadius->setToolTip(
         tr("The plane's tightest turn at its cruise speed; editing it sets the bank it needs"));
@@ -176,13 +177,18 @@ AircraftPanel::AircraftPanel(MissionDocument* doc, io::Catalog catalog, QWidget*
     form->addRow(tr("Kind"), m_kind);
     form->addRow(tr("Speed"), m_speed);
     form->addRow(tr("Endurance"), m_endurance);
-    form->addRow(tr("Turn radius"), m_turnRadius);
-    form->addRow(tr("Bank limit"), m_bank);
-    form->addRow(tr("Climb rate"), m_climb);
-    form->addRow(tr("Sink rate"), m_sink);
-    form->addRow(tr("Run-in"), m_runIn);
+    // A plane's own figures in a box of their own, hidden for a multirotor (a form row hidden in Qt
+    // 5 still takes its spacing).
+    m_planeBox = new QGroupBox(tr("Plane"));
+    auto* planeForm = new QFormLayout(m_planeBox);
+    planeForm->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    planeForm->addRow(tr("Turn radius"), m_turnRadius);
+    planeForm->addRow(tr("Bank limit"), m_bank);
+    planeForm->addRow(tr("Climb rate"), m_climb);
+    planeForm->addRow(tr("Sink rate"), m_sink);
+    planeForm->addRow(tr("Run-in"), m_runIn);
+    form->addRow(m_planeBox);
     form->addRow(tr("Colour"), m_colour);
-    m_formLayout = form;
     layout->addWidget(m_form);
     layout->addStretch();
 
@@ -281,12 +287,7 @@ void AircraftPanel::connectPlaneFields() {
 }
 
 void AircraftPanel::showPlaneRows(bool plane) {
-    for (QWidget* field :
-         std::initializer_list<QWidget*>{m_turnRadius, m_bank, m_climb, m_sink, m_runIn}) {
-        field->setVisible(plane);
-        if (QWidget* label = m_formLayout->labelForField(field))
-            label->setVisible(plane);
-    }
+    m_planeBox->setVisible(plane);
 }
 
 int AircraftPanel::current() const { return m_list->currentRow(); }

@@ -10,7 +10,7 @@
 
 class QComboBox;
 class QDoubleSpinBox;
-class QFormLayout;
+class QGroupBox;
 class QLabel;
 class QLineEdit;
 class QListWidget;
@@ -59,7 +59,7 @@ public:
 private:
     void refreshList();
     void refreshForm(bool keepError = false);
-    // Shows the plane's rows for a plane, hides them for a multirotor.
+    // Shows the plane's figures for a plane, hides them for a multirotor.
     void showPlaneRows(bool plane);
     void connectPlaneFields();
     // Checks a typed altitude (or GSD) against the aircraft's limits (mission::altitudeErrors); a
@@ -94,7 +94,7 @@ private:
     QDoubleSpinBox* m_climb;
     QDoubleSpinBox* m_sink;
     QDoubleSpinBox* m_runIn;
-    QFormLayout* m_formLayout;
+    QGroupBox* m_planeBox;
     QPushButton* m_colour;
 };
 
