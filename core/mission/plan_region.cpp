@@ -51,6 +51,9 @@ struct Aircraft {
 
 Result<Aircraft> prepare(const AircraftConfig& cfg) {
     Aircraft a{cfg, label(cfg), 0.0, {}, 0.0, flightModel(cfg)};
+    // No planner routes a plane yet: it must never get a multirotor's route.
+    if (auto e = planeRoutingError(cfg, a.who); !e.empty())
+        return makeError(ErrorCode::InvalidInput, e);
     auto alt = resolvedAltitude(cfg);
     if (!alt)
         return makeError(alt.error().code, a.who + ": " + alt.error().message);
