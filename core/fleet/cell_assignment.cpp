@@ -2,6 +2,7 @@
 #include "core/fleet/cell_assignment.h"
 
 #include "core/geo/types.h"
+#include "core/job_scope.h"
 
 #include <algorithm>
 #include <cmath>
@@ -141,7 +142,9 @@ std::vector<int> CellAssignment::transfer(int from, int to, int count, bool swee
     };
     for (int c = 0; c < m_g.cellCount(); ++c)
         refresh(c);
-    while (static_cast<int>(moved.size()) < count) {
+    // A cancelled job stops between two moves: its caller then sees fewer cells moved and returns
+    // at its own next check.
+    while (static_cast<int>(moved.size()) < count && !stopRequested()) {
         // The best candidate whose move leaves `from` in one piece.
         int pick = -1;
         for (auto it = queue.begin(); it != queue.end();) {

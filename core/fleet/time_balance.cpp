@@ -4,6 +4,7 @@
 
 #include "core/fleet/cell_assignment.h"
 #include "core/grid/grid.h"
+#include "core/job_scope.h"
 
 #include <algorithm>
 #include <cmath>
@@ -84,7 +85,12 @@ Result<BalanceReport> balanceByTime(const grid::Grid& g, Partition& p, const Tim
     };
     auto evaluate = [&](Trial& t) -> Status {
         std::vector<std::pair<int, std::vector<int>>> done;
-        if (apply(t, done)) {
+        const bool applied = apply(t, done);
+        if (stopRequested()) { // the cells moved may be fewer than asked: no trial to estimate
+            undo(done);
+            return makeError(ErrorCode::Cancelled, "planning cancelled");
+        }
+        if (applied) {
             for (int k : t.chain) {
                 auto e = est(k);
                 if (!e) {
@@ -110,6 +116,8 @@ Result<BalanceReport> balanceByTime(const grid::Grid& g, Partition& p, const Tim
     int kicks = 0;
     std::pair<int, int> tabu{-1, -1};
     for (rep.rounds = 0; rep.rounds < opt.maxRounds && rep.estimatorCalls < maxEstimates; ++rep.rounds) {
+        if (stopRequested())
+            return makeError(ErrorCode::Cancelled, "planning cancelled");
         const double ideal = std::accumulate(times.begin(), times.end(), 0.0) / n;
         const int s = static_cast<int>(std::max_element(times.begin(), times.end()) - times.begin());
         const double ts = at(s);
