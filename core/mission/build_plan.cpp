@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <string>
 
 namespace pf::mission::detail {
 
@@ -36,7 +37,19 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         if (regions[k].empty())
             return makeError(ErrorCode::InvalidInput,
                              aircraftLabel(m.aircraft[k]) + ": got no part of the area (too many aircraft for it)");
-        auto ap = planRegion(regions[k], geom->noFly, m.aircraft[k], opt, frame, homes[k], landing, laneSpacing(m, k));
+        // Each aircraft's planning moves the progress through its own part, its name before the
+        // stage.
+        auto ap = [&] {
+            const std::string who =
+                n == 1 ? std::string()
+                       : (m.aircraft[k].name.empty() ? "aircraft " + std::to_string(k + 1)
+                                                     : m.aircraft[k].name) +
+                             ": ";
+            JobScope part(0.6 * static_cast<double>(k) / static_cast<double>(n),
+                          0.6 * static_cast<double>(k + 1) / static_cast<double>(n), who);
+            return planRegion(regions[k], geom->noFly, m.aircraft[k], opt, frame, homes[k], landing,
+                              laneSpacing(m, k));
+        }();
         if (stopRequested())
             return cancelledError();
         if (!ap)

@@ -16,8 +16,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <limits>
 #include <map>
+#include <string>
 
 namespace pf::mission {
 
@@ -470,11 +472,21 @@ Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vect
         auto soonest = plan::soonestTime(); // on a tie the planner listed first wins
         GridCache grids;
         std::optional<Error> firstError;
-        for (PlannerKind k : {PlannerKind::Sweep, PlannerKind::Stride, PlannerKind::Raster}) {
+        constexpr PlannerKind kCandidates[] = {PlannerKind::Sweep, PlannerKind::Stride,
+                                               PlannerKind::Raster};
+        for (std::size_t i = 0; i < std::size(kCandidates); ++i) {
+            const PlannerKind k = kCandidates[i];
             if (stopRequested())
                 return makeError(ErrorCode::Cancelled, "planning cancelled");
-            auto p = planOne(region, noFly, *a, k, options, frame, home, landing, laneSpacing, &grids);
             const char* id = plannerKindInfo(k).id;
+            // Each planner moves the progress through its own third ("stride: grid").
+            auto p = [&] {
+                const double parts = static_cast<double>(std::size(kCandidates));
+                JobScope part(static_cast<double>(i) / parts, static_cast<double>(i + 1) / parts,
+                              std::string(id) + ": ");
+                return planOne(region, noFly, *a, k, options, frame, home, landing, laneSpacing,
+                               &grids);
+            }();
             if (!p) {
                 if (!firstError)
                     firstError = p.error();

@@ -156,28 +156,13 @@ void BM_BalanceDemoWithStridePlanner(benchmark::State& state) {
 }
 BENCHMARK(BM_BalanceDemoWithStridePlanner)->Arg(2)->Arg(3)->Arg(4)->Unit(benchmark::kMillisecond)->Iterations(1);
 
-// The demo mission at 3.5 m with one more zone, in its south-west, beside where the two subareas
-// meet: the split's cell moves meet a row of cells that hold a subarea together there.
-Result<mission::Mission> demoLowWithZone() {
-    auto m = io::readMissionFile(std::string(PF_RESOURCES_DIR) + "/demo/demo_mission.json");
-    if (!m)
-        return m.error();
-    for (auto& a : m->aircraft)
-        a.altitudeM = 3.5;
-    const double lon = 8.3283, lat = 49.0113, w = 0.0003, h = 0.0002;
-    m->noFlyZones.push_back(
-        {"extra",
-         geo::GeoPolygon{{{lon, lat}, {lon + w, lat}, {lon + w, lat + h}, {lon, lat + h}}, {}}});
-    return m;
-}
-
 // splitArea on the demo at 3.5 m with the extra zone (50,000 base cells), balanced on an analytic
 // time (the cells' area over the aircraft's sweep rate, plus a turn per grid row; the first
 // aircraft's scaled by 1.4 as a correction round scales an estimate, so that thousands of cells
 // move), so that the time is the partition's and the cell moves' own: the cost of moving cells past
 // the zone.
 void BM_SplitDemoLowWithZone(benchmark::State& state) {
-    auto m = demoLowWithZone();
+    auto m = test::lowDemoWithZone(PF_RESOURCES_DIR);
     if (!m) {
         state.SkipWithError(m.error().message.c_str());
         return;

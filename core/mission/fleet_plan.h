@@ -1,0 +1,34 @@
+// Planning a mission flown by several aircraft: the split of the area searched on estimated flight
+// times, corrected by planned rounds, and the best split planned in full. Internal to planMission.
+#pragma once
+
+#include "core/fleet/capability.h"
+#include "core/geo/types.h"
+#include "core/mission/mission.h"
+#include "core/mission/mission_plan.h"
+#include "core/mission/validation.h"
+#include "core/result.h"
+
+#include <optional>
+#include <vector>
+
+namespace pf::mission::detail {
+
+// What planMission has prepared for the aircraft of a fleet (one entry each, in the mission's
+// order).
+struct FleetInput {
+    const Mission& mission;
+    const LocalGeometry& geom;
+    std::vector<fleet::Capability> caps;
+    std::vector<std::optional<geo::Vec2>> homes;
+    std::optional<geo::Vec2> landing;
+};
+
+// planMission for two or more aircraft (see plan_mission.h for what it does). Reports its progress
+// to the thread's JobScope in three parts: the grid angle of the estimates (5 %), the search of the
+// split (to 70 %: every estimate and round plan moves it) and the plan of the split chosen,
+// aircraft by aircraft, then the coverage check. Checks for a cancel between estimates and within
+// the split's cell moves.
+Result<MissionPlan> planFleet(const FleetInput& in);
+
+} // namespace pf::mission::detail
