@@ -235,9 +235,9 @@ Result<std::vector<Candidate>> searchSplits(const FleetInput& in, const PlannerO
 // kBalanceTarget of the ideal first (a plan that leaves the other aircraft idle while one flies on
 // is not what a shared area asks for, even if its makespan is a little shorter), then by makespan.
 // The first is planned once more with the mission's options (which may search the angle per
-// subarea; if that makes the makespan longer, the fixed angle is kept) and checked. Should its
-// photos miss the coverage target or a leg breach a no-fly margin, the next one is tried; if none
-// passes, the first is returned with its warnings.
+// subarea; if that makes the makespan longer, the fixed angle is kept) and checked. Should a leg
+// breach a no-fly margin, or its photos miss the coverage target where another split could see the
+// ground missed, the next one is tried; if none passes, the first is returned with its warnings.
 Result<MissionPlan> planBest(const FleetInput& in, std::vector<Candidate> candidates,
                              const PlannerOptions& fixedPlan) {
     const Mission& m = in.mission;
@@ -246,6 +246,11 @@ Result<MissionPlan> planBest(const FleetInput& in, std::vector<Candidate> candid
                      [](const Candidate& a, const Candidate& b) {
                          return a.balanced != b.balanced ? a.balanced : a.makespanS < b.makespanS;
                      });
+    // Gaps a split leaves lie where one aircraft's photos end and the next one's begin: within the
+    // longest footprint of the shared boundary.
+    double reachM = 0.0;
+    for (const auto& c : in.caps)
+        reachM = std::max(reachM, c.footprint.real.longSideM);
     std::optional<MissionPlan> first;
     for (const Candidate& c : candidates) {
         if (stopRequested())
@@ -260,13 +265,55 @@ Result<MissionPlan> planBest(const FleetInput& in, std::vector<Candidate> candid
         }
         if (chosen->coverageRatio >= kCoverageTarget && chosen->noFlyViolations == 0)
             return chosen;
+        const bool worthAnother =
+            chosen->noFlyViolations > 0 ||
+            otherSplitCouldReachTarget(*chosen, c.regions, reachM, kCoverageTarget);
         if (!first)
             first = std::move(*chosen);
+        if (!worthAnother)
+            break;
     }
     return std::move(*first);
 }
 
 } // namespace
+
+bool otherSplitCouldReachTarget(const MissionPlan& plan,
+                                const std::vector<geo::MultiPolygon>& regions, double reachM,
+                                double target) {
+    if (plan.coverageRatio >= target)
+        return true;
+    if (plan.coverageRatio <= 0.0 || plan.uncoveredAreaM2 <= 0.0)
+        return true; // nothing known of what is missed
+    const double admissibleM2 = plan.uncoveredAreaM2 / (1.0 - plan.coverageRatio);
+    // The ground within reachM of two subareas: along their shared boundaries.
+    std::vector<geo::MultiPolygon> grown;
+    for (const auto& r : regions)
+        grown.push_back(geo::buffer(r, reachM, 2));
+    std::vector<geo::MultiPolygon> band;
+    for (std::size_t i = 0; i < grown.size(); ++i)
+        for (std::size_t j = i + 1; j < grown.size(); ++j)
+            for (const auto& piece : grown[j])
+                if (auto both = geo::intersection(grown[i], piece); !both.empty())
+                    band.push_back(std::move(both));
+    // The part of a patch within reach of a shared boundary (a zone's margin ring across which the
+    // boundary runs counts only where it passes).
+    const auto nearShared = [&](const UncoveredArea& patch) {
+        double m2 = 0.0;
+        for (const auto& part : band)
+            for (const auto& p : patch.shape)
+                m2 += geo::area(geo::intersection(part, p));
+        return std::min(m2, patch.areaM2);
+    };
+    double listedM2 = 0.0, splitsM2 = 0.0;
+    for (const auto& u : plan.uncovered) {
+        listedM2 += u.areaM2;
+        splitsM2 += nearShared(u);
+    }
+    splitsM2 += std::max(0.0, plan.uncoveredAreaM2 - listedM2);
+    const double anySplitM2 = plan.uncoveredAreaM2 - splitsM2;
+    return 1.0 - anySplitM2 / admissibleM2 >= target;
+}
 
 Result<MissionPlan> planFleet(const FleetInput& in) {
     const PlannerOptions& opt = in.mission.options;

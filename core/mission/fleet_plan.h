@@ -31,4 +31,14 @@ struct FleetInput {
 // the split's cell moves.
 Result<MissionPlan> planFleet(const FleetInput& in);
 
+// Whether another split of the area could bring a plan that misses the coverage target to it. A
+// split moves only the boundaries the subareas share: ground unseen farther than `reachM` from
+// every such boundary (within a zone's margin, where no aircraft may fly; a corner no lane reaches)
+// stays unseen whichever split is flown. So: whether the plan would reach `target` if the uncovered
+// ground within `reachM` of two subareas were seen (patches not listed in the plan, the smallest,
+// count as such). `regions` are the plan's subareas, one per aircraft.
+bool otherSplitCouldReachTarget(const MissionPlan& plan,
+                                const std::vector<geo::MultiPolygon>& regions, double reachM,
+                                double target);
+
 } // namespace pf::mission::detail
