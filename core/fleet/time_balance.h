@@ -11,7 +11,9 @@
 namespace pf::fleet {
 
 // Flight time of aircraft k over the subarea made of `cells`, in seconds: the facade passes the
-// real planner; tests pass an analytic model.
+// real planner; tests pass an analytic model. balanceByTime calls it from several threads at once
+// (the subareas a trial changes are estimated together), each working for the caller's job
+// (JobScope): it must be safe to call concurrently.
 using TimeEstimator = std::function<Result<double>(int aircraft, const std::vector<int>& cells)>;
 
 struct BalanceOptions {

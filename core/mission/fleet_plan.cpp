@@ -12,7 +12,9 @@
 #include "core/sensor/camera.h"
 
 #include <algorithm>
+#include <atomic>
 #include <map>
+#include <mutex>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -23,7 +25,9 @@ namespace {
 
 // Raw time estimates of the fleet split, remembered by aircraft and the sorted cells of the split's
 // base grid. The memo holds one base grid's cells: a different grid (never expected within one
-// planFleet, whose area, zones, fleet and split options are fixed) empties it first.
+// planFleet, whose area, zones, fleet and split options are fixed) empties it first. The split
+// estimates two or three subareas at once (one thread each): the memo is locked while it is read or
+// written, never while an estimate runs.
 class EstimateMemo {
 public:
     template <class Estimate>
@@ -32,20 +36,26 @@ public:
         const std::tuple<int, int, double, double, double, double> grid{
             base.cols(),     base.rows(),       base.cellSize(),
             base.angleDeg(), base.origin().x(), base.origin().y()};
-        if (grid != m_grid) {
-            m_known.clear();
-            m_grid = grid;
-        }
         auto key = std::make_pair(aircraft, cells);
-        if (auto it = m_known.find(key); it != m_known.end())
-            return it->second;
+        {
+            std::lock_guard<std::mutex> lock(m_mutex);
+            if (grid != m_grid) {
+                m_known.clear();
+                m_grid = grid;
+            }
+            if (auto it = m_known.find(key); it != m_known.end())
+                return it->second;
+        }
         Result<double> t = estimate();
-        if (t)
+        if (t) {
+            std::lock_guard<std::mutex> lock(m_mutex);
             m_known.emplace(std::move(key), *t);
+        }
         return t;
     }
 
 private:
+    std::mutex m_mutex;
     std::tuple<int, int, double, double, double, double> m_grid{};
     std::map<std::pair<std::size_t, std::vector<int>>, double> m_known;
 };
@@ -100,7 +110,7 @@ Result<double> estimateAngle(const FleetInput& in, const PlannerOptions& estimat
             coarsest = k;
     Quiet quiet;
     auto whole = planRegion(geo::MultiPolygon{in.geom.area}, in.geom.noFly, m.aircraft[coarsest],
-                            estimateOpt, in.geom.frame, in.homes[coarsest], in.landing);
+                            estimateOpt, in.homes[coarsest], in.landing);
     if (!whole)
         return whole.error();
     return whole->gridAngleDeg;
@@ -135,8 +145,8 @@ Result<std::vector<Candidate>> searchSplits(const FleetInput& in, const PlannerO
     const std::size_t n = m.aircraft.size();
     const auto rawEstimate = [&](std::size_t k, const geo::MultiPolygon& sub) -> Result<double> {
         Quiet quiet;
-        auto ap = planRegion(sub, geom.noFly, m.aircraft[k], fixed, geom.frame, in.homes[k],
-                             in.landing, laneSpacing(m, k));
+        auto ap = planRegion(sub, geom.noFly, m.aircraft[k], fixed, in.homes[k], in.landing,
+                             laneSpacing(m, k));
         if (!ap)
             return ap.error();
         return aloneRouteTimeS(surveyPart(ap->localWaypoints), m.aircraft[k], in.homes[k],
@@ -169,16 +179,16 @@ Result<std::vector<Candidate>> searchSplits(const FleetInput& in, const PlannerO
         std::vector<double> factor(n, 1.0);
         for (int round = 0; round < kRounds; ++round) {
             const double lo = slotStart(start, round), hi = slotEnd(start, round);
-            int estimates = 0;
+            // Called from several threads at once (each in this job's scope).
+            std::atomic<int> estimates{0};
             const fleet::CellsTimeEstimator estimate =
                 [&](int i, const std::vector<int>& cells,
                     const grid::Grid& base) -> Result<double> {
                 if (stopRequested())
                     return cancelledError(); // the split stops at its next estimate
-                reportProgress(lo + (hi - lo) * kSplitPart * estimates /
-                                        (estimates + kHalfwayEstimates),
+                const double done = estimates++;
+                reportProgress(lo + (hi - lo) * kSplitPart * done / (done + kHalfwayEstimates),
                                kSharing + "estimating flight times");
-                ++estimates;
                 const std::size_t k = order[static_cast<std::size_t>(i)];
                 auto t = memo.rawS(k, cells, base, [&] {
                     return rawEstimate(k, fleet::cellsPolygon(base, cells, base.admissible()));

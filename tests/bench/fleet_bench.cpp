@@ -130,7 +130,8 @@ void BM_BalanceDemoWithStridePlanner(benchmark::State& state) {
     po.safetyMarginM = 5;
     auto estimate = [&](int k, const std::vector<int>& cells) -> Result<double> {
         const auto region = fleet::cellsPolygon(b, cells, g->admissible());
-        auto ap = mission::planRegion(region, d.noFly, fleetCfg[static_cast<std::size_t>(k)], po, d.frame, d.home);
+        auto ap =
+            mission::planRegion(region, d.noFly, fleetCfg[static_cast<std::size_t>(k)], po, d.home);
         if (!ap)
             return ap.error();
         return ap->metrics.estimatedTimeS;
