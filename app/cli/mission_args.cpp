@@ -30,7 +30,7 @@ std::vector<OptionSpec> missionOptionSpecs() {
             {"safety-margin"}, {"max-cells"},
             {"dem"},           {"terrain"},
             {"min-clearance"}, {"corridor"},
-            {"width"}};
+            {"width"},         {"double-grid", false}};
 }
 
 namespace {

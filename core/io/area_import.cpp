@@ -331,6 +331,23 @@ void collectLines(const OGRGeometry* g, std::vector<geo::GeoRing>& out, int& oth
     }
 }
 
+// Why an import found nothing to import, or nothing: a driver that stumbled half-way (importing
+// the features read so far would silently drop the rest), or no shape of the `kind` asked for.
+Status importOutcome(const std::string& path, const detail::GdalErrorScope& errors, bool found,
+                     int features, int others, const char* kind, const char* otherKinds) {
+    if (!errors.firstError().empty())
+        return makeError(ErrorCode::ParseError,
+                         path + ": cannot read the file: " + errors.firstError());
+    if (found)
+        return {};
+    const std::string what = features == 0
+                                 ? "it has no features"
+                                 : "it has " + std::to_string(features) + " feature(s)" +
+                                       (others > 0 ? std::string(", only ") + otherKinds
+                                                   : std::string(", none with a ") + kind);
+    return makeError(ErrorCode::InvalidGeometry, path + ": no " + kind + " to import: " + what);
+}
+
 } // namespace
 
 Result<std::vector<ImportedPolygon>> importPolygons(const std::string& path) {
@@ -358,16 +375,10 @@ Result<std::vector<ImportedPolygon>> importPolygons(const std::string& path) {
     };
     if (auto st = forEachGeometry(path, *file, visit, features); !st)
         return st.error();
-    // A driver that stumbles half-way reports it as an error and stops: importing the features read
-    // so far would silently drop the rest of the area.
-    if (!errors.firstError().empty())
-        return makeError(ErrorCode::ParseError, path + ": cannot read the file: " + errors.firstError());
-    if (out.empty()) {
-        std::string found = features == 0 ? "it has no features"
-                                          : "it has " + std::to_string(features) + " feature(s)" +
-                                                (otherGeometries > 0 ? ", only points or lines" : ", none with a polygon");
-        return makeError(ErrorCode::InvalidGeometry, path + ": no polygon to import: " + found);
-    }
+    if (auto st = importOutcome(path, errors, !out.empty(), features, otherGeometries, "polygon",
+                                "points or lines");
+        !st)
+        return st.error();
     return out;
 }
 
@@ -391,16 +402,10 @@ Result<std::vector<ImportedLine>> importLines(const std::string& path) {
     };
     if (auto st = forEachGeometry(path, *file, visit, features); !st)
         return st.error();
-    if (!errors.firstError().empty())
-        return makeError(ErrorCode::ParseError,
-                         path + ": cannot read the file: " + errors.firstError());
-    if (out.empty()) {
-        std::string found = features == 0 ? "it has no features"
-                                          : "it has " + std::to_string(features) + " feature(s)" +
-                                                (otherGeometries > 0 ? ", only points or polygons"
-                                                                     : ", none with a line");
-        return makeError(ErrorCode::InvalidGeometry, path + ": no line to import: " + found);
-    }
+    if (auto st = importOutcome(path, errors, !out.empty(), features, otherGeometries, "line",
+                                "points or polygons");
+        !st)
+        return st.error();
     return out;
 }
 

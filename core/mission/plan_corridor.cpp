@@ -174,6 +174,14 @@ Result<Stretches> balance(const Mission& m, const LocalGeometry& geom,
         for (std::size_t i = 0; i + 1 < n; ++i)
             cuts.push_back(at += length * rate[i] / sum);
         cuts = snapCuts(line, cuts, m.corridor->widthM);
+        // Stretches of at least a metre each, else the line is too short for so many aircraft.
+        for (std::size_t i = 0; i < cuts.size(); ++i)
+            if (cuts[i] - (i == 0 ? 0.0 : cuts[i - 1]) < 1.0 ||
+                (i + 1 == cuts.size() && length - cuts[i] < 1.0))
+                return makeError(ErrorCode::InvalidInput, "the corridor (" + metres(length) +
+                                                              " m) is too short to share between " +
+                                                              std::to_string(n) +
+                                                              " aircraft: plan it with fewer");
         Stretches s{cuts, {}};
         for (std::size_t i = 0; i < n; ++i) {
             if (stopRequested())

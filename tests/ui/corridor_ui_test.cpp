@@ -154,3 +154,22 @@ TEST(CorridorUi, DoubleGridToggleIsAnUndoableOption) {
     EXPECT_FALSE(w->document()->mission().options.doubleGrid);
     EXPECT_FALSE(action->isChecked());
 }
+
+// File ▸ Import of a file with a line and no polygon: the line becomes the corridor's centre line.
+TEST(CorridorUi, ImportingALineMakesTheCorridor) {
+    auto w = test::makeWindow();
+    QString error;
+    const int n = w->importAreas(QStringLiteral(PF_TEST_DATA_DIR "/corridor/river.kml"),
+                                 ImportRole::Ask, &error);
+    EXPECT_EQ(n, 1) << error.toStdString();
+    ASSERT_TRUE(w->document()->mission().corridor.has_value());
+    EXPECT_EQ(w->document()->mission().corridor->line.size(), 6u);
+    EXPECT_FALSE(w->document()->mission().area.outer.empty());
+    w->document()->undoStack()->undo();
+    EXPECT_FALSE(w->document()->mission().corridor.has_value());
+    // A file with neither polygon nor line is still refused with the polygon importer's reason.
+    EXPECT_EQ(w->importAreas(QStringLiteral(PF_TEST_DATA_DIR "/import/empty.geojson"),
+                             ImportRole::Ask, &error),
+              0);
+    EXPECT_TRUE(error.contains(QStringLiteral("no polygon to import"))) << error.toStdString();
+}

@@ -10,6 +10,7 @@
 #include "core/geo/polygon_ops.h"
 #include "core/plan/corridor/corridor_geometry.h"
 #include "core/plan/coverage_check.h"
+#include "tests/sample_missions.h"
 
 #include <gtest/gtest.h>
 
@@ -27,17 +28,11 @@ geo::GeoRing geoLine(const std::vector<Vec2>& local) {
     return frame->toGeo(local);
 }
 
+// The big-site test aircraft (60 x 45 degrees, 70 % / 60 %) under its own name, with endurance to
+// spare (sorties are tested on their own).
 AircraftConfig testAircraft(const std::string& name, double altitude = 40.0) {
-    AircraftConfig a;
+    AircraftConfig a = pf::test::bigSiteAircraft(altitude);
     a.name = name;
-    a.model = "custom";
-    a.camera.name = "test";
-    a.camera.hfovDeg = 70;
-    a.camera.vfovDeg = 55;
-    a.camera.imageWidthPx = 4000;
-    a.camera.imageHeightPx = 3000;
-    a.altitudeM = altitude;
-    a.overlap = {0.7, 0.6};
     a.enduranceMin = 600;
     return a;
 }
@@ -151,6 +146,17 @@ TEST(CorridorMission, SeveralAircraftShareALongCorridor) {
     EXPECT_LE(p->makespanS / p->idealS, 1.10) << p->makespanS << " vs ideal " << p->idealS;
     EXPECT_GE(p->coverageRatio, 0.995);
     EXPECT_EQ(p->noFlyViolations, 0);
+}
+
+// More aircraft than the line has metres for: refused in words, never a plan with an empty stretch.
+TEST(CorridorMission, TooShortToShareIsRefused) {
+    Mission m = corridorMission({Vec2(0, 0), Vec2(2, 0)}, 50.0);
+    m.aircraft.push_back(testAircraft("Falcon 2"));
+    m.aircraft.push_back(testAircraft("Falcon 3"));
+    auto p = planMission(m);
+    ASSERT_FALSE(p.ok());
+    EXPECT_NE(p.error().message.find("too short to share between 3 aircraft"), std::string::npos)
+        << p.error().message;
 }
 
 // Another planner kind plans the corridor's ground as an area (for comparison); the grid's cell

@@ -8,6 +8,7 @@
 #include "core/io/export_context.h"
 #include "core/io/mission_items.h"
 #include "core/io/trigger_lanes.h"
+#include "tests/sample_missions.h"
 
 #include <gtest/gtest.h>
 
@@ -27,14 +28,8 @@ Mission areaMission(double w, double h) {
     m.area = geo::GeoPolygon{
         frame->toGeo(std::vector<Vec2>{Vec2(0, 0), Vec2(w, 0), Vec2(w, h), Vec2(0, h)}), {}};
     m.home = frame->toGeo(Vec2(-20, -20));
-    AircraftConfig a;
+    AircraftConfig a = pf::test::bigSiteAircraft(40.0);
     a.name = "Falcon 1";
-    a.camera.name = "test";
-    a.camera.hfovDeg = 70;
-    a.camera.vfovDeg = 55;
-    a.camera.imageWidthPx = 4000;
-    a.camera.imageHeightPx = 3000;
-    a.altitudeM = 40;
     a.overlap = {0.75, 0.65};
     a.enduranceMin = 600;
     m.aircraft.push_back(a);
