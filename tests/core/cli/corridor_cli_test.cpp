@@ -26,9 +26,10 @@ TEST(CliCorridor, PlansLanesAlongTheLineAndWritesTheFiles) {
     EXPECT_TRUE(has(r.out, "no-fly violations 0")) << r.out;
     EXPECT_TRUE(std::filesystem::exists(dir / "plan.geojson"));
     EXPECT_TRUE(std::filesystem::exists(dir / "mission-DJI_Phantom_4_Pro.plan"));
-    // validate names the corridor's figures' problems in words.
+    // validate shows the corridor beside its ground.
     const CliRun v = cli("validate --corridor '" + corridorFile("river.geojson") + "' --width 80");
     EXPECT_EQ(v.code, 0) << v.out << v.err;
+    EXPECT_TRUE(has(v.out, "Corridor:         2.72 km x 80 m, 6 points (lanes along the line)")) << v.out;
 }
 
 TEST(CliCorridor, BadCorridorsAreRefusedWithTheReason) {
