@@ -144,8 +144,8 @@ bool isMissionFile(const std::string& path) {
 
 namespace {
 
-// --aircraft: the mission's aircraft replaced (each NAME[:ALT_M] from the catalog), or a default one
-// when the file gave none.
+// --aircraft: the mission's aircraft replaced (each NAME[:ALT_M] from the catalog), or a default
+// one when the file gave none.
 Status aircraftFromFlags(const Args& args, MissionInput& in, std::optional<io::Catalog>& catalog) {
     mission::Mission& m = in.mission;
     Error err;
