@@ -143,18 +143,43 @@ geo::Polygon rectangle(const Vec2& centre, double headingDeg, double acrossM, do
     return {sensor::footprintRing(sensor::PhotoFootprint{centre, headingDeg, acrossM, alongM}), {}};
 }
 
-} // namespace
+// The admissible ground of the band of a photo planned at `q` that no photo of its cell sees (only
+// when the real footprint is shorter than the cell, see above): one more photo at the safe point
+// nearest to the planned one, off the track, when it sees some of it.
+std::optional<Vec2> photoForLostGround(const grid::Grid& g, const Placer& placer,
+                                       const sensor::EffectiveFootprint& fp, const Vec2& q,
+                                       double heading, const std::vector<Vec2>& cellPhotos) {
+    const double cell = g.cellSize();
+    const PhotosPerCell ppc = photosPerCell(cell, fp);
+    const double sAlong = cell / ppc.along, sAcross = cell / ppc.across;
+    geo::MultiPolygon lost =
+        geo::intersection(g.admissible(), rectangle(q, heading, sAcross, sAlong));
+    for (const auto& c : cellPhotos) {
+        if (lost.empty())
+            break;
+        lost = geo::difference(
+            lost, geo::MultiPolygon{rectangle(c, heading, fp.real.longSideM, fp.real.shortSideM)});
+    }
+    const double lostArea = geo::area(lost);
+    if (lostArea <= 1e-3 * sAcross * sAlong)
+        return std::nullopt;
+    const auto extra = placer.nearestSafePoint(q);
+    if (!extra)
+        return std::nullopt;
+    const double stillLost = geo::area(geo::difference(
+        lost,
+        geo::MultiPolygon{rectangle(*extra, heading, fp.real.longSideM, fp.real.shortSideM)}));
+    if (lostArea - stillLost <= 1e-3 * sAcross * sAlong)
+        return std::nullopt;
+    return extra;
+}
 
-std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellPath& path,
-                                          const sensor::EffectiveFootprint& fp, PhotoPlacement* placement,
-                                          PhotoRule rule) {
-    PhotoPlacement localPlacement;
-    PhotoPlacement& rep = placement ? *placement : localPlacement;
-    rep = {};
-    std::vector<LocalWaypoint> out;
+// 1. Where each waypoint of `path` would go: lanes (or, by the paper's rule, every cell alone) and
+// the turn and transit points of the cells flown over. Partial when the job is cancelled (the
+// caller then drops it).
+std::vector<Slot> pathSlots(const grid::Grid& g, const plan::CellPath& path,
+                            const sensor::EffectiveFootprint& fp, PhotoRule rule) {
     const std::size_t n = path.cells.size();
-    if (n == 0)
-        return out;
     const double a = g.angleDeg() * M_PI / 180.0;
     const Vec2 ex(std::cos(a), std::sin(a)), ey(-std::sin(a), std::cos(a));
     auto stepDir = [&](std::size_t i, std::size_t j) -> Vec2 {
@@ -166,8 +191,6 @@ std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellP
     const double cell = g.cellSize();
     const PhotosPerCell ppc = photosPerCell(cell, fp);
     const double sAlong = cell / ppc.along, sAcross = cell / ppc.across;
-    // 1. Where each waypoint would go: lanes (or, by the paper's rule, every cell alone) and the turn
-    // and transit points of the cells flown over.
     std::vector<PathGroup> groups;
     if (rule == PhotoRule::Lanes) {
         groups = cellPathGroups(g, path, fp);
@@ -239,7 +262,14 @@ std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellP
         }
         i = static_cast<std::size_t>(grp.last);
     }
-    // 2. Safe placement, in flight order: each slot knows where the one before it went.
+    return slots;
+}
+
+// 2. Safe placement of `slots`, in flight order: each slot knows where the one before it went.
+std::vector<LocalWaypoint> placeSlots(const grid::Grid& g, const std::vector<Slot>& slots,
+                                      const sensor::EffectiveFootprint& fp, PhotoPlacement& rep) {
+    std::vector<LocalWaypoint> out;
+    const double cell = g.cellSize();
     const Placer placer(g);
     // Whether a slid photo may lose part of its band (see above): only with a real footprint shorter
     // than the cell (its long side never is: the cell is an effective side); the polygon work is skipped
@@ -309,31 +339,30 @@ std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellP
         }
         if (!mayLose)
             continue;
-        // The admissible ground of this photo's band that no photo of the cell sees (only when the real
-        // footprint is shorter than the cell, see above): one more photo at the safe point nearest to
-        // the planned one, off the track, when it sees some of it.
-        geo::MultiPolygon lost = geo::intersection(g.admissible(), rectangle(q, w.headingDeg, sAcross, sAlong));
-        for (const auto& c : cellPhotos) {
-            if (lost.empty())
-                break;
-            lost = geo::difference(lost, geo::MultiPolygon{rectangle(c, w.headingDeg, fp.real.longSideM,
-                                                                     fp.real.shortSideM)});
+        if (auto extra = photoForLostGround(g, placer, fp, q, w.headingDeg, cellPhotos)) {
+            w.pos = *extra;
+            out.push_back(w);
+            cellPhotos.push_back(*extra);
+            ++rep.added;
         }
-        const double lostArea = geo::area(lost);
-        if (lostArea <= 1e-3 * sAcross * sAlong)
-            continue;
-        const auto extra = placer.nearestSafePoint(q);
-        if (!extra)
-            continue;
-        const double stillLost = geo::area(geo::difference(
-            lost, geo::MultiPolygon{rectangle(*extra, w.headingDeg, fp.real.longSideM, fp.real.shortSideM)}));
-        if (lostArea - stillLost <= 1e-3 * sAcross * sAlong)
-            continue;
-        w.pos = *extra;
-        out.push_back(w);
-        cellPhotos.push_back(*extra);
-        ++rep.added;
     }
+    return out;
+}
+
+} // namespace
+
+std::vector<LocalWaypoint> photoWaypoints(const grid::Grid& g, const plan::CellPath& path,
+                                          const sensor::EffectiveFootprint& fp,
+                                          PhotoPlacement* placement, PhotoRule rule) {
+    PhotoPlacement localPlacement;
+    PhotoPlacement& rep = placement ? *placement : localPlacement;
+    rep = {};
+    if (path.cells.empty())
+        return {};
+    const std::vector<Slot> slots = pathSlots(g, path, fp, rule);
+    if (stopRequested())
+        return {}; // a cancelled job drops the partial list
+    std::vector<LocalWaypoint> out = placeSlots(g, slots, fp, rep);
     dropNearDuplicates(out);
     return out;
 }
