@@ -10,6 +10,7 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QImage>
+#include <QStandardPaths>
 #include <QTabWidget>
 #include <QTextBrowser>
 #include <QTimer>
@@ -53,7 +54,9 @@ QImage grabPlanned(pf::ui::MainWindow& w, const QString& dialogName, bool loaded
     if (!w.waitForMap(20000))
         std::fprintf(stderr, "photoflight: some map tiles did not load in time\n");
     if (dialogName == QLatin1String("export")) {
-        pf::ui::ExportDialog d(w.document(), w.planController(), QDir::homePath(), &w);
+        // The folder the desktop application offers first.
+        const QString folder = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+        pf::ui::ExportDialog d(w.document(), w.planController(), folder, &w);
         d.show();
         QApplication::processEvents();
         return d.grab().toImage();
