@@ -33,10 +33,20 @@ bool wantsScreenshot(int argc, char** argv) {
         if (QByteArray(argv[i]).startsWith("--screenshot")) return true;
     return false;
 }
+
 // Plans the mission in a main window of 1600x1000 (for the main window also comparing the planners,
-// which the Statistics dock shows) and grabs it, or the dialog named: export or help.
+// which the Statistics dock shows) and grabs it, or the dialog named: export (of the planned
+// mission) or help (the user guide, shown at once).
 QImage grabPlanned(pf::ui::MainWindow& w, const QString& dialogName, bool loaded) {
     const bool withDialog = !dialogName.isEmpty();
+    // The user guide does not depend on the plan: no need to wait for one.
+    if (dialogName == QLatin1String("help")) {
+        pf::ui::HelpBrowser h(&w);
+        h.show();
+        h.showPage(QStringLiteral("user-guide.html"));
+        QApplication::processEvents();
+        return h.grab().toImage();
+    }
     if (!loaded)
         return w.grab().toImage();
     w.planController()->planNow();
@@ -60,13 +70,6 @@ QImage grabPlanned(pf::ui::MainWindow& w, const QString& dialogName, bool loaded
         d.show();
         QApplication::processEvents();
         return d.grab().toImage();
-    }
-    if (dialogName == QLatin1String("help")) {
-        pf::ui::HelpBrowser h(&w);
-        h.show();
-        h.showPage(QStringLiteral("user-guide.html"));
-        QApplication::processEvents();
-        return h.grab().toImage();
     }
     return w.grab().toImage();
 }
