@@ -7,6 +7,17 @@ set(PF_DOC_DIR_SRC "${PROJECT_SOURCE_DIR}/docs")
 # Every page, in the order of the guide's contents.
 set(PF_DOC_PAGES
   index.md
+  install.md
+  user-guide.md
+  cli.md
+  planning.md
+  corridors.md
+  terrain.md
+  vehicles.md
+  files.md
+  catalog.md
+  mosaic.md
+  developer.md
 )
 # Pictures the pages show (docs/images/), copied beside the HTML.
 file(GLOB PF_DOC_IMAGES RELATIVE "${PF_DOC_DIR_SRC}" CONFIGURE_DEPENDS "${PF_DOC_DIR_SRC}/images/*.png")

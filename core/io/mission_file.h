@@ -1,4 +1,4 @@
-// The mission file: a documented, versioned JSON document (see the README's "Mission file").
+// The mission file: a documented, versioned JSON document (docs/files.md, "Mission file").
 #pragma once
 
 #include "core/mission/mission.h"

@@ -88,7 +88,7 @@ struct PlannerOptions {
     friend bool operator==(const PlannerOptions& a, const PlannerOptions& b);
 };
 
-// Terrain following (see the README's "Terrain"): off flies every altitude above the take-off point
+// Terrain following (docs/terrain.md): off flies every altitude above the take-off point
 // over a flat world, as always; follow keeps each aircraft's altitude (or the one of its GSD) above
 // the ground under each waypoint, from a digital elevation model.
 enum class TerrainMode { Off, Follow };

@@ -3,15 +3,18 @@
 #include "ui/help/help_browser.h"
 #include "ui/help/shortcuts_dialog.h"
 #include "ui/main_window.h"
+#include "ui/mission_document.h"
 
 #include <QAction>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QMenu>
 #include <QMenuBar>
 #include <QRegularExpression>
 #include <QTableWidget>
 #include <QTextBrowser>
+#include <QUndoStack>
 
 #include <gtest/gtest.h>
 
@@ -62,13 +65,25 @@ TEST(Help, EveryPageLoadsAndItsLinksToOtherPagesResolve) {
         const QString html = QString::fromUtf8(f.readAll());
         EXPECT_TRUE(html.contains(QStringLiteral("<h1")))
             << page.toStdString() << " has no heading";
+        // A link out of the guide (../README.md, a source file) is shown as its text.
+        EXPECT_FALSE(html.contains(QStringLiteral("href=\"../")))
+            << page.toStdString() << " links into the source tree";
         for (auto it = href.globalMatch(html); it.hasNext();) {
-            const QString target = it.next().captured(1);
-            if (target.startsWith(QLatin1String("../")))
-                continue; // the source tree, not the guide
+            const auto m = it.next();
+            const QString target = m.captured(1);
             EXPECT_TRUE(QFile::exists(dir.filePath(target)))
                 << page.toStdString() << " links to " << target.toStdString()
                 << ", which the guide lacks";
+            // page.html#part: the part is a heading's id on that page.
+            if (!m.captured(2).isEmpty() && target.endsWith(QLatin1String(".html"))) {
+                QFile t(dir.filePath(target));
+                ASSERT_TRUE(t.open(QIODevice::ReadOnly));
+                const QString id =
+                    QStringLiteral("id=\"") + m.captured(2).mid(1) + QLatin1Char('"');
+                EXPECT_TRUE(QString::fromUtf8(t.readAll()).contains(id))
+                    << page.toStdString() << " links to " << (target + m.captured(2)).toStdString()
+                    << ", which names no heading";
+            }
         }
     }
 }
@@ -96,4 +111,57 @@ TEST(Help, ShortcutListIsReadFromTheMenus) {
     EXPECT_TRUE(
         list2.contains(QStringLiteral("Extra|Something new|") +
                        QKeySequence(Qt::CTRL | Qt::Key_J).toString(QKeySequence::NativeText)));
+}
+
+TEST(Help, TheContentsPageLinksEveryPageAndAPartOfAnotherPageOpens) {
+    pf::ui::HelpBrowser browser;
+    const QDir dir(QStringLiteral(":/help"));
+    QFile index(dir.filePath(QStringLiteral("index.html")));
+    ASSERT_TRUE(index.open(QIODevice::ReadOnly));
+    const QString contents = QString::fromUtf8(index.readAll());
+    for (const QString& page : dir.entryList({QStringLiteral("*.html")}, QDir::Files)) {
+        if (page == QLatin1String("index.html"))
+            continue;
+        EXPECT_TRUE(contents.contains(QStringLiteral("href=\"") + page + QLatin1Char('"')))
+            << "the contents page does not list " << page.toStdString();
+    }
+    // A click on "upload" in the contents opens that part of the command-line reference.
+    emit browser.browser()->anchorClicked(QUrl(QStringLiteral("cli.html#upload")));
+    EXPECT_EQ(browser.browser()->source().fileName(), QStringLiteral("cli.html"));
+    EXPECT_EQ(browser.browser()->source().fragment(), QStringLiteral("upload"));
+    EXPECT_EQ(browser.browser()->documentTitle(),
+              QStringLiteral("Command-line reference (photoflight-cli)"));
+}
+
+// The planner options that need words say what they do: a tool tip, and "What's this?" (Shift+F1).
+TEST(Help, PlannerOptionsExplainThemselves) {
+    pf::ui::MainWindow w;
+    for (const char* name :
+         {"PlannerBox", "GridAngleBox", "SafetyMarginBox", "FrontOverlapBox", "SideOverlapBox"}) {
+        auto* widget = w.findChild<QWidget*>(QString::fromLatin1(name));
+        ASSERT_NE(widget, nullptr) << name;
+        EXPECT_FALSE(widget->toolTip().isEmpty()) << name;
+        EXPECT_GT(widget->whatsThis().size(), 60) << name;
+    }
+    for (const char* name : {"KeepInsideAction", "DoubleGridAction"}) {
+        auto* action = w.findChild<QAction*>(QString::fromLatin1(name));
+        ASSERT_NE(action, nullptr) << name;
+        EXPECT_FALSE(action->toolTip().isEmpty()) << name;
+        EXPECT_GT(action->whatsThis().size(), 60) << name;
+    }
+}
+
+// The safety margin, named in the docs as a tool bar control, is an undoable mission edit.
+TEST(Help, SafetyMarginBoxEditsTheMissionUndoably) {
+    pf::ui::MainWindow w;
+    auto* doc = w.document();
+    auto* box = w.findChild<QDoubleSpinBox*>(QStringLiteral("SafetyMarginBox"));
+    ASSERT_NE(box, nullptr);
+    const double before = doc->mission().options.safetyMarginM;
+    EXPECT_DOUBLE_EQ(box->value(), before);
+    box->setValue(before + 3.0);
+    EXPECT_DOUBLE_EQ(doc->mission().options.safetyMarginM, before + 3.0);
+    doc->undoStack()->undo();
+    EXPECT_DOUBLE_EQ(doc->mission().options.safetyMarginM, before);
+    EXPECT_DOUBLE_EQ(box->value(), before); // the box follows the undo
 }

@@ -7,6 +7,8 @@
 #include "ui_test_util.h"
 
 #include <QDir>
+#include <QProcess>
+#include <QTemporaryDir>
 #include <QUndoStack>
 
 #include <gtest/gtest.h>
@@ -103,4 +105,48 @@ TEST(Screenshot, SelectedShapeShowsItsVertexHandles) {
     EXPECT_NEAR(c.green(), 110, 30);
     EXPECT_NEAR(c.blue(), 230, 30);
     EXPECT_NE(before.pixelColor(v), c);
+}
+
+// `photoflight --screenshot FILE --dialog export|help` (the user guide's pictures): the program
+// plans the demo and renders that window, not the main window; a wrong name is refused in words.
+TEST(Screenshot, DialogOptionRendersTheNamedWindowOfThePlannedDemo) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    env.insert(QStringLiteral("HOME"), dir.path()); // no settings or autosave of the user
+    auto run = [&](const QStringList& args, QString* err) {
+        QProcess p;
+        p.setProcessEnvironment(env);
+        p.start(QStringLiteral(PF_PHOTOFLIGHT_PATH), args);
+        EXPECT_TRUE(p.waitForFinished(120000));
+        *err = QString::fromUtf8(p.readAllStandardError());
+        return p.exitCode();
+    };
+    QString err;
+    const QString exportPng = dir.filePath(QStringLiteral("export.png"));
+    const QString demo = QStringLiteral(PF_RESOURCES_DIR "/demo/demo_mission.json");
+    ASSERT_EQ(run({QStringLiteral("--screenshot"), exportPng, QStringLiteral("--dialog"),
+                   QStringLiteral("export"), demo},
+                  &err),
+              0)
+        << err.toStdString();
+    const QImage exported(exportPng);
+    ASSERT_FALSE(exported.isNull());
+    EXPECT_LT(exported.width(), 1600); // the dialog, not the 1600 x 1000 main window
+    EXPECT_GT(exported.width(), 300);
+    EXPECT_GT(exported.height(), 200);
+    const QString helpPng = dir.filePath(QStringLiteral("help.png"));
+    ASSERT_EQ(run({QStringLiteral("--screenshot"), helpPng, QStringLiteral("--dialog"),
+                   QStringLiteral("help"), demo},
+                  &err),
+              0)
+        << err.toStdString();
+    EXPECT_EQ(QImage(helpPng).size(), QSize(900, 760)); // the user guide's window
+    EXPECT_EQ(run({QStringLiteral("--screenshot"), helpPng, QStringLiteral("--dialog"),
+                   QStringLiteral("map"), demo},
+                  &err),
+              2);
+    EXPECT_TRUE(err.contains(QStringLiteral("--dialog must be export or help")))
+        << err.toStdString();
 }

@@ -161,6 +161,19 @@ void AircraftPanel::createFields() {
     m_camera->setMinimumContentsLength(12);
     m_front = spin(0.0, 95.0, 0, 5.0, tr(" %"));
     m_side = spin(0.0, 95.0, 0, 5.0, tr(" %"));
+    m_front->setObjectName(QStringLiteral("FrontOverlapBox"));
+    m_side->setObjectName(QStringLiteral("SideOverlapBox"));
+    m_front->setToolTip(
+        tr("Front overlap: the share of a photo's ground the next photo on the lane sees again"));
+    m_front->setWhatsThis(
+        tr("<p><b>Front overlap.</b> Photos along a lane lie the footprint's length "
+           "× (1 − front overlap) apart: 70 % takes a photo every 30 % of the "
+           "footprint. More overlap, more photos.</p>"));
+    m_side->setToolTip(
+        tr("Side overlap: the share of a lane's strip the neighbouring lane sees again"));
+    m_side->setWhatsThis(tr("<p><b>Side overlap.</b> Lanes lie the footprint's width × (1 − side "
+                            "overlap) apart (the track spacing). More overlap, more lanes and a "
+                            "longer flight.</p>"));
     m_speed = spin(0.5, 60.0, 1, 0.5, tr(" m/s"));
     m_endurance = spin(1.0, 600.0, 0, 1.0, tr(" min"));
     m_kind = new QComboBox;

@@ -108,6 +108,8 @@ PlanningToolBar::PlanningToolBar(MissionDocument* doc, PlanController* planner, 
         m_doc->undoStack()->push(new SetPlannerOptionsCommand(
             m_doc, o, angle ? tr("Grid angle %1°").arg(*angle, 0, 'f', 0) : tr("Automatic grid angle")));
     });
+    makeSafetyMarginBox();
+    explainOptions();
     connect(m_doc, &MissionDocument::optionsChanged, this, &PlanningToolBar::syncControls);
     connect(m_doc, &MissionDocument::missionReset, this, &PlanningToolBar::syncControls);
     // A planner flying over the no-fly zones is offered only where it crosses none (as in Compare).
@@ -118,6 +120,7 @@ PlanningToolBar::PlanningToolBar(MissionDocument* doc, PlanController* planner, 
     addAction(m_cancel);
     addWidget(m_plannerBox);
     addWidget(m_angleBox);
+    addWidget(m_marginBox);
     addAction(m_keepInside);
     addAction(m_doubleGrid);
     addAction(exportRoutes);
@@ -141,6 +144,65 @@ void PlanningToolBar::syncControls() {
     m_keepInside->setChecked(o.keepInsideArea);
     m_doubleGrid->setChecked(o.doubleGrid);
     m_angleBox->setValue(o.gridAngleDeg ? *o.gridAngleDeg : -1.0);
+    const QSignalBlocker b3(m_marginBox);
+    m_marginBox->setValue(o.safetyMarginM);
+}
+
+// The keep-out distance around the no-fly zones, an undoable mission edit like the other options.
+void PlanningToolBar::makeSafetyMarginBox() {
+    m_marginBox = new QDoubleSpinBox;
+    m_marginBox->setObjectName(QStringLiteral("SafetyMarginBox"));
+    m_marginBox->setRange(0, 1000);
+    m_marginBox->setDecimals(1);
+    m_marginBox->setSingleStep(1);
+    m_marginBox->setPrefix(tr("Margin "));
+    m_marginBox->setSuffix(tr(" m"));
+    m_marginBox->setKeyboardTracking(false);
+    connect(
+        m_marginBox, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+            auto o = m_doc->mission().options;
+            if (o.safetyMarginM == v)
+                return;
+            o.safetyMarginM = v;
+            m_doc->undoStack()->push(
+                new SetPlannerOptionsCommand(m_doc, o, tr("Safety margin %1 m").arg(v, 0, 'f', 1)));
+        });
+}
+
+// Tool tips say what a control is; "What's this?" (Shift+F1) says what it does to the plan, in the
+// words of the user guide (docs/user-guide.md, docs/planning.md).
+void PlanningToolBar::explainOptions() {
+    m_plannerBox->setWhatsThis(tr(
+        "<p><b>Coverage planner.</b> <i>Auto</i> (the default) plans each aircraft's region with "
+        "sweep, stride and raster and keeps the plan it flies soonest, home to home. <i>Sweep</i> "
+        "lays straight lanes on the exact area round the no-fly zones; <i>Stride</i> follows the "
+        "area's limits with long straight strides and no jumps; <i>Raster</i> scans row by row and "
+        "may jump; <i>Wavefront</i> climbs a distance map. <i>Lawnmower</i> is a ground station's "
+        "Survey pattern: it flies straight over no-fly zones, so it is offered only where it "
+        "crosses none. Plan ▸ Compare planners shows them side by side.</p>"));
+    m_angleBox->setWhatsThis(tr(
+        "<p><b>Grid angle.</b> The direction of the grid and its lanes, counter-clockwise from "
+        "east about the area's centre. <i>Auto angle</i> tries 0 to 175° in 5° steps and the "
+        "directions of the area's two longest edges, and keeps the plan with the shortest flight "
+        "time.</p>"));
+    m_marginBox->setToolTip(
+        tr("Safety margin: no waypoint or leg comes closer than this to a no-fly zone"));
+    m_marginBox->setWhatsThis(
+        tr("<p><b>Safety margin</b> (default 5 m). The keep-out distance around every no-fly zone: "
+           "no waypoint lies inside a zone or its margin, and a leg that would cross one takes the "
+           "shortest safe detour. The ground inside the margin is photographed from outside it as "
+           "far as the footprints reach; ground no footprint reaches is reported in m². The route "
+           "check before export and upload uses the same margin.</p>"));
+    m_keepInside->setWhatsThis(tr(
+        "<p><b>Keep inside area.</b> Off: lanes end where the photos cover the area's boundary, "
+        "so waypoints may lie outside the area (Problems says how far). On: waypoints stay inside "
+        "the area as far as each photo still sees the ground it is responsible for; what cannot "
+        "be kept covered is reported.</p>"));
+    m_doubleGrid->setWhatsThis(tr(
+        "<p><b>Double grid.</b> Plans the area twice: the first pass as a single grid, the second "
+        "with straight lanes at 90° to the first, flown after it, so every point is seen from two "
+        "directions (for 3D models). The coverage check counts each pass on its own. A corridor "
+        "is flown once.</p>"));
 }
 
 void PlanningToolBar::planNow() {

@@ -39,6 +39,10 @@ public:
 private:
     // Shows the document's options (after an edit, an undo or another mission).
     void syncControls();
+    // The "Safety margin" box (object name "SafetyMarginBox").
+    void makeSafetyMarginBox();
+    // Tool tips and "What's this?" texts of the planner options.
+    void explainOptions();
 
     MissionDocument* m_doc;
     PlanController* m_planner;
@@ -50,6 +54,7 @@ private:
     QAction* m_doubleGrid;
     QComboBox* m_plannerBox;
     QDoubleSpinBox* m_angleBox;
+    QDoubleSpinBox* m_marginBox = nullptr;
 };
 
 } // namespace pf::ui

@@ -20,7 +20,7 @@
 
 namespace pf::test {
 
-// The demo site (see the README): area, two no-fly zones, home.
+// The demo site (see docs/user-guide.md): area, two no-fly zones, home.
 inline mission::Mission demoMission() {
     mission::Mission m;
     m.name = "Rheinhafen training ground";

@@ -24,8 +24,8 @@ using test::scratchDir;
 
 constexpr double kAltitude = 100.0; // 480 x 360 photos: 25 cm per pixel, as fine as the demo map
 
-// PF_MOSAIC_TEST_KEEP=DIR keeps a copy of each mosaic and its vectors (the README's pictures are
-// made from them).
+// PF_MOSAIC_TEST_KEEP=DIR keeps a copy of each mosaic and its vectors (docs/mosaic.md's pictures
+// are made from them).
 void keepCopy(const std::string& mosaic, const std::string& name) {
     const char* keep = std::getenv("PF_MOSAIC_TEST_KEEP");
     if (!keep)

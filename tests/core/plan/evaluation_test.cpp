@@ -67,11 +67,12 @@ TEST(Evaluation, EveryRunCoversEveryCellAndStrideNeverJumps) {
     }
 }
 
-// The quality targets the stride planner reaches against the raster baseline (rasterWalk, the paper's
-// original algorithm) on the sample areas: no jumps, complete coverage, and no more than 5 % extra
-// distance on average. The turn target (stride <= 0.7 x raster) is not reached on these areas (the
-// raster's jumps cost it no way back); the measured ratios are in the README, and this test guards what
-// holds: about as few turns as the raster without its jumps, and fewer than the paper's rules alone.
+// The quality targets the stride planner reaches against the raster baseline (rasterWalk, the
+// paper's original algorithm) on the sample areas: no jumps, complete coverage, and no more than 5
+// % extra distance on average. The turn target (stride <= 0.7 x raster) is not reached on these
+// areas (the raster's jumps cost it no way back); the ratios measured are in docs/planning.md; this
+// test guards what holds: about as few turns as the raster without its jumps, and fewer than the
+// paper's rules alone.
 TEST(Evaluation, StrideDistanceWithinFivePercentOfTheRasterWithoutJumps) {
     EvalOptions opt;
     opt.maxStarts = 40;
