@@ -58,7 +58,9 @@ const char* const kPlanUsage =
     "\n"
     "Options:\n"
     "  --out DIR                    output directory (created if missing)\n"
-    "  --force                      write routes the route check finds errors in (see below)\n"
+    "  --force                      write routes the route check finds errors in (see below), and files\n"
+    "                               an aircraft cannot fly (Litchi CSV or a MAVLink mission for a DJI\n"
+    "                               Enterprise aircraft; a .kmz is never written for another aircraft)\n"
     "  --footprints                 plan.geojson also holds every photo's ground footprint polygon\n"
     "  --quiet                      no progress line on stderr (shown only when stderr is a terminal)\n"
     "  --progress                   a progress line per stage on stderr, with the seconds since the\n"
@@ -70,6 +72,9 @@ const char* const kPlanUsage =
     "                                 gpx        GPX waypoints and route\n"
     "                                 geojson    GeoJSON waypoints\n"
     "                                 csv        Litchi mission hub CSV\n"
+    "                                 kmz        DJI WPML for DJI Pilot 2 and FlightHub 2 (DJI Enterprise\n"
+    "                                            aircraft only: Matrice 30/30T, 300/350 RTK, Mavic 3E/3T/3M,\n"
+    "                                            Matrice 4E/4T)\n"
     PF_CLI_MISSION_OPTIONS_HELP
     "Options of the waypoint files (--format plan, waypoints):\n"
     PF_CLI_EXPORT_OPTIONS_HELP
@@ -156,6 +161,22 @@ private:
     std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
 };
 
+// Why an aircraft cannot fly the files of `formats` (io::aircraftFormatProblem).
+std::vector<std::string> aircraftProblems(const mission::Mission& m, const mission::MissionPlan& plan,
+                                                  const std::vector<io::WaypointFormat>& formats) {
+    std::vector<route::Route> routes;
+    for (const auto& a : plan.aircraft)
+        routes.push_back(a.route);
+    const io::ExportContext ctx = io::makeExportContext(m, routes);
+    std::vector<std::string> out;
+    for (const auto fmt : formats)
+        for (std::size_t i = 0; i < ctx.routes.size(); ++i) {
+            if (std::string why = io::aircraftFormatProblem(ctx, i, fmt); !why.empty())
+                out.push_back(std::string("--format ") + io::formatInfo(fmt).name + ": " + why);
+        }
+    return out;
+}
+
 } // namespace
 
 int runPlan(const std::vector<std::string>& argv) {
@@ -210,7 +231,12 @@ int runPlan(const std::vector<std::string>& argv) {
 
     // The check every exported route passes (as in the desktop application): a route with an error is
     // refused unless the user insists.
-    const auto routeProblems = mission::planRouteErrors(m, *plan);
+    auto routeProblems = mission::planRouteErrors(m, *plan);
+    // The files' aircraft: a .kmz only for DJI Enterprise aircraft, no Litchi or MAVLink file for them,
+    // unless --force (then the .kmz of another aircraft is left out, the others written with a warning).
+    for (auto& p : aircraftProblems(m, *plan, formats))
+        routeProblems.push_back(std::move(p));
+    exportOptions->forceAircraft = args->has("force");
     for (const auto& p : routeProblems)
         std::cerr << "photoflight-cli: " << (args->has("force") ? "warning: " : "error: ") << p << '\n';
     if (!routeProblems.empty() && !args->has("force"))

@@ -3,9 +3,22 @@
 
 #include "core/plan/flight_time.h"
 
+#include <optional>
 #include <string>
 
 namespace pf::fleet {
+
+// The aircraft type a DJI WPML mission declares (wpml:droneInfo): droneEnumValue and
+// droneSubEnumValue from the enumeration values of DJI's Cloud API ("Product Support"), e.g. 67/1
+// for the Matrice 30T. Only DJI Enterprise aircraft that fly WPML routes have one.
+struct DjiDroneType {
+    int droneEnum = 0;
+    int subEnum = 0;
+    friend bool operator==(const DjiDroneType& a, const DjiDroneType& b) {
+        return a.droneEnum == b.droneEnum && a.subEnum == b.subEnum;
+    }
+    friend bool operator!=(const DjiDroneType& a, const DjiDroneType& b) { return !(a == b); }
+};
 
 struct AircraftSpec {
     std::string name;
@@ -18,11 +31,12 @@ struct AircraftSpec {
     double maxAltitudeM = 120.0;
     std::string defaultCamera; // a catalog camera name
     std::string notes;         // where the figures come from
+    std::optional<DjiDroneType> dji; // the WPML drone type of a DJI Enterprise aircraft
     friend bool operator==(const AircraftSpec& a, const AircraftSpec& b) {
-        return a.name == b.name && a.cruiseSpeedMps == b.cruiseSpeedMps && a.turnRateDegS == b.turnRateDegS &&
-               a.accelerationMps2 == b.accelerationMps2 &&
+        return a.name == b.name && a.cruiseSpeedMps == b.cruiseSpeedMps &&
+               a.turnRateDegS == b.turnRateDegS && a.accelerationMps2 == b.accelerationMps2 &&
                a.enduranceMin == b.enduranceMin && a.maxAltitudeM == b.maxAltitudeM &&
-               a.defaultCamera == b.defaultCamera && a.notes == b.notes;
+               a.defaultCamera == b.defaultCamera && a.notes == b.notes && a.dji == b.dji;
     }
 };
 

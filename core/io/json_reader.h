@@ -3,6 +3,7 @@
 // first problem becomes "<source>: <field path>: <what>". Internal to io: include from .cpp files only.
 #pragma once
 
+#include "core/fleet/aircraft.h"
 #include "core/geo/types.h"
 #include "core/result.h"
 #include "core/sensor/camera.h"
@@ -105,5 +106,10 @@ private:
     std::string m_separator;
     std::optional<Error> m_error;
 };
+
+// An aircraft's "dji_drone_enum" (required for a DJI type) and "dji_drone_sub_enum" (default 0),
+// both integers in [0, 65535]; nothing when the aircraft has no "dji_drone_enum".
+std::optional<fleet::DjiDroneType> djiDroneType(JsonReader& reader, const CPLJSONObject& o,
+                                                const std::string& path);
 
 } // namespace pf::io::detail

@@ -1,7 +1,10 @@
 // JSON helpers shared by the io readers and writers (CPLJSON). Internal: include from .cpp files only.
 #pragma once
 
+#include "core/fleet/aircraft.h"
 #include "core/sensor/camera.h"
+
+#include <optional>
 
 #include <cpl_json.h>
 
@@ -16,5 +19,8 @@ CPLJSONObject jsonNumber(double v);
 // A camera as the mission file and the catalog store it: only the definition in use is written
 // (optics or field of view); absent values read back as 0.
 CPLJSONObject cameraToJson(const sensor::Camera& c);
+
+// "dji_drone_enum" and "dji_drone_sub_enum" of an aircraft (catalog and mission file), when known.
+void addDjiDroneType(CPLJSONObject& o, const std::optional<fleet::DjiDroneType>& dji);
 
 } // namespace pf::io::detail

@@ -189,6 +189,9 @@ int requiredVersion(const mission::Mission& m) {
         v = std::max(v, 3);
     if (!m.terrain.isDefault())
         v = std::max(v, 4);
+    for (const auto& a : m.aircraft)
+        if (a.dji || a.camera.djiPayloadEnum)
+            v = std::max(v, 5);
     for (const auto& r : m.editedRoutes) {
         if (r.homeElevationM)
             v = std::max(v, 4);
@@ -238,6 +241,7 @@ std::string missionToJson(const mission::Mission& m) {
             o.Add("acceleration_mps2", jsonNumber(a.accelerationMps2));
         o.Add("endurance_min", jsonNumber(a.enduranceMin));
         o.Add("max_altitude_m", jsonNumber(a.maxAltitudeM));
+        detail::addDjiDroneType(o, a.dji);
         o.Add("colour", a.colour);
         if (a.home)
             o.Add("home", jsonPosition(*a.home));

@@ -8,6 +8,7 @@
 #include "core/io/trigger_lanes.h"
 #include "core/io/waypoint_format_util.h"
 #include "core/io/waypoint_geojson.h"
+#include "core/io/wpml_kmz.h"
 #include "core/mission/route_check.h"
 
 #include <algorithm>
@@ -27,6 +28,11 @@ const std::vector<WaypointFormatInfo>& waypointFormats() {
         {WaypointFormat::Gpx, "gpx", ".gpx", "GPX 1.1 waypoints and routes", true, true, 0.1, 0},
         {WaypointFormat::GeoJson, "geojson", ".geojson", "GeoJSON features", true, true, 0.1, 0},
         {WaypointFormat::LitchiCsv, "csv", ".csv", "Litchi mission hub CSV", true, false, 0.6, 99},
+        // DJI WPML: wpml:index is documented in [0, 65535], so a wayline holds at most 65536
+        // waypoints. The WPML pages give no minimum spacing; 0.6 m is DJI's waypoint-mission
+        // minimum that the Litchi export keeps too.
+        {WaypointFormat::WpmlKmz, "kmz", ".kmz", "DJI Pilot 2 / FlightHub 2", true, false, 0.6,
+         65536},
     };
     return kFormats;
 }
@@ -60,6 +66,8 @@ Result<WaypointFormat> formatFromName(const std::string& name) {
         return WaypointFormat::GeoJson;
     if (n == "litchi")
         return WaypointFormat::LitchiCsv;
+    if (n == "wpml" || n == "dji")
+        return WaypointFormat::WpmlKmz;
     for (const auto& f : waypointFormats())
         if (n == f.name)
             return f.format;
@@ -76,7 +84,7 @@ Result<WaypointFormat> formatFromPath(const std::string& path) {
             return f.format;
     return makeError(ErrorCode::Unsupported,
                      path + ": cannot tell the waypoint format from the extension \"" + ext +
-                         "\" (use .plan, .waypoints, .kml, .gpx, .geojson, .json or .csv)");
+                         "\" (use .plan, .waypoints, .kml, .gpx, .geojson, .json, .csv or .kmz)");
 }
 
 Result<std::vector<WaypointFormat>> formatListFromString(const std::string& commaSeparated) {
@@ -150,6 +158,8 @@ Status writeOne(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat
         return writeGpx(ctx, {routeIndex}, path);
     case WaypointFormat::GeoJson:
         return writeWaypointGeoJson(ctx, {routeIndex}, path);
+    case WaypointFormat::WpmlKmz:
+        return writeWpmlKmz(ctx, routeIndex, path, options);
     }
     return makeError(ErrorCode::Internal, "unknown waypoint format");
 }
@@ -168,6 +178,18 @@ Result<ExportReport> exportRouteFiles(const ExportContext& ctx, std::size_t rout
         return makeError(ErrorCode::InvalidInput,
                          "there is no route " + std::to_string(routeIndex + 1) + " to export");
     ExportReport report;
+    if (const std::string problem = aircraftFormatProblem(ctx, routeIndex, format);
+        !problem.empty()) {
+        if (!options.forceAircraft)
+            return makeError(ErrorCode::Unsupported, problem);
+        if (format ==
+            WaypointFormat::WpmlKmz) { // it would have to name a DJI aircraft it does not know
+            report.notes.push_back(problem + "; no " + formatInfo(format).extension +
+                                   " written for it");
+            return report;
+        }
+        report.notes.push_back(problem + "; written anyway, as asked");
+    }
     ExportContext m = mergedContext(ctx, {routeIndex}, format, &report.notes);
     const std::size_t limit = formatInfo(format).maxWaypoints;
     const auto& all = m.routes[routeIndex].waypoints;
@@ -229,6 +251,38 @@ Status exportCombined(const ExportContext& original, WaypointFormat format, cons
     }
 }
 
+std::string aircraftFormatProblem(const ExportContext& ctx, std::size_t routeIndex,
+                                  WaypointFormat format) {
+    const mission::AircraftConfig* a = ctx.aircraftFor(routeIndex);
+    const std::string label = ctx.routeLabel(routeIndex);
+    const std::string named = !a || a->model == label ? label : label + " (" + a->model + ")";
+    switch (format) {
+    case WaypointFormat::WpmlKmz:
+        return wpmlAircraftProblem(ctx, routeIndex);
+    case WaypointFormat::LitchiCsv:
+        if (a && a->dji)
+            return named +
+                   " is a DJI Enterprise aircraft: Litchi does not "
+                   "fly the Enterprise series; export the DJI Pilot 2 / FlightHub 2 .kmz for it";
+        return {};
+    case WaypointFormat::QgcPlan:
+    case WaypointFormat::QgcWpl:
+        if (a && a->dji)
+            return named +
+                   " is a DJI Enterprise aircraft: it flies DJI's "
+                   "own flight controller, not ArduPilot or PX4, and cannot fly a MAVLink mission "
+                   "(" +
+                   formatInfo(format).extension +
+                   "); export the DJI Pilot 2 / FlightHub 2 .kmz for it";
+        return {};
+    case WaypointFormat::Kml:
+    case WaypointFormat::Gpx:
+    case WaypointFormat::GeoJson:
+        return {};
+    }
+    return {};
+}
+
 std::string fileNameSafe(const std::string& name) {
     std::string out = name;
     for (char& c : out)
@@ -280,6 +334,8 @@ Result<ImportedWaypoints> importWaypoints(const std::string& path) {
         return readGpx(path);
     case WaypointFormat::GeoJson:
         return readWaypointGeoJson(path);
+    case WaypointFormat::WpmlKmz:
+        return readWpmlKmz(path);
     case WaypointFormat::Kml:
         return makeError(
             ErrorCode::Unsupported,

@@ -23,11 +23,11 @@
 
 namespace pf::io {
 
-enum class WaypointFormat { QgcPlan, QgcWpl, Kml, Gpx, GeoJson, LitchiCsv };
+enum class WaypointFormat { QgcPlan, QgcWpl, Kml, Gpx, GeoJson, LitchiCsv, WpmlKmz };
 
 struct WaypointFormatInfo {
     WaypointFormat format;
-    const char* name;        // as in --format: "plan", "waypoints", "kml", "gpx", "geojson", "csv"
+    const char* name; // as in --format: "plan", "waypoints", "kml", "gpx", "geojson", "csv", "kmz"
     const char* extension;   // written extension, with the dot
     const char* description; // one line for help texts
     bool canImport;          // every format but KML is read back
@@ -39,10 +39,10 @@ struct WaypointFormatInfo {
 const std::vector<WaypointFormatInfo>& waypointFormats();
 const WaypointFormatInfo& formatInfo(WaypointFormat format);
 
-// "plan", "waypoints", "kml", "gpx", "geojson" (also "json"), "csv" (also "litchi"),
-// case-insensitive.
+// "plan", "waypoints", "kml", "gpx", "geojson" (also "json"), "csv" (also "litchi"), "kmz" (also
+// "wpml", "dji"), case-insensitive.
 Result<WaypointFormat> formatFromName(const std::string& name);
-// By extension: .plan .waypoints .kml .gpx .geojson .json .csv
+// By extension: .plan .waypoints .kml .gpx .geojson .json .csv .kmz
 Result<WaypointFormat> formatFromPath(const std::string& path);
 // Parses "plan,kml,gpx"; errors name the unknown entry.
 Result<std::vector<WaypointFormat>> formatListFromString(const std::string& commaSeparated);
@@ -53,8 +53,18 @@ struct ExportReport {
     std::vector<std::string> notes; // merged waypoints, a route split into several files
 };
 
-// One aircraft's route in one file; waypoints closer than the format's minimum are merged, and a
-// route over the format's waypoint limit (Litchi: 99) is written as numbered files
+// Why the route's aircraft cannot fly a file of this format, or empty: a .kmz for an aircraft that
+// is not a DJI Enterprise model (wpmlAircraftProblem), Litchi's CSV or a MAVLink mission (.plan,
+// .waypoints) for a DJI Enterprise aircraft. KML, GPX and GeoJSON are for viewing and fit any
+// aircraft.
+std::string aircraftFormatProblem(const ExportContext& ctx, std::size_t routeIndex,
+                                  WaypointFormat format);
+
+// One aircraft's route in one file; an aircraft that cannot fly the format (aircraftFormatProblem)
+// is refused, unless options.forceAircraft: then a note says so, and a .kmz (which must name a DJI
+// aircraft) is left out: no file, the note saying why. Waypoints closer than the format's minimum
+// are merged, and a route over the format's waypoint limit (Litchi: 99) is written as numbered
+// files
 // "<path stem>-part1.csv", "-part2.csv", ... each starting where the previous one ended.
 Result<ExportReport> exportRouteFiles(const ExportContext& ctx, std::size_t routeIndex,
                                       WaypointFormat format, const std::string& path,

@@ -13,6 +13,7 @@ AircraftConfig aircraftFromCatalog(const fleet::AircraftSpec& spec, const sensor
     a.accelerationMps2 = spec.accelerationMps2;
     a.enduranceMin = spec.enduranceMin;
     a.maxAltitudeM = spec.maxAltitudeM;
+    a.dji = spec.dji;
     return a;
 }
 
@@ -26,12 +27,12 @@ plan::FlightTimeModel flightModel(const AircraftConfig& a) {
 
 
 bool operator==(const AircraftConfig& a, const AircraftConfig& b) {
-    return a.name == b.name && a.model == b.model && a.camera == b.camera && a.altitudeM == b.altitudeM &&
-           a.gsdCm == b.gsdCm && a.overlap.front == b.overlap.front && a.overlap.side == b.overlap.side &&
-           a.cruiseSpeedMps == b.cruiseSpeedMps && a.turnRateDegS == b.turnRateDegS &&
-           a.accelerationMps2 == b.accelerationMps2 &&
-           a.enduranceMin == b.enduranceMin && a.maxAltitudeM == b.maxAltitudeM && a.colour == b.colour &&
-           a.home == b.home;
+    return a.name == b.name && a.model == b.model && a.camera == b.camera &&
+           a.altitudeM == b.altitudeM && a.gsdCm == b.gsdCm && a.overlap.front == b.overlap.front &&
+           a.overlap.side == b.overlap.side && a.cruiseSpeedMps == b.cruiseSpeedMps &&
+           a.turnRateDegS == b.turnRateDegS && a.accelerationMps2 == b.accelerationMps2 &&
+           a.enduranceMin == b.enduranceMin && a.maxAltitudeM == b.maxAltitudeM &&
+           a.colour == b.colour && a.home == b.home && a.dji == b.dji;
 }
 
 bool operator==(const PlannerOptions& a, const PlannerOptions& b) {

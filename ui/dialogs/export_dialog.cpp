@@ -305,11 +305,13 @@ bool ExportDialog::confirmCurrentPlan() {
 }
 
 bool ExportDialog::confirmRouteErrors(const QStringList& problems) {
-    QMessageBox box(QMessageBox::Critical, tr("Export waypoints"),
-                    tr("The route check found %n problem(s). An aircraft flying these routes would enter a "
-                       "no-fly zone's safety margin or fly at an altitude out of its limits:",
-                       nullptr, problems.size()),
-                    QMessageBox::Cancel, this);
+    QMessageBox box(
+        QMessageBox::Critical, tr("Export waypoints"),
+        tr("The route check found %n problem(s). An aircraft flying these routes would enter a "
+           "no-fly zone's safety margin, fly at an altitude out of its limits, or get a file it "
+           "cannot fly:",
+           nullptr, problems.size()),
+        QMessageBox::Cancel, this);
     const int shown = std::min(12, int(problems.size()));
     QString list = problems.mid(0, shown).join(QLatin1Char('\n'));
     if (shown < problems.size())
