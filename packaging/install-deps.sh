@@ -7,12 +7,18 @@ packages=(
   build-essential cmake ninja-build pkg-config
   qtbase5-dev qtpositioning5-dev libqt5svg5-dev libqt5serialport5-dev
   libgdal-dev gdal-bin libproj-dev libgeos-dev libeigen3-dev
+  # The .kmz (DJI WPML) writer.
+  libminizip-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth
+  # The user guide is rendered from docs/*.md at build time.
+  pandoc
   # Release checks: fuzzers (clang's libFuzzer and sanitizer runtimes), desktop-file and AppStream
   # validators, dpkg-shlibdeps for the package's dependencies, and the X tools the kill-recovery
   # test uses to see and answer the application's recovery question on a virtual screen.
   clang libclang-rt-14-dev desktop-file-utils appstream dpkg-dev xdotool x11-utils
+  # The manual pages come from the programs' --help (help2man); lintian checks the package.
+  help2man lintian
   # The simulated MAVLink vehicle of the upload tests (tests/peers/, node-mavlink from npm).
   nodejs
 )

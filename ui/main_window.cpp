@@ -6,6 +6,7 @@
 #include "ui/dialogs/export_dialog.h"
 #include "ui/geo_adapter.h"
 #include "ui/ground_station.h"
+#include "ui/help/help_menu.h"
 #include "ui/map/base_maps.h"
 #include "ui/map/hillshade_layer.h"
 #include "ui/map/map_view.h"
@@ -123,6 +124,7 @@ MainWindow::MainWindow(QWidget* parent, bool interactive) : QMainWindow(parent),
     connect(m_view, &MapView::viewChanged, this, &MainWindow::onViewChanged);
     connect(m_view, &MapView::filesDropped, this, &MainWindow::openDropped);
     connect(m_doc, &MissionDocument::dirtyChanged, this, &MainWindow::updateTitle);
+    connect(m_doc, &MissionDocument::routesChanged, this, [this] { m_sortiesSent.clear(); });
     connect(m_doc, &MissionDocument::filePathChanged, this, &MainWindow::updateTitle);
     connect(m_doc, &MissionDocument::changed, this, &MainWindow::updateTitle);
     connect(m_layer, &MissionLayer::problemsChanged, this, [this](const QStringList& problems) {
@@ -313,19 +315,13 @@ void MainWindow::buildActions() {
             showError(tr("Connect and Upload"), tr("Nothing to upload yet: plan the mission first (F5)."));
             return;
         }
-        UploadDialog dialog(m_doc, this);
+        UploadDialog dialog(m_doc, this, &m_sortiesSent);
         dialog.exec();
     });
     uploadAct->setObjectName(QStringLiteral("ConnectAndUploadAction"));
 
-    // Help
-    QMenu* help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(tr("&About Photoflight"), this, [this] {
-        QMessageBox::about(this, tr("About Photoflight"),
-                           tr("<b>Photoflight %1</b><br>Photo-survey flight planning for one or several UAVs.<br><br>"
-                              "The demo map is synthetic: it is drawn by the program and shows no real place.")
-                               .arg(QStringLiteral(PF_VERSION)));
-    });
+    // Help: the user guide, the keyboard shortcuts, What's this and About (ui/help/).
+    addHelpMenu(this);
 
     // Tool bars
     QToolBar* main = addToolBar(tr("Main"));

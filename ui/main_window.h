@@ -133,6 +133,9 @@ private:
     QLabel* m_mapLabel;
     QLabel* m_problems;
     PlanController* m_planner = nullptr;
+    // Per aircraft the last sortie uploaded and verified (1-based), until the routes change: the
+    // upload dialog offers the next battery first.
+    std::map<QString, int> m_sortiesSent;
     PlanLayer* m_planLayer = nullptr;
     WaypointPanel* m_waypoints = nullptr;
     StatisticsPanel* m_statistics = nullptr;

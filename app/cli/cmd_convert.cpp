@@ -5,6 +5,7 @@
 #include "app/cli/export_args.h"
 
 #include "core/io/catalog.h"
+#include "core/io/mission_export.h"
 #include "core/io/waypoint_formats.h"
 #include "core/mission/route_check.h"
 
@@ -28,7 +29,7 @@ const char* const kConvertUsage =
     "Options:\n"
     "  --aircraft NAME       convert only the route of this aircraft (needed when IN holds "
     "several\n"
-    "                        routes and OUT is a .plan, .waypoints or .csv)\n"
+    "                        routes and OUT is a .plan, .waypoints, .csv or .kmz)\n"
     PF_CLI_EXPORT_OPTIONS_HELP
     "  --model NAME          the catalog aircraft (with its default camera) that flies the route: a .kmz\n"
     "                        names it, and Litchi and MAVLink files are checked against it (default:\n"
@@ -36,7 +37,8 @@ const char* const kConvertUsage =
     "  --max-altitude M      the highest waypoint altitude allowed (default 120)\n"
     "  --safety-margin M     keep-out distance around the file's no-fly zones (default 5)\n"
     "  --force               write the file even if the route check finds errors or the aircraft\n"
-    "                        cannot fly it (Litchi CSV or a MAVLink mission for a DJI Enterprise model)\n"
+    "                        cannot fly it (Litchi CSV or a MAVLink mission for a DJI Enterprise model);\n"
+    "                        a .kmz is never written for an aircraft that is not a DJI Enterprise model\n"
     "\n"
     "Route check: before writing, every route is checked: no waypoint or leg (the legs from and back\n"
     "to home included) within the safety margin of a no-fly zone the file holds (a .plan's geofence\n"
@@ -46,6 +48,9 @@ const char* const kConvertUsage =
     "Take-off, capture, return and landing items are regenerated from the waypoints; a .plan's "
     "geofence\n"
     "and home are kept when the output can hold them.\n"
+    "A route that passes through home between sorties (a GPX or GeoJSON route exported with every\n"
+    "battery's flight) becomes one .plan, .waypoints, .csv or .kmz per battery, OUT-sortieN.EXT: a vehicle\n"
+    "file never flies several batteries.\n"
     "Exit codes: 0 written, 2 bad input (the message names the file and the line or JSON key).\n";
 
 namespace {
@@ -97,7 +102,6 @@ int runConvert(const std::vector<std::string>& argv) {
     if (!options)
         return reportError(options.error());
     io::ExportOptions& opt = *options;
-    opt.forceAircraft = args->has("force");
 
     mission::RouteLimits limits;
     limits.maxAltitudeM = 120.0;
@@ -116,6 +120,9 @@ int runConvert(const std::vector<std::string>& argv) {
     auto outFormat = io::formatFromPath(out);
     if (!outFormat)
         return reportError(outFormat.error());
+    // --force cannot make a .kmz for an aircraft that is not a DJI Enterprise model (it would have no
+    // DJI type to name): that stays an error, not a run that writes nothing.
+    opt.forceAircraft = args->has("force") && *outFormat != io::WaypointFormat::WpmlKmz;
     auto imported = io::importWaypoints(in);
     if (!imported)
         return reportError(imported.error());
@@ -154,7 +161,17 @@ int runConvert(const std::vector<std::string>& argv) {
     const auto& info = io::formatInfo(*outFormat);
     Status written;
     std::vector<std::string> files{out};
-    if (ctx.routes.size() == 1) {
+    if (ctx.routes.size() == 1 && info.vehicle) {
+        // A route passing through home between sorties is written one file per battery.
+        auto r = io::exportVehicleFlights(ctx, 0, *outFormat, out, opt);
+        if (!r)
+            return reportError(r.error());
+        for (const auto& n : r->notes)
+            std::cerr << "photoflight-cli: note: " << n << '\n';
+        for (const auto& w : r->warnings)
+            std::cerr << "photoflight-cli: warning: " << w << '\n';
+        files = r->files;
+    } else if (ctx.routes.size() == 1) {
         auto r = io::exportRouteFiles(ctx, 0, *outFormat, out, opt);
         if (!r)
             return reportError(r.error());

@@ -4,6 +4,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/export_args.h"
 
+#include "core/io/mission_export.h"
 #include "core/io/mission_file.h"
 #include "core/io/waypoint_formats.h"
 #include "core/mavlink/connection_spec.h"
@@ -31,7 +32,9 @@ const char* const kUploadUsage =
     "Uploads to each vehicle over MAVLink 2 the mission of its aircraft, the same items as the .plan and\n"
     ".waypoints exports (take-off, speed, gimbal, waypoints with camera commands, return or land), the\n"
     "no-fly zones as an exclusion geofence and the rally point, then downloads all three again and\n"
-    "compares them item by item. Several vehicles are uploaded in parallel.\n"
+    "compares them item by item. Several vehicles are uploaded in parallel. A mission is one battery's\n"
+    "flight: an aircraft whose plan needs several batteries gets the sortie chosen with --sortie N, and a\n"
+    "flight of more mission items than an autopilot stores (PX4 500, ArduPilot 650) gets a warning.\n"
     "\n"
     "PLAN_OR_MISSION is a Photoflight mission file (planned now; hand-edited routes in it are flown as\n"
     "edited) or a waypoint file: .plan, .waypoints, .gpx, .geojson or .csv.\n"
@@ -49,8 +52,9 @@ const char* const kUploadUsage =
     "  --system-id N         the vehicle's MAVLink system id, 1-255 (repeatable, one per --aircraft;\n"
     "                        default 0: the first autopilot heard, only for one aircraft per connection)\n"
     "  --timeout S           how long to wait for the vehicle's heartbeat (default 5 s)\n"
-    "  --sortie N            of a mission file: send only battery N's flight (home to home) of each\n"
-    "                        aircraft that needs several batteries\n"
+    "  --sortie N            battery N's flight (home to home) of each aircraft: needed when an aircraft\n"
+    "                        needs several batteries, as a mission is one battery's flight (without it\n"
+    "                        such an upload exits 2 and sends nothing)\n"
     PF_CLI_EXPORT_OPTIONS_HELP
     "\n"
     "Several vehicles: --aircraft \"Falcon 8\" --to udp::14550 --aircraft \"DJI Phantom 4 Pro\" --to udp::14551,\n"
@@ -94,8 +98,9 @@ std::optional<int> parseSystemId(const std::string& s) {
     return n;
 }
 
-// `sortie` (1-based, 0: all) applies to the aircraft named in `only` (every aircraft if empty).
-Result<Input> loadInput(const std::string& path, int sortie, const std::vector<std::string>& only) {
+// The routes of a mission file (planned now; a hand-edited route in it replaces its aircraft's) or
+// of a waypoint file, one per aircraft, each with every sortie it flies.
+Result<Input> loadInput(const std::string& path) {
     Input in;
     if (!isMissionFile(path)) {
         auto imported = io::importWaypoints(path);
@@ -113,29 +118,46 @@ Result<Input> loadInput(const std::string& path, int sortie, const std::vector<s
     std::vector<route::Route> routes;
     for (const auto& a : plan->aircraft) {
         route::Route r = a.route;
-        const auto sorties = a.sortieRoutes.size();
-        const bool chosen = only.empty() || std::find(only.begin(), only.end(), a.aircraft) != only.end();
-        if (chosen && sortie > 0) {
-            if (static_cast<std::size_t>(sortie) > std::max<std::size_t>(sorties, 1))
-                return makeError(ErrorCode::InvalidInput, "--sortie " + std::to_string(sortie) + ": " + a.aircraft +
-                                                              " flies " + std::to_string(std::max<std::size_t>(sorties, 1)) +
-                                                              " sortie(s)");
-            if (sorties > 1)
-                r = a.sortieRoutes[static_cast<std::size_t>(sortie - 1)];
-        } else if (chosen && sorties > 1) {
-            in.notes.push_back(a.aircraft + " needs " + std::to_string(sorties) +
-                               " batteries: this upload flies every sortie in one mission; send one battery's "
-                               "flight at a time with --sortie N");
-        }
         for (const auto& e : m->editedRoutes)
             if (e.aircraft == r.aircraft) {
                 r = e;
-                in.notes.push_back(r.aircraft + ": its hand-edited route from the mission file is sent");
+                in.notes.push_back(r.aircraft +
+                                   ": its hand-edited route from the mission file is sent");
             }
         routes.push_back(std::move(r));
     }
     in.ctx = io::makeExportContext(*m, routes);
     return in;
+}
+
+// One battery's flight per chosen aircraft: an upload never sends a mission asking one battery for
+// several sorties. `sortie` is 1-based, 0 when not given: then an aircraft needing several
+// batteries is an error that says how to choose. Each flight is route 0 of its context.
+Result<std::vector<io::ExportContext>>
+flightsToSend(const io::ExportContext& ctx, const std::vector<std::size_t>& chosen, int sortie) {
+    std::vector<io::ExportContext> flights;
+    std::string unchosen;
+    for (std::size_t i : chosen) {
+        const std::size_t n = io::sortieCount(ctx, i);
+        if (n > 1 && sortie == 0) {
+            unchosen += (unchosen.empty() ? "" : "; ") + ctx.routeLabel(i) + " needs " +
+                        std::to_string(n) + " batteries (sorties 1 to " + std::to_string(n) + ")";
+            continue;
+        }
+        if (sortie > 0 && static_cast<std::size_t>(sortie) > n)
+            return makeError(ErrorCode::InvalidInput, "--sortie " + std::to_string(sortie) + ": " +
+                                                          ctx.routeLabel(i) + " flies " +
+                                                          std::to_string(n) + " sortie(s)");
+        flights.push_back(
+            io::sortieFlight(ctx, i, sortie > 0 ? static_cast<std::size_t>(sortie - 1) : 0));
+    }
+    if (!unchosen.empty())
+        return makeError(
+            ErrorCode::InvalidInput,
+            "upload: " + unchosen +
+                ": a mission is one battery's flight, so nothing was sent. Choose the battery "
+                "with --sortie N (--sortie 1 first; upload the next one when it has landed)");
+    return flights;
 }
 
 } // namespace
@@ -185,7 +207,7 @@ int runUpload(const std::vector<std::string>& argv) {
     if (*sortie && !(**sortie >= 1 && **sortie <= 1000 && **sortie == static_cast<int>(**sortie)))
         return reportError("--sortie: expected a sortie number from 1");
     const std::string& path = args->positionals()[0];
-    auto input = loadInput(path, *sortie ? static_cast<int>(**sortie) : 0, args->values("aircraft"));
+    auto input = loadInput(path);
     if (!input)
         return reportError(input.error());
     for (const auto& n : input->notes)
@@ -219,9 +241,18 @@ int runUpload(const std::vector<std::string>& argv) {
         return reportError("upload: " + std::to_string(sysids.size()) + " --system-id for " +
                            std::to_string(chosen.size()) + " aircraft: give one per aircraft");
 
+    auto flights = flightsToSend(ctx, chosen, *sortie ? static_cast<int>(**sortie) : 0);
+    if (!flights)
+        return reportError(flights.error());
+    // Before the vehicle answers its firmware is unknown: the smaller of the autopilots' limits.
+    for (const auto& f : *flights)
+        if (auto w = io::flightItemWarning(f, 0, *options, std::nullopt); !w.empty())
+            std::cerr << "photoflight-cli: warning: " << w << '\n';
+
     std::vector<ui::UploadJob> jobs;
-    for (std::size_t k = 0; k < chosen.size(); ++k) {
-        auto job = ui::makeUploadJob(ctx, chosen[k], connections.size() == 1 ? connections[0] : connections[k],
+    for (std::size_t k = 0; k < flights->size(); ++k) {
+        auto job = ui::makeUploadJob((*flights)[k], 0,
+                                     connections.size() == 1 ? connections[0] : connections[k],
                                      sysids.empty() ? 0 : sysids[k], *options);
         if (!job)
             return reportError(job.error());

@@ -28,6 +28,8 @@ std::optional<geo::LonLat> ExportContext::landingFor(std::size_t i) const {
 }
 
 std::string ExportContext::routeLabel(std::size_t i) const {
+    if (i < labels.size() && !labels[i].empty())
+        return labels[i];
     if (i < routes.size() && !routes[i].aircraft.empty())
         return routes[i].aircraft;
     return "Route " + std::to_string(i + 1);

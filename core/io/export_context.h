@@ -80,6 +80,8 @@ struct ExportContext {
     std::vector<route::Route> routes;                         // one per aircraft (or per sortie)
     std::vector<std::optional<sensor::Footprint>> footprints; // photo footprint per route, for KML
     std::vector<std::vector<geo::LonLat>> trajectories; // smoothed flight path per route, for KML
+    // The route's name in files where set (e.g. "Falcon 8, sortie 2 of 5"), else routeLabel's rule.
+    std::vector<std::string> labels;
 
     // The route's home: its own, else its aircraft's, else the mission's.
     std::optional<geo::LonLat> homeFor(std::size_t routeIndex) const;
@@ -87,7 +89,7 @@ struct ExportContext {
     std::optional<geo::LonLat> landingFor(std::size_t routeIndex) const;
     // The mission's aircraft flying the route, or nullptr.
     const mission::AircraftConfig* aircraftFor(std::size_t routeIndex) const;
-    // The route's label in files: its aircraft name, or "Route N".
+    // The route's label in files: labels[i] when set, else its aircraft name, or "Route N".
     std::string routeLabel(std::size_t routeIndex) const;
     std::optional<sensor::Footprint> footprintFor(std::size_t routeIndex) const;
 };

@@ -3,6 +3,7 @@
 #include "core/io/gpx.h"
 #include "core/io/kml_export.h"
 #include "core/io/litchi_csv.h"
+#include "core/io/mission_export.h"
 #include "core/io/qgc_plan.h"
 #include "core/io/qgc_wpl.h"
 #include "core/io/trigger_lanes.h"
@@ -24,15 +25,20 @@ const std::vector<WaypointFormatInfo>& waypointFormats() {
         {WaypointFormat::QgcWpl, "waypoints", ".waypoints",
          "QGC WPL 110 waypoint list (Mission Planner)", true, false, 0.1, 0},
         {WaypointFormat::Kml, "kml", ".kml", "KML for Google Earth (export only)", false, true, 0.1,
-         0},
-        {WaypointFormat::Gpx, "gpx", ".gpx", "GPX 1.1 waypoints and routes", true, true, 0.1, 0},
-        {WaypointFormat::GeoJson, "geojson", ".geojson", "GeoJSON features", true, true, 0.1, 0},
+         0, false},
+        {WaypointFormat::Gpx, "gpx", ".gpx", "GPX 1.1 waypoints and routes", true, true, 0.1, 0,
+         false},
+        {WaypointFormat::GeoJson, "geojson", ".geojson", "GeoJSON features", true, true, 0.1, 0,
+         false},
         {WaypointFormat::LitchiCsv, "csv", ".csv", "Litchi mission hub CSV", true, false, 0.6, 99},
-        // DJI WPML: wpml:index is documented in [0, 65535], so a wayline holds at most 65536
-        // waypoints. The WPML pages give no minimum spacing; 0.6 m is DJI's waypoint-mission
-        // minimum that the Litchi export keeps too.
+        // DJI WPML ("waylines.wpml", "Common Elements"): wpml:index and wpml:actionGroupId are
+        // documented in [0, 65535]. A wayline of 65535 waypoints has at most 65536 action groups
+        // (the gimbal's and one per photo waypoint), so both fit; a longer route is split. The
+        // pages give no other count limit (no mission storage limit as the MAVLink autopilots
+        // have) and no minimum spacing: 0.6 m is DJI's waypoint-mission minimum that the Litchi
+        // export keeps too.
         {WaypointFormat::WpmlKmz, "kmz", ".kmz", "DJI Pilot 2 / FlightHub 2", true, false, 0.6,
-         65536},
+         65535},
     };
     return kFormats;
 }
@@ -171,25 +177,54 @@ std::string partPath(const std::string& path, std::size_t part) {
 
 } // namespace
 
+Result<AircraftFormatCheck> checkAircraftFormat(const ExportContext& ctx, std::size_t routeIndex,
+                                                WaypointFormat format,
+                                                const ExportOptions& options) {
+    AircraftFormatCheck check;
+    const std::string problem = aircraftFormatProblem(ctx, routeIndex, format);
+    if (problem.empty())
+        return check;
+    if (!options.forceAircraft)
+        return makeError(ErrorCode::Unsupported, problem);
+    // A .kmz names the DJI drone and payload types it is for: there is none to name.
+    check.leaveOut = format == WaypointFormat::WpmlKmz;
+    check.note = problem + (check.leaveOut ? "; no " + std::string(formatInfo(format).extension) +
+                                                 " written for it"
+                                           : std::string("; written anyway, as asked"));
+    return check;
+}
+
 Result<ExportReport> exportRouteFiles(const ExportContext& ctx, std::size_t routeIndex,
                                       WaypointFormat format, const std::string& path,
                                       const ExportOptions& options) {
     if (routeIndex >= ctx.routes.size())
         return makeError(ErrorCode::InvalidInput,
                          "there is no route " + std::to_string(routeIndex + 1) + " to export");
+    auto check = checkAircraftFormat(ctx, routeIndex, format, options);
+    if (!check)
+        return check.error();
     ExportReport report;
-    if (const std::string problem = aircraftFormatProblem(ctx, routeIndex, format);
-        !problem.empty()) {
-        if (!options.forceAircraft)
-            return makeError(ErrorCode::Unsupported, problem);
-        if (format ==
-            WaypointFormat::WpmlKmz) { // it would have to name a DJI aircraft it does not know
-            report.notes.push_back(problem + "; no " + formatInfo(format).extension +
-                                   " written for it");
-            return report;
-        }
-        report.notes.push_back(problem + "; written anyway, as asked");
-    }
+    if (!check->note.empty())
+        report.notes.push_back(check->note);
+    if (check->leaveOut)
+        return report;
+    auto written = detail::writeRouteFiles(ctx, routeIndex, format, path, options);
+    if (!written)
+        return written.error();
+    report.files = std::move(written->files);
+    report.notes.insert(report.notes.end(), written->notes.begin(), written->notes.end());
+    return report;
+}
+
+namespace detail {
+
+Result<ExportReport> writeRouteFiles(const ExportContext& ctx, std::size_t routeIndex,
+                                     WaypointFormat format, const std::string& path,
+                                     const ExportOptions& options) {
+    if (routeIndex >= ctx.routes.size())
+        return makeError(ErrorCode::InvalidInput,
+                         "there is no route " + std::to_string(routeIndex + 1) + " to export");
+    ExportReport report;
     ExportContext m = mergedContext(ctx, {routeIndex}, format, &report.notes);
     const std::size_t limit = formatInfo(format).maxWaypoints;
     const auto& all = m.routes[routeIndex].waypoints;
@@ -223,6 +258,8 @@ Result<ExportReport> exportRouteFiles(const ExportContext& ctx, std::size_t rout
                            ") to fly one after the other, each starting where the previous one ended");
     return report;
 }
+
+} // namespace detail
 
 Status exportRoute(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat format,
                    const std::string& path, const ExportOptions& options) {
@@ -299,24 +336,19 @@ Result<std::vector<std::string>> exportAll(const ExportContext& ctx, WaypointFor
                                            const std::string& dir, const std::string& stem,
                                            const ExportOptions& options,
                                            std::vector<std::string>* notes) {
-    std::vector<std::string> written;
-    const std::string base = dir.empty() ? std::string() : dir + "/";
-    for (std::size_t i = 0; i < ctx.routes.size(); ++i) {
-        const std::string path = base + stem + "-" + routeFileName(ctx, i, format);
-        auto r = exportRouteFiles(ctx, i, format, path, options);
-        if (!r)
-            return r.error();
-        written.insert(written.end(), r->files.begin(), r->files.end());
-        if (notes)
-            notes->insert(notes->end(), r->notes.begin(), r->notes.end());
+    MissionExportRequest request;
+    request.folder = dir;
+    request.stem = stem;
+    request.options = options;
+    request.kmlTrajectories = false; // the context's own, if any
+    auto r = exportFormat(ctx, format, request);
+    if (!r)
+        return r.error();
+    if (notes) {
+        notes->insert(notes->end(), r->notes.begin(), r->notes.end());
+        notes->insert(notes->end(), r->warnings.begin(), r->warnings.end());
     }
-    if (formatInfo(format).combined && ctx.routes.size() > 1) {
-        const std::string path = base + stem + formatInfo(format).extension;
-        if (auto st = exportCombined(ctx, format, path, options); !st)
-            return st.error();
-        written.push_back(path);
-    }
-    return written;
+    return r->files;
 }
 
 Result<ImportedWaypoints> importWaypoints(const std::string& path) {

@@ -10,7 +10,8 @@
 //   if (io::formatInfo(fmt).combined)
 //       io::exportCombined(ctx, fmt, dir + "/mission.kml", opts);
 //
-// or all at once: io::exportAll(ctx, fmt, dir, "mission", opts) -> the list of files written.
+// or all at once: io::exportAll(ctx, fmt, dir, "mission", opts) -> the list of files written, or
+// for a planned mission io::exportMission (core/io/mission_export.h): one vehicle file per sortie.
 // Reading a file back for editing: io::importWaypoints(path) (format from the extension).
 #pragma once
 
@@ -34,6 +35,10 @@ struct WaypointFormatInfo {
     bool combined;           // one file can hold every aircraft (KML, GPX, GeoJSON)
     double minSpacingM;      // closer waypoints are merged: DJI (Litchi) refuses under 0.6 m
     std::size_t maxWaypoints; // more are split into numbered files (Litchi: 99); 0: no limit
+    // A vehicle flies the file (.plan, .waypoints, Litchi .csv, ...): it is written per battery,
+    // one file per sortie, never one flying them all. Display formats (KML, GPX, GeoJSON) draw
+    // the whole path. A format is a vehicle's unless it says otherwise.
+    bool vehicle = true;
 };
 
 const std::vector<WaypointFormatInfo>& waypointFormats();
@@ -60,11 +65,20 @@ struct ExportReport {
 std::string aircraftFormatProblem(const ExportContext& ctx, std::size_t routeIndex,
                                   WaypointFormat format);
 
-// One aircraft's route in one file; an aircraft that cannot fly the format (aircraftFormatProblem)
-// is refused, unless options.forceAircraft: then a note says so, and a .kmz (which must name a DJI
-// aircraft) is left out: no file, the note saying why. Waypoints closer than the format's minimum
-// are merged, and a route over the format's waypoint limit (Litchi: 99) is written as numbered
-// files
+// What an export does when the route's aircraft cannot fly the format (aircraftFormatProblem):
+// refuse (Unsupported, the problem as message) unless options.forceAircraft; forced, `note` says
+// so, and `leaveOut` is set for a .kmz, which must name a DJI aircraft: no file is written for it.
+struct AircraftFormatCheck {
+    std::string note; // empty when the aircraft flies the format
+    bool leaveOut = false;
+};
+Result<AircraftFormatCheck> checkAircraftFormat(const ExportContext& ctx, std::size_t routeIndex,
+                                                WaypointFormat format,
+                                                const ExportOptions& options);
+
+// One aircraft's route in one file, after checkAircraftFormat (its note among the report's notes;
+// a .kmz left out writes no file). Waypoints closer than the format's minimum are merged, and a
+// route over the format's waypoint limit (Litchi: 99) is written as numbered files
 // "<path stem>-part1.csv", "-part2.csv", ... each starting where the previous one ended.
 Result<ExportReport> exportRouteFiles(const ExportContext& ctx, std::size_t routeIndex,
                                       WaypointFormat format, const std::string& path,
@@ -80,8 +94,9 @@ Status exportCombined(const ExportContext& ctx, WaypointFormat format, const std
 std::string fileNameSafe(const std::string& name);
 // "<aircraft>.<ext>" by fileNameSafe ("Route N" if unnamed).
 std::string routeFileName(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat format);
-// Writes "<dir>/<stem>-<aircraft>.<ext>" per route, plus "<dir>/<stem>.<ext>" with every route when
-// the format allows; returns the paths written (and the notes in `notes` if given).
+// Writes "<dir>/<stem>-<aircraft>.<ext>" per route (a vehicle format: one file per sortie of an
+// aircraft needing several batteries, see exportMission), plus "<dir>/<stem>.<ext>" with every
+// route when the format allows; returns the paths written (and the notes and warnings in `notes`).
 Result<std::vector<std::string>> exportAll(const ExportContext& ctx, WaypointFormat format,
                                            const std::string& dir, const std::string& stem,
                                            const ExportOptions& options = {},

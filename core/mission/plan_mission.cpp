@@ -11,6 +11,7 @@
 #include "core/mission/plan_geojson.h"
 #include "core/mission/plan_region.h"
 #include "core/mission/planner_kinds.h"
+#include "core/mission/route_check.h"
 #include "core/mission/terrain_stage.h"
 #include "core/mission/validation.h"
 #include "core/plan/coverage_check.h"
@@ -281,6 +282,25 @@ Result<MissionPlan> planMissionChecked(const Mission& m, Progress* progress);
 // about 2 s more there (sweep alone is the slowest to plan, its split searched on its own times).
 constexpr double kWholeMissionRecheckPhotos = 2000.0;
 
+// A planner that does not keep out of the no-fly zones (the lawnmower, the yardstick) says which
+// zones its routes cross: they are flown straight over.
+void warnOfZonesCrossed(const Mission& m, MissionPlan& plan) {
+    const PlannerKindInfo& info = plannerKindInfo(m.options.planner);
+    if (info.avoidsNoFly || m.noFlyZones.empty())
+        return;
+    const std::vector<std::string> zones = zonesEntered(m, plan);
+    if (zones.empty())
+        return;
+    std::string names;
+    for (std::size_t i = 0; i < zones.size(); ++i)
+        names += (i == 0 ? "" : i + 1 == zones.size() ? " and " : ", ") + zones[i];
+    plan.warnings.push_back(
+        std::string("the ") + info.id + " planner flies straight over no-fly zone" +
+        (zones.size() == 1 ? " " : "s ") + names +
+        ": it ignores no-fly zones by design, as the yardstick the other planners are "
+        "compared with; plan this mission with another planner (auto keeps out of them)");
+}
+
 } // namespace
 
 Result<MissionPlan> planMission(const Mission& m, Progress* progress) {
@@ -353,6 +373,8 @@ Result<MissionPlan> planMissionChecked(const Mission& m, Progress* progress) {
         alonePlans.push_back(f.get());
     if (stopRequested())
         return cancelledError(); // whatever a loop broken off left behind is dropped
+    if (plan)
+        warnOfZonesCrossed(m, *plan);
     if (!plan || m.options.planner != PlannerKind::Auto)
         return plan;
     std::string choice = why;

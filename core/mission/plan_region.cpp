@@ -6,7 +6,7 @@
 #include "core/plan/best_candidate.h"
 #include "core/plan/lawnmower_planner.h"
 #include "core/plan/planner.h"
-#include "core/plan/sweep_planner.h"
+#include "core/plan/sweep/sweep_planner.h"
 #include "core/route/photo_waypoints.h"
 #include "core/route/safety.h"
 #include "core/route/sorties.h"

@@ -20,7 +20,7 @@ const std::vector<PlannerKindInfo>& plannerKinds() {
         {PlannerKind::Lawnmower, "lawnmower", "Lawnmower (Survey)",
          "what a ground station's Survey flies: one angle, straight over the no-fly zones (a yardstick, "
          "its crossings fail the route check)",
-         std::nullopt},
+         std::nullopt, false},
     };
     return kinds;
 }

@@ -18,6 +18,10 @@ struct PlannerKindInfo {
     const char* summary; // one sentence for tool tips and help
     // The grid coverage planner behind the kind (plan::planCoverage), for stride, raster, wavefront.
     std::optional<plan::PlannerKind> gridPlanner;
+    // Whether its routes keep out of the no-fly zones. The lawnmower does not (it flies what a
+    // ground station's Survey flies): a yardstick, not offered as the planner of a mission whose
+    // zones it crosses.
+    bool avoidsNoFly = true;
 };
 
 // Every planner kind, in the order lists show them.

@@ -119,30 +119,39 @@ RouteCheck checkRoute(const route::Route& route, const RouteLimits& limits) {
         return limits.zones[z].name.empty() ? "no-fly zone " + std::to_string(z + 1)
                                             : "no-fly zone " + limits.zones[z].name;
     };
+    // The message names the first zone breached; every zone breached is recorded.
+    std::vector<bool> entered(fields.size(), false);
     auto pointProblem = [&](const geo::Vec2& p) -> std::string {
         if (all.pointIsSafe(p))
             return {};
+        std::string why;
         for (std::size_t z = 0; z < fields.size(); ++z) {
             const double c = fields[z].clearance(p);
-            if (c <= 0.0)
-                return "inside " + zoneName(z);
-            if (!fields[z].isSafeClearance(c))
-                return breachText(c, fields[z]) + " m from " + zoneName(z) + " (margin " + num(margin) + " m)";
+            if (fields[z].isSafeClearance(c) && c > 0.0)
+                continue;
+            entered[z] = true;
+            if (why.empty())
+                why = c <= 0.0 ? "inside " + zoneName(z)
+                               : breachText(c, fields[z]) + " m from " + zoneName(z) + " (margin " +
+                                     num(margin) + " m)";
         }
-        return {};
+        return why;
     };
     auto legProblem = [&](const geo::Vec2& a, const geo::Vec2& b, const std::string& what) -> std::string {
         if (all.segmentIsSafe(a, b))
             return {};
+        std::string why;
         for (std::size_t z = 0; z < fields.size(); ++z) {
             const double c = fields[z].clearance(a, b);
-            if (c <= 0.0)
-                return what + " crosses " + zoneName(z);
-            if (!fields[z].isSafeClearance(c))
-                return what + " passes " + breachText(c, fields[z]) + " m from " + zoneName(z) + " (margin " +
-                       num(margin) + " m)";
+            if (fields[z].isSafeClearance(c) && c > 0.0)
+                continue;
+            entered[z] = true;
+            if (why.empty())
+                why = c <= 0.0 ? what + " crosses " + zoneName(z)
+                               : what + " passes " + breachText(c, fields[z]) + " m from " +
+                                     zoneName(z) + " (margin " + num(margin) + " m)";
         }
-        return {};
+        return why;
     };
     for (std::size_t i = 0; i < n; ++i)
         if (auto why = pointProblem(local[i]); !why.empty()) {
@@ -164,6 +173,10 @@ RouteCheck checkRoute(const route::Route& route, const RouteLimits& limits) {
                                 "the leg from waypoint " + std::to_string(n) + " back home");
         out.noFly += out.toHome.empty() ? 0 : 1;
     }
+
+    for (std::size_t z = 0; z < entered.size(); ++z)
+        if (entered[z])
+            out.zonesEntered.push_back(z);
 
     if (limits.area.outer.size() >= 3) {
         const geo::Polygon area = frame->toLocal(limits.area);
@@ -235,6 +248,19 @@ std::vector<std::string> planRouteErrors(const Mission& m, const MissionPlan& pl
         }
     }
     return out;
+}
+
+std::vector<std::string> zonesEntered(const Mission& m, const MissionPlan& plan) {
+    std::vector<bool> entered(m.noFlyZones.size(), false);
+    for (const auto& a : plan.aircraft)
+        for (std::size_t z : checkRoute(a.route, routeLimits(m, a.route)).zonesEntered)
+            entered[z] = true;
+    std::vector<std::string> names;
+    for (std::size_t z = 0; z < entered.size(); ++z)
+        if (entered[z])
+            names.push_back(m.noFlyZones[z].name.empty() ? "no-fly zone " + std::to_string(z + 1)
+                                                         : m.noFlyZones[z].name);
+    return names;
 }
 
 } // namespace pf::mission

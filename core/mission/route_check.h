@@ -39,6 +39,9 @@ struct RouteCheck {
     int outsideArea = 0;
     int farthestOutside = -1;
     double farthestOutsideM = 0.0;
+    // The zones (indices into RouteLimits::zones, ascending) a waypoint or leg comes within the
+    // margin of.
+    std::vector<std::size_t> zonesEntered;
 
     int count() const; // number of errors
     bool ok() const { return count() == 0; }
@@ -60,5 +63,9 @@ std::vector<std::string> routeErrors(const Mission& m, const std::vector<route::
 // sortie by sortie (each from home and back home), so the leg from one sortie's last waypoint to the
 // next one's first, never flown, is not reported; lines name the aircraft and the sortie.
 std::vector<std::string> planRouteErrors(const Mission& m, const MissionPlan& plan);
+
+// The names of the mission's no-fly zones ("no-fly zone N" when unnamed) whose safety margin a
+// planned route enters (the legs from and back home included), in the mission's order.
+std::vector<std::string> zonesEntered(const Mission& m, const MissionPlan& plan);
 
 } // namespace pf::mission

@@ -3,7 +3,7 @@
 
 #include "core/geo/types.h"
 #include "core/plan/flight_time.h"
-#include "core/plan/lane.h"
+#include "core/plan/lanes/lane.h"
 #include "core/result.h"
 
 #include <optional>

@@ -1,8 +1,8 @@
 #include "core/plan/planner.h"
 
-#include "core/plan/raster_planner.h"
-#include "core/plan/stride_planner.h"
-#include "core/plan/wavefront_planner.h"
+#include "core/plan/grid/raster_planner.h"
+#include "core/plan/grid/stride_planner.h"
+#include "core/plan/grid/wavefront_planner.h"
 
 #include <cstdlib>
 #include <string>

@@ -3,7 +3,7 @@
 
 #include "core/grid/grid.h"
 #include "core/plan/cell_path.h"
-#include "core/plan/lane.h"
+#include "core/plan/lanes/lane.h"
 #include "core/sensor/camera.h"
 
 #include <vector>

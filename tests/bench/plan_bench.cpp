@@ -1,10 +1,10 @@
 // Benchmarks of the coverage planners: time per grid size (near-linear growth), 50 no-fly zones at 10^6
 // cells, and the memory the planner holds per cell.
 #include "core/grid/grid.h"
+#include "core/plan/grid/raster_planner.h"
+#include "core/plan/grid/stride_planner.h"
+#include "core/plan/grid/wavefront_planner.h"
 #include "core/plan/metrics.h"
-#include "core/plan/raster_planner.h"
-#include "core/plan/stride_planner.h"
-#include "core/plan/wavefront_planner.h"
 
 #include <benchmark/benchmark.h>
 

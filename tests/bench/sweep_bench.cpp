@@ -2,7 +2,7 @@
 // tried), and growth with the number of lanes (a strip 1 km wide, lanes across it, 20 zones), with the
 // memory the process peaks at and the plan's own size.
 #include "core/geo/polygon_ops.h"
-#include "core/plan/sweep_planner.h"
+#include "core/plan/sweep/sweep_planner.h"
 
 #include <benchmark/benchmark.h>
 

@@ -219,9 +219,12 @@ TEST(PeerUpload, TwoVehiclesOnTwoConnections) {
     EXPECT_GT(report(dir + "/b.json").GetArray("mission").Size(), 10);
 }
 
+// A mission is one battery's flight: without --sortie an aircraft needing several batteries is
+// refused before anything is sent, with a message naming it, its sortie count and how to choose;
+// --sortie N sends exactly battery N's flight, the items of that sortie's .waypoints file.
 TEST(PeerUpload, OneBatterysFlightAtATime) {
     const std::string dir = scratch("sortie");
-    // The demo with a Falcon 8 that flies 4 minutes: several batteries.
+    // The demo with a Falcon 8 that flies 4 minutes: two batteries.
     std::ifstream in(kDemo);
     std::string text((std::istreambuf_iterator<char>(in)), {});
     const auto at = text.find("\"endurance_min\": 20.0");
@@ -233,16 +236,60 @@ TEST(PeerUpload, OneBatterysFlightAtATime) {
     ASSERT_GT(vehicle.port(), 0);
     const std::string to = " --aircraft 'Falcon 8' --to udp:127.0.0.1:" + std::to_string(vehicle.port());
     const CliRun all = cli("upload " + quoted(mission) + to);
-    ASSERT_EQ(all.code, 0) << all.output;
-    EXPECT_NE(all.output.find("Falcon 8 needs"), std::string::npos) << all.output;
-    EXPECT_NE(all.output.find("with --sortie N"), std::string::npos) << all.output;
-    const int whole = report(dir + "/vehicle.json").GetArray("mission").Size();
-    const CliRun second = cli("upload " + quoted(mission) + to + " --sortie 2");
-    ASSERT_EQ(second.code, 0) << second.output;
-    const int part = report(dir + "/vehicle.json").GetArray("mission").Size();
-    EXPECT_LT(part, whole);
-    EXPECT_GT(part, 10);
+    EXPECT_EQ(all.code, 2) << all.output;
+    EXPECT_NE(all.output.find("Falcon 8 needs 2 batteries (sorties 1 to 2)"), std::string::npos)
+        << all.output;
+    EXPECT_NE(all.output.find("nothing was sent"), std::string::npos) << all.output;
+    EXPECT_NE(all.output.find("--sortie N"), std::string::npos) << all.output;
+    {
+        // The vehicle heard nothing of a mission: no upload began, it holds none.
+        const CPLJSONObject held = report(dir + "/vehicle.json");
+        EXPECT_EQ(held.GetArray("mission").Size(), 0);
+        EXPECT_EQ(held.GetObj("stats").GetDouble("firstCountAt"), 0.0);
+    }
+
+    const CliRun plan = cli("plan " + quoted(mission) + " --format waypoints --out " + dir);
+    ASSERT_EQ(plan.code, 0) << plan.output;
+    for (int sortie : {2, 1}) {
+        const CliRun one =
+            cli("upload " + quoted(mission) + to + " --sortie " + std::to_string(sortie));
+        ASSERT_EQ(one.code, 0) << one.output;
+        EXPECT_NE(one.output.find("Falcon 8, sortie " + std::to_string(sortie) +
+                                  " of 2: uploaded and read back identical"),
+                  std::string::npos)
+            << one.output;
+        // The vehicle holds that sortie's file, item for item after the home (take-off to return).
+        std::ifstream file(dir + "/mission-Falcon_8-sortie" + std::to_string(sortie) +
+                           ".waypoints");
+        std::string line;
+        std::getline(file, line);
+        ASSERT_EQ(line, "QGC WPL 110");
+        std::getline(file, line); // the home: the vehicle keeps its own
+        const CPLJSONArray items = report(dir + "/vehicle.json").GetArray("mission");
+        int k = 1;
+        while (std::getline(file, line)) {
+            std::istringstream f(line);
+            double v[12];
+            for (double& x : v)
+                f >> x;
+            ASSERT_LT(k, items.Size());
+            const CPLJSONObject it = items[k];
+            EXPECT_EQ(it.GetInteger("command"), int(v[3])) << "sortie " << sortie << " item " << k;
+            if (int(v[3]) == 16) {
+                EXPECT_NEAR(it.GetDouble("x") / 1e7, v[8], 1.5e-7)
+                    << "sortie " << sortie << " item " << k;
+                EXPECT_NEAR(it.GetDouble("y") / 1e7, v[9], 1.5e-7)
+                    << "sortie " << sortie << " item " << k;
+            }
+            ++k;
+        }
+        EXPECT_EQ(k, items.Size()) << "sortie " << sortie;
+        EXPECT_GT(k, 10);
+        EXPECT_EQ(items[1].GetInteger("command"), 22);                // one take-off
+        EXPECT_EQ(items[items.Size() - 1].GetInteger("command"), 20); // one return
+    }
     const CliRun tooMany = cli("upload " + quoted(mission) + to + " --sortie 99");
     EXPECT_EQ(tooMany.code, 2);
-    EXPECT_NE(tooMany.output.find("--sortie 99: Falcon 8 flies"), std::string::npos) << tooMany.output;
+    EXPECT_NE(tooMany.output.find("--sortie 99: Falcon 8 flies 2 sortie(s)"), std::string::npos)
+        << tooMany.output;
 }

@@ -6,9 +6,10 @@
 
 #include <QCheckBox>
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QDialogButtonBox>
+#include <QDoubleSpinBox>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -17,8 +18,12 @@
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QStyle>
+#include <QTextBrowser>
 #include <QToolButton>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace pf::ui {
 
@@ -33,11 +38,12 @@ ExportDialog::ExportDialog(MissionDocument* doc, PlanController* planner, const 
                                            "border-radius: 3px; }"));
     auto* formats = new QGroupBox(tr("Formats"));
     auto* fl = new QVBoxLayout(formats);
+    const auto ticked = defaultExportFormats(m_doc->mission());
     for (const auto& info : io::waypointFormats()) {
         auto* box = new QCheckBox(QStringLiteral("%1 (%2)").arg(
             QString::fromLatin1(info.description), QString::fromLatin1(info.extension)));
-        box->setChecked(info.format == io::WaypointFormat::QgcPlan ||
-                        info.format == io::WaypointFormat::Kml);
+        box->setObjectName(QStringLiteral("ExportFormat_%1").arg(QString::fromLatin1(info.name)));
+        box->setChecked(std::find(ticked.begin(), ticked.end(), info.format) != ticked.end());
         fl->addWidget(box);
         m_formats[info.format] = box;
     }
@@ -46,7 +52,10 @@ ExportDialog::ExportDialog(MissionDocument* doc, PlanController* planner, const 
     m_routeLayout = new QVBoxLayout;
     al->addLayout(m_routeLayout);
     rebuildRouteBoxes();
-    m_perAircraft = new QCheckBox(tr("One file per aircraft"));
+    m_perAircraft = new QCheckBox(tr("One file per aircraft (KML, GPX, GeoJSON)"));
+    m_perAircraft->setToolTip(
+        tr("Vehicle files (.plan, .waypoints, Litchi .csv, DJI .kmz) are always one per aircraft, "
+           "and one per battery for an aircraft that needs several"));
     m_perAircraft->setChecked(true);
     m_combined =
         new QCheckBox(tr("One combined file where the format allows it (KML, GPX, GeoJSON)"));
@@ -68,6 +77,7 @@ ExportDialog::ExportDialog(MissionDocument* doc, PlanController* planner, const 
     folderRow->addWidget(browse);
     m_stem = new QLineEdit(QStringLiteral("mission"));
     m_firmware = new QComboBox;
+    m_firmware->setObjectName(QStringLiteral("ExportFirmware"));
     m_firmware->addItem(tr("ArduPilot"), int(io::QgcFirmware::ArduPilot));
     m_firmware->addItem(tr("PX4"), int(io::QgcFirmware::PX4));
     m_end = new QComboBox;
@@ -164,31 +174,104 @@ QStringList ExportDialog::runExport() {
         routes.push_back(r.route);
     ExportRequest req = request();
     QString error;
-    QStringList problems, notes;
-    QStringList written = exportRoutes(m_doc->mission(), routes, req, &error, &problems, &notes);
+    QStringList problems, notes, warnings;
+    QStringList written =
+        exportRoutes(m_doc->mission(), routes, req, &error, &problems, &notes, &warnings);
     if (!problems.isEmpty()) {
         if (!confirmRouteErrors(problems)) {
-            report({}, error, {});
+            report({}, error, {}, {});
             return {};
         }
         req.allowRouteErrors = true;
-        written = exportRoutes(m_doc->mission(), routes, req, &error, nullptr, &notes);
+        written = exportRoutes(m_doc->mission(), routes, req, &error, nullptr, &notes, &warnings);
     }
-    report(written, error, notes);
+    report(written, error, notes, warnings);
     return written;
 }
 
-void ExportDialog::report(const QStringList& written, const QString& error, const QStringList& notes) {
+void ExportDialog::report(const QStringList& written, const QString& error,
+                          const QStringList& notes, const QStringList& warnings) {
     QString text;
     if (!written.isEmpty())
         text = tr("Wrote %n file(s):", nullptr, written.size()) + QLatin1Char('\n') +
                written.join(QLatin1Char('\n'));
+    for (const QString& w : warnings)
+        text += QStringLiteral("\n") + tr("Warning: %1").arg(w);
     for (const QString& n : notes)
         text += QStringLiteral("\n") + tr("Note: %1").arg(n);
     if (!error.isEmpty())
         text += (text.isEmpty() ? QString() : QStringLiteral("\n")) + tr("Error: %1").arg(error);
     m_report->setPlainText(text);
+    if (!written.isEmpty())
+        showWritten(written, notes, warnings);
     emit exported(written);
+}
+
+// What was written, in a window of its own that scrolls: the warnings first (a flight over its
+// autopilot's item limit), the notes (one file per sortie, merged waypoints, Litchi parts), the
+// file names. Opened with open(): the export returns at once.
+void ExportDialog::showWritten(const QStringList& written, const QStringList& notes,
+                               const QStringList& warnings) {
+    delete m_result.data(); // the previous export's
+    const QString folder = request().folder;
+    auto* box = new QDialog(this);
+    box->setObjectName(QStringLiteral("ExportResult"));
+    box->setWindowTitle(tr("Files written"));
+    box->setProperty("warned", !warnings.isEmpty());
+    auto* icon = new QLabel;
+    icon->setPixmap(style()
+                        ->standardIcon(warnings.isEmpty() ? QStyle::SP_MessageBoxInformation
+                                                          : QStyle::SP_MessageBoxWarning)
+                        .pixmap(32, 32));
+    QString head = written.size() == 1
+                       ? tr("Wrote 1 file into %1.").arg(folder)
+                       : tr("Wrote %1 files into %2.").arg(written.size()).arg(folder);
+    if (!warnings.isEmpty())
+        head += QLatin1Char(' ') + tr("Read the warnings before flying them.");
+    auto* summary = new QLabel(head);
+    summary->setObjectName(QStringLiteral("ExportResultSummary"));
+    summary->setWordWrap(true);
+    auto list = [](const QString& title, const QStringList& items, const QString& colour) {
+        if (items.isEmpty())
+            return QString();
+        QString html =
+            QStringLiteral(
+                "<p style=\"margin-bottom:2px\"><b>%1</b></p><ul style=\"margin-top:0\">")
+                .arg(title.toHtmlEscaped());
+        for (const QString& i : items)
+            html += QStringLiteral("<li style=\"color:%1\">%2</li>").arg(colour, i.toHtmlEscaped());
+        return html + QStringLiteral("</ul>");
+    };
+    QStringList names;
+    for (const QString& f : written)
+        names << QFileInfo(f).fileName();
+    auto* text = new QTextBrowser;
+    text->setObjectName(QStringLiteral("ExportResultText"));
+    text->setHtml(list(tr("Warnings"), warnings, QStringLiteral("#8a4b00")) +
+                  list(tr("Notes"), notes, QStringLiteral("palette(text)")) +
+                  list(tr("Files"), names, QStringLiteral("palette(text)")));
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok);
+    connect(buttons, &QDialogButtonBox::accepted, box, &QDialog::accept);
+    auto* top = new QHBoxLayout;
+    top->addWidget(icon, 0, Qt::AlignTop);
+    top->addWidget(summary, 1);
+    auto* lay = new QVBoxLayout(box);
+    lay->addLayout(top);
+    lay->addWidget(text, 1);
+    lay->addWidget(buttons);
+    box->resize(720, 440);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    m_result = box;
+    box->open();
+}
+
+QString ExportDialog::resultText() const {
+    if (!m_result)
+        return {};
+    const auto* summary = m_result->findChild<QLabel*>(QStringLiteral("ExportResultSummary"));
+    const auto* text = m_result->findChild<QTextBrowser*>(QStringLiteral("ExportResultText"));
+    return (summary ? summary->text() : QString()) + QLatin1Char('\n') +
+           (text ? text->toPlainText() : QString());
 }
 
 void ExportDialog::rebuildRouteBoxes() {
@@ -255,10 +338,11 @@ void ExportDialog::onPlanStateChanged() {
     // Not busy, still outdated, nothing pending: the new plan failed or was cancelled.
     m_waiting = false;
     refreshBanner();
-    report({}, m_planner->lastError().isEmpty()
-                   ? tr("Not exported: planning was cancelled, and the routes are outdated.")
-                   : tr("Not exported: the new plan could not be made: %1").arg(m_planner->lastError()),
-           {});
+    report({},
+           m_planner->lastError().isEmpty()
+               ? tr("Not exported: planning was cancelled, and the routes are outdated.")
+               : tr("Not exported: the new plan could not be made: %1").arg(m_planner->lastError()),
+           {}, {});
 }
 
 bool ExportDialog::confirmCurrentPlan() {

@@ -5,6 +5,7 @@
 #include "ui/planning/route_export.h"
 
 #include <QDialog>
+#include <QPointer>
 
 #include <map>
 
@@ -39,6 +40,9 @@ public:
     // The banner above the controls ("Outdated plan: …", route problems); empty when hidden.
     QString bannerText() const;
     QPushButton* exportButton() const { return m_exportButton; }
+    // The window listing what the last export wrote (summary line, warnings, notes, files); empty
+    // when it is closed or nothing was written.
+    QString resultText() const;
 
 signals:
     // After an export that ran (the files written, or the error), e.g. one that waited for a plan.
@@ -51,7 +55,10 @@ private:
     void onPlanStateChanged();
     void refreshBanner();
     void rebuildRouteBoxes();
-    void report(const QStringList& written, const QString& error, const QStringList& notes);
+    void report(const QStringList& written, const QString& error, const QStringList& notes,
+                const QStringList& warnings);
+    void showWritten(const QStringList& written, const QStringList& notes,
+                     const QStringList& warnings);
 
     MissionDocument* m_doc;
     PlanController* m_planner;
@@ -72,6 +79,7 @@ private:
     QComboBox* m_trigger;
     QDoubleSpinBox* m_homeElevation;
     QPlainTextEdit* m_report;
+    QPointer<QDialog> m_result;
 };
 
 } // namespace pf::ui

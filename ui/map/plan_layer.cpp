@@ -2,6 +2,8 @@
 
 #include "core/geo/local_frame.h"
 #include "core/mission/aircraft_naming.h"
+#include "core/mission/route_check.h"
+#include "core/route/route_sorties.h"
 #include "core/sensor/footprint.h"
 #include "ui/geo_adapter.h"
 #include "ui/mission_document.h"
@@ -373,12 +375,14 @@ void PlanLayer::rebuildRoutes() {
             d.photo << (w.kind == route::WaypointKind::Photo);
             d.transit << (w.kind == route::WaypointKind::Transit);
         }
-        // Sorties of the plan, while the route is as planned (an edit may shift the indices).
-        if (plan && !pr.edited)
-            for (const auto& ap : plan->aircraft)
-                if (ap.aircraft == pr.route.aircraft && ap.sorties.size() > 1)
-                    for (const auto& s : ap.sorties)
-                        d.sortieStarts << s.firstWaypoint;
+        // Sorties as the files and uploads cut them (edited routes too): at the waypoint at home.
+        {
+            const auto sorties =
+                route::sortieRanges(pr.route, mission::routeLimits(m, pr.route).home);
+            if (sorties.size() > 1)
+                for (const auto& s : sorties)
+                    d.sortieStarts << int(s.first);
+        }
         RouteIssues issues = validateRoute(m, pr.route);
         const QString who = QString::fromStdString(pr.route.aircraft);
         if (!issues.fromHome.isEmpty())

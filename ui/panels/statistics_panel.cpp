@@ -58,6 +58,22 @@ QTableWidget* makeTable(const QStringList& headers) {
     return t;
 }
 
+// One line below the comparison for a planner shown as the yardstick only (the tooltip of its
+// button says more).
+QString yardstickNote(mission::PlannerKind kind, const std::vector<PlannerComparisonRow>& rows,
+                      bool outdated) {
+    for (const auto& row : rows)
+        if (!outdated && row.planner == kind && row.ok && !row.zonesCrossed.isEmpty())
+            return StatisticsPanel::tr(
+                       "%1 is the yardstick here: its routes cross %2, so it is not offered as "
+                       "this mission's planner.")
+                .arg(plannerName(kind), row.zonesCrossed.join(QStringLiteral(", ")));
+    return StatisticsPanel::tr(
+               "%1 is the yardstick here: it flies straight over no-fly zones (compare to "
+               "see which it crosses).")
+        .arg(plannerName(kind));
+}
+
 QLabel* banner() {
     auto* l = new QLabel;
     l->setWordWrap(true);
@@ -133,6 +149,12 @@ StatisticsPanel::StatisticsPanel(MissionDocument* doc, PlanController* planner, 
     cl->addLayout(row);
     cl->addWidget(meaning);
     cl->addWidget(m_compare, 1);
+    m_compareNote = new QLabel;
+    m_compareNote->setObjectName(QStringLiteral("CompareNote"));
+    m_compareNote->setWordWrap(true);
+    m_compareNote->setStyleSheet(QStringLiteral("QLabel { color: #6b3a00; }"));
+    m_compareNote->hide();
+    cl->addWidget(m_compareNote);
     m_pages = new QTabWidget;
     m_pages->setObjectName(QStringLiteral("StatisticsPages"));
     m_pages->setDocumentMode(true);
@@ -330,12 +352,19 @@ QPushButton* StatisticsPanel::useButton(mission::PlannerKind kind) const {
     return nullptr;
 }
 
-void StatisticsPanel::usePlanner(mission::PlannerKind kind) {
+bool StatisticsPanel::usePlanner(mission::PlannerKind kind) {
     auto o = m_doc->mission().options;
     if (o.planner == kind)
-        return;
+        return true;
+    if (!m_planner->plannerRefusal(kind).isEmpty())
+        return false;
     o.planner = kind;
     m_doc->undoStack()->push(new SetPlannerOptionsCommand(m_doc, o, tr("Planner %1").arg(plannerName(kind))));
+    return true;
+}
+
+QString StatisticsPanel::compareNote() const {
+    return m_compareNote->isHidden() ? QString() : m_compareNote->text();
 }
 
 void StatisticsPanel::refreshComparison() {
@@ -366,6 +395,7 @@ void StatisticsPanel::refreshComparison() {
         return 0;
     };
     const auto current = m_doc->mission().options.planner;
+    QStringList refused;
     for (int r = 0; r < int(kinds.size()); ++r) {
         const auto& info = kinds[std::size_t(r)];
         auto* name = cell(plannerName(info.kind), Qt::AlignLeft | Qt::AlignVCenter);
@@ -380,9 +410,16 @@ void StatisticsPanel::refreshComparison() {
             m_compare->setCellWidget(r, CUse, use);
         }
         const bool inUse = info.kind == current;
-        use->setText(inUse ? tr("In use") : tr("Use"));
-        use->setEnabled(!inUse);
-        use->setToolTip(inUse ? tr("The mission's planner") : tr("Plan the mission with %1").arg(plannerName(info.kind)));
+        // A planner flying over the mission's no-fly zones stays visible as the yardstick only.
+        const QString refusal = inUse ? QString() : m_planner->plannerRefusal(info.kind);
+        if (!refusal.isEmpty())
+            refused << yardstickNote(info.kind, rows, m_planner->isComparisonOutdated());
+        use->setText(inUse ? tr("In use") : refusal.isEmpty() ? tr("Use") : tr("Yardstick"));
+        use->setEnabled(!inUse && refusal.isEmpty());
+        use->setToolTip(inUse ? tr("The mission's planner")
+                        : refusal.isEmpty()
+                            ? tr("Plan the mission with %1").arg(plannerName(info.kind))
+                            : QStringLiteral("<p>%1</p>").arg(refusal.toHtmlEscaped())); // wrapped
         const PlannerComparisonRow* row = nullptr;
         for (const auto& x : rows)
             if (x.planner == info.kind)
@@ -424,6 +461,8 @@ void StatisticsPanel::refreshComparison() {
             m_compare->setItem(r, c, item);
         }
     }
+    m_compareNote->setText(refused.join(QLatin1Char('\n')));
+    m_compareNote->setHidden(refused.isEmpty());
 }
 
 } // namespace pf::ui

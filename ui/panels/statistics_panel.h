@@ -30,8 +30,11 @@ public:
     QTabWidget* pages() const { return m_pages; }
     // The comparison's "Use" button of a planner kind (nullptr if it has no row).
     QPushButton* useButton(mission::PlannerKind kind) const;
-    // Makes `kind` the mission's planner (one undo step), as the "Use" buttons do.
-    void usePlanner(mission::PlannerKind kind);
+    // Makes `kind` the mission's planner (one undo step), as the "Use" buttons do; false (nothing
+    // changed) for a planner not offered (PlanController::plannerRefusal).
+    bool usePlanner(mission::PlannerKind kind);
+    // Below the comparison: why a planner is shown as the yardstick only; empty when none is.
+    QString compareNote() const;
 
     enum StatColumn { Aircraft, Photos, Km, Time, Turns, Sorties, Cover, PlanMs, StatColumns };
     enum CompareColumn { Planner, CPhotos, CKm, CTime, CTurns, CCover, CNoFly, CPlanMs, CUse, CompareColumns };
@@ -50,6 +53,7 @@ private:
     QTableWidget* m_compare;
     QPushButton* m_compareButton;
     QLabel* m_compareState;
+    QLabel* m_compareNote;
 };
 
 } // namespace pf::ui

@@ -1,5 +1,7 @@
 #include "ui/panels/waypoint_table_model.h"
 
+#include "core/mission/route_check.h"
+#include "core/route/route_sorties.h"
 #include "ui/commands/edit_waypoint_command.h"
 #include "ui/map/plan_layer.h"
 #include "ui/mission_document.h"
@@ -7,6 +9,7 @@
 #include <QBrush>
 #include <QColor>
 
+#include <algorithm>
 #include <cmath>
 
 namespace pf::ui {
@@ -35,7 +38,20 @@ void WaypointTableModel::setRoute(int routeIndex) {
     m_rows = (m_route >= 0 && m_route < int(m_doc->routes().size()))
                  ? int(m_doc->routes()[std::size_t(m_route)].route.waypoints.size())
                  : 0;
+    updateSorties();
     endResetModel();
+}
+
+// The sorties as the files and uploads cut them: at the transit waypoint at home.
+void WaypointTableModel::updateSorties() {
+    m_sortie.clear();
+    m_sorties = 1;
+    if (m_route < 0 || m_route >= int(m_doc->routes().size()))
+        return;
+    const auto& r = m_doc->routes()[std::size_t(m_route)].route;
+    m_sortie = route::sortieOfWaypoints(r, mission::routeLimits(m_doc->mission(), r).home);
+    for (int s : m_sortie)
+        m_sorties = std::max(m_sorties, s + 1);
 }
 
 void WaypointTableModel::refresh() {
@@ -47,6 +63,7 @@ void WaypointTableModel::refresh() {
         setRoute(m_route);
         return;
     }
+    updateSorties();
     if (rows > 0)
         emit dataChanged(index(0, 0), index(rows - 1, ColumnCount - 1));
 }
@@ -75,16 +92,25 @@ QVariant WaypointTableModel::data(const QModelIndex& index, int role) const {
         if (problem.isEmpty() && index.row() < int(is.leg.size()))
             problem = is.leg[std::size_t(index.row())];
     }
+    const int sortie = index.row() < int(m_sortie.size()) ? m_sortie[std::size_t(index.row())] : 0;
     if (role == Qt::BackgroundRole && !problem.isEmpty())
         return QBrush(QColor(255, 205, 205));
     if (role == Qt::ToolTipRole && !problem.isEmpty())
         return problem;
+    if (role == Qt::ToolTipRole && index.column() == Sortie)
+        return sortie < 0
+                   ? tr("Home: the battery is changed here; each sortie is a flight of its own")
+                   : tr("Sortie %1 of %2 (battery %1)").arg(sortie + 1).arg(m_sorties);
+    if (role == Qt::ForegroundRole && index.column() == Sortie && sortie < 0)
+        return QBrush(QColor(120, 120, 120));
     if (role == Qt::TextAlignmentRole && index.column() != Action && index.column() != Problem)
         return int(Qt::AlignRight | Qt::AlignVCenter);
     if (role == Qt::DisplayRole) {
         switch (index.column()) {
         case Number:
             return index.row() + 1;
+        case Sortie:
+            return sortie < 0 ? tr("home") : QString::number(sortie + 1);
         case Latitude:
             return QString::number(w.position.lat, 'f', 7);
         case Longitude:
@@ -122,6 +148,8 @@ QVariant WaypointTableModel::headerData(int section, Qt::Orientation orientation
     switch (section) {
     case Number:
         return tr("#");
+    case Sortie:
+        return tr("Sortie");
     case Latitude:
         return tr("Latitude");
     case Longitude:

@@ -1,8 +1,10 @@
-// WaypointTableModel: one route's waypoints as a table (latitude, longitude, altitude, heading,
-// action, problem); edits go through undo commands.
+// WaypointTableModel: one route's waypoints as a table (sortie, latitude, longitude, altitude,
+// heading, action, problem); edits go through undo commands.
 #pragma once
 
 #include <QAbstractTableModel>
+
+#include <vector>
 
 namespace pf::ui {
 
@@ -12,7 +14,17 @@ class PlanLayer;
 class WaypointTableModel : public QAbstractTableModel {
     Q_OBJECT
 public:
-    enum Column { Number, Latitude, Longitude, Altitude, Heading, Action, Problem, ColumnCount };
+    enum Column {
+        Number,
+        Sortie,
+        Latitude,
+        Longitude,
+        Altitude,
+        Heading,
+        Action,
+        Problem,
+        ColumnCount
+    };
 
     WaypointTableModel(MissionDocument* doc, PlanLayer* layer, QObject* parent = nullptr);
 
@@ -31,10 +43,13 @@ public:
 
 private:
     void refresh();
+    void updateSorties();
     MissionDocument* m_doc;
     PlanLayer* m_layer;
     int m_route = -1;
     int m_rows = 0;
+    std::vector<int> m_sortie; // per row its sortie (0-based), -1 at home between two
+    int m_sorties = 1;
 };
 
 } // namespace pf::ui

@@ -347,15 +347,48 @@ void PlanController::compare() {
             if (r->makespanS > 0)
                 row.totals.estimatedTimeS = r->makespanS;
             double flown = 0;
+            std::vector<bool> entered(m.noFlyZones.size(), false);
             for (const auto& ap : r->aircraft) {
                 flown += ap.flightDistanceM;
-                row.noFlyCrossings += mission::checkRoute(ap.route, mission::routeLimits(m, ap.route)).noFly;
+                const auto check = mission::checkRoute(ap.route, mission::routeLimits(m, ap.route));
+                row.noFlyCrossings += check.noFly;
+                for (std::size_t z : check.zonesEntered)
+                    entered[z] = true;
             }
+            for (std::size_t z = 0; z < entered.size(); ++z)
+                if (entered[z])
+                    row.zonesCrossed << (m.noFlyZones[z].name.empty()
+                                             ? QStringLiteral("no-fly zone %1").arg(z + 1)
+                                             : QString::fromStdString(m.noFlyZones[z].name));
             if (flown > 0)
                 row.totals.pathLengthM = flown; // home to home, as the statistics show it
             return row;
         }));
     }
+}
+
+QString PlanController::plannerRefusal(mission::PlannerKind kind) const {
+    const auto& info = mission::plannerKindInfo(kind);
+    const auto& zones = m_doc->mission().noFlyZones;
+    if (info.avoidsNoFly || zones.empty())
+        return {};
+    const QString name = plannerName(kind);
+    if (!isComparisonOutdated())
+        for (const auto& row : m_comparison)
+            if (row.planner == kind && row.ok) {
+                if (row.zonesCrossed.isEmpty())
+                    return {}; // its routes keep clear of every zone: nothing to fear
+                return tr("%1 flies straight over no-fly zones: its routes cross %2 (%n "
+                          "waypoint(s) or leg(s) in a margin). It is the yardstick the other "
+                          "planners are compared with, not offered as the planner of this mission.",
+                          nullptr, row.noFlyCrossings)
+                    .arg(name, row.zonesCrossed.join(QStringLiteral(", ")));
+            }
+    return tr("%1 flies straight over no-fly zones, and this mission has %n: it is the yardstick "
+              "the other planners are compared with, offered as the mission's planner only where "
+              "Compare planners shows that its routes cross none of them.",
+              nullptr, int(zones.size()))
+        .arg(name);
 }
 
 bool PlanController::waitForIdle(int timeoutMs) {

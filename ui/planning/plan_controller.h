@@ -10,6 +10,7 @@
 #include <QFutureWatcherBase>
 #include <QObject>
 #include <QString>
+#include <QStringList>
 #include <QTimer>
 
 #include <memory>
@@ -29,6 +30,7 @@ struct PlannerComparisonRow {
     double coveragePercent = 0.0;
     double wallMs = 0.0;
     int noFlyCrossings = 0; // waypoints and legs of its routes within a no-fly margin (the route check)
+    QStringList zonesCrossed; // the no-fly zones whose margin its routes enter
 };
 
 // Whether two missions give the same plan: everything planning reads (the name and the path
@@ -90,6 +92,11 @@ public:
     void compare();
     bool isComparing() const { return m_comparing > 0; }
     const std::vector<PlannerComparisonRow>& comparison() const { return m_comparison; }
+    // Why `kind` is not offered as the mission's planner, or empty when it is. A planner that does
+    // not keep out of no-fly zones (the lawnmower) is not, where the mission has zones, unless the
+    // current comparison shows that its routes cross none of them; the reason names those it
+    // crosses.
+    QString plannerRefusal(mission::PlannerKind kind) const;
 
     // Processes events until no plan or comparison runs (tests, screenshots). False on timeout.
     bool waitForIdle(int timeoutMs);

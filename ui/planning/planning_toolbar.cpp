@@ -10,6 +10,7 @@
 #include <QDoubleSpinBox>
 #include <QMessageBox>
 #include <QSettings>
+#include <QStandardItemModel>
 
 namespace pf::ui {
 
@@ -76,6 +77,10 @@ PlanningToolBar::PlanningToolBar(MissionDocument* doc, PlanController* planner, 
         auto o = m_doc->mission().options;
         const auto kind = mission::PlannerKind(m_plannerBox->itemData(i).toInt());
         if (o.planner == kind) return;
+        if (!m_planner->plannerRefusal(kind).isEmpty()) {
+            syncControls(); // not offered: the mission keeps its planner
+            return;
+        }
         o.planner = kind;
         m_doc->undoStack()->push(new SetPlannerOptionsCommand(m_doc, o, tr("Planner %1").arg(plannerName(kind))));
     });
@@ -90,6 +95,9 @@ PlanningToolBar::PlanningToolBar(MissionDocument* doc, PlanController* planner, 
     });
     connect(m_doc, &MissionDocument::optionsChanged, this, &PlanningToolBar::syncControls);
     connect(m_doc, &MissionDocument::missionReset, this, &PlanningToolBar::syncControls);
+    // A planner flying over the no-fly zones is offered only where it crosses none (as in Compare).
+    connect(m_doc, &MissionDocument::changed, this, &PlanningToolBar::syncControls);
+    connect(m_planner, &PlanController::comparisonChanged, this, &PlanningToolBar::syncControls);
 
     addAction(m_plan);
     addAction(m_cancel);
@@ -103,6 +111,16 @@ PlanningToolBar::PlanningToolBar(MissionDocument* doc, PlanController* planner, 
 void PlanningToolBar::syncControls() {
     const auto& o = m_doc->mission().options;
     const QSignalBlocker b1(m_plannerBox), b2(m_angleBox);
+    if (auto* items = qobject_cast<QStandardItemModel*>(m_plannerBox->model()))
+        for (int i = 0; i < m_plannerBox->count(); ++i) {
+            const auto& info = mission::plannerKinds()[std::size_t(i)];
+            const QString refusal =
+                info.kind == o.planner ? QString() : m_planner->plannerRefusal(info.kind);
+            items->item(i)->setEnabled(refusal.isEmpty());
+            items->item(i)->setToolTip(
+                refusal.isEmpty() ? QString::fromLatin1(info.summary)
+                                  : QStringLiteral("<p>%1</p>").arg(refusal.toHtmlEscaped()));
+        }
     m_plannerBox->setCurrentIndex(m_plannerBox->findData(int(o.planner)));
     m_keepInside->setChecked(o.keepInsideArea);
     m_angleBox->setValue(o.gridAngleDeg ? *o.gridAngleDeg : -1.0);

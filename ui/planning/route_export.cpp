@@ -1,6 +1,7 @@
 #include "ui/planning/route_export.h"
 
 #include "core/io/catalog.h"
+#include "core/io/mission_export.h"
 #include "core/mission/route_check.h"
 
 #include <QCoreApplication>
@@ -10,9 +11,27 @@
 
 namespace pf::ui {
 
+mission::Mission withDjiTypes(const mission::Mission& mission) {
+    mission::Mission out = mission;
+    if (auto cat = io::loadDefaultCatalog(); cat)
+        io::addDjiTypesFromCatalog(out, *cat);
+    return out;
+}
+
+std::vector<io::WaypointFormat> defaultExportFormats(const mission::Mission& mission) {
+    const mission::Mission typed = withDjiTypes(mission);
+    const bool allDji =
+        !typed.aircraft.empty() &&
+        std::all_of(typed.aircraft.begin(), typed.aircraft.end(),
+                    [](const mission::AircraftConfig& a) { return a.dji.has_value(); });
+    if (allDji)
+        return {io::WaypointFormat::WpmlKmz, io::WaypointFormat::Kml};
+    return {io::WaypointFormat::QgcPlan, io::WaypointFormat::Kml};
+}
+
 QStringList exportRoutes(const mission::Mission& mission, const std::vector<route::Route>& routes,
                          const ExportRequest& request, QString* error, QStringList* routeProblems,
-                         QStringList* notes) {
+                         QStringList* notes, QStringList* warnings) {
     if (routeProblems)
         routeProblems->clear();
     QStringList written;
@@ -34,11 +53,7 @@ QStringList exportRoutes(const mission::Mission& mission, const std::vector<rout
             "Export", "Nothing to export: no route is planned or chosen."));
     if (request.formats.empty())
         return fail(QCoreApplication::translate("Export", "Choose at least one format."));
-    // A mission file written before the catalog knew DJI drone and payload types: the .kmz needs
-    // them.
-    mission::Mission withTypes = mission;
-    if (auto cat = io::loadDefaultCatalog(); cat)
-        io::addDjiTypesFromCatalog(withTypes, *cat);
+    const mission::Mission withTypes = withDjiTypes(mission);
     io::ExportContext ctx = io::makeExportContext(withTypes, chosen);
     // A file the aircraft cannot fly (a .kmz for an aircraft that is not a DJI Enterprise model,
     // Litchi or MAVLink for one) is listed with the route check's problems and needs the user's
@@ -71,35 +86,29 @@ QStringList exportRoutes(const mission::Mission& mission, const std::vector<rout
     if (request.folder.isEmpty() || (!dir.exists() && !dir.mkpath(QStringLiteral("."))))
         return fail(QCoreApplication::translate("Export", "The folder %1 cannot be created.")
                         .arg(request.folder));
-    // The KML export draws the smoothed path; without it the KML still holds the waypoints.
-    if (std::find(request.formats.begin(), request.formats.end(), io::WaypointFormat::Kml) !=
-        request.formats.end())
-        (void)io::addTrajectories(ctx);
-    for (auto fmt : request.formats) {
-        const auto& info = io::formatInfo(fmt);
-        if (request.perAircraft || !info.combined) {
-            for (std::size_t i = 0; i < ctx.routes.size(); ++i) {
-                const QString path =
-                    dir.filePath(request.stem + QLatin1Char('-') +
-                                 QString::fromStdString(io::routeFileName(ctx, i, fmt)));
-                auto st = io::exportRouteFiles(ctx, i, fmt, path.toStdString(), options);
-                if (!st)
-                    return fail(QString::fromStdString(st.error().message));
-                for (const auto& f : st->files)
-                    written << QString::fromStdString(f);
-                if (notes)
-                    for (const auto& n : st->notes)
-                        *notes << QString::fromStdString(n);
-            }
-        }
-        if (request.combined && info.combined) {
-            const QString path = dir.filePath(request.stem + QString::fromLatin1(info.extension));
-            auto st = io::exportCombined(ctx, fmt, path.toStdString(), options);
-            if (!st)
-                return fail(QString::fromStdString(st.error().message));
-            written << path;
-        }
-    }
+    // The same files as `photoflight-cli plan --format` (one vehicle file per sortie).
+    io::MissionExportRequest files;
+    files.formats = request.formats;
+    files.folder = dir.path().toStdString();
+    files.stem = request.stem.toStdString();
+    files.perAircraft = request.perAircraft;
+    files.combined = request.combined;
+    files.options = options;
+    auto report = io::exportMission(withTypes, chosen, files);
+    if (!report)
+        return fail(QString::fromStdString(report.error().message));
+    if (report->files.empty()) // every file asked for was a .kmz left out (its note says why)
+        return fail(QCoreApplication::translate("Export", "Nothing written: %1")
+                        .arg(QString::fromStdString(report->notes.empty() ? std::string()
+                                                                          : report->notes.front())));
+    for (const auto& f : report->files)
+        written << QString::fromStdString(f);
+    if (notes)
+        for (const auto& n : report->notes)
+            *notes << QString::fromStdString(n);
+    if (warnings)
+        for (const auto& w : report->warnings)
+            *warnings << QString::fromStdString(w);
     if (error)
         error->clear();
     return written;

@@ -1,6 +1,7 @@
 #include "ui/vehicle/upload_dialog.h"
 
 #include "core/io/export_context.h"
+#include "core/io/mission_export.h"
 #include "core/mavlink/connection_spec.h"
 #include "ui/mission_document.h"
 #include "ui/vehicle/upload_manager.h"
@@ -40,6 +41,23 @@ QWidget* centred(QWidget* w) {
     return box;
 }
 
+// The row's battery choice: one item per sortie ("2 of 5"); disabled for a single flight.
+QComboBox* sortieBox(const QString& aircraft, int sorties, int row) {
+    auto* box = new QComboBox;
+    box->setObjectName(QStringLiteral("UploadSortie_%1").arg(row));
+    for (int k = 1; k <= sorties; ++k)
+        box->addItem(sorties == 1 ? UploadDialog::tr("one flight")
+                                  : UploadDialog::tr("%1 of %2").arg(k).arg(sorties));
+    box->setEnabled(sorties > 1);
+    box->setToolTip(sorties == 1
+                        ? UploadDialog::tr("%1 flies the whole plan on one battery").arg(aircraft)
+                        : UploadDialog::tr("%1 needs %2 batteries: each upload sends one battery's "
+                                           "flight, from home back home")
+                              .arg(aircraft)
+                              .arg(sorties));
+    return box;
+}
+
 QString settingsKey(const QString& what, const QString& aircraft) {
     QString a = aircraft;
     a.replace(QLatin1Char('/'), QLatin1Char('_'));
@@ -48,28 +66,36 @@ QString settingsKey(const QString& what, const QString& aircraft) {
 
 } // namespace
 
-UploadDialog::UploadDialog(MissionDocument* doc, QWidget* parent)
-    : QDialog(parent), m_doc(doc), m_manager(new UploadManager(this)) {
+UploadDialog::UploadDialog(MissionDocument* doc, QWidget* parent, std::map<QString, int>* sent)
+    : QDialog(parent), m_doc(doc), m_manager(new UploadManager(this)), m_sent(sent) {
     setWindowTitle(tr("Connect and Upload"));
     setObjectName(QStringLiteral("UploadDialog"));
     auto* intro = new QLabel(
-        tr("Each aircraft's mission goes to its vehicle: the waypoints as exported, the no-fly zones as "
-           "geofence and the rally point. It is then read back and compared item by item. "
-           "Connections: udp:HOST:PORT (Photoflight sends first), udp::PORT (listen, e.g. 14550), "
-           "tcp:HOST:PORT, serial:DEVICE:BAUD. System id 0 takes the first vehicle heard."));
+        tr("Each aircraft's mission goes to its vehicle: the waypoints as exported, the no-fly "
+           "zones as geofence and the rally point. It is then read back and compared item by item. "
+           "A mission is one battery's flight: for an aircraft that needs several, choose the "
+           "battery and upload the next one when it has landed. Connections: udp:HOST:PORT "
+           "(Photoflight sends first), udp::PORT (listen, e.g. 14550), tcp:HOST:PORT, "
+           "serial:DEVICE:BAUD. System id 0 takes the first vehicle heard."));
     intro->setWordWrap(true);
 
-    m_table = new QTableWidget(0, 5);
+    m_table = new QTableWidget(0, 6);
     m_table->setObjectName(QStringLiteral("UploadTable"));
-    m_table->setHorizontalHeaderLabels(
-        {tr("Aircraft"), tr("Connection"), tr("System id"), tr("Progress"), tr("Vehicle's answer")});
+    m_table->setHorizontalHeaderLabels({tr("Aircraft"), tr("Battery"), tr("Connection"),
+                                        tr("System id"), tr("Progress"), tr("Vehicle's answer")});
+    m_table->horizontalHeaderItem(1)->setToolTip(
+        tr("The battery (sortie) whose flight is sent: each flies from home back home"));
     m_table->verticalHeader()->hide();
-    m_table->horizontalHeader()->setSectionResizeMode(4, QHeaderView::Stretch);
+    m_table->horizontalHeader()->setSectionResizeMode(5, QHeaderView::Stretch);
     m_table->setSelectionMode(QAbstractItemView::NoSelection);
     QStringList ports;
     for (const auto& p : QSerialPortInfo::availablePorts())
         ports << QStringLiteral("serial:%1:57600").arg(p.systemLocation());
     QSettings settings;
+    std::vector<route::Route> routes;
+    for (const auto& r : doc->routes())
+        routes.push_back(r.route);
+    const io::ExportContext ctx = io::makeExportContext(doc->mission(), routes);
     int row = 0;
     for (const auto& r : doc->routes()) {
         const QString name = QString::fromStdString(r.route.aircraft);
@@ -77,6 +103,12 @@ UploadDialog::UploadDialog(MissionDocument* doc, QWidget* parent)
         Row w;
         w.use = new QCheckBox(name);
         w.use->setChecked(!r.route.waypoints.empty());
+        // The battery: by default the one after the last verified upload, else the first.
+        const int sorties =
+            r.route.waypoints.empty() ? 1 : int(io::sortieCount(ctx, std::size_t(row)));
+        w.sortie = sortieBox(name, sorties, row);
+        if (m_sent && m_sent->count(name) && m_sent->at(name) < sorties)
+            w.sortie->setCurrentIndex(m_sent->at(name));
         w.connection = new QComboBox;
         w.connection->setEditable(true);
         w.connection->addItem(settings.value(settingsKey(QStringLiteral("connection"), name),
@@ -98,10 +130,11 @@ UploadDialog::UploadDialog(MissionDocument* doc, QWidget* parent)
         w.answer->setWordWrap(true);
         w.answer->setTextInteractionFlags(Qt::TextSelectableByMouse);
         m_table->setCellWidget(row, 0, centred(w.use));
-        m_table->setCellWidget(row, 1, centred(w.connection));
-        m_table->setCellWidget(row, 2, centred(w.systemId));
-        m_table->setCellWidget(row, 3, centred(w.progress));
-        m_table->setCellWidget(row, 4, w.answer);
+        m_table->setCellWidget(row, 1, centred(w.sortie));
+        m_table->setCellWidget(row, 2, centred(w.connection));
+        m_table->setCellWidget(row, 3, centred(w.systemId));
+        m_table->setCellWidget(row, 4, centred(w.progress));
+        m_table->setCellWidget(row, 5, w.answer);
         m_table->setRowHeight(row, kRowHeight);
         m_rows.push_back(w);
         ++row;
@@ -111,10 +144,11 @@ UploadDialog::UploadDialog(MissionDocument* doc, QWidget* parent)
                               kRowHeight * std::min(row, 6));
     m_table->resizeColumnsToContents();
     m_table->setColumnWidth(0, std::max(m_table->columnWidth(0), 150));
-    m_table->setColumnWidth(1, 230);
-    m_table->setColumnWidth(2, 80);
-    m_table->setColumnWidth(3, 130);
-    m_table->horizontalHeader()->setSectionResizeMode(4, QHeaderView::Stretch);
+    m_table->setColumnWidth(1, 115);
+    m_table->setColumnWidth(2, 230);
+    m_table->setColumnWidth(3, 80);
+    m_table->setColumnWidth(4, 130);
+    m_table->horizontalHeader()->setSectionResizeMode(5, QHeaderView::Stretch);
 
     m_gimbal = new QComboBox;
     m_gimbal->addItem(tr("Straight down: DO_MOUNT_CONTROL"), int(io::GimbalCommand::MountControl));
@@ -155,13 +189,28 @@ UploadDialog::UploadDialog(MissionDocument* doc, QWidget* parent)
     connect(m_manager, &UploadManager::jobProgress, this, &UploadDialog::refreshRow);
     connect(m_manager, &UploadManager::jobVehicle, this, &UploadDialog::refreshRow);
     connect(m_manager, &UploadManager::jobFinished, this, &UploadDialog::refreshRow);
+    connect(m_manager, &UploadManager::jobFinished, this, [this](int job, bool ok) {
+        // Verified on the vehicle: the next battery is offered for the next upload.
+        const std::size_t row = std::size_t(m_jobRow[std::size_t(job)]);
+        Row& r = m_rows[row];
+        if (!ok)
+            return;
+        if (m_sent && row < m_doc->routes().size())
+            (*m_sent)[QString::fromStdString(m_doc->routes()[row].route.aircraft)] =
+                r.sortie->currentIndex() + 1;
+        if (r.sortie->currentIndex() + 1 < r.sortie->count())
+            r.sortie->setCurrentIndex(r.sortie->currentIndex() + 1);
+    });
     connect(m_manager, &UploadManager::allFinished, this, [this](int ok, int failed) {
         m_upload->setEnabled(true);
         m_cancel->setEnabled(false);
-        m_status->setText(failed == 0 ? tr("%n vehicle(s) uploaded and verified.", nullptr, ok)
-                                      : tr("%1 uploaded, %2 failed: see the vehicle's answer.")
-                                            .arg(ok)
-                                            .arg(failed));
+        const QString done =
+            failed == 0
+                ? tr("%n vehicle(s) uploaded and verified.", nullptr, ok)
+                : tr("%1 uploaded, %2 failed: see the vehicle's answer.").arg(ok).arg(failed);
+        m_status->setText(m_warnings.isEmpty()
+                              ? done
+                              : done + QLatin1Char('\n') + m_warnings.join(QLatin1Char('\n')));
         emit uploadsFinished(ok, failed);
     });
 
@@ -178,6 +227,18 @@ void UploadDialog::setConnection(int row, const QString& connection, int systemI
     auto& r = m_rows.at(std::size_t(row));
     r.connection->setCurrentText(connection);
     r.systemId->setValue(systemId);
+}
+
+void UploadDialog::setSortie(int row, int sortie) {
+    m_rows.at(std::size_t(row)).sortie->setCurrentIndex(sortie);
+}
+
+int UploadDialog::sortie(int row) const {
+    return m_rows.at(std::size_t(row)).sortie->currentIndex();
+}
+
+int UploadDialog::sortieCount(int row) const {
+    return m_rows.at(std::size_t(row)).sortie->count();
 }
 
 io::ExportOptions UploadDialog::exportOptions() const {
@@ -213,6 +274,7 @@ bool UploadDialog::startUpload() {
     const io::ExportOptions options = exportOptions();
     std::vector<UploadJob> jobs;
     m_jobRow.clear();
+    m_warnings.clear();
     for (std::size_t i = 0; i < m_rows.size(); ++i) {
         auto& r = m_rows[i];
         if (!r.use->isChecked())
@@ -222,7 +284,14 @@ bool UploadDialog::startUpload() {
             m_status->setText(tr("%1: %2").arg(r.use->text(), QString::fromStdString(spec.error().message)));
             return false;
         }
-        auto job = makeUploadJob(ctx, i, *spec, r.systemId->value(), options);
+        // One battery's flight; the read-back compares that flight.
+        const io::ExportContext flight =
+            io::sortieFlight(ctx, i, std::size_t(std::max(0, r.sortie->currentIndex())));
+        // The vehicle's firmware is known only once it answers: the smaller of the autopilots'
+        // limits.
+        if (auto w = io::flightItemWarning(flight, 0, options, std::nullopt); !w.empty())
+            m_warnings << QStringLiteral("⚠ ") + QString::fromStdString(w);
+        auto job = makeUploadJob(flight, 0, *spec, r.systemId->value(), options);
         if (!job) {
             m_status->setText(QString::fromStdString(job.error().message));
             return false;
@@ -246,7 +315,10 @@ bool UploadDialog::startUpload() {
     }
     m_upload->setEnabled(false);
     m_cancel->setEnabled(true);
-    m_status->setText(tr("Uploading to %n vehicle(s)…", nullptr, int(m_jobRow.size())));
+    const QString sending = tr("Uploading to %n vehicle(s)…", nullptr, int(m_jobRow.size()));
+    m_status->setText(m_warnings.isEmpty()
+                          ? sending
+                          : sending + QLatin1Char('\n') + m_warnings.join(QLatin1Char('\n')));
     for (std::size_t j = 0; j < m_jobRow.size(); ++j)
         refreshRow(int(j));
     return true;

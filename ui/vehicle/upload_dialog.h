@@ -1,12 +1,13 @@
-// UploadDialog (Ground station > Connect and Upload): per aircraft a connection and a system id,
-// the export options that shape the mission, then parallel uploads with each vehicle's progress,
-// identity and answer.
+// UploadDialog (Ground station > Connect and Upload): per aircraft a connection, a system id and
+// the battery whose flight is sent (a mission is one sortie), the export options that shape the
+// mission, then parallel uploads with each vehicle's progress, identity and answer.
 #pragma once
 
 #include "core/io/export_context.h"
 
 #include <QDialog>
 
+#include <map>
 #include <vector>
 
 class QCheckBox;
@@ -25,10 +26,17 @@ class UploadManager;
 class UploadDialog : public QDialog {
     Q_OBJECT
 public:
-    explicit UploadDialog(MissionDocument* doc, QWidget* parent = nullptr);
+    // `sent` (optional, kept by the caller across dialogs) holds per aircraft the last sortie
+    // uploaded and verified (1-based): the next one is offered first.
+    explicit UploadDialog(MissionDocument* doc, QWidget* parent = nullptr,
+                          std::map<QString, int>* sent = nullptr);
 
     // The row of an aircraft's route, for tests and scripted use.
     void setConnection(int row, const QString& connection, int systemId);
+    // The battery whose flight the row sends (0-based), and how many the aircraft needs.
+    void setSortie(int row, int sortie);
+    int sortie(int row) const;
+    int sortieCount(int row) const;
     // Starts the uploads of the ticked rows; false (and the reason shown) when nothing can start.
     bool startUpload();
     io::ExportOptions exportOptions() const;
@@ -41,6 +49,7 @@ signals:
 private:
     struct Row {
         QCheckBox* use;
+        QComboBox* sortie; // one item per battery
         QComboBox* connection;
         QSpinBox* systemId;
         QProgressBar* progress;
@@ -54,6 +63,8 @@ private:
     QTableWidget* m_table;
     std::vector<Row> m_rows;
     std::vector<int> m_jobRow; // job index -> table row
+    std::map<QString, int>* m_sent;
+    QStringList m_warnings; // flights over an autopilot's item limit, shown with the status
     QComboBox* m_gimbal;
     QComboBox* m_trigger;
     QComboBox* m_end;

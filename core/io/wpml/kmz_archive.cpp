@@ -4,11 +4,13 @@
 #include <cpl_error.h>
 #include <cpl_string.h>
 #include <cpl_vsi.h>
+#include <minizip/zip.h>
 
 #include <cerrno>
 #include <climits>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <memory>
 
 namespace pf::io::wpml {
@@ -26,42 +28,56 @@ public:
     QuietErrors& operator=(const QuietErrors&) = delete;
 };
 
-std::string gdalMessage() {
-    const char* m = CPLGetLastErrorMsg();
-    return m && *m ? std::string(": ") + m : std::string();
-}
-
 // GDAL's name of a file inside a ZIP archive; the braces let the archive's path hold any character.
 std::string vsiPath(const std::string& archive, const std::string& inside = {}) {
     return "/vsizip/{" + archive + "}" + (inside.empty() ? "" : "/" + inside);
 }
 
-Status writeEntries(void* zip, const std::string& path, const std::vector<ArchiveEntry>& entries) {
+// The DOS date and time of an archive entry (local time, as ZIP stores it): the ZIP format cannot
+// say 1979 or earlier.
+zip_fileinfo entryInfo(std::time_t modified) {
+    zip_fileinfo info{};
+    std::tm local{};
+    if (!localtime_r(&modified, &local) || local.tm_year < 80)
+        local = std::tm{0, 0, 0, 1, 0, 80, 0, 0, 0, 0, nullptr}; // 1980-01-01 00:00
+    info.tmz_date.tm_sec = static_cast<uInt>(local.tm_sec);
+    info.tmz_date.tm_min = static_cast<uInt>(local.tm_min);
+    info.tmz_date.tm_hour = static_cast<uInt>(local.tm_hour);
+    info.tmz_date.tm_mday = static_cast<uInt>(local.tm_mday);
+    info.tmz_date.tm_mon = static_cast<uInt>(local.tm_mon);
+    info.tmz_date.tm_year = static_cast<uInt>(local.tm_year + 1900);
+    return info;
+}
+
+Status writeEntries(zipFile zip, const std::string& path, const std::vector<ArchiveEntry>& entries,
+                    std::time_t modified) {
+    const zip_fileinfo info = entryInfo(modified);
     for (const auto& e : entries) {
-        if (e.data.size() > static_cast<std::size_t>(INT_MAX))
+        if (e.data.size() > static_cast<std::size_t>(UINT_MAX))
             return makeError(ErrorCode::IoError,
                              "cannot write " + path + ": " + e.name + " is too large");
-        if (CPLCreateFileInZip(zip, e.name.c_str(), nullptr) != CE_None ||
-            CPLWriteFileInZip(zip, e.data.data(), static_cast<int>(e.data.size())) != CE_None ||
-            CPLCloseFileInZip(zip) != CE_None)
-            return makeError(ErrorCode::IoError, "cannot write " + path + gdalMessage());
+        if (zipOpenNewFileInZip64(zip, e.name.c_str(), &info, nullptr, 0, nullptr, 0, nullptr,
+                                  Z_DEFLATED, Z_DEFAULT_COMPRESSION, 0) != ZIP_OK ||
+            zipWriteInFileInZip(zip, e.data.data(), static_cast<unsigned>(e.data.size())) !=
+                ZIP_OK ||
+            zipCloseFileInZip(zip) != ZIP_OK)
+            return makeError(ErrorCode::IoError, "cannot write " + path + " (disk full?)");
     }
     return {};
 }
 
 } // namespace
 
-Status writeZipArchive(const std::string& path, const std::vector<ArchiveEntry>& entries) {
+Status writeZipArchive(const std::string& path, const std::vector<ArchiveEntry>& entries,
+                       std::time_t modified) {
     const std::string tmp = path + ".part";
-    std::remove(tmp.c_str()); // CPLCreateZip would append to an archive left by a crash
-    QuietErrors quiet;
-    void* zip = CPLCreateZip(tmp.c_str(), nullptr);
+    zipFile zip = zipOpen64(tmp.c_str(), APPEND_STATUS_CREATE);
     if (!zip)
-        return makeError(ErrorCode::IoError, "cannot write " + path + gdalMessage());
-    Status written = writeEntries(zip, path, entries);
-    if (CPLCloseZip(zip) != CE_None && written)
-        written =
-            makeError(ErrorCode::IoError, "cannot write " + path + " (disk full?)" + gdalMessage());
+        return makeError(ErrorCode::IoError,
+                         "cannot write " + path + ": " + std::strerror(errno));
+    Status written = writeEntries(zip, path, entries, modified);
+    if (zipClose(zip, nullptr) != ZIP_OK && written)
+        written = makeError(ErrorCode::IoError, "cannot write " + path + " (disk full?)");
     if (!written) {
         std::remove(tmp.c_str());
         return written;

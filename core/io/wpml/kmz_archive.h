@@ -1,8 +1,10 @@
-// A KMZ (ZIP) archive written with GDAL's ZIP writer (cpl_minizip) and read through /vsizip/.
+// A KMZ (ZIP) archive written with minizip (Debian's libminizip, zlib's ZIP writer: GDAL 3.6's own
+// writer stores no date) and read through GDAL's /vsizip/.
 #pragma once
 
 #include "core/result.h"
 
+#include <ctime>
 #include <string>
 #include <vector>
 
@@ -14,8 +16,10 @@ struct ArchiveEntry {
 };
 
 // Writes the archive next to `path` and renames it over `path`, so a failed write never leaves half
-// an archive behind. Errors name the file.
-Status writeZipArchive(const std::string& path, const std::vector<ArchiveEntry>& entries);
+// an archive behind. Every entry is dated `modified` (the export time; ZIP keeps local time to two
+// seconds, from 1980 on). Errors name the file.
+Status writeZipArchive(const std::string& path, const std::vector<ArchiveEntry>& entries,
+                       std::time_t modified = std::time(nullptr));
 
 // The names of the files in the archive (folders left out). Errors: the file cannot be read, or it
 // is not a ZIP archive.

@@ -72,3 +72,23 @@ TEST(RouteCheckCli, PlanRefusesRoutesWithErrorsUnlessForced) {
     EXPECT_TRUE(has(forced.output, "photoflight-cli: warning: Test copter, take-off: ")) << forced.output;
     EXPECT_TRUE(std::filesystem::exists(dir + "/out/mission-Test_copter.plan"));
 }
+
+// --planner lawnmower, the yardstick flying straight over the zones, says on stderr which zones its
+// routes cross; its crossings are refused unless forced, as any route's.
+TEST(RouteCheckCli, TheLawnmowerNamesTheZonesItCrosses) {
+    const std::string dir = test::scratchDir("route_check_lawnmower");
+    const std::string demo = std::string(PF_RESOURCES_DIR) + "/demo/demo_mission.json";
+    const auto r = test::run(cli() + " plan '" + demo +
+                             "' --planner lawnmower --format plan --out '" + dir + "'");
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_TRUE(
+        has(r.output,
+            "photoflight-cli: warning: the lawnmower planner flies straight over no-fly zones "
+            "Warehouse and Radio mast: it ignores no-fly zones by design"))
+        << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/mission-Falcon_8.plan"));
+    // The planners that keep out of the zones say nothing of the kind.
+    const auto sweep = test::run(cli() + " plan '" + demo + "' --planner sweep");
+    EXPECT_EQ(sweep.status, 0) << sweep.output;
+    EXPECT_FALSE(has(sweep.output, "flies straight over")) << sweep.output;
+}

@@ -5,6 +5,7 @@
 // file.
 #include "core/geo/geodesic.h"
 #include "core/io/catalog.h"
+#include "core/io/mission_export.h"
 #include "core/io/mission_file.h"
 #include "core/io/trigger_lanes.h"
 #include "core/io/waypoint_formats.h"
@@ -19,8 +20,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 namespace pf::io {
 namespace {
@@ -56,23 +59,19 @@ std::string tempPath(const std::string& name) {
     return testing::TempDir() + name;
 }
 
-// Exports route i, checks the file against the documentation and the plan, reads it back.
-// `lanes`: the route has lanes of equally spaced photos at one height (not over terrain, where each
-// photo has its own height and keeps its waypoint).
-void exportCheckAndReadBack(const ExportContext& ctx, std::size_t i, const std::string& name,
-                            bool lanes = true) {
+// Checks the .kmz at `path`, written for route i of ctx, against the documentation and the route,
+// and reads it back. `notes`: the export's (a note about merged waypoints means the file flies the
+// route with them merged). `lanes`: the route has lanes of equally spaced photos at one height (not
+// over terrain, where each photo has its own height and keeps its waypoint).
+void checkAndReadBack(const ExportContext& ctx, std::size_t i, const std::string& path,
+                      const std::vector<std::string>& notes, bool lanes = true) {
     SCOPED_TRACE(ctx.routeLabel(i));
-    const std::string path = tempPath(name);
-    auto report = exportRouteFiles(ctx, i, WaypointFormat::WpmlKmz, path);
-    ASSERT_TRUE(report.ok()) << report.error().message;
-    ASSERT_EQ(report->files.size(), 1u);
     // What the file must fly: the route, with waypoints closer than the format's minimum merged
     // when the export says it merged them.
     route::Route r = ctx.routes[i];
-    const bool merged =
-        std::any_of(report->notes.begin(), report->notes.end(), [](const std::string& n) {
-            return n.find("merged into it") != std::string::npos;
-        });
+    const bool merged = std::any_of(notes.begin(), notes.end(), [](const std::string& n) {
+        return n.find("merged into it") != std::string::npos;
+    });
     if (merged)
         r.waypoints =
             mergeCloseWaypoints(r.waypoints, formatInfo(WaypointFormat::WpmlKmz).minSpacingM);
@@ -123,6 +122,34 @@ void exportCheckAndReadBack(const ExportContext& ctx, std::size_t i, const std::
     EXPECT_LT(geo::geodesicDistance(*back->home, *ctx.homeFor(i)), 0.01);
 }
 
+// Exports route i on its own and checks it (checkAndReadBack).
+void exportCheckAndReadBack(const ExportContext& ctx, std::size_t i, const std::string& name,
+                            bool lanes = true) {
+    const std::string path = tempPath(name);
+    auto report = exportRouteFiles(ctx, i, WaypointFormat::WpmlKmz, path);
+    ASSERT_TRUE(report.ok()) << report.error().message;
+    ASSERT_EQ(report->files.size(), 1u);
+    checkAndReadBack(ctx, i, path, report->notes, lanes);
+}
+
+// The DOS date and time of the first entry of a ZIP archive (its local file header), as a time.
+std::time_t firstEntryTime(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    unsigned char h[14] = {};
+    in.read(reinterpret_cast<char*>(h), sizeof h);
+    EXPECT_TRUE(in && h[0] == 'P' && h[1] == 'K' && h[2] == 3 && h[3] == 4) << path;
+    const unsigned time = h[10] | (h[11] << 8), date = h[12] | (h[13] << 8);
+    std::tm t{};
+    t.tm_year = static_cast<int>(date >> 9) + 80;
+    t.tm_mon = static_cast<int>((date >> 5) & 15) - 1;
+    t.tm_mday = static_cast<int>(date & 31);
+    t.tm_hour = static_cast<int>(time >> 11);
+    t.tm_min = static_cast<int>((time >> 5) & 63);
+    t.tm_sec = static_cast<int>(time & 31) * 2;
+    t.tm_isdst = -1;
+    return std::mktime(&t);
+}
+
 TEST(WpmlKmz, DemoMissionRoundTrip) {
     const mission::Mission m = withAircraft("demo_mission.json", {{"DJI Matrice 30T", 60.0}});
     auto plan = mission::planMission(m);
@@ -142,6 +169,59 @@ TEST(WpmlKmz, FleetMissionEachAircraftItsOwnFile) {
     const ExportContext ctx = makeExportContext(m, routes);
     for (std::size_t i = 0; i < routes.size(); ++i)
         exportCheckAndReadBack(ctx, i, "pf_wpml_fleet_" + std::to_string(i) + ".kmz");
+}
+
+// A fleet needing several batteries each: exportMission (the CLI's and the GUI's export) writes one
+// .kmz per sortie, none flying them all, each one flight from home back home, equal to its sortie
+// as the plan cut it; the archive's entries carry the export time.
+TEST(WpmlKmz, OneFilePerSortieEachFlyingItsSortie) {
+    mission::Mission m = withAircraft(
+        "demo_mission.json", {{"DJI Matrice 30T", 60.0}, {"DJI Mavic 3 Enterprise", 45.0}});
+    for (auto& a : m.aircraft)
+        a.enduranceMin = 6.0; // short batteries: several sorties each
+    auto plan = mission::planMission(m);
+    ASSERT_TRUE(plan.ok()) << plan.error().message;
+    std::vector<route::Route> routes;
+    for (const auto& a : plan->aircraft) {
+        ASSERT_GE(a.sortieRoutes.size(), 2u) << a.aircraft;
+        routes.push_back(a.route);
+    }
+    const std::string dir = tempPath("pf_wpml_sorties");
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    MissionExportRequest request;
+    request.formats = {WaypointFormat::WpmlKmz};
+    request.folder = dir;
+    const std::time_t before = std::time(nullptr);
+    auto report = exportMission(m, routes, request);
+    const std::time_t after = std::time(nullptr);
+    ASSERT_TRUE(report.ok()) << report.error().message;
+    EXPECT_TRUE(report->warnings.empty());
+    std::set<std::string> expected;
+    for (std::size_t i = 0; i < plan->aircraft.size(); ++i) {
+        const auto& a = plan->aircraft[i];
+        const ExportContext sorties = makeExportContext(m, a.sortieRoutes);
+        const std::size_t n = a.sortieRoutes.size();
+        const std::string note = a.aircraft + " needs " + std::to_string(n) + " batteries";
+        EXPECT_TRUE(std::any_of(report->notes.begin(), report->notes.end(),
+                                [&](const std::string& t) { return t.find(note) == 0; }))
+            << note;
+        for (std::size_t k = 0; k < n; ++k) {
+            const std::string name =
+                "mission-" + fileNameSafe(a.aircraft) + "-sortie" + std::to_string(k + 1) + ".kmz";
+            expected.insert(name);
+            const std::string path = dir + "/" + name;
+            ASSERT_TRUE(std::filesystem::exists(path)) << name;
+            checkAndReadBack(sorties, k, path, report->notes);
+            const std::time_t dated = firstEntryTime(path);
+            EXPECT_GE(dated, before - 2) << name; // ZIP keeps times to two seconds
+            EXPECT_LE(dated, after + 2) << name;
+        }
+    }
+    std::set<std::string> onDisk;
+    for (const auto& e : std::filesystem::directory_iterator(dir))
+        onDisk.insert(e.path().filename().string());
+    EXPECT_EQ(onDisk, expected); // no file flying every sortie, no leftover .part
 }
 
 TEST(WpmlKmz, TerrainMissionFliesEllipsoidalHeightsOfTheEgm96Plan) {
@@ -234,6 +314,23 @@ TEST(WpmlKmz, AircraftThatCannotFlyTheFormatIsRefusedUnlessForced) {
     EXPECT_TRUE(std::filesystem::exists(csv));
     ASSERT_FALSE(c->notes.empty());
     EXPECT_NE(c->notes[0].find("written anyway"), std::string::npos);
+
+    // The mission's export: refused unless forced; forced, the M30T's .kmz is written and the
+    // Falcon's left out with one note.
+    const std::string dir = tempPath("pf_wpml_forced");
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    MissionExportRequest request;
+    request.formats = {WaypointFormat::WpmlKmz};
+    request.folder = dir;
+    EXPECT_FALSE(exportMission(m, routes, request).ok());
+    request.options = force;
+    auto all = exportMission(m, routes, request);
+    ASSERT_TRUE(all.ok()) << all.error().message;
+    ASSERT_EQ(all->files.size(), 1u);
+    EXPECT_EQ(std::filesystem::path(all->files[0]).filename(), "mission-DJI_Matrice_30T.kmz");
+    ASSERT_EQ(all->notes.size(), 1u);
+    EXPECT_NE(all->notes[0].find("no .kmz written"), std::string::npos);
 }
 
 TEST(WpmlKmz, BadFilesGetAMessageNamingTheProblem) {

@@ -6,7 +6,7 @@
 #include "core/geo/polygon_ops.h"
 #include "core/plan/coverage_check.h"
 #include "core/plan/flight_time.h"
-#include "core/plan/sweep_planner.h"
+#include "core/plan/sweep/sweep_planner.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #include "core/route/photo_waypoints.h"
 #include "core/plan/coverage_check.h"
 
-#include "core/plan/stride_planner.h"
+#include "core/plan/grid/stride_planner.h"
 
 #include <gtest/gtest.h>
 
