@@ -27,6 +27,7 @@
 #include "ui/planning/planning_toolbar.h"
 #include "ui/terrain/terrain_controller.h"
 #include "ui/tools/draw_circle_tool.h"
+#include "ui/tools/draw_corridor_tool.h"
 #include "ui/tools/draw_polygon_tool.h"
 #include "ui/tools/home_tool.h"
 #include "ui/tools/pan_tool.h"
@@ -51,6 +52,7 @@
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -96,6 +98,7 @@ MainWindow::MainWindow(QWidget* parent, bool interactive) : QMainWindow(parent),
     m_tools[ToolId::DrawArea] = new DrawPolygonTool(DrawPolygonTool::Target::Area, m_doc, m_layer, this);
     m_tools[ToolId::DrawNoFly] = new DrawPolygonTool(DrawPolygonTool::Target::NoFlyZone, m_doc, m_layer, this);
     m_tools[ToolId::DrawCircle] = new DrawCircleTool(m_doc, m_layer, this);
+    m_tools[ToolId::DrawCorridor] = new DrawCorridorTool(m_doc, m_layer, this);
     m_tools[ToolId::Home] = new HomeTool(m_doc, m_layer, this);
     m_tools[ToolId::Waypoints] = new WaypointTool(m_doc, m_layer, m_planLayer, this);
     for (auto& [id, tool] : m_tools)
@@ -236,8 +239,9 @@ void MainWindow::buildActions() {
     // Tools
     QMenu* toolsMenu = menuBar()->addMenu(tr("&Tools"));
     auto* toolGroup = new QActionGroup(this);
-    const ToolId order[] = {ToolId::Pan,        ToolId::Select, ToolId::DrawArea, ToolId::DrawNoFly,
-                            ToolId::DrawCircle, ToolId::Home,   ToolId::Waypoints};
+    const ToolId order[] = {ToolId::Pan,       ToolId::Select,     ToolId::DrawArea,
+                            ToolId::DrawNoFly, ToolId::DrawCircle, ToolId::DrawCorridor,
+                            ToolId::Home,      ToolId::Waypoints};
     for (ToolId id : order) {
         AbstractTool* t = m_tools.at(id);
         auto* a = toolsMenu->addAction(t->icon(), t->name());
@@ -351,7 +355,15 @@ void MainWindow::buildActions() {
 void MainWindow::buildDocks() {
     setDockNestingEnabled(true);
     m_aircraft = new AircraftPanel(m_doc, m_catalog);
-    auto* aircraftDock = addDock(tr("Aircraft"), QStringLiteral("AircraftDock"), m_aircraft, Qt::RightDockWidgetArea);
+    // The form grows with a plane's figures: it scrolls rather than stretch the window past the
+    // screen.
+    auto* aircraftScroll = new QScrollArea;
+    aircraftScroll->setWidget(m_aircraft);
+    aircraftScroll->setWidgetResizable(true);
+    aircraftScroll->setFrameShape(QFrame::NoFrame);
+    aircraftScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    auto* aircraftDock = addDock(tr("Aircraft"), QStringLiteral("AircraftDock"), aircraftScroll,
+                                 Qt::RightDockWidgetArea);
     m_missionPanel = new MissionPanel(m_doc, m_layer);
     auto* missionDock = addDock(tr("Mission"), QStringLiteral("MissionDock"), m_missionPanel, Qt::RightDockWidgetArea);
     connect(m_missionPanel, &MissionPanel::shapeActivated, this, [this](const QRectF& r) {
@@ -505,6 +517,7 @@ void MainWindow::buildPlanning() {
     planMenu->addAction(m_planning->autoPlanAction());
     planMenu->addSeparator();
     planMenu->addAction(m_planning->keepInsideAction());
+    planMenu->addAction(m_planning->doubleGridAction());
     planMenu->addAction(icon("compare"), tr("Co&mpare planners"), m_planner, &PlanController::compare);
     planMenu->addSeparator();
     planMenu->addAction(exportAct);

@@ -4,6 +4,7 @@
 #include "core/io/catalog.h"
 #include "core/io/mission_file.h"
 #include "core/mission/aircraft_naming.h"
+#include "core/mission/corridor.h"
 #include "core/mission/planner_kinds.h"
 
 #include <algorithm>
@@ -19,10 +20,17 @@ namespace pf::cli {
 const char* const kMissionOptionsHelp = PF_CLI_MISSION_OPTIONS_HELP;
 
 std::vector<OptionSpec> missionOptionSpecs() {
-    return {{"area"},     {"nofly", true, true}, {"camera"},      {"hfov"},    {"vfov"},
-            {"altitude"}, {"gsd"},               {"overlap"},     {"front"},   {"side"},
-            {"planner"},  {"grid-angle"},        {"home"},        {"aircraft", true, true},
-            {"safety-margin"}, {"max-cells"}, {"dem"}, {"terrain"}, {"min-clearance"}};
+    return {{"area"},          {"nofly", true, true},
+            {"camera"},        {"hfov"},
+            {"vfov"},          {"altitude"},
+            {"gsd"},           {"overlap"},
+            {"front"},         {"side"},
+            {"planner"},       {"grid-angle"},
+            {"home"},          {"aircraft", true, true},
+            {"safety-margin"}, {"max-cells"},
+            {"dem"},           {"terrain"},
+            {"min-clearance"}, {"corridor"},
+            {"width"},         {"double-grid", false}};
 }
 
 namespace {
@@ -300,6 +308,8 @@ Status applyMissionFlags(const Args& args, MissionInput& in) {
             m.options.gridAngleDeg = **v;
         }
     }
+    if (args.has("double-grid"))
+        m.options.doubleGrid = true;
     if (auto h = args.value("home")) {
         auto p = parseLonLat(*h, "--home");
         if (!p)
@@ -353,6 +363,53 @@ Status applyMissionFlags(const Args& args, MissionInput& in) {
     return {};
 }
 
+namespace {
+
+// --corridor FILE (its one line) and --width M: the mission becomes a survey of that corridor (a
+// mission file's corridor gets a new line or width).
+Status corridorFromArgs(const Args& args, MissionInput& in) {
+    mission::Mission& m = in.mission;
+    const auto file = args.value("corridor");
+    auto width = numberIn(args, "width", 0, true, mission::kMaxCorridorWidthM, false,
+                          "greater than 0 and at most " + num(mission::kMaxCorridorWidthM) + " m");
+    if (!width)
+        return width.error();
+    if (!file && !width->has_value())
+        return {};
+    if (!file && !m.corridor)
+        return flagError("width",
+                         "is the width of a corridor: give its centre line with --corridor FILE");
+    mission::Corridor c = m.corridor.value_or(mission::Corridor{});
+    if (file) {
+        auto lines = io::importLines(*file);
+        if (!lines)
+            return makeError(lines.error().code, "--corridor: " + lines.error().message);
+        if (lines->size() != 1) {
+            std::string names;
+            for (std::size_t i = 0; i < lines->size() && i < 5; ++i)
+                names += std::string(i ? ", " : "") + "'" + (*lines)[i].name + "'";
+            return flagError(
+                "corridor",
+                *file + " holds " + std::to_string(lines->size()) + " lines (" + names +
+                    (lines->size() > 5 ? ", ..." : "") +
+                    "), but a corridor follows one: keep only its centre line in the file");
+        }
+        c.line = lines->front().line;
+        if (in.source.empty()) {
+            in.source = *file;
+            m.name = stem(*file);
+        }
+    }
+    if (width->has_value())
+        c.widthM = **width;
+    else if (!m.corridor)
+        return flagError("corridor", "needs the corridor's full width: give --width M");
+    mission::applyCorridor(m, std::move(c));
+    return {};
+}
+
+} // namespace
+
 Result<MissionInput> missionFromArgs(const Args& args, std::size_t positional) {
     MissionInput in;
     mission::Mission& m = in.mission;
@@ -390,8 +447,11 @@ Result<MissionInput> missionFromArgs(const Args& args, std::size_t positional) {
             m.name = stem(*a);
         }
     }
+    if (auto st = corridorFromArgs(args, in); !st)
+        return st.error();
     if (in.source.empty())
-        return makeError(ErrorCode::InvalidInput, "no mission or area file given (see --help)");
+        return makeError(ErrorCode::InvalidInput,
+                         "no mission or area file given (nor --corridor: see --help)");
     for (const auto& f : args.values("nofly")) {
         auto polys = polygonsOf(f, "nofly");
         if (!polys)

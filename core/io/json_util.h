@@ -23,4 +23,9 @@ CPLJSONObject cameraToJson(const sensor::Camera& c);
 // "dji_drone_enum" and "dji_drone_sub_enum" of an aircraft (catalog and mission file), when known.
 void addDjiDroneType(CPLJSONObject& o, const std::optional<fleet::DjiDroneType>& dji);
 
+// A plane's figures as the mission file and the catalog store them ("plane": {"turn_radius_m",
+// "bank_deg", "climb_rate_mps", "sink_rate_mps", "run_in_m", "stall_speed_mps"}); the optional
+// values only when set.
+CPLJSONObject planeToJson(const fleet::PlanePerformance& p);
+
 } // namespace pf::io::detail

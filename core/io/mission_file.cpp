@@ -103,6 +103,8 @@ std::optional<std::string> firstNonFinite(const mission::Mission& m) {
     };
     if (polyBad(m.area))
         return std::string("area");
+    if (m.corridor && (ringBad(m.corridor->line) || bad(m.corridor->widthM)))
+        return std::string("corridor");
     for (std::size_t i = 0; i < m.noFlyZones.size(); ++i)
         if (polyBad(m.noFlyZones[i].polygon))
             return "no_fly_zones[" + std::to_string(i) + "].polygon";
@@ -125,6 +127,17 @@ std::optional<std::string> firstNonFinite(const mission::Mission& m) {
             {"max_altitude_m", a.maxAltitudeM},          {"home[0]", a.home ? a.home->lon : 0.0},
             {"home[1]", a.home ? a.home->lat : 0.0}};
         for (const auto& [name, v] : fields)
+            if (bad(v))
+                return p + "." + name;
+        const auto& pl = a.plane;
+        const std::pair<const char*, double> plane[] = {
+            {"plane.turn_radius_m", pl.minTurnRadiusM.value_or(0.0)},
+            {"plane.bank_deg", pl.maxBankDeg.value_or(0.0)},
+            {"plane.climb_rate_mps", pl.climbRateMps},
+            {"plane.sink_rate_mps", pl.sinkRateMps},
+            {"plane.run_in_m", pl.runInM},
+            {"plane.stall_speed_mps", pl.stallSpeedMps.value_or(0.0)}};
+        for (const auto& [name, v] : plane)
             if (bad(v))
                 return p + "." + name;
     }
@@ -175,6 +188,13 @@ std::optional<std::string> firstUnreadableRoute(const mission::Mission& m) {
     return std::nullopt;
 }
 
+// Whether an aircraft needs its "kind" and "plane" (version 5): a plane, or a multirotor keeping
+// plane figures the user set before changing its kind (so that the file gives back exactly what it
+// saved).
+bool writesPlane(const mission::AircraftConfig& a) {
+    return a.kind != fleet::AircraftKind::Multirotor || a.plane != fleet::PlanePerformance{};
+}
+
 // The oldest file version that holds everything in `m`, so that older releases (which refuse
 // unknown fields) keep opening files that use nothing newer.
 // Each feature raises the version to the one that introduced it; the file gets the highest.
@@ -189,9 +209,14 @@ int requiredVersion(const mission::Mission& m) {
         v = std::max(v, 3);
     if (!m.terrain.isDefault())
         v = std::max(v, 4);
-    for (const auto& a : m.aircraft)
-        if (a.dji || a.camera.djiPayloadEnum)
+    for (const auto& a : m.aircraft) {
+        if (writesPlane(a))
             v = std::max(v, 5);
+        if (a.dji || a.camera.djiPayloadEnum)
+            v = std::max(v, 6);
+    }
+    if (m.corridor || m.options.doubleGrid)
+        v = std::max(v, 5);
     for (const auto& r : m.editedRoutes) {
         if (r.homeElevationM)
             v = std::max(v, 4);
@@ -210,7 +235,19 @@ std::string missionToJson(const mission::Mission& m) {
     root.Add("format", kMissionFormatName);
     root.Add("version", requiredVersion(m));
     root.Add("name", m.name);
-    root.Add("area", jsonPolygon(m.area));
+    // A corridor's ground is derived from its line and width (mission::applyCorridor): only they
+    // are kept.
+    if (m.corridor) {
+        CPLJSONObject c;
+        CPLJSONArray line;
+        for (const auto& p : m.corridor->line)
+            line.Add(jsonPosition(p));
+        c.Add("line", line);
+        c.Add("width_m", jsonNumber(m.corridor->widthM));
+        root.Add("corridor", c);
+    } else {
+        root.Add("area", jsonPolygon(m.area));
+    }
     CPLJSONArray zones;
     for (const auto& z : m.noFlyZones) {
         CPLJSONObject o;
@@ -228,6 +265,8 @@ std::string missionToJson(const mission::Mission& m) {
         CPLJSONObject o;
         o.Add("name", a.name);
         o.Add("model", a.model);
+        if (writesPlane(a))
+            o.Add("kind", fleet::aircraftKindId(a.kind));
         o.Add("camera", detail::cameraToJson(a.camera));
         if (a.altitudeM)
             o.Add("altitude_m", jsonNumber(*a.altitudeM));
@@ -242,6 +281,8 @@ std::string missionToJson(const mission::Mission& m) {
         o.Add("endurance_min", jsonNumber(a.enduranceMin));
         o.Add("max_altitude_m", jsonNumber(a.maxAltitudeM));
         detail::addDjiDroneType(o, a.dji);
+        if (writesPlane(a))
+            o.Add("plane", detail::planeToJson(a.plane));
         o.Add("colour", a.colour);
         if (a.home)
             o.Add("home", jsonPosition(*a.home));
@@ -260,6 +301,8 @@ std::string missionToJson(const mission::Mission& m) {
     planner.Add("altitude_separation_m", jsonNumber(m.options.altitudeSeparationM));
     planner.Add("battery_reserve", jsonNumber(m.options.batteryReserve));
     planner.Add("max_cells", static_cast<GInt64>(m.options.maxCells));
+    if (m.options.doubleGrid)
+        planner.Add("double_grid", true);
     root.Add("planner", planner);
     if (!m.terrain.isDefault()) {
         CPLJSONObject t;

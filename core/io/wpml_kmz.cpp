@@ -76,6 +76,14 @@ std::string wpmlAircraftProblem(const ExportContext& ctx, std::size_t i) {
         return label +
                ": no catalog aircraft flies this route, so the DJI WPML file cannot say which DJI "
                "aircraft flies it (choose a DJI Enterprise aircraft for it)";
+    // Checked before the DJI types: a plane is refused for what it is, whatever types a custom
+    // entry gives it. WPML waypoint routes are flown by DJI's multirotors (the aircraft of the
+    // Cloud API's Product Support list); a wpml:waypointTurnMode stops or curves on the spot.
+    if (fleet::fliesAsPlane(a->kind))
+        return label + (a->model == label ? "" : " (" + a->model + ")") + " is a " +
+               fleet::aircraftKindLabel(a->kind) +
+               " aircraft: DJI WPML routes (DJI Pilot 2, FlightHub 2) are flown by DJI's "
+               "multirotors only; export a MAVLink mission (.plan or .waypoints) for it";
     if (!a->dji)
         return label + (a->model == label ? "" : " (" + a->model + ")") +
                " is not a DJI Enterprise aircraft that flies DJI WPML routes (DJI "

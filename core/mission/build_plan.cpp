@@ -4,6 +4,7 @@
 #include "core/fleet/photo_dedup.h"
 #include "core/geo/polygon_ops.h"
 #include "core/job_scope.h"
+#include "core/mission/double_grid.h"
 #include "core/mission/plan_region.h"
 #include "core/mission/planner_kinds.h"
 #include "core/mission/terrain_stage.h"
@@ -17,14 +18,71 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <future>
+#include <string>
 
 namespace pf::mission::detail {
+
+namespace {
+
+// planRegion for aircraft k, moving the progress through its own part of [0, 0.6], its name before
+// the stage (with several aircraft).
+Result<AircraftPlan> planAircraftRegion(const Mission& m, const PlannerOptions& opt,
+                                        const LocalGeometry& geom,
+                                        const std::vector<geo::MultiPolygon>& regions,
+                                        const std::vector<std::optional<geo::Vec2>>& homes,
+                                        const std::optional<geo::Vec2>& landing, std::size_t k) {
+    const std::size_t n = m.aircraft.size();
+    const std::string who = n == 1
+                                ? std::string()
+                                : (m.aircraft[k].name.empty() ? "aircraft " + std::to_string(k + 1)
+                                                              : m.aircraft[k].name) +
+                                      ": ";
+    JobScope part(0.6 * static_cast<double>(k) / static_cast<double>(n),
+                  0.6 * static_cast<double>(k + 1) / static_cast<double>(n), who);
+    return planRegion(regions[k], geom.noFly, m.aircraft[k], opt, homes[k], landing,
+                      laneSpacing(m, k));
+}
+
+// Every aircraft's region planned, each but the first on a thread of its own beside this one. The
+// regions are planned independently (the core keeps no shared mutable state, and planRegion leaves
+// the frame's transformation alone), so the plans are those made one after the other, in about 1/n
+// of the wall time on as many cores: a fleet plan plans its regions once per split tried and once
+// more for the split chosen. Every thread started is joined before this returns, whatever the
+// outcome; a cancelled job stops each of them.
+std::vector<Result<AircraftPlan>> planRegions(const Mission& m, const PlannerOptions& opt,
+                                              const LocalGeometry& geom,
+                                              const std::vector<geo::MultiPolygon>& regions,
+                                              const std::vector<std::optional<geo::Vec2>>& homes,
+                                              const std::optional<geo::Vec2>& landing,
+                                              const RegionPlanner& planner) {
+    std::vector<Result<AircraftPlan>> out;
+    if (planner) { // a planner of the caller's (a corridor's stretches): one after the other
+        for (std::size_t k = 0; k < m.aircraft.size(); ++k)
+            out.push_back(planner(k, regions[k]));
+        return out;
+    }
+    const JobScope::Share job = JobScope::share();
+    std::vector<std::future<Result<AircraftPlan>>> others;
+    for (std::size_t k = 1; k < m.aircraft.size(); ++k)
+        others.push_back(std::async(std::launch::async, [&, k] {
+            JobScope scope(job);
+            return planAircraftRegion(m, opt, geom, regions, homes, landing, k);
+        }));
+    // Should this throw (out of memory), the futures' destructors still wait for their threads.
+    out.push_back(planAircraftRegion(m, opt, geom, regions, homes, landing, 0));
+    for (auto& f : others)
+        out.push_back(f.get());
+    return out;
+}
+
+} // namespace
 
 Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const LocalGeometry& geomRef,
                               const std::vector<geo::MultiPolygon>& regions,
                               const std::vector<std::optional<geo::Vec2>>& homes,
                               const std::optional<geo::Vec2>& landing, bool check,
-                              std::vector<double>* aloneTimes) {
+                              std::vector<double>* aloneTimes, const RegionPlanner& planner) {
     const LocalGeometry* geom = &geomRef;
     const geo::LocalFrame& frame = geom->frame;
     const std::size_t n = m.aircraft.size();
@@ -32,15 +90,20 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
     plan.frame = frame;
 
     // 2. Each aircraft over its region.
-    for (std::size_t k = 0; k < n; ++k) {
+    for (std::size_t k = 0; k < n; ++k)
         if (regions[k].empty())
             return makeError(ErrorCode::InvalidInput,
                              aircraftLabel(m.aircraft[k]) + ": got no part of the area (too many aircraft for it)");
-        auto ap = planRegion(regions[k], geom->noFly, m.aircraft[k], opt, frame, homes[k], landing, laneSpacing(m, k));
+    std::vector<Result<AircraftPlan>> planned =
+        planRegions(m, opt, *geom, regions, homes, landing, planner);
+    for (std::size_t k = 0; k < n; ++k) {
         if (stopRequested())
             return cancelledError();
+        Result<AircraftPlan>& ap = planned[k];
         if (!ap)
             return ap.error();
+        if (homes[k])
+            ap->route.home = frame.toGeo(*homes[k]);
         ap->subarea = regions[k];
         ap->surveyWaypoints = surveyPart(ap->localWaypoints);
         if (aloneTimes)
@@ -54,7 +117,8 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         for (const auto& a : plan.aircraft)
             photos.push_back({a.surveyWaypoints, a.footprint.acrossM, a.footprint.alongM, a.footprint.real.longSideM,
                               a.footprint.real.shortSideM});
-        auto saved = fleet::dropDuplicatePhotos(photos);
+        auto saved = opt.doubleGrid ? dropDuplicatePhotosPerPass(photos)
+                                    : fleet::dropDuplicatePhotos(photos);
         if (!saved)
             return saved.error();
         for (std::size_t k = 0; k < n; ++k) {
@@ -76,6 +140,7 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
     const route::SafePathFinder straightFinder;
     std::vector<std::vector<geo::Vec2>> flownPaths;
     std::vector<plan::PhotoFootprint> photoFootprints;
+    std::vector<int> photoPasses; // parallel: a double grid's pass of each photo
     for (std::size_t k = 0; k < n; ++k) {
         AircraftPlan& ap = plan.aircraft[k];
         const AircraftConfig& cfg = m.aircraft[k];
@@ -197,9 +262,11 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         if (stopRequested())
             return cancelledError();
         for (const auto& w : flown)
-            if (w.kind == route::WaypointKind::Photo)
+            if (w.kind == route::WaypointKind::Photo) {
                 photoFootprints.push_back(
                     {w.pos, w.headingDeg, ap.footprint.real.longSideM, ap.footprint.real.shortSideM});
+                photoPasses.push_back(w.pass);
+            }
         ap.sortieRoutes.clear();
         // Only the sortie's own waypoints are copied: a copy of the whole route per sortie (then cut)
         // kept its full capacity, sorties x waypoints in all (3.3 GB for 158 sorties of 523,000).
@@ -243,7 +310,11 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
     if (check) {
         reportProgress(0.85, "coverage check");
         JobScope stage(0.85, 1.0);
-        auto cov = plan::checkCoverage(admissible, photoFootprints, {}, m.terrain.prepared ? &terrainOutlines : nullptr);
+        const auto* outlines = m.terrain.prepared ? &terrainOutlines : nullptr;
+        // A double grid's passes are checked one by one: every point must be seen twice.
+        auto cov = opt.doubleGrid ? checkPassCoverage(admissible, photoFootprints, photoPasses,
+                                                      outlines, plan.passCoverage)
+                                  : plan::checkCoverage(admissible, photoFootprints, {}, outlines);
         if (stopRequested())
             return cancelledError();
         if (!cov)
@@ -253,9 +324,11 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         for (const auto& p : cov->patches)
             plan.uncovered.push_back({p.shape, p.areaM2});
         if (cov->coveredFraction < kCoverageTarget)
-            plan.warnings.push_back("the photos leave " + metres(cov->uncoveredAreaM2) + " m2 of the area (" +
-                                    metres(100.0 * (1.0 - cov->coveredFraction), 1) + " %) unseen, in " +
-                                    std::to_string(cov->patchCount) + " patch(es)");
+            plan.warnings.push_back(
+                std::string(opt.doubleGrid ? "one pass of the double grid: " : "") +
+                "the photos leave " + metres(cov->uncoveredAreaM2) + " m2 of the area (" +
+                metres(100.0 * (1.0 - cov->coveredFraction), 1) + " %) unseen, in " +
+                std::to_string(cov->patchCount) + " patch(es)");
         geo::MultiPolygon pockets;
         for (const auto& a : plan.aircraft)
             pockets.insert(pockets.end(), a.grid.pockets().begin(), a.grid.pockets().end());
@@ -287,6 +360,10 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         sumTime += a.timeS;
     }
     plan.idealS = sumTime / static_cast<double>(n);
+    if (opt.doubleGrid) // say so whatever the planner: its passes
+        for (const auto& a : plan.aircraft)
+            plan.plannerChoice += (plan.plannerChoice.empty() ? "" : "; ") +
+                                  (n > 1 ? a.aircraft + ": " : "") + a.plannerChoice;
     if (t.jumps > 0) {
         int detours = 0;
         for (const auto& a : plan.aircraft)

@@ -22,10 +22,24 @@ struct NoFlyZone {
     }
 };
 
+// A corridor survey (a road, a river, a rail line, a dike): the ground within half the width of a
+// centre line, cut square at the line's ends. A mission surveys either an area or a corridor; with
+// a corridor, Mission::area holds the corridor's ground (core/mission/corridor.h keeps the two
+// together).
+struct Corridor {
+    geo::GeoRing line;   // the centre line, WGS84, an open polyline in the order drawn
+    double widthM = 0.0; // the full width, > 0
+    friend bool operator==(const Corridor& a, const Corridor& b) {
+        return a.line == b.line && a.widthM == b.widthM;
+    }
+    friend bool operator!=(const Corridor& a, const Corridor& b) { return !(a == b); }
+};
+
 // One aircraft taking part in the mission, with its camera and flight settings.
 struct AircraftConfig {
     std::string name;  // unique label shown to the user, e.g. "Falcon 8 #1"
     std::string model; // catalog aircraft name, or "custom"
+    fleet::AircraftKind kind = fleet::AircraftKind::Multirotor;
     sensor::Camera camera;
     // Exactly one of altitude and GSD drives the other; altitude wins when both are set.
     std::optional<double> altitudeM;
@@ -36,6 +50,8 @@ struct AircraftConfig {
     double accelerationMps2 = plan::kDefaultAccelerationMps2; // for the stop at each turn
     double enduranceMin = 20.0;
     double maxAltitudeM = 120.0;
+    fleet::PlanePerformance
+        plane; // turn radius, climb, run-in: used when the kind flies as a plane
     std::string colour = "#e6194b"; // #rrggbb, used on the map
     std::optional<geo::LonLat> home; // take-off and landing point; the mission's home if unset
     std::optional<fleet::DjiDroneType>
@@ -43,12 +59,13 @@ struct AircraftConfig {
     friend bool operator==(const AircraftConfig& a, const AircraftConfig& b);
 };
 
-// A catalog aircraft as a mission flies it: the catalog name as label and model, its speed, turn rate,
-// endurance and ceiling, and `camera` when given (its default camera, looked up by the caller). The
-// altitude is left for the caller to set.
+// A catalog aircraft as a mission flies it: the catalog name as label and model, its kind, speed,
+// turn rate, acceleration, plane figures, endurance and ceiling, and `camera` when given (its
+// default camera, looked up by the caller). The altitude is left for the caller to set.
 AircraftConfig aircraftFromCatalog(const fleet::AircraftSpec& spec, const sensor::Camera* camera);
 
-// The one flight-time model with this aircraft's speed, turn rate and acceleration.
+// The one flight-time model of this aircraft: its kind (a plane flies FlightDynamics::FixedWing),
+// speed, turn rate and acceleration, and a plane's climb and sink rates.
 plan::FlightTimeModel flightModel(const AircraftConfig& a);
 
 // Auto: per aircraft the fastest of sweep, stride and raster (the default). Lawnmower: the yardstick
@@ -67,6 +84,9 @@ struct PlannerOptions {
     double altitudeSeparationM = 10.0;  // between aircraft flying at the same time
     double batteryReserve = 0.2;        // fraction of endurance kept in reserve
     std::size_t maxCells = 4'000'000;   // grid cell budget
+    // Double grid (for 3D models): a second pass over the area with lanes at 90 degrees to the
+    // first, each pass a complete survey of its own (core/mission/double_grid.h).
+    bool doubleGrid = false;
     friend bool operator==(const PlannerOptions& a, const PlannerOptions& b);
 };
 
@@ -100,6 +120,9 @@ struct TerrainOptions {
 struct Mission {
     std::string name;
     geo::GeoPolygon area;
+    // Set: the mission surveys this corridor with lanes along its line, and `area` is the
+    // corridor's ground (mission::applyCorridor), empty while the corridor is not valid.
+    std::optional<Corridor> corridor;
     std::vector<NoFlyZone> noFlyZones;
     std::optional<geo::LonLat> home;    // take-off point
     std::optional<geo::LonLat> landing; // landing point; home if unset
@@ -119,10 +142,11 @@ bool sameRoute(const route::Route& a, const route::Route& b);
 
 // Newest mission file format version: 2 added the optional "routes" (hand-edited routes), 3 the
 // aircraft's "acceleration_mps2" and the planners "auto", "sweep" and "lawnmower", 4 "terrain"
-// (terrain following) and the routes' ground heights, 5 the DJI drone and payload types of DJI
-// Enterprise aircraft ("dji_drone_enum", "dji_drone_sub_enum", the camera's "dji_payload_enum"). A
-// file is written with the oldest version that holds what it contains (version 1 without any of
-// them), so that older releases keep reading it.
-constexpr int kMissionFileVersion = 5;
+// (terrain following) and the routes' ground heights, 5 the aircraft's "kind" (multirotor,
+// fixed-wing, VTOL) and "plane" figures, a "corridor" and the double grid, 6 the DJI drone and
+// payload types of DJI Enterprise aircraft ("dji_drone_enum", "dji_drone_sub_enum", the camera's
+// "dji_payload_enum"). A file is written with the oldest version that holds what it contains
+// (version 1 without any of them), so that older releases keep reading it.
+constexpr int kMissionFileVersion = 6;
 
 } // namespace pf::mission

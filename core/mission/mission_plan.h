@@ -109,7 +109,9 @@ struct MissionPlan {
     std::vector<std::string> warnings; // things the user must know (e.g. aircraft left unplanned)
 
     // Filled by planMission over all aircraft:
-    double coverageRatio = 0.0;    // admissible area seen by the REAL footprints of all photos
+    double coverageRatio = 0.0; // admissible area seen by the REAL footprints of all photos (with a
+                                // double grid: by each pass on its own, the lower of the two)
+    std::vector<double> passCoverage; // a double grid: the share each pass sees on its own
     double uncoveredAreaM2 = 0.0;
     std::vector<UncoveredArea> uncovered; // the largest uncovered patches, largest first
     int noFlyViolations = 0;       // waypoints and legs (home to home) closer to a zone than the margin

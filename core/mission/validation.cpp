@@ -1,6 +1,7 @@
 #include "core/mission/validation.h"
 
 #include "core/geo/polygon_ops.h"
+#include "core/mission/corridor.h"
 
 #include <cmath>
 #include <cstdio>
@@ -50,6 +51,18 @@ std::string count(double n) {
 }
 
 void error(std::vector<Problem>& out, std::string msg) { out.push_back({Severity::Error, std::move(msg)}); }
+
+// The area's problems; with a corridor, the corridor's, then those of its ground.
+std::vector<Problem> areaProblemsOf(const Mission& m) {
+    if (!m.corridor)
+        return geo::validatePolygon(m.area, "the area");
+    auto problems = validateCorridor(*m.corridor);
+    if (!geo::hasError(problems)) {
+        const auto ground = geo::validatePolygon(m.area, "the corridor's ground");
+        problems.insert(problems.end(), ground.begin(), ground.end());
+    }
+    return problems;
+}
 void warning(std::vector<Problem>& out, std::string msg) { out.push_back({Severity::Warning, std::move(msg)}); }
 
 // The altitude's own limits: a number at or above the minimum safe altitude, at most the aircraft's
@@ -111,7 +124,59 @@ std::string cellBudgetError(const std::string& who, const AircraftConfig& a, dou
     return msg;
 }
 
+// A turn radius given for a plane that its cruise speed would need a steeper bank than this for is
+// suspicious: survey planes are limited to 45-60 degrees (ArduPlane ROLL_LIMIT_DEG 45, PX4 FW_R_LIM
+// 50).
+constexpr double kSteepBankDeg = 60.0;
+
 } // namespace
+
+std::vector<std::string> planeErrors(const AircraftConfig& a, const std::string& who) {
+    std::vector<std::string> out;
+    if (!fleet::fliesAsPlane(a.kind))
+        return out;
+    const auto& p = a.plane;
+    const auto positive = [&](double v, const char* what, const char* unit, const char* why) {
+        if (!std::isfinite(v) || v <= 0.0)
+            out.push_back(who + ": the " + what + " must be greater than 0 " + unit + " (got " +
+                          num("%g", v) + " " + unit + ")" + why);
+    };
+    if (p.minTurnRadiusM)
+        positive(*p.minTurnRadiusM, "minimum turn radius", "m",
+                 ": a plane cannot turn on the spot");
+    else if (p.maxBankDeg &&
+             !(std::isfinite(*p.maxBankDeg) && *p.maxBankDeg > 0 && *p.maxBankDeg < 90))
+        out.push_back(who + ": the bank limit must lie between 0 and 90 degrees (got " +
+                      num("%g", *p.maxBankDeg) +
+                      "): the turn radius follows from it, V^2 / (g tan bank)");
+    positive(p.climbRateMps, "climb rate", "m/s", "");
+    positive(p.sinkRateMps, "sink rate", "m/s", "");
+    if (!std::isfinite(p.runInM) || p.runInM < 0)
+        out.push_back(who + ": the run-in before each lane must be 0 m or more (got " +
+                      num("%g", p.runInM) + " m)");
+    if (p.stallSpeedMps) {
+        positive(*p.stallSpeedMps, "stall speed", "m/s", "");
+        const double least = fleet::kStallMargin * *p.stallSpeedMps;
+        if (*p.stallSpeedMps > 0 && std::isfinite(least) && a.cruiseSpeedMps < least)
+            out.push_back(who + ": the cruise speed of " + num("%.1f", a.cruiseSpeedMps) +
+                          " m/s is below the stall-safe minimum of " + num("%.1f", least) +
+                          " m/s (" + num("%g", fleet::kStallMargin) + " x its stall speed of " +
+                          num("%.1f", *p.stallSpeedMps) + " m/s): fly faster");
+    }
+    return out;
+}
+
+std::string planeRoutingError(const AircraftConfig& a, const std::string& who) {
+    if (!fleet::fliesAsPlane(a.kind))
+        return {};
+    const std::string kind = a.kind == fleet::AircraftKind::Vtol
+                                 ? "a VTOL aircraft (it flies its survey as a plane)"
+                                 : "a fixed-wing aircraft";
+    return who + " is " + kind +
+           ": this version plans routes for multirotors only, which stop and turn on the spot at "
+           "every lane end; "
+           "a plane cannot, and would overshoot every lane. Choose a multirotor for this mission";
+}
 
 std::vector<std::string> altitudeErrors(const Mission& m, const AircraftConfig& a, double altitudeM) {
     std::string who = a.name.empty() ? "the aircraft" : "aircraft \"" + a.name + "\"";
@@ -119,7 +184,7 @@ std::vector<std::string> altitudeErrors(const Mission& m, const AircraftConfig& 
         if (m.aircraft[i].name == a.name)
             who = aircraftName(a, i);
     auto out = altitudeLimitErrors(who, a, altitudeM, false);
-    if (!out.empty() || m.options.maxCells == 0)
+    if (!out.empty() || m.options.maxCells == 0 || plansCorridorLanes(m))
         return out;
     auto eff = sensor::effectiveFootprint(a.camera, altitudeM, a.overlap);
     auto geom = localGeometry(m);
@@ -154,7 +219,7 @@ Result<double> resolvedAltitude(const AircraftConfig& a) {
 }
 
 Result<LocalGeometry> localGeometry(const Mission& m) {
-    const auto areaProblems = geo::validatePolygon(m.area, "the area");
+    const auto areaProblems = areaProblemsOf(m);
     if (geo::hasError(areaProblems))
         return makeError(ErrorCode::InvalidGeometry, areaProblems.front().message);
     const geo::GeoPolygon area = geo::cleanPolygon(m.area);
@@ -200,8 +265,8 @@ ValidationReport validateMission(const Mission& m) {
     ValidationReport r;
     auto& out = r.problems;
 
-    // Geometry: the area, then each no-fly zone, each as a polygon of its own.
-    const auto areaProblems = geo::validatePolygon(m.area, "the area");
+    // Geometry: the area (or the corridor), then each no-fly zone, each as a polygon of its own.
+    const auto areaProblems = areaProblemsOf(m);
     out.insert(out.end(), areaProblems.begin(), areaProblems.end());
     bool zonesOk = true;
     for (std::size_t i = 0; i < m.noFlyZones.size(); ++i) {
@@ -270,6 +335,9 @@ ValidationReport validateMission(const Mission& m) {
         error(out, "the grid angle must be a finite number of degrees");
     if (o.maxCells == 0)
         error(out, "the cell budget must be at least 1 cell");
+    if (o.doubleGrid && plansCorridorLanes(m))
+        warning(out, "the double grid is for area surveys: the corridor is flown once, with lanes "
+                     "along its line");
     if (m.aircraft.empty())
         error(out, "the mission has no aircraft: add at least one");
     // Names label each aircraft's route and files: a second "Falcon 8" would overwrite the first's.
@@ -299,6 +367,20 @@ ValidationReport validateMission(const Mission& m) {
                                num("%g", v) + ")");
                 ok = false;
             }
+        for (auto& e : planeErrors(a, who)) {
+            error(out, std::move(e));
+            ok = false;
+        }
+        if (auto e = planeRoutingError(a, who); !e.empty())
+            error(out, std::move(e));
+        if (fleet::fliesAsPlane(a.kind) && a.plane.minTurnRadiusM && *a.plane.minTurnRadiusM > 0 &&
+            fleet::bankAngleDeg(a.plane, a.cruiseSpeedMps) > kSteepBankDeg)
+            warning(
+                out,
+                who + ": a turn radius of " + num("%.0f", *a.plane.minTurnRadiusM) + " m at " +
+                    num("%.1f", a.cruiseSpeedMps) + " m/s needs a bank of " +
+                    num("%.0f", fleet::bankAngleDeg(a.plane, a.cruiseSpeedMps)) +
+                    " degrees; survey planes bank 45-60 degrees at most: check the turn radius");
         // The flight-time model divides by these: a zero or negative figure would give nonsense times.
         for (auto [v, what, unit] : {std::tuple{a.cruiseSpeedMps, "cruise speed", "m/s"},
                                      std::tuple{a.turnRateDegS, "turn rate", "deg/s"},
@@ -347,7 +429,8 @@ ValidationReport validateMission(const Mission& m) {
             }
         }
         f.gridAngleDeg = o.gridAngleDeg.value_or(0.0);
-        if (ok && geom && r.admissibleAreaM2 > 0 && o.maxCells > 0 && std::isfinite(f.gridAngleDeg)) {
+        if (ok && geom && r.admissibleAreaM2 > 0 && o.maxCells > 0 &&
+            std::isfinite(f.gridAngleDeg) && !plansCorridorLanes(m)) {
             grid::Grid::Size size;
             const std::string budget = cellBudgetError(who, a, f.altitudeM, f.cellSizeM, admissible, f.gridAngleDeg,
                                                        o.maxCells, &size);

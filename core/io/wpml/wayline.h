@@ -60,7 +60,9 @@ struct MissionSettings {
 };
 
 // The highest speed a WPML mission flies: globalTransitionalSpeed is documented as [0, 15] m/s
-// ("waylines.wpml", wpml:missionConfig); the waypoint speeds are kept within it too.
+// ("waylines.wpml", wpml:missionConfig); the waypoint speeds are kept within it too
+// ("template.kml": wpml:autoFlightSpeed "(0, the maximum flight speed]" of the model; 15 m/s is
+// within every catalog DJI aircraft's maximum).
 constexpr double kMaxSpeedMps = 15.0;
 
 // The route's wayline. `homeAmslM`: the take-off point's ground above sea level (EGM96), when

@@ -97,8 +97,9 @@ void turnParam(CPLXMLNode* parent) {
     // "toPointAndStopWithDiscontinuityCurvature": fly in a straight line, stop at the point.
     // Waypoints are only where the plan turns (a lane's photos between its ends are taken in
     // flight).
+    // No wpml:waypointTurnDampingDist: "Common Elements" documents it in (0, the segment's
+    // length] and requires it only for the curving modes, so a stop at the point has none.
     add(t, "wpml:waypointTurnMode", "toPointAndStopWithDiscontinuityCurvature");
-    add(t, "wpml:waypointTurnDampingDist", "0");
 }
 
 void gimbalDown(CPLXMLNode* action, const MissionSettings&) {

@@ -175,7 +175,10 @@ public:
             number(h, "wpml:waypointHeadingAngle", -180.0, 180.0, where);
         oneOf(h, "wpml:waypointHeadingPathMode", kHeadingPathModes, where);
         const CPLXMLNode* t = child(pm, "wpml:waypointTurnParam");
-        if (oneOf(t, "wpml:waypointTurnMode", kTurnModes, where) == "coordinateTurn")
+        // "Common Elements", wpml:waypointTurnParam: the damping distance is in (0, the segment's
+        // length] and required for a coordinated turn; when given it must be in that range.
+        if (oneOf(t, "wpml:waypointTurnMode", kTurnModes, where) == "coordinateTurn" ||
+            child(t, "wpml:waypointTurnDampingDist"))
             number(t, "wpml:waypointTurnDampingDist", 1e-9, 1e9, where);
     }
 

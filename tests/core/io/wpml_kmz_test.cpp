@@ -333,6 +333,37 @@ TEST(WpmlKmz, AircraftThatCannotFlyTheFormatIsRefusedUnlessForced) {
     EXPECT_NE(all->notes[0].find("no .kmz written"), std::string::npos);
 }
 
+// A plane (fixed-wing or VTOL) gets no .kmz, even with DJI types in a custom entry: the message
+// says what it is, and --force does not write one either.
+TEST(WpmlKmz, APlaneIsRefusedPlainly) {
+    for (const auto kind : {fleet::AircraftKind::FixedWing, fleet::AircraftKind::Vtol}) {
+        mission::Mission m = withAircraft("demo_mission.json", {{"DJI Matrice 30T", 60.0}});
+        m.aircraft[0].kind = kind;
+        m.aircraft[0].name = "Wing";
+        const std::vector<route::Route> routes{
+            route::Route("Wing", m.home, 8.0,
+                         {{{8.3280, 49.0112}, 60.0, 90.0, route::WaypointKind::Photo},
+                          {{8.3290, 49.0112}, 60.0, 90.0, route::WaypointKind::Photo}})};
+        const ExportContext ctx = makeExportContext(m, routes);
+        const std::string why = aircraftFormatProblem(ctx, 0, WaypointFormat::WpmlKmz);
+        SCOPED_TRACE(why);
+        EXPECT_NE(why.find(std::string("is a ") + fleet::aircraftKindLabel(kind) + " aircraft"),
+                  std::string::npos);
+        EXPECT_NE(why.find("multirotors only"), std::string::npos);
+        const std::string kmz = tempPath("pf_wpml_plane.kmz");
+        std::filesystem::remove(kmz);
+        auto refused = exportRouteFiles(ctx, 0, WaypointFormat::WpmlKmz, kmz);
+        ASSERT_FALSE(refused.ok());
+        EXPECT_EQ(refused.error().message, why);
+        ExportOptions force;
+        force.forceAircraft = true;
+        auto forced = exportRouteFiles(ctx, 0, WaypointFormat::WpmlKmz, kmz, force);
+        ASSERT_TRUE(forced.ok());
+        EXPECT_TRUE(forced->files.empty());
+        EXPECT_FALSE(std::filesystem::exists(kmz));
+    }
+}
+
 TEST(WpmlKmz, BadFilesGetAMessageNamingTheProblem) {
     const std::pair<const char*, const char*> cases[] = {
         {"not_a_zip.kmz", "it is not a ZIP archive"},
@@ -397,7 +428,7 @@ TEST(WpmlKmz, MissionFileKeepsTheDjiTypesAndOlderFilesGetThemFromTheCatalog) {
     const std::string text = missionToJson(m);
     CPLJSONDocument doc;
     ASSERT_TRUE(doc.LoadMemory(text));
-    EXPECT_EQ(doc.GetRoot().GetInteger("version"), 5);
+    EXPECT_EQ(doc.GetRoot().GetInteger("version"), 6);
     EXPECT_EQ(doc.GetRoot().GetArray("aircraft")[0].GetInteger("dji_drone_enum"), 67);
     EXPECT_EQ(doc.GetRoot().GetArray("aircraft")[0].GetInteger("dji_drone_sub_enum"), 1);
     EXPECT_EQ(doc.GetRoot().GetArray("aircraft")[0].GetObj("camera").GetInteger("dji_payload_enum"),
@@ -405,13 +436,32 @@ TEST(WpmlKmz, MissionFileKeepsTheDjiTypesAndOlderFilesGetThemFromTheCatalog) {
     auto back = parseMissionJson(text, "<memory>");
     ASSERT_TRUE(back.ok()) << back.error().message;
     EXPECT_EQ(back->aircraft, m.aircraft);
-    // A version 4 file cannot hold them.
-    doc.GetRoot().Set("version", 4);
+    // A version 5 file (aircraft kinds and plane figures) cannot hold them.
+    doc.GetRoot().Set("version", 5);
     auto refused =
         parseMissionJson(doc.GetRoot().Format(CPLJSONObject::PrettyFormat::Pretty), "old.json");
     ASSERT_FALSE(refused.ok());
-    EXPECT_NE(refused.error().message.find("need version 5"), std::string::npos)
+    EXPECT_NE(refused.error().message.find("need version 6"), std::string::npos)
         << refused.error().message;
+    // One file holds both a plane's figures (version 5) and the DJI types (version 6).
+    mission::Mission both = m;
+    both.aircraft.push_back(m.aircraft[0]);
+    both.aircraft[1].name = "Wing";
+    both.aircraft[1].model = "custom";
+    both.aircraft[1].kind = fleet::AircraftKind::FixedWing;
+    both.aircraft[1].plane.minTurnRadiusM = 60.0;
+    both.aircraft[1].dji.reset();
+    both.aircraft[1].camera.djiPayloadEnum.reset();
+    const std::string bothText = missionToJson(both);
+    ASSERT_TRUE(doc.LoadMemory(bothText));
+    EXPECT_EQ(doc.GetRoot().GetInteger("version"), 6);
+    auto bothBack = parseMissionJson(bothText, "<memory>");
+    ASSERT_TRUE(bothBack.ok()) << bothBack.error().message;
+    EXPECT_EQ(bothBack->aircraft, both.aircraft);
+    // Without the DJI types the plane's file stays version 5.
+    both.aircraft.erase(both.aircraft.begin());
+    ASSERT_TRUE(doc.LoadMemory(missionToJson(both)));
+    EXPECT_EQ(doc.GetRoot().GetInteger("version"), 5);
     // An older file of a catalog model: the types come from the catalog.
     mission::Mission old = m;
     old.aircraft[0].dji.reset();
