@@ -38,6 +38,7 @@ DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y "./$deb"
 
 out=$(mktemp -d)
 fail() { echo "check-deb: FAILED: $*" >&2; exit 1; }
+dpkg-deb -f "$deb" Depends | grep -q libminizip1 || fail "the package does not depend on libminizip1 (the .kmz writer)"
 cd /   # nothing may come from the source tree
 for f in /usr/bin/photoflight /usr/bin/photoflight-cli \
          /usr/share/photoflight/catalog.json /usr/share/photoflight/demo/demo_mission.json \

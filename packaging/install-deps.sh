@@ -7,6 +7,8 @@ packages=(
   build-essential cmake ninja-build pkg-config
   qtbase5-dev qtpositioning5-dev libqt5svg5-dev libqt5serialport5-dev
   libgdal-dev gdal-bin libproj-dev libgeos-dev libeigen3-dev
+  # The .kmz (DJI WPML) writer.
+  libminizip-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth
   # The user guide is rendered from docs/*.md at build time.

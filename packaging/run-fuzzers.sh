@@ -11,7 +11,7 @@ seconds="${PF_FUZZ_SECONDS:-20}"
 build="${PF_FUZZ_BUILD_DIR:-build-fuzz}"
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
-  targets=(mission catalog area_import qgc_plan qgc_wpl gpx waypoint_geojson litchi_csv mavlink)
+  targets=(mission catalog area_import qgc_plan qgc_wpl gpx waypoint_geojson litchi_csv mavlink wpml_kmz)
 fi
 
 CC=clang CXX=clang++ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \

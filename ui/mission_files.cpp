@@ -148,7 +148,7 @@ void MissionFiles::askImportAreas() {
 void MissionFiles::askOpenWaypointFile() {
     const QString path = QFileDialog::getOpenFileName(
         m_window, tr("Open waypoint file"), QString(),
-        tr("Waypoint files (*.plan *.waypoints *.gpx *.geojson *.json *.csv);;All files (*)"));
+        tr("Waypoint files (*.plan *.waypoints *.gpx *.geojson *.json *.csv *.kmz);;All files (*)"));
     if (!path.isEmpty()) openWaypointFile(path);
 }
 

@@ -4,6 +4,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/export_args.h"
 
+#include "core/io/catalog.h"
 #include "core/io/mission_export.h"
 #include "core/io/waypoint_formats.h"
 #include "core/mission/route_check.h"
@@ -22,16 +23,22 @@ const char* const kConvertUsage =
     "  .gpx         GPX 1.1 (read and write; several routes in one file)\n"
     "  .geojson     GeoJSON, also .json (read and write; several routes in one file)\n"
     "  .csv         Litchi mission hub CSV (read and write)\n"
+    "  .kmz         DJI WPML for DJI Pilot 2 and FlightHub 2 (read and write; DJI Enterprise aircraft)\n"
     "  .kml         KML for Google Earth (write only)\n"
     "\n"
     "Options:\n"
     "  --aircraft NAME       convert only the route of this aircraft (needed when IN holds "
     "several\n"
-    "                        routes and OUT is a .plan, .waypoints or .csv)\n"
+    "                        routes and OUT is a .plan, .waypoints, .csv or .kmz)\n"
     PF_CLI_EXPORT_OPTIONS_HELP
+    "  --model NAME          the catalog aircraft (with its default camera) that flies the route: a .kmz\n"
+    "                        names it, and Litchi and MAVLink files are checked against it (default:\n"
+    "                        the catalog aircraft named like the route, as a .kmz names its routes)\n"
     "  --max-altitude M      the highest waypoint altitude allowed (default 120)\n"
     "  --safety-margin M     keep-out distance around the file's no-fly zones (default 5)\n"
-    "  --force               write the file even if the route check finds errors\n"
+    "  --force               write the file even if the route check finds errors or the aircraft\n"
+    "                        cannot fly it (Litchi CSV or a MAVLink mission for a DJI Enterprise model);\n"
+    "                        a .kmz is never written for an aircraft that is not a DJI Enterprise model\n"
     "\n"
     "Route check: before writing, every route is checked: no waypoint or leg (the legs from and back\n"
     "to home included) within the safety margin of a no-fly zone the file holds (a .plan's geofence\n"
@@ -42,13 +49,43 @@ const char* const kConvertUsage =
     "geofence\n"
     "and home are kept when the output can hold them.\n"
     "A route that passes through home between sorties (a GPX or GeoJSON route exported with every\n"
-    "battery's flight) becomes one .plan, .waypoints or .csv per battery, OUT-sortieN.EXT: a vehicle\n"
+    "battery's flight) becomes one .plan, .waypoints, .csv or .kmz per battery, OUT-sortieN.EXT: a vehicle\n"
     "file never flies several batteries.\n"
     "Exit codes: 0 written, 2 bad input (the message names the file and the line or JSON key).\n";
+
+namespace {
+
+// The aircraft flying each route, from the catalog: --model's, else the one named like the route (a
+// .kmz names its routes after the DJI aircraft it declares). What the .kmz export and the check of the
+// aircraft against the output format need; routes no catalog aircraft flies keep none.
+Status addCatalogAircraft(io::ExportContext& ctx, const std::optional<std::string>& model) {
+    auto cat = io::loadDefaultCatalog();
+    if (!cat)
+        return model ? makeError(cat.error().code, "--model: " + cat.error().message) : Status{};
+    const fleet::AircraftSpec* chosen = model ? cat->findAircraft(*model) : nullptr;
+    if (model && !chosen)
+        return makeError(ErrorCode::NotFound,
+                         "--model: no aircraft named '" + *model + "' in the catalog (see: photoflight-cli catalog)");
+    for (std::size_t i = 0; i < ctx.routes.size(); ++i) {
+        auto& r = ctx.routes[i];
+        const fleet::AircraftSpec* spec = chosen ? chosen : cat->findAircraft(r.aircraft);
+        if (!spec || ctx.aircraftFor(i))
+            continue;
+        if (r.aircraft.empty())
+            r.aircraft = spec->name;
+        mission::AircraftConfig a = mission::aircraftFromCatalog(*spec, cat->findCamera(spec->defaultCamera));
+        a.name = r.aircraft;
+        ctx.mission.aircraft.push_back(a);
+    }
+    return {};
+}
+
+} // namespace
 
 int runConvert(const std::vector<std::string>& argv) {
     auto specs = exportOptionSpecs();
     specs.push_back({"aircraft"});
+    specs.push_back({"model"});
     specs.push_back({"max-altitude"});
     specs.push_back({"safety-margin"});
     specs.push_back({"force", false});
@@ -64,7 +101,7 @@ int runConvert(const std::vector<std::string>& argv) {
     auto options = exportOptionsFromArgs(*args);
     if (!options)
         return reportError(options.error());
-    const io::ExportOptions& opt = *options;
+    io::ExportOptions& opt = *options;
 
     mission::RouteLimits limits;
     limits.maxAltitudeM = 120.0;
@@ -83,6 +120,9 @@ int runConvert(const std::vector<std::string>& argv) {
     auto outFormat = io::formatFromPath(out);
     if (!outFormat)
         return reportError(outFormat.error());
+    // --force cannot make a .kmz for an aircraft that is not a DJI Enterprise model (it would have no
+    // DJI type to name): that stays an error, not a run that writes nothing.
+    opt.forceAircraft = args->has("force") && *outFormat != io::WaypointFormat::WpmlKmz;
     auto imported = io::importWaypoints(in);
     if (!imported)
         return reportError(imported.error());
@@ -115,7 +155,9 @@ int runConvert(const std::vector<std::string>& argv) {
     if (problems > 0 && !args->has("force"))
         return reportError(std::to_string(problems) + " problem(s) in the route check (listed above): " + out +
                            " not written; --force writes it anyway");
-    const io::ExportContext ctx = io::contextFromImport(*imported);
+    io::ExportContext ctx = io::contextFromImport(*imported);
+    if (auto st = addCatalogAircraft(ctx, args->value("model")); !st)
+        return reportError(st.error());
     const auto& info = io::formatInfo(*outFormat);
     Status written;
     std::vector<std::string> files{out};

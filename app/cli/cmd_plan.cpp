@@ -53,7 +53,7 @@ const char* const kPlanUsage =
     "                 makespan_s, ideal_s, photos_saved}, \"coverage_ratio\", \"nofly_violations\",\n"
     "                 \"warnings\": [...]}\n"
     "  and per format of --format (the desktop application's export writes the same files):\n"
-    "    plan, waypoints, csv (a vehicle flies them): one file per flight, mission-AIRCRAFT.EXT for an\n"
+    "    plan, waypoints, csv, kmz (a vehicle flies them): one file per flight, mission-AIRCRAFT.EXT for an\n"
     "                 aircraft flying one sortie, mission-AIRCRAFT-sortieN.EXT per battery for one that\n"
     "                 needs several (each from home back home; no file flies them all: fly them in\n"
     "                 order); a flight holding more mission items than its autopilot stores (ArduPilot\n"
@@ -63,7 +63,10 @@ const char* const kPlanUsage =
     "\n"
     "Options:\n"
     "  --out DIR                    output directory (created if missing)\n"
-    "  --force                      write routes the route check finds errors in (see below)\n"
+    "  --force                      write routes the route check finds errors in (see below), and the\n"
+    "                               Litchi CSV or MAVLink mission of a DJI Enterprise aircraft; even with\n"
+    "                               --force no .kmz is written for an aircraft that is not a DJI Enterprise\n"
+    "                               model (a .kmz names the DJI aircraft and camera types)\n"
     "  --footprints                 plan.geojson also holds every photo's ground footprint polygon\n"
     "  --quiet                      no progress line on stderr (shown only when stderr is a terminal)\n"
     "  --progress                   a progress line per stage on stderr, with the seconds since the\n"
@@ -75,8 +78,12 @@ const char* const kPlanUsage =
     "                                 gpx        GPX waypoints and route\n"
     "                                 geojson    GeoJSON waypoints\n"
     "                                 csv        Litchi mission hub CSV\n"
+    "                                 kmz        DJI WPML for DJI Pilot 2 and FlightHub 2 (DJI Enterprise\n"
+    "                                            aircraft only: Matrice 30/30T, 300/350 RTK, Mavic 3E/3T/3M,\n"
+    "                                            Matrice 4E/4T)\n"
     PF_CLI_MISSION_OPTIONS_HELP
-    "Options of the waypoint files (--format plan, waypoints):\n"
+    "Options of the waypoint files (--format plan, waypoints; kmz reads --end, --home-elevation and\n"
+    "--altitude-frame auto, relative or amsl):\n"
     PF_CLI_EXPORT_OPTIONS_HELP
     "\n"
     "Several aircraft: repeat --aircraft NAME[:ALT_M] (catalog names, see: photoflight-cli catalog), e.g.\n"
@@ -101,13 +108,16 @@ const char* const kPlanUsage =
     "sees, every leg checked every metre against the DEM (waypoints inserted where the ground rises),\n"
     "coverage checked with each photo's footprint on the terrain. The MAVLink files then carry altitudes\n"
     "above sea level (--altitude-frame), KML absolute altitudes, GPX elevations above sea level, Litchi\n"
-    "altitudes above take-off. A DEM that does not cover the area, holds only no-data there or cannot be\n"
+    "altitudes above take-off, a .kmz EGM96 heights (template.kml) and WGS84 ellipsoidal heights\n"
+    "(waylines.wpml). A DEM that does not cover the area, holds only no-data there or cannot be\n"
     "read exits with code 2.\n"
     "\n"
     "Route check: every planned route is checked as the desktop application checks it before export:\n"
     "no waypoint or leg (home legs included) within a no-fly zone's safety margin, no waypoint above\n"
     "the aircraft's maximum altitude or below the minimum safe altitude (2 m). A route with an error\n"
-    "is refused (exit 2, each problem on stderr, nothing written) unless --force is given.\n"
+    "is refused (exit 2, each problem on stderr, nothing written) unless --force is given. So is a file\n"
+    "the aircraft cannot fly: a .kmz for an aircraft that is not a DJI Enterprise model (never written,\n"
+    "even with --force), Litchi CSV or a MAVLink mission for a DJI Enterprise aircraft.\n"
     "\n"
     "Exit codes: 0 planned, 2 bad input (message on stderr), 1 internal error.\n"
     "Example: photoflight-cli plan resources/demo/demo_mission.json --format plan,kml --out plan/\n";
@@ -161,6 +171,27 @@ private:
     double m_shown = -1.0;
     std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
 };
+
+// Why an aircraft cannot fly the files of `formats` (io::aircraftFormatProblem); `kmzLeftOut` counts
+// the .kmz files that --force still does not write (a .kmz must name a DJI aircraft).
+std::vector<std::string> aircraftProblems(const mission::Mission& m, const mission::MissionPlan& plan,
+                                          const std::vector<io::WaypointFormat>& formats,
+                                          std::size_t& kmzLeftOut) {
+    std::vector<route::Route> routes;
+    for (const auto& a : plan.aircraft)
+        routes.push_back(a.route);
+    const io::ExportContext ctx = io::makeExportContext(m, routes);
+    std::vector<std::string> out;
+    kmzLeftOut = 0;
+    for (const auto fmt : formats)
+        for (std::size_t i = 0; i < ctx.routes.size(); ++i) {
+            if (std::string why = io::aircraftFormatProblem(ctx, i, fmt); !why.empty()) {
+                out.push_back(std::string("--format ") + io::formatInfo(fmt).name + ": " + why);
+                kmzLeftOut += fmt == io::WaypointFormat::WpmlKmz ? 1 : 0;
+            }
+        }
+    return out;
+}
 
 } // namespace
 
@@ -216,13 +247,25 @@ int runPlan(const std::vector<std::string>& argv) {
 
     // The check every exported route passes (as in the desktop application): a route with an error is
     // refused unless the user insists.
-    const auto routeProblems = mission::planRouteErrors(m, *plan);
+    auto routeProblems = mission::planRouteErrors(m, *plan);
+    // The files' aircraft: a .kmz only for DJI Enterprise aircraft, no Litchi or MAVLink file for them,
+    // unless --force (then the .kmz of another aircraft is left out, the others written with a warning).
+    std::size_t kmzLeftOut = 0;
+    for (auto& p : aircraftProblems(m, *plan, formats, kmzLeftOut))
+        routeProblems.push_back(std::move(p));
+    exportOptions->forceAircraft = args->has("force");
     for (const auto& p : routeProblems)
         std::cerr << "photoflight-cli: " << (args->has("force") ? "warning: " : "error: ") << p << '\n';
-    if (!routeProblems.empty() && !args->has("force"))
-        return reportError(std::to_string(routeProblems.size()) +
-                           " problem(s) in the planned routes (listed above): nothing written; --force writes "
-                           "them anyway");
+    if (!routeProblems.empty() && !args->has("force")) {
+        const bool onlyKmz = kmzLeftOut == routeProblems.size();
+        return reportError(
+            std::to_string(routeProblems.size()) + " problem(s) in the planned routes (listed above): nothing written; " +
+            (onlyKmz ? "--force writes the other files, but no .kmz for an aircraft that is not a DJI Enterprise model "
+                       "(choose a DJI aircraft for it)"
+             : kmzLeftOut > 0 ? "--force writes them anyway, except the .kmz of an aircraft that is not a DJI "
+                                "Enterprise model (no DJI type to name in it)"
+                              : "--force writes them anyway"));
+    }
 
     const char* planner = mission::plannerKindInfo(m.options.planner).id;
     std::vector<std::string> written;

@@ -506,6 +506,11 @@ Result<MissionInput> missionFromArgs(const Args& args, std::size_t positional) {
 
     if (auto st = applyMissionFlags(args, in); !st)
         return st.error();
+    // A mission file written before the catalog knew DJI drone and payload types: the DJI .kmz
+    // export needs them, the catalog has them (a catalog that cannot be read changes nothing here).
+    if (in.fromMissionFile)
+        if (auto cat = io::loadDefaultCatalog(); cat)
+            io::addDjiTypesFromCatalog(m, *cat);
     return in;
 }
 

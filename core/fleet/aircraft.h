@@ -9,6 +9,18 @@
 
 namespace pf::fleet {
 
+// The aircraft type a DJI WPML mission declares (wpml:droneInfo): droneEnumValue and
+// droneSubEnumValue from the enumeration values of DJI's Cloud API ("Product Support"), e.g. 67/1
+// for the Matrice 30T. Only DJI Enterprise aircraft that fly WPML routes have one.
+struct DjiDroneType {
+    int droneEnum = 0;
+    int subEnum = 0;
+    friend bool operator==(const DjiDroneType& a, const DjiDroneType& b) {
+        return a.droneEnum == b.droneEnum && a.subEnum == b.subEnum;
+    }
+    friend bool operator!=(const DjiDroneType& a, const DjiDroneType& b) { return !(a == b); }
+};
+
 // How an aircraft flies a survey. A multirotor stops and turns on the spot; a fixed-wing flies at
 // its cruise speed and turns on arcs of at least its minimum turn radius; a VTOL aircraft takes off
 // and lands vertically and flies the survey as a fixed-wing.
@@ -84,11 +96,13 @@ struct AircraftSpec {
     PlanePerformance plane;    // used when the kind flies as a plane
     std::string defaultCamera; // a catalog camera name
     std::string notes;         // where the figures come from
+    std::optional<DjiDroneType> dji; // the WPML drone type of a DJI Enterprise aircraft
     friend bool operator==(const AircraftSpec& a, const AircraftSpec& b) {
         return a.name == b.name && a.kind == b.kind && a.cruiseSpeedMps == b.cruiseSpeedMps &&
                a.turnRateDegS == b.turnRateDegS && a.accelerationMps2 == b.accelerationMps2 &&
                a.enduranceMin == b.enduranceMin && a.maxAltitudeM == b.maxAltitudeM &&
-               a.plane == b.plane && a.defaultCamera == b.defaultCamera && a.notes == b.notes;
+               a.plane == b.plane && a.defaultCamera == b.defaultCamera && a.notes == b.notes &&
+               a.dji == b.dji;
     }
 };
 

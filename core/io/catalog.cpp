@@ -74,9 +74,11 @@ public:
             a.plane = JsonReader::plane(p, where + ": plane");
         a.defaultCamera = string(o, where, "default_camera", "");
         a.notes = string(o, where, "note", "");
+        a.dji = detail::djiDroneType(*this, o, where);
         checkKeys(o, where,
                   {"name", "kind", "cruise_speed_mps", "turn_rate_deg_s", "acceleration_mps2",
-                   "endurance_min", "max_altitude_m", "plane", "default_camera"});
+                   "endurance_min", "max_altitude_m", "plane", "default_camera", "dji_drone_enum",
+                   "dji_drone_sub_enum"});
         if (failed())
             return a;
         if (a.name.empty())
@@ -232,6 +234,7 @@ std::string catalogToJson(const Catalog& catalog) {
             o.Add("plane", detail::planeToJson(a.plane));
         if (!a.defaultCamera.empty())
             o.Add("default_camera", a.defaultCamera);
+        detail::addDjiDroneType(o, a.dji);
         if (!a.notes.empty())
             o.Add("note", a.notes);
         aircraft.Add(o);
@@ -260,6 +263,23 @@ Catalog mergeCatalogs(Catalog base, const Catalog& extra) {
     return base;
 }
 
+int addDjiTypesFromCatalog(mission::Mission& mission, const Catalog& catalog) {
+    int changed = 0;
+    for (auto& a : mission.aircraft) {
+        bool touched = false;
+        if (const auto* spec = catalog.findAircraft(a.model); spec && spec->dji && !a.dji) {
+            a.dji = spec->dji;
+            touched = true;
+        }
+        if (const auto* cam = catalog.findCamera(a.camera.name);
+            cam && cam->djiPayloadEnum && !a.camera.djiPayloadEnum) {
+            a.camera.djiPayloadEnum = cam->djiPayloadEnum;
+            touched = true;
+        }
+        changed += touched ? 1 : 0;
+    }
+    return changed;
+}
 
 Result<Catalog> loadDefaultCatalog() {
     const std::string dir = pf::dataDirectory();

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/fleet/aircraft.h"
+#include "core/mission/mission.h"
 #include "core/result.h"
 #include "core/sensor/camera.h"
 
@@ -26,5 +27,11 @@ Catalog mergeCatalogs(Catalog base, const Catalog& extra);
 // The bundled catalog found in $PHOTOFLIGHT_DATA_DIR, the installed data directory or the source
 // tree's resources/, merged with the user's catalog (~/.local/share/photoflight/catalog.json) if any.
 Result<Catalog> loadDefaultCatalog();
+
+// The DJI types a mission file written before the catalog had them lacks: the drone type of each
+// aircraft whose model is a catalog aircraft with one, the payload type of each camera named like a
+// catalog camera with one (what the DJI .kmz export needs). Values already set are kept. Returns
+// the number of aircraft changed.
+int addDjiTypesFromCatalog(mission::Mission& mission, const Catalog& catalog);
 
 } // namespace pf::io

@@ -59,6 +59,9 @@ struct ExportOptions {
     // .waypoints home line (both AMSL); 0 when unknown (a connected vehicle replaces it with its own).
     std::optional<double> homeElevationM;
     AltitudeFrame altitudeFrame = AltitudeFrame::Auto;
+    // Write a file the route's aircraft cannot fly (Litchi's CSV for a DJI Enterprise model, ...):
+    // the user insisted (--force, "Export anyway").
+    bool forceAircraft = false;
 };
 
 // The home's elevation above sea level for a route: its own (planned over a terrain model: the

@@ -263,6 +263,21 @@ geo::GeoPolygon JsonReader::polygon(const CPLJSONObject& parent, const std::stri
     return poly;
 }
 
+std::optional<fleet::DjiDroneType> djiDroneType(JsonReader& reader, const CPLJSONObject& o,
+                                                const std::string& path) {
+    const bool hasSub = JsonReader::member(o, "dji_drone_sub_enum").IsValid();
+    if (!JsonReader::member(o, "dji_drone_enum").IsValid()) {
+        if (hasSub)
+            reader.fail(reader.join(path, "dji_drone_sub_enum"),
+                        "needs dji_drone_enum (the drone type) beside it");
+        return std::nullopt;
+    }
+    fleet::DjiDroneType t;
+    t.droneEnum = static_cast<int>(reader.integer(o, path, "dji_drone_enum", 0, true, 0, 65535));
+    t.subEnum = static_cast<int>(reader.integer(o, path, "dji_drone_sub_enum", 0, false, 0, 65535));
+    return t;
+}
+
 sensor::Camera JsonReader::camera(const CPLJSONObject& o, const std::string& path, bool named) {
     sensor::Camera c;
     if (!expectType(o, path, o.GetType() == CPLJSONObject::Type::Object, "an object"))
@@ -276,8 +291,12 @@ sensor::Camera JsonReader::camera(const CPLJSONObject& o, const std::string& pat
     c.vfovDeg = number(o, p, "vfov_deg", 0.0);
     c.imageWidthPx = static_cast<int>(integer(o, p, "image_width_px", 0, true, 1, 1'000'000));
     c.imageHeightPx = static_cast<int>(integer(o, p, "image_height_px", 0, true, 1, 1'000'000));
-    checkKeys(o, p, {"name", "sensor_width_mm", "sensor_height_mm", "focal_length_mm", "hfov_deg", "vfov_deg",
-                     "image_width_px", "image_height_px"});
+    // WPML's payloadEnumValue is an int; DJI's enumeration values stay within [0, 65535].
+    if (member(o, "dji_payload_enum").IsValid())
+        c.djiPayloadEnum = static_cast<int>(integer(o, p, "dji_payload_enum", 0, true, 0, 65535));
+    checkKeys(o, p,
+              {"name", "sensor_width_mm", "sensor_height_mm", "focal_length_mm", "hfov_deg",
+               "vfov_deg", "image_width_px", "image_height_px", "dji_payload_enum"});
     if (failed())
         return c;
     if (named && c.name.empty())

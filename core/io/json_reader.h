@@ -109,4 +109,9 @@ private:
     std::optional<Error> m_error;
 };
 
+// An aircraft's "dji_drone_enum" (required for a DJI type) and "dji_drone_sub_enum" (default 0),
+// both integers in [0, 65535]; nothing when the aircraft has no "dji_drone_enum".
+std::optional<fleet::DjiDroneType> djiDroneType(JsonReader& reader, const CPLJSONObject& o,
+                                                const std::string& path);
+
 } // namespace pf::io::detail

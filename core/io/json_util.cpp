@@ -16,6 +16,13 @@ CPLJSONObject jsonNumber(double v) {
     return doc.GetRoot().ToArray()[0];
 }
 
+void addDjiDroneType(CPLJSONObject& o, const std::optional<fleet::DjiDroneType>& dji) {
+    if (!dji)
+        return;
+    o.Add("dji_drone_enum", dji->droneEnum);
+    o.Add("dji_drone_sub_enum", dji->subEnum);
+}
+
 CPLJSONObject cameraToJson(const sensor::Camera& c) {
     CPLJSONObject o;
     o.Add("name", c.name);
@@ -30,6 +37,8 @@ CPLJSONObject cameraToJson(const sensor::Camera& c) {
     }
     o.Add("image_width_px", c.imageWidthPx);
     o.Add("image_height_px", c.imageHeightPx);
+    if (c.djiPayloadEnum)
+        o.Add("dji_payload_enum", *c.djiPayloadEnum);
     return o;
 }
 

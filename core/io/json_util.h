@@ -4,6 +4,8 @@
 #include "core/fleet/aircraft.h"
 #include "core/sensor/camera.h"
 
+#include <optional>
+
 #include <cpl_json.h>
 
 namespace pf::io::detail {
@@ -17,6 +19,9 @@ CPLJSONObject jsonNumber(double v);
 // A camera as the mission file and the catalog store it: only the definition in use is written
 // (optics or field of view); absent values read back as 0.
 CPLJSONObject cameraToJson(const sensor::Camera& c);
+
+// "dji_drone_enum" and "dji_drone_sub_enum" of an aircraft (catalog and mission file), when known.
+void addDjiDroneType(CPLJSONObject& o, const std::optional<fleet::DjiDroneType>& dji);
 
 // A plane's figures as the mission file and the catalog store them ("plane": {"turn_radius_m",
 // "bank_deg", "climb_rate_mps", "sink_rate_mps", "run_in_m", "stall_speed_mps"}); the optional

@@ -134,6 +134,15 @@ Result<MissionExportReport> exportVehicleFlights(const ExportContext& ctx, std::
         return makeError(ErrorCode::InvalidInput,
                          "there is no route " + std::to_string(i + 1) + " to export");
     MissionExportReport report;
+    // The aircraft is checked once for all its flights: one note, and no .kmz for an aircraft
+    // that is not a DJI Enterprise model.
+    auto check = checkAircraftFormat(ctx, i, format, options);
+    if (!check)
+        return check.error();
+    if (!check->note.empty())
+        report.notes.push_back(check->note);
+    if (check->leaveOut)
+        return report;
     const std::size_t extLength = detail::extensionOf(path).size();
     const std::string stem = path.substr(0, path.size() - extLength);
     const std::string ext = path.substr(path.size() - extLength);
@@ -145,7 +154,7 @@ Result<MissionExportReport> exportVehicleFlights(const ExportContext& ctx, std::
     std::vector<std::size_t> over;
     for (std::size_t s = 0; s < flights.routes.size(); ++s) {
         const std::string file = several ? stem + "-sortie" + std::to_string(s + 1) + ext : path;
-        auto r = exportRouteFiles(flights, s, format, file, options);
+        auto r = detail::writeRouteFiles(flights, s, format, file, options);
         if (auto st = appendReport(report, r); !st)
             return st.error();
         files.push_back(detail::baseName(r->files.front()));

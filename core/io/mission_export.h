@@ -48,7 +48,8 @@ Result<MissionExportReport> exportMission(const mission::Mission& mission,
                                           const std::vector<route::Route>& routes,
                                           const MissionExportRequest& request);
 
-// Route `routeIndex` of ctx written in a vehicle format: to `path` when it flies one sortie, else
+// Route `routeIndex` of ctx written in a vehicle format, after the check of its aircraft against
+// the format (checkAircraftFormat, once for all its flights): to `path` when it flies one sortie, else
 // one file per sortie, "<path without extension>-sortieN.<ext>" (a note names them); a warning
 // names its flights holding more mission items than their autopilot stores.
 Result<MissionExportReport> exportVehicleFlights(const ExportContext& ctx, std::size_t routeIndex,

@@ -209,9 +209,12 @@ int requiredVersion(const mission::Mission& m) {
         v = std::max(v, 3);
     if (!m.terrain.isDefault())
         v = std::max(v, 4);
-    for (const auto& a : m.aircraft)
+    for (const auto& a : m.aircraft) {
         if (writesPlane(a))
             v = std::max(v, 5);
+        if (a.dji || a.camera.djiPayloadEnum)
+            v = std::max(v, 6);
+    }
     if (m.corridor || m.options.doubleGrid)
         v = std::max(v, 5);
     for (const auto& r : m.editedRoutes) {
@@ -277,6 +280,7 @@ std::string missionToJson(const mission::Mission& m) {
             o.Add("acceleration_mps2", jsonNumber(a.accelerationMps2));
         o.Add("endurance_min", jsonNumber(a.enduranceMin));
         o.Add("max_altitude_m", jsonNumber(a.maxAltitudeM));
+        detail::addDjiDroneType(o, a.dji);
         if (writesPlane(a))
             o.Add("plane", detail::planeToJson(a.plane));
         o.Add("colour", a.colour);

@@ -70,10 +70,16 @@ public:
         a.maxAltitudeM = number(o, path, "max_altitude_m", a.maxAltitudeM);
         a.colour = colour(o, path, a.colour);
         a.home = optionalPosition(o, path, "home");
+        a.dji = detail::djiDroneType(*this, o, path);
         checkKeys(o, path,
                   {"name", "model", "kind", "camera", "altitude_m", "gsd_cm", "front_overlap",
                    "side_overlap", "cruise_speed_mps", "turn_rate_deg_s", "acceleration_mps2",
-                   "endurance_min", "max_altitude_m", "plane", "colour", "home"});
+                   "endurance_min", "max_altitude_m", "plane", "colour", "home", "dji_drone_enum",
+                   "dji_drone_sub_enum"});
+        if (!failed() && m_version < 6 && (a.dji || a.camera.djiPayloadEnum))
+            fail(path, "DJI drone and payload types (dji_drone_enum, dji_payload_enum) need "
+                       "version 6 of the mission file, but the file says version " +
+                           std::to_string(m_version));
         return a;
     }
 

@@ -5,6 +5,7 @@
 
 #include "core/geo/types.h"
 #include "core/io/export_context.h"
+#include "core/io/waypoint_formats.h"
 #include "core/result.h"
 #include "core/route/waypoint.h"
 
@@ -61,6 +62,12 @@ std::string waypointPositionProblem(double lon, double lat, double altitudeM);
 std::string extensionOf(const std::string& path);
 // The file name of a path, for messages.
 std::string baseName(const std::string& path);
+
+// exportRouteFiles without its aircraft check (checkAircraftFormat): for a caller that made it once
+// for a route it writes in several pieces (one file per sortie).
+Result<ExportReport> writeRouteFiles(const ExportContext& ctx, std::size_t routeIndex,
+                                     WaypointFormat format, const std::string& path,
+                                     const ExportOptions& options);
 
 // OGR plumbing: a dataset that is closed (and flushed) when it goes out of scope.
 struct DatasetCloser {

@@ -9,6 +9,7 @@
 #include "core/io/trigger_lanes.h"
 #include "core/io/waypoint_format_util.h"
 #include "core/io/waypoint_geojson.h"
+#include "core/io/wpml_kmz.h"
 #include "core/mission/route_check.h"
 
 #include <algorithm>
@@ -30,6 +31,14 @@ const std::vector<WaypointFormatInfo>& waypointFormats() {
         {WaypointFormat::GeoJson, "geojson", ".geojson", "GeoJSON features", true, true, 0.1, 0,
          false},
         {WaypointFormat::LitchiCsv, "csv", ".csv", "Litchi mission hub CSV", true, false, 0.6, 99},
+        // DJI WPML ("waylines.wpml", "Common Elements"): wpml:index and wpml:actionGroupId are
+        // documented in [0, 65535]. A wayline of 65535 waypoints has at most 65536 action groups
+        // (the gimbal's and one per photo waypoint), so both fit; a longer route is split. The
+        // pages give no other count limit (no mission storage limit as the MAVLink autopilots
+        // have) and no minimum spacing: 0.6 m is DJI's waypoint-mission minimum that the Litchi
+        // export keeps too.
+        {WaypointFormat::WpmlKmz, "kmz", ".kmz", "DJI Pilot 2 / FlightHub 2", true, false, 0.6,
+         65535},
     };
     return kFormats;
 }
@@ -63,6 +72,8 @@ Result<WaypointFormat> formatFromName(const std::string& name) {
         return WaypointFormat::GeoJson;
     if (n == "litchi")
         return WaypointFormat::LitchiCsv;
+    if (n == "wpml" || n == "dji")
+        return WaypointFormat::WpmlKmz;
     for (const auto& f : waypointFormats())
         if (n == f.name)
             return f.format;
@@ -79,7 +90,7 @@ Result<WaypointFormat> formatFromPath(const std::string& path) {
             return f.format;
     return makeError(ErrorCode::Unsupported,
                      path + ": cannot tell the waypoint format from the extension \"" + ext +
-                         "\" (use .plan, .waypoints, .kml, .gpx, .geojson, .json or .csv)");
+                         "\" (use .plan, .waypoints, .kml, .gpx, .geojson, .json, .csv or .kmz)");
 }
 
 Result<std::vector<WaypointFormat>> formatListFromString(const std::string& commaSeparated) {
@@ -153,6 +164,8 @@ Status writeOne(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat
         return writeGpx(ctx, {routeIndex}, path);
     case WaypointFormat::GeoJson:
         return writeWaypointGeoJson(ctx, {routeIndex}, path);
+    case WaypointFormat::WpmlKmz:
+        return writeWpmlKmz(ctx, routeIndex, path, options);
     }
     return makeError(ErrorCode::Internal, "unknown waypoint format");
 }
@@ -164,9 +177,50 @@ std::string partPath(const std::string& path, std::size_t part) {
 
 } // namespace
 
+Result<AircraftFormatCheck> checkAircraftFormat(const ExportContext& ctx, std::size_t routeIndex,
+                                                WaypointFormat format,
+                                                const ExportOptions& options) {
+    AircraftFormatCheck check;
+    const std::string problem = aircraftFormatProblem(ctx, routeIndex, format);
+    if (problem.empty())
+        return check;
+    if (!options.forceAircraft)
+        return makeError(ErrorCode::Unsupported, problem);
+    // A .kmz names the DJI drone and payload types it is for: there is none to name.
+    check.leaveOut = format == WaypointFormat::WpmlKmz;
+    check.note = problem + (check.leaveOut ? "; no " + std::string(formatInfo(format).extension) +
+                                                 " written for it"
+                                           : std::string("; written anyway, as asked"));
+    return check;
+}
+
 Result<ExportReport> exportRouteFiles(const ExportContext& ctx, std::size_t routeIndex,
                                       WaypointFormat format, const std::string& path,
                                       const ExportOptions& options) {
+    if (routeIndex >= ctx.routes.size())
+        return makeError(ErrorCode::InvalidInput,
+                         "there is no route " + std::to_string(routeIndex + 1) + " to export");
+    auto check = checkAircraftFormat(ctx, routeIndex, format, options);
+    if (!check)
+        return check.error();
+    ExportReport report;
+    if (!check->note.empty())
+        report.notes.push_back(check->note);
+    if (check->leaveOut)
+        return report;
+    auto written = detail::writeRouteFiles(ctx, routeIndex, format, path, options);
+    if (!written)
+        return written.error();
+    report.files = std::move(written->files);
+    report.notes.insert(report.notes.end(), written->notes.begin(), written->notes.end());
+    return report;
+}
+
+namespace detail {
+
+Result<ExportReport> writeRouteFiles(const ExportContext& ctx, std::size_t routeIndex,
+                                     WaypointFormat format, const std::string& path,
+                                     const ExportOptions& options) {
     if (routeIndex >= ctx.routes.size())
         return makeError(ErrorCode::InvalidInput,
                          "there is no route " + std::to_string(routeIndex + 1) + " to export");
@@ -205,6 +259,8 @@ Result<ExportReport> exportRouteFiles(const ExportContext& ctx, std::size_t rout
     return report;
 }
 
+} // namespace detail
+
 Status exportRoute(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat format,
                    const std::string& path, const ExportOptions& options) {
     auto r = exportRouteFiles(ctx, routeIndex, format, path, options);
@@ -230,6 +286,38 @@ Status exportCombined(const ExportContext& original, WaypointFormat format, cons
                          std::string("a ") + formatInfo(format).description +
                              " file holds one aircraft's mission; write one file per aircraft");
     }
+}
+
+std::string aircraftFormatProblem(const ExportContext& ctx, std::size_t routeIndex,
+                                  WaypointFormat format) {
+    const mission::AircraftConfig* a = ctx.aircraftFor(routeIndex);
+    const std::string label = ctx.routeLabel(routeIndex);
+    const std::string named = !a || a->model == label ? label : label + " (" + a->model + ")";
+    switch (format) {
+    case WaypointFormat::WpmlKmz:
+        return wpmlAircraftProblem(ctx, routeIndex);
+    case WaypointFormat::LitchiCsv:
+        if (a && a->dji)
+            return named +
+                   " is a DJI Enterprise aircraft: Litchi does not "
+                   "fly the Enterprise series; export the DJI Pilot 2 / FlightHub 2 .kmz for it";
+        return {};
+    case WaypointFormat::QgcPlan:
+    case WaypointFormat::QgcWpl:
+        if (a && a->dji)
+            return named +
+                   " is a DJI Enterprise aircraft: it flies DJI's "
+                   "own flight controller, not ArduPilot or PX4, and cannot fly a MAVLink mission "
+                   "(" +
+                   formatInfo(format).extension +
+                   "); export the DJI Pilot 2 / FlightHub 2 .kmz for it";
+        return {};
+    case WaypointFormat::Kml:
+    case WaypointFormat::Gpx:
+    case WaypointFormat::GeoJson:
+        return {};
+    }
+    return {};
 }
 
 std::string fileNameSafe(const std::string& name) {
@@ -278,6 +366,8 @@ Result<ImportedWaypoints> importWaypoints(const std::string& path) {
         return readGpx(path);
     case WaypointFormat::GeoJson:
         return readWaypointGeoJson(path);
+    case WaypointFormat::WpmlKmz:
+        return readWpmlKmz(path);
     case WaypointFormat::Kml:
         return makeError(
             ErrorCode::Unsupported,

@@ -24,11 +24,11 @@
 
 namespace pf::io {
 
-enum class WaypointFormat { QgcPlan, QgcWpl, Kml, Gpx, GeoJson, LitchiCsv };
+enum class WaypointFormat { QgcPlan, QgcWpl, Kml, Gpx, GeoJson, LitchiCsv, WpmlKmz };
 
 struct WaypointFormatInfo {
     WaypointFormat format;
-    const char* name;        // as in --format: "plan", "waypoints", "kml", "gpx", "geojson", "csv"
+    const char* name; // as in --format: "plan", "waypoints", "kml", "gpx", "geojson", "csv", "kmz"
     const char* extension;   // written extension, with the dot
     const char* description; // one line for help texts
     bool canImport;          // every format but KML is read back
@@ -44,10 +44,10 @@ struct WaypointFormatInfo {
 const std::vector<WaypointFormatInfo>& waypointFormats();
 const WaypointFormatInfo& formatInfo(WaypointFormat format);
 
-// "plan", "waypoints", "kml", "gpx", "geojson" (also "json"), "csv" (also "litchi"),
-// case-insensitive.
+// "plan", "waypoints", "kml", "gpx", "geojson" (also "json"), "csv" (also "litchi"), "kmz" (also
+// "wpml", "dji"), case-insensitive.
 Result<WaypointFormat> formatFromName(const std::string& name);
-// By extension: .plan .waypoints .kml .gpx .geojson .json .csv
+// By extension: .plan .waypoints .kml .gpx .geojson .json .csv .kmz
 Result<WaypointFormat> formatFromPath(const std::string& path);
 // Parses "plan,kml,gpx"; errors name the unknown entry.
 Result<std::vector<WaypointFormat>> formatListFromString(const std::string& commaSeparated);
@@ -58,7 +58,26 @@ struct ExportReport {
     std::vector<std::string> notes; // merged waypoints, a route split into several files
 };
 
-// One aircraft's route in one file; waypoints closer than the format's minimum are merged, and a
+// Why the route's aircraft cannot fly a file of this format, or empty: a .kmz for an aircraft that
+// is not a DJI Enterprise model (wpmlAircraftProblem), Litchi's CSV or a MAVLink mission (.plan,
+// .waypoints) for a DJI Enterprise aircraft. KML, GPX and GeoJSON are for viewing and fit any
+// aircraft.
+std::string aircraftFormatProblem(const ExportContext& ctx, std::size_t routeIndex,
+                                  WaypointFormat format);
+
+// What an export does when the route's aircraft cannot fly the format (aircraftFormatProblem):
+// refuse (Unsupported, the problem as message) unless options.forceAircraft; forced, `note` says
+// so, and `leaveOut` is set for a .kmz, which must name a DJI aircraft: no file is written for it.
+struct AircraftFormatCheck {
+    std::string note; // empty when the aircraft flies the format
+    bool leaveOut = false;
+};
+Result<AircraftFormatCheck> checkAircraftFormat(const ExportContext& ctx, std::size_t routeIndex,
+                                                WaypointFormat format,
+                                                const ExportOptions& options);
+
+// One aircraft's route in one file, after checkAircraftFormat (its note among the report's notes;
+// a .kmz left out writes no file). Waypoints closer than the format's minimum are merged, and a
 // route over the format's waypoint limit (Litchi: 99) is written as numbered files
 // "<path stem>-part1.csv", "-part2.csv", ... each starting where the previous one ended.
 Result<ExportReport> exportRouteFiles(const ExportContext& ctx, std::size_t routeIndex,

@@ -15,6 +15,7 @@ AircraftConfig aircraftFromCatalog(const fleet::AircraftSpec& spec, const sensor
     a.accelerationMps2 = spec.accelerationMps2;
     a.enduranceMin = spec.enduranceMin;
     a.maxAltitudeM = spec.maxAltitudeM;
+    a.dji = spec.dji;
     return a;
 }
 
@@ -38,7 +39,8 @@ bool operator==(const AircraftConfig& a, const AircraftConfig& b) {
            a.overlap.front == b.overlap.front && a.overlap.side == b.overlap.side &&
            a.cruiseSpeedMps == b.cruiseSpeedMps && a.turnRateDegS == b.turnRateDegS &&
            a.accelerationMps2 == b.accelerationMps2 && a.enduranceMin == b.enduranceMin &&
-           a.maxAltitudeM == b.maxAltitudeM && a.colour == b.colour && a.home == b.home;
+           a.maxAltitudeM == b.maxAltitudeM && a.colour == b.colour && a.home == b.home &&
+           a.dji == b.dji;
 }
 
 bool operator==(const PlannerOptions& a, const PlannerOptions& b) {

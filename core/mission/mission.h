@@ -54,6 +54,8 @@ struct AircraftConfig {
         plane; // turn radius, climb, run-in: used when the kind flies as a plane
     std::string colour = "#e6194b"; // #rrggbb, used on the map
     std::optional<geo::LonLat> home; // take-off and landing point; the mission's home if unset
+    std::optional<fleet::DjiDroneType>
+        dji; // a DJI Enterprise model's WPML drone type (from the catalog)
     friend bool operator==(const AircraftConfig& a, const AircraftConfig& b);
 };
 
@@ -141,9 +143,10 @@ bool sameRoute(const route::Route& a, const route::Route& b);
 // Newest mission file format version: 2 added the optional "routes" (hand-edited routes), 3 the
 // aircraft's "acceleration_mps2" and the planners "auto", "sweep" and "lawnmower", 4 "terrain"
 // (terrain following) and the routes' ground heights, 5 the aircraft's "kind" (multirotor,
-// fixed-wing, VTOL) and "plane" figures, a "corridor" and the double grid. A file is written with
-// the oldest version that holds what it contains (version 1 without any of them), so that older
-// releases keep reading it.
-constexpr int kMissionFileVersion = 5;
+// fixed-wing, VTOL) and "plane" figures, a "corridor" and the double grid, 6 the DJI drone and
+// payload types of DJI Enterprise aircraft ("dji_drone_enum", "dji_drone_sub_enum", the camera's
+// "dji_payload_enum"). A file is written with the oldest version that holds what it contains
+// (version 1 without any of them), so that older releases keep reading it.
+constexpr int kMissionFileVersion = 6;
 
 } // namespace pf::mission

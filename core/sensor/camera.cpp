@@ -59,9 +59,10 @@ double shortSidePerMetre(const Camera& cam) {
 } // namespace
 
 bool operator==(const Camera& a, const Camera& b) {
-    return a.name == b.name && a.sensorWidthMm == b.sensorWidthMm && a.sensorHeightMm == b.sensorHeightMm &&
-           a.focalLengthMm == b.focalLengthMm && a.imageWidthPx == b.imageWidthPx &&
-           a.imageHeightPx == b.imageHeightPx && a.hfovDeg == b.hfovDeg && a.vfovDeg == b.vfovDeg;
+    return a.name == b.name && a.sensorWidthMm == b.sensorWidthMm &&
+           a.sensorHeightMm == b.sensorHeightMm && a.focalLengthMm == b.focalLengthMm &&
+           a.imageWidthPx == b.imageWidthPx && a.imageHeightPx == b.imageHeightPx &&
+           a.hfovDeg == b.hfovDeg && a.vfovDeg == b.vfovDeg && a.djiPayloadEnum == b.djiPayloadEnum;
 }
 
 Status validate(const Camera& cam) {

@@ -3,6 +3,7 @@
 
 #include "core/result.h"
 
+#include <optional>
 #include <string>
 
 namespace pf::sensor {
@@ -19,6 +20,10 @@ struct Camera {
     int imageHeightPx = 0;
     double hfovDeg = 0.0; // field of view across the long side (used when the optics are unset)
     double vfovDeg = 0.0; // field of view across the short side
+    // The payload type a DJI WPML mission declares for this camera (wpml:payloadEnumValue, the
+    // "type" of the camera's enumeration value in DJI's Cloud API, e.g. 52 for the Matrice 30
+    // camera).
+    std::optional<int> djiPayloadEnum;
 
     bool hasOptics() const { return sensorWidthMm > 0 && sensorHeightMm > 0 && focalLengthMm > 0; }
     friend bool operator==(const Camera& a, const Camera& b);

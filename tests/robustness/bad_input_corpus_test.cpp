@@ -146,7 +146,9 @@ const BadInput kCorpus[] = {
     // --- waypoint files and the catalog ---
     {"truncated .plan", "convert formats/truncated.plan /dev/null/x.gpx", "truncated.plan: line 16, column 30: invalid JSON"},
     {"truncated GPX", "convert formats/truncated.gpx /dev/null/x.plan", "truncated.gpx: not a readable GPX file"},
-    {"unknown output format", "convert formats/litchi_hub.csv out.kmz", "cannot tell the waypoint format from the extension \".kmz\""},
+    {"unknown output format", "convert formats/litchi_hub.csv out.xyz", "cannot tell the waypoint format from the extension \".xyz\""},
+    {"kmz for a route no DJI aircraft flies", "convert formats/litchi_hub.csv out.kmz",
+     "no catalog aircraft flies this route, so the DJI WPML file cannot say which DJI aircraft flies it"},
     // inputs the fuzzers found (undefined behaviour before the fix), kept as regressions
     {"huge MAVLink command", "convert fuzz/regressions/qgc_wpl_huge_frame.waypoints out.gpx",
      "line 2: command \"2222222222222222222222222222222222222222222222222222222222222222222222222222222222216\" is out of range"},

@@ -5,6 +5,7 @@
 #include "tests/short_battery_demo.h"
 #include "tests/ui/ui_test_util.h"
 
+#include "core/io/catalog.h"
 #include "core/io/mission_file.h"
 #include "ui/dialogs/export_dialog.h"
 #include "ui/map/plan_layer.h"
@@ -57,13 +58,42 @@ std::map<QString, QByteArray> filesIn(const QString& dir, const QStringList& ski
     return out;
 }
 
+// Every format ticked but the DJI .kmz: it names a DJI Enterprise aircraft, and the demo's Falcon 8
+// and Phantom 4 Pro are none (the export would ask to leave it out).
 void tickEveryFormat(ExportDialog& dialog) {
     for (const auto& info : io::waypointFormats()) {
         auto* box = dialog.findChild<QCheckBox*>(
             QStringLiteral("ExportFormat_%1").arg(QString::fromLatin1(info.name)));
         ASSERT_NE(box, nullptr) << info.name;
-        box->setChecked(true);
+        box->setChecked(info.format != io::WaypointFormat::WpmlKmz);
     }
+}
+
+// The short-battery demo flown by DJI Enterprise aircraft of the catalog: a Matrice 30 (4-minute
+// battery: two sorties) and a Mavic 3 Enterprise, with their catalog cameras and the demo's
+// altitudes.
+mission::Mission shortBatteryDjiDemo() {
+    mission::Mission m = pf::test::shortBatteryDemo();
+    auto cat = io::loadDefaultCatalog();
+    EXPECT_TRUE(cat.ok());
+    if (!cat || m.aircraft.size() != 2)
+        return m;
+    const char* models[] = {"DJI Matrice 30", "DJI Mavic 3 Enterprise"};
+    for (std::size_t i = 0; i < 2; ++i) {
+        const auto* spec = cat->findAircraft(models[i]);
+        EXPECT_NE(spec, nullptr) << models[i];
+        if (!spec)
+            return m;
+        mission::AircraftConfig a =
+            mission::aircraftFromCatalog(*spec, cat->findCamera(spec->defaultCamera));
+        a.altitudeM = m.aircraft[i].altitudeM;
+        a.gsdCm = m.aircraft[i].gsdCm;
+        a.colour = m.aircraft[i].colour;
+        a.home = m.aircraft[i].home;
+        m.aircraft[i] = a;
+    }
+    m.aircraft.front().enduranceMin = 4.0;
+    return m;
 }
 
 } // namespace
@@ -206,4 +236,51 @@ TEST(SortieExport, TheTableAndTheMapShowEachSortieAlsoOnAnEditedRoute) {
     EXPECT_TRUE(names.contains(QStringLiteral("mission-Falcon_8-sortie2.plan")))
         << names.join(' ').toStdString();
     EXPECT_FALSE(names.contains(QStringLiteral("mission-Falcon_8.plan")));
+}
+
+// Every aircraft a DJI Enterprise model: the dialog ticks the DJI Pilot 2 / FlightHub 2 .kmz by
+// default, writes one .kmz per sortie (none flying both) as `photoflight-cli plan --format kmz`
+// does, and the files-written window lists each of them.
+TEST(SortieExport, DjiAircraftGetTheKmzByDefaultOneFilePerSortie) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const QString missionPath = dir.filePath(QStringLiteral("dji.json"));
+    auto w = openAndPlan(shortBatteryDjiDemo(), missionPath);
+    ASSERT_EQ(w->document()->routes().size(), 2u);
+    ASSERT_GE(w->planController()->plan()->aircraft.front().sorties.size(), 2u);
+
+    const QString guiDir = dir.filePath(QStringLiteral("gui"));
+    ExportDialog dialog(w->document(), w->planController(), guiDir);
+    dialog.show();
+    auto* kmz = dialog.findChild<QCheckBox*>(QStringLiteral("ExportFormat_kmz"));
+    auto* qgc = dialog.findChild<QCheckBox*>(QStringLiteral("ExportFormat_plan"));
+    ASSERT_NE(kmz, nullptr);
+    ASSERT_NE(qgc, nullptr);
+    EXPECT_TRUE(kmz->isChecked());
+    EXPECT_FALSE(qgc->isChecked()); // no MAVLink mission for an aircraft that flies none
+    const QStringList written = dialog.runExport();
+    ASSERT_FALSE(written.isEmpty()) << dialog.resultText().toStdString();
+
+    const QString cliDir = dir.filePath(QStringLiteral("cli"));
+    const std::string cmd = std::string("'") + PF_CLI_PATH + "' plan '" +
+                            missionPath.toStdString() + "' --format kmz,kml --out '" +
+                            cliDir.toStdString() + "' >/dev/null 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    std::vector<QString> guiNames, cliNames;
+    for (const auto& [name, bytes] : filesIn(guiDir))
+        guiNames.push_back(name);
+    for (const auto& [name, bytes] :
+         filesIn(cliDir, {QStringLiteral("plan.geojson"), QStringLiteral("metrics.json")}))
+        cliNames.push_back(name);
+    EXPECT_EQ(guiNames, cliNames);
+
+    const QString m30 = QStringLiteral("mission-DJI_Matrice_30");
+    const QString result = dialog.resultText();
+    for (const QString& f :
+         {m30 + QStringLiteral("-sortie1.kmz"), m30 + QStringLiteral("-sortie2.kmz"),
+          QStringLiteral("mission-DJI_Mavic_3_Enterprise.kmz")}) {
+        EXPECT_TRUE(QFileInfo::exists(QDir(guiDir).filePath(f))) << f.toStdString();
+        EXPECT_TRUE(result.contains(f)) << result.toStdString();
+    }
+    EXPECT_FALSE(QFileInfo::exists(QDir(guiDir).filePath(m30 + QStringLiteral(".kmz"))));
 }

@@ -23,6 +23,8 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace pf::ui {
 
 ExportDialog::ExportDialog(MissionDocument* doc, PlanController* planner, const QString& folder,
@@ -36,12 +38,12 @@ ExportDialog::ExportDialog(MissionDocument* doc, PlanController* planner, const 
                                            "border-radius: 3px; }"));
     auto* formats = new QGroupBox(tr("Formats"));
     auto* fl = new QVBoxLayout(formats);
+    const auto ticked = defaultExportFormats(m_doc->mission());
     for (const auto& info : io::waypointFormats()) {
         auto* box = new QCheckBox(QStringLiteral("%1 (%2)").arg(
             QString::fromLatin1(info.description), QString::fromLatin1(info.extension)));
         box->setObjectName(QStringLiteral("ExportFormat_%1").arg(QString::fromLatin1(info.name)));
-        box->setChecked(info.format == io::WaypointFormat::QgcPlan ||
-                        info.format == io::WaypointFormat::Kml);
+        box->setChecked(std::find(ticked.begin(), ticked.end(), info.format) != ticked.end());
         fl->addWidget(box);
         m_formats[info.format] = box;
     }
@@ -52,7 +54,7 @@ ExportDialog::ExportDialog(MissionDocument* doc, PlanController* planner, const 
     rebuildRouteBoxes();
     m_perAircraft = new QCheckBox(tr("One file per aircraft (KML, GPX, GeoJSON)"));
     m_perAircraft->setToolTip(
-        tr("Vehicle files (.plan, .waypoints, Litchi .csv) are always one per aircraft, "
+        tr("Vehicle files (.plan, .waypoints, Litchi .csv, DJI .kmz) are always one per aircraft, "
            "and one per battery for an aircraft that needs several"));
     m_perAircraft->setChecked(true);
     m_combined =
@@ -387,11 +389,13 @@ bool ExportDialog::confirmCurrentPlan() {
 }
 
 bool ExportDialog::confirmRouteErrors(const QStringList& problems) {
-    QMessageBox box(QMessageBox::Critical, tr("Export waypoints"),
-                    tr("The route check found %n problem(s). An aircraft flying these routes would enter a "
-                       "no-fly zone's safety margin or fly at an altitude out of its limits:",
-                       nullptr, problems.size()),
-                    QMessageBox::Cancel, this);
+    QMessageBox box(
+        QMessageBox::Critical, tr("Export waypoints"),
+        tr("The route check found %n problem(s). An aircraft flying these routes would enter a "
+           "no-fly zone's safety margin, fly at an altitude out of its limits, or get a file it "
+           "cannot fly:",
+           nullptr, problems.size()),
+        QMessageBox::Cancel, this);
     const int shown = std::min(12, int(problems.size()));
     QString list = problems.mid(0, shown).join(QLatin1Char('\n'));
     if (shown < problems.size())

@@ -28,6 +28,16 @@ struct ExportRequest {
     bool allowRouteErrors = false;
 };
 
+// The mission with the DJI drone and payload types of its catalog aircraft and cameras filled in (a
+// mission file written before the catalog knew them): what the .kmz export and the check of each
+// aircraft against the formats need.
+mission::Mission withDjiTypes(const mission::Mission& mission);
+
+// The formats the export offers ticked: the DJI Pilot 2 / FlightHub 2 .kmz and KML when every
+// aircraft of the mission is a DJI Enterprise model (they fly no MAVLink mission), else the
+// QGroundControl .plan and KML.
+std::vector<io::WaypointFormat> defaultExportFormats(const mission::Mission& mission);
+
 // Writes the files; returns the paths written. On the first failure stops, and `error` names the
 // file and the problem. Chosen routes with errors are refused (nothing written) unless
 // request.allowRouteErrors: `error` then says so and `routeProblems` lists every problem. `notes`

@@ -252,8 +252,7 @@ TEST(CatalogErrors, EntriesAreNamed) {
         "endurance_min": 25, "max_altitude_m": 120, "default_camer": "Cam"})")),
         "c.json: aircraft[0] (\"Typo\"): default_camer: unknown field (known here: name, kind, "
         "cruise_speed_mps, turn_rate_deg_s, acceleration_mps2, endurance_min, max_altitude_m, "
-        "plane, "
-        "default_camera)");
+        "plane, default_camera, dji_drone_enum, dji_drone_sub_enum)");
     EXPECT_EQ(errorOfText(R"({"format": "photoflight-catalog", "version": 1, "aircraft": {}})"),
               "c.json: aircraft: expected an array but found an object");
 }

@@ -395,10 +395,9 @@ TEST(MissionFileErrors, MisspeltFieldsAreNotIgnored) {
     EXPECT_EQ(errorOf(with(kMinimal, "\"altitude_m\": 50.0",
                            "\"altitude_m\": 50.0, \"front_overlpa\": 0.8")),
               "x.json: aircraft[0].front_overlpa: unknown field (known here: name, model, kind, "
-              "camera, altitude_m, "
-              "gsd_cm, front_overlap, side_overlap, cruise_speed_mps, turn_rate_deg_s, "
-              "acceleration_mps2, "
-              "endurance_min, max_altitude_m, plane, colour, home)");
+              "camera, altitude_m, gsd_cm, front_overlap, side_overlap, cruise_speed_mps, "
+              "turn_rate_deg_s, acceleration_mps2, endurance_min, max_altitude_m, plane, colour, "
+              "home, dji_drone_enum, dji_drone_sub_enum)");
     // "note" is allowed anywhere for the user's remarks.
     EXPECT_EQ(errorOf(with(kMinimal, "\"name\": \"t\",", "\"name\": \"t\", \"note\": \"surveyed twice\",")),
               "<parsed>");

@@ -42,7 +42,9 @@ TEST(WaypointFormats, RoundTripEveryImportableFormat) {
     for (int trial = 0; trial < 12; ++trial) {
         ExportContext ctx = randomContext(rng, 1);
         for (const auto& info : waypointFormats()) {
-            if (!info.canImport)
+            // A .kmz needs a DJI Enterprise aircraft (these random routes have none): its round trips
+            // on planned missions are in wpml_kmz_test.cpp.
+            if (!info.canImport || info.format == WaypointFormat::WpmlKmz)
                 continue;
             const std::string path = dir + "/route" + std::to_string(trial) + info.extension;
             ASSERT_TRUE(exportRoute(ctx, 0, info.format, path).ok()) << info.name;
@@ -106,19 +108,19 @@ TEST(WaypointFormats, FormatNamesAndExtensions) {
     auto bad = formatFromName("shp");
     ASSERT_FALSE(bad.ok());
     EXPECT_EQ(bad.error().message,
-              "unknown waypoint format \"shp\" (known: plan, waypoints, kml, gpx, geojson, csv)");
+              "unknown waypoint format \"shp\" (known: plan, waypoints, kml, gpx, geojson, csv, kmz)");
     auto noExt = formatFromPath("dir.v2/route");
     ASSERT_FALSE(noExt.ok());
     EXPECT_EQ(noExt.error().message,
               "dir.v2/route: cannot tell the waypoint format from the extension \"\" (use "
-              ".plan, .waypoints, .kml, .gpx, .geojson, .json or .csv)");
+              ".plan, .waypoints, .kml, .gpx, .geojson, .json, .csv or .kmz)");
     auto list = formatListFromString("plan, kml,gpx,plan");
     ASSERT_TRUE(list.ok());
     EXPECT_EQ(list->size(), 3u);
     auto badList = formatListFromString("plan,dxf");
     ASSERT_FALSE(badList.ok());
     EXPECT_EQ(badList.error().message,
-              "unknown waypoint format \"dxf\" (known: plan, waypoints, kml, gpx, geojson, csv)");
+              "unknown waypoint format \"dxf\" (known: plan, waypoints, kml, gpx, geojson, csv, kmz)");
     auto kml = importWaypoints("x.kml");
     ASSERT_FALSE(kml.ok());
     EXPECT_EQ(kml.error().code, ErrorCode::Unsupported);
