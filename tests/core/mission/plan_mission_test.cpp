@@ -280,14 +280,14 @@ TEST(PlanMission, BadInputs) {
     plan = planMission(m);
     ASSERT_FALSE(plan.ok());
     EXPECT_EQ(plan.error().message,
-              "aircraft \"Falcon 1\": neither a flight altitude nor a ground sample distance is set");
+              "Falcon 1: neither a flight altitude nor a ground sample distance is set");
 
     m = demoMission();
     m.options.maxCells = 10;
     plan = planMission(m);
     ASSERT_FALSE(plan.ok());
     EXPECT_EQ(plan.error().code, ErrorCode::TooLarge);
-    EXPECT_EQ(plan.error().message.rfind("aircraft \"Falcon 1\": ", 0), 0u);
+    EXPECT_EQ(plan.error().message.rfind("Falcon 1: ", 0), 0u);
 }
 
 TEST(PlanMission, AngleCandidatesIncludeLongestEdge) {
