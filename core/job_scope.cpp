@@ -26,6 +26,19 @@ JobScope::JobScope(double lo, double hi, const std::string& prefix) : m_outer(t_
     t_scope = this;
 }
 
+JobScope::Share JobScope::share() {
+    const JobScope* s = t_scope;
+    if (!s)
+        return {};
+    return {s->m_progress, s->m_lo, s->m_hi, s->m_prefix, s->m_silent};
+}
+
+JobScope::JobScope(const Share& share)
+    : m_progress(share.progress), m_lo(share.lo), m_hi(share.hi), m_prefix(share.prefix),
+      m_silent(share.silent), m_outer(t_scope) {
+    t_scope = this;
+}
+
 JobScope::~JobScope() { t_scope = m_outer; }
 
 Progress* JobScope::current() { return t_scope ? t_scope->m_progress : nullptr; }

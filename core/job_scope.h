@@ -26,6 +26,17 @@ public:
     JobScope(Progress* progress, CancelOnly);
     // A part [lo, hi] of the current scope's range (of this thread), its stage names prefixed.
     JobScope(double lo, double hi, const std::string& prefix = {});
+    // The current scope of this thread, to be installed in a worker thread that does part of its
+    // work: the worker then stops with the job and reports into the same range.
+    struct Share {
+        Progress* progress = nullptr;
+        double lo = 0.0;
+        double hi = 1.0;
+        std::string prefix;
+        bool silent = false;
+    };
+    static Share share();
+    explicit JobScope(const Share& share);
     ~JobScope();
     JobScope(const JobScope&) = delete;
     JobScope& operator=(const JobScope&) = delete;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/io/catalog.h"
+#include "core/io/mission_file.h"
 #include "core/mission/mission.h"
 #include "core/plan/evaluation.h"
 
@@ -56,6 +57,22 @@ inline mission::AircraftConfig bigSiteAircraft(double altitudeM, const std::stri
     a.altitudeM = altitudeM;
     a.overlap = {0.7, 0.6};
     return a;
+}
+
+// The demo mission (resources/demo) with both aircraft at 3.5 m and one more no-fly zone in its
+// south-west, beside where the two subareas meet: a fleet plan that spends most of its time sharing
+// the area (about 60,000 photos per aircraft).
+inline Result<mission::Mission> lowDemoWithZone(const std::string& resourcesDir) {
+    auto m = io::readMissionFile(resourcesDir + "/demo/demo_mission.json");
+    if (!m)
+        return m.error();
+    for (auto& a : m->aircraft)
+        a.altitudeM = 3.5;
+    const double lon = 8.3283, lat = 49.0113, w = 0.0003, h = 0.0002;
+    m->noFlyZones.push_back(
+        {"extra",
+         geo::GeoPolygon{{{lon, lat}, {lon + w, lat}, {lon + w, lat + h}, {lon, lat + h}}, {}}});
+    return m;
 }
 
 } // namespace pf::test

@@ -51,6 +51,7 @@
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -341,7 +342,15 @@ void MainWindow::buildActions() {
 void MainWindow::buildDocks() {
     setDockNestingEnabled(true);
     m_aircraft = new AircraftPanel(m_doc, m_catalog);
-    auto* aircraftDock = addDock(tr("Aircraft"), QStringLiteral("AircraftDock"), m_aircraft, Qt::RightDockWidgetArea);
+    // The form grows with a plane's figures: it scrolls rather than stretch the window past the
+    // screen.
+    auto* aircraftScroll = new QScrollArea;
+    aircraftScroll->setWidget(m_aircraft);
+    aircraftScroll->setWidgetResizable(true);
+    aircraftScroll->setFrameShape(QFrame::NoFrame);
+    aircraftScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    auto* aircraftDock = addDock(tr("Aircraft"), QStringLiteral("AircraftDock"), aircraftScroll,
+                                 Qt::RightDockWidgetArea);
     m_missionPanel = new MissionPanel(m_doc, m_layer);
     auto* missionDock = addDock(tr("Mission"), QStringLiteral("MissionDock"), m_missionPanel, Qt::RightDockWidgetArea);
     connect(m_missionPanel, &MissionPanel::shapeActivated, this, [this](const QRectF& r) {

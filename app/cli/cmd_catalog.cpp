@@ -55,7 +55,8 @@ const char* const kCatalogUsage =
     "Usage: photoflight-cli catalog [--json] [--catalog FILE]\n"
     "\n"
     "Lists the cameras (how each is defined, image size, and its photo footprint and ground sample\n"
-    "distance at 100 m above ground) and the aircraft (cruise speed, turn rate, endurance, maximum\n"
+    "distance at 100 m above ground) and the aircraft (kind: multirotor, fixed-wing or VTOL; cruise\n"
+    "speed; turns: a multirotor's yaw rate, a plane's minimum turn radius and bank; endurance, maximum\n"
     "altitude, default camera) that missions and --aircraft/--camera options can name.\n"
     "\n"
     "The catalog is the bundled catalog.json (found in $PHOTOFLIGHT_DATA_DIR, the installed data folder\n"
@@ -96,11 +97,19 @@ int runCatalog(const std::vector<std::string>& argv) {
                            gsd ? fmt("%.2f cm/px", *gsd) : std::string("-")});
     }
     std::vector<std::vector<std::string>> aircraft{
-        {"AIRCRAFT", "SPEED", "TURN RATE", "ENDURANCE", "MAX ALTITUDE", "DEFAULT CAMERA"}};
-    for (const auto& a : catalog->aircraft)
-        aircraft.push_back({a.name, fmt("%g m/s", a.cruiseSpeedMps), fmt("%g deg/s", a.turnRateDegS),
-                            fmt("%g min", a.enduranceMin), fmt("%g m", a.maxAltitudeM),
+        {"AIRCRAFT", "KIND", "SPEED", "TURNS", "ENDURANCE", "MAX ALTITUDE", "DEFAULT CAMERA"}};
+    for (const auto& a : catalog->aircraft) {
+        // A multirotor turns on the spot at its yaw rate; a plane on a circle of its minimum radius.
+        const std::string turns = fleet::fliesAsPlane(a.kind)
+                                      ? fmt("radius %.0f m (bank %.0f deg)",
+                                            fleet::minTurnRadiusM(a.plane, a.cruiseSpeedMps),
+                                            fleet::bankAngleDeg(a.plane, a.cruiseSpeedMps))
+                                      : fmt("%g deg/s", a.turnRateDegS);
+        aircraft.push_back({a.name, fleet::aircraftKindLabel(a.kind),
+                            fmt("%g m/s", a.cruiseSpeedMps), turns, fmt("%g min", a.enduranceMin),
+                            fmt("%g m", a.maxAltitudeM),
                             a.defaultCamera.empty() ? std::string("-") : a.defaultCamera});
+    }
 
     std::cout << "Cameras (" << catalog->cameras.size() << ")\n";
     printTable(std::cout, cameras);

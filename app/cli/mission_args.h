@@ -51,7 +51,8 @@
     "                               stride, raster, wavefront or lawnmower (the Survey reference)\n" \
     "  --grid-angle DEG|auto        grid rotation in degrees counter-clockwise from east, or auto\n" \
     "  --home LON,LAT               take-off and landing point (WGS84 degrees)\n" \
-    "  --aircraft NAME[:ALT_M]      a catalog aircraft with its default camera and optionally its own\n" \
+    "  --aircraft NAME[:ALT_M]      a catalog aircraft (multirotor, fixed-wing or VTOL, with its speed,\n" \
+    "                               turns and endurance) with its default camera and optionally its own\n" \
     "                               altitude (repeatable; replaces the mission's aircraft)\n" \
     "  --safety-margin M            keep-out distance around every no-fly zone in metres (default 5)\n" \
     "  --max-cells N                grid cell budget (default 4000000)\n" \

@@ -2,10 +2,12 @@
 #include "core/fleet/cell_assignment.h"
 
 #include "core/geo/types.h"
+#include "core/job_scope.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <set>
 
 namespace pf::fleet {
 
@@ -111,45 +113,62 @@ std::vector<int> CellAssignment::transfer(int from, int to, int count, bool swee
         if (nf > 0 && nt > 0)
             dir = ct / nt - cf / nf;
     }
-    std::vector<int> cand;
-    std::vector<std::uint8_t> inCand(static_cast<std::size_t>(m_g.cellCount()), 0);
-    auto consider = [&](int c) {
-        if (c >= 0 && owner(c) == from && !inCand[static_cast<std::size_t>(c)] && neighboursIn(c, to) > 0) {
-            inCand[static_cast<std::size_t>(c)] = 1;
-            cand.push_back(c);
-        }
+    // Cells found to hold `from` together (removable() false), remembered until a move-neighbour of
+    // theirs leaves `from`. Moving a removable cell keeps `from` connected, so the piece that only
+    // a cut cell joins to the rest can only vanish one cell at a time, its last cell beside the cut
+    // cell: until one of its neighbours goes, a cut cell stays one. Without this, every pick tested
+    // the same cut cells again, each by a search through the whole subarea (a zone beside the
+    // shared boundary leaves a row of them: 900,000 searches in one split of the demo).
+    const std::size_t cells = static_cast<std::size_t>(m_g.cellCount());
+    std::vector<std::uint8_t> cut(cells, 0);
+    // The candidates (cells of `from` beside `to`, not cut), best first. A cell's score and whether
+    // it is a candidate change only when a neighbour changes hands, so only the picked cell's
+    // neighbours are scored again (re-scoring and sorting every candidate per pick was most of a
+    // transfer's time).
+    std::set<std::pair<double, int>> queue;
+    std::vector<double> key(cells, 0.0);
+    std::vector<std::uint8_t> queued(cells, 0);
+    const auto refresh = [&](int c) {
+        const std::size_t i = static_cast<std::size_t>(c);
+        if (queued[i])
+            queue.erase({key[i], c});
+        queued[i] = !cut[i] && owner(c) == from && neighboursIn(c, to) > 0;
+        if (!queued[i])
+            return;
+        const double compact = 2 * neighboursIn(c, to) - neighboursIn(c, from);
+        const double along = dir.x() * (c % m_g.cols()) + dir.y() * (c / m_g.cols());
+        key[i] = sweep ? -(along + 1e-3 * compact) : -compact;
+        queue.emplace(key[i], c);
     };
     for (int c = 0; c < m_g.cellCount(); ++c)
-        consider(c);
-    while (static_cast<int>(moved.size()) < count) {
-        // Drop stale candidates, score the rest, try them best first.
-        std::vector<std::pair<double, int>> scored;
-        std::vector<int> keep;
-        for (int c : cand) {
-            if (owner(c) != from || neighboursIn(c, to) == 0) {
-                inCand[static_cast<std::size_t>(c)] = 0;
-                continue;
-            }
-            keep.push_back(c);
-            const double compact = 2 * neighboursIn(c, to) - neighboursIn(c, from);
-            const double along = dir.x() * (c % m_g.cols()) + dir.y() * (c / m_g.cols());
-            scored.emplace_back(sweep ? -(along + 1e-3 * compact) : -compact, c);
-        }
-        cand.swap(keep);
-        std::sort(scored.begin(), scored.end());
+        refresh(c);
+    // A cancelled job stops between two moves: its caller then sees fewer cells moved and returns
+    // at its own next check.
+    while (static_cast<int>(moved.size()) < count && !stopRequested()) {
+        // The best candidate whose move leaves `from` in one piece.
         int pick = -1;
-        for (const auto& [negScore, c] : scored)
+        for (auto it = queue.begin(); it != queue.end();) {
+            const int c = it->second;
             if (removable(c)) {
                 pick = c;
                 break;
             }
+            cut[static_cast<std::size_t>(c)] = 1;
+            queued[static_cast<std::size_t>(c)] = 0;
+            it = queue.erase(it);
+        }
         if (pick < 0)
             break;
         assign(pick, to);
         moved.push_back(pick);
-        for (int d = 0; d < 4; ++d)
-            if (m_g.canMove(pick, grid::kDirs[d]))
-                consider(m_g.neighbour(pick, grid::kDirs[d]));
+        refresh(pick);
+        for (int d = 0; d < 4; ++d) {
+            const int n = m_g.neighbour(pick, grid::kDirs[d]);
+            if (n < 0)
+                continue;
+            cut[static_cast<std::size_t>(n)] = 0;
+            refresh(n);
+        }
     }
     return moved;
 }

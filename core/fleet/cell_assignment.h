@@ -87,6 +87,7 @@ public:
     // Sweep mode orders the cells by how far they lie towards `to` (along the line between the two
     // subareas' centroids) instead: the boundary then moves as a straight front, which suits
     // planners that fly long straight strides.
+    // Stops early when the thread's job is cancelled (stopRequested()).
     std::vector<int> transfer(int from, int to, int count, bool sweep = false);
 
     // Shared move-edges between subareas: adj[a][b].

@@ -4,6 +4,7 @@
 
 #include "core/fleet/cell_assignment.h"
 #include "core/grid/grid.h"
+#include "core/job_scope.h"
 
 #include <algorithm>
 #include <cmath>
@@ -141,7 +142,8 @@ void partitionPiece(const grid::Grid& g, const std::vector<int>& piece, const st
     // Redistribution to the targets (paper fig. 9), along chains of adjacent subareas.
     std::set<std::pair<int, int>> blocked;
     const int maxMoves = 4 * static_cast<int>(piece.size()) + 16;
-    for (int moves = 0, rounds = 0; moves < maxMoves && rounds < maxMoves; ++rounds) {
+    for (int moves = 0, rounds = 0; moves < maxMoves && rounds < maxMoves && !stopRequested();
+         ++rounds) {
         int over = -1;
         for (int k : fleet)
             if (as.size(k) > targets[static_cast<std::size_t>(k)] &&
@@ -284,6 +286,8 @@ Result<Partition> partitionCells(const grid::Grid& g, const std::vector<double>&
         for (std::size_t i = 0; i < fleetOf[p].size(); ++i)
             targets[static_cast<std::size_t>(fleetOf[p][i])] = t[i];
         partitionPiece(g, pieces[p], fleetOf[p], targets, as);
+        if (stopRequested()) // a piece broken off is no partition
+            return makeError(ErrorCode::Cancelled, "planning cancelled");
     }
     // Pieces without an aircraft of their own go, whole, to the aircraft whose cells are nearest.
     for (std::size_t p = 0; p < pieces.size(); ++p) {

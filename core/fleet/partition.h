@@ -34,8 +34,9 @@ struct Partition {
 //  5. redistribution: boundary cells move, one at a time, from subareas above target towards the
 //     nearest subarea below it (through intermediate subareas if needed), never disconnecting the
 //     subarea that gives the cell.
-// Every subarea is connected through the grid's allowed moves whenever the area itself is connected.
-// Errors: no shares, a share not positive, fewer active cells than aircraft.
+// Every subarea is connected through the grid's allowed moves whenever the area itself is
+// connected. Errors: no shares, a share not positive, fewer active cells than aircraft;
+// ErrorCode::Cancelled when the thread's job is cancelled (stopRequested()).
 Result<Partition> partitionCells(const grid::Grid& g, const std::vector<double>& shares);
 
 // True if `cells` (non-empty) form one piece through the grid's allowed moves.

@@ -11,7 +11,9 @@
 namespace pf::fleet {
 
 // Flight time of aircraft k over the subarea made of `cells`, in seconds: the facade passes the
-// real planner; tests pass an analytic model.
+// real planner; tests pass an analytic model. balanceByTime calls it from several threads at once
+// (the subareas a trial changes are estimated together), each working for the caller's job
+// (JobScope): it must be safe to call concurrently.
 using TimeEstimator = std::function<Result<double>(int aircraft, const std::vector<int>& cells)>;
 
 struct BalanceOptions {
@@ -34,13 +36,14 @@ struct BalanceReport {
 // Goes beyond the paper's cell-count balance: estimates each aircraft's flight time, then moves
 // boundary cells from the slowest subarea to an adjacent faster one (how many: the time gap divided
 // by both subareas' time per cell, damped; then twice, half, a quarter of that and a single cell,
-// since planned times do not change smoothly with the cells given), re-estimates both, and keeps the
-// move only if the slower of the two is now faster than the slowest was. When no direct move helps,
-// it tries chains: slowest -> neighbour -> that neighbour's fastest neighbour. The best trial of a
-// round wins. When none helps, the least bad one is taken anyway a few times (maxKicks) to leave a
-// local minimum, without handing the cells straight back. Repeats until the makespan is within the
-// tolerance, no move helps, or the round or estimate budget is spent.
-// Subareas stay connected. `p` is replaced by the best partition seen (smallest makespan).
+// since planned times do not change smoothly with the cells given), re-estimates both, and keeps
+// the move only if the slower of the two is now faster than the slowest was. When no direct move
+// helps, it tries chains: slowest -> neighbour -> that neighbour's fastest neighbour. The best
+// trial of a round wins. When none helps, the least bad one is taken anyway a few times (maxKicks)
+// to leave a local minimum, without handing the cells straight back. Repeats until the makespan is
+// within the tolerance, no move helps, or the round or estimate budget is spent. Subareas stay
+// connected. `p` is replaced by the best partition seen (smallest makespan). A cancelled job
+// (stopRequested()) gets ErrorCode::Cancelled within one cell move, `p` left as it was.
 Result<BalanceReport> balanceByTime(const grid::Grid& g, Partition& p, const TimeEstimator& estimate,
                                     const BalanceOptions& opt = {});
 

@@ -61,19 +61,30 @@ public:
             return a;
         a.name = string(o, where, "name", "", true);
         where = entryLabel("aircraft", i, a.name);
+        a.kind = kind(o, where);
+        const bool plane = fleet::fliesAsPlane(a.kind);
         a.cruiseSpeedMps = number(o, where, "cruise_speed_mps", 0.0, true);
-        a.turnRateDegS = number(o, where, "turn_rate_deg_s", 0.0, true);
+        // A plane's turn is its radius; its turn rate, when not given, is that of its tightest
+        // turn.
+        a.turnRateDegS = number(o, where, "turn_rate_deg_s", 0.0, !plane);
         a.accelerationMps2 = number(o, where, "acceleration_mps2", a.accelerationMps2);
         a.enduranceMin = number(o, where, "endurance_min", 0.0, true);
         a.maxAltitudeM = number(o, where, "max_altitude_m", 0.0, true);
+        if (CPLJSONObject p = member(o, "plane"); p.IsValid() && !failed())
+            a.plane = JsonReader::plane(p, where + ": plane");
         a.defaultCamera = string(o, where, "default_camera", "");
         a.notes = string(o, where, "note", "");
-        checkKeys(o, where, {"name", "cruise_speed_mps", "turn_rate_deg_s", "acceleration_mps2", "endurance_min",
-                             "max_altitude_m", "default_camera"});
+        checkKeys(o, where,
+                  {"name", "kind", "cruise_speed_mps", "turn_rate_deg_s", "acceleration_mps2",
+                   "endurance_min", "max_altitude_m", "plane", "default_camera"});
         if (failed())
             return a;
         if (a.name.empty())
             fail(where, "name: must not be empty");
+        checkPlane(a.plane, where + ": plane");
+        if (plane && !failed() && !member(o, "turn_rate_deg_s").IsValid() && a.cruiseSpeedMps > 0)
+            a.turnRateDegS =
+                a.cruiseSpeedMps / fleet::minTurnRadiusM(a.plane, a.cruiseSpeedMps) * 180.0 / M_PI;
         const std::pair<const char*, double> positive[] = {{"cruise_speed_mps", a.cruiseSpeedMps},
                                                            {"turn_rate_deg_s", a.turnRateDegS},
                                                            {"acceleration_mps2", a.accelerationMps2},
@@ -83,6 +94,33 @@ public:
             if (v <= 0.0)
                 fail(where, std::string(key) + ": must be greater than 0");
         return a;
+    }
+
+    fleet::AircraftKind kind(const CPLJSONObject& o, const std::string& where) {
+        const std::string id =
+            string(o, where, "kind", fleet::aircraftKindId(fleet::AircraftKind::Multirotor));
+        const auto k = fleet::aircraftKindFromId(id);
+        if (!k && !failed())
+            fail(where, "kind: unknown kind \"" + id + "\" (expected " +
+                            fleet::aircraftKindIdList() + ")");
+        return k.value_or(fleet::AircraftKind::Multirotor);
+    }
+
+    // The plane's figures must describe a flyable aircraft (validation repeats these for missions).
+    void checkPlane(const fleet::PlanePerformance& p, const std::string& where) {
+        if (failed())
+            return;
+        if (p.minTurnRadiusM && !(*p.minTurnRadiusM > 0))
+            fail(where, "turn_radius_m: must be greater than 0");
+        else if (p.maxBankDeg && !(*p.maxBankDeg > 0 && *p.maxBankDeg < 90))
+            fail(where, "bank_deg: must lie between 0 and 90 degrees");
+        else if (!(p.climbRateMps > 0) || !(p.sinkRateMps > 0))
+            fail(where, std::string(p.climbRateMps > 0 ? "sink_rate_mps" : "climb_rate_mps") +
+                            ": must be greater than 0");
+        else if (!(p.runInM >= 0))
+            fail(where, "run_in_m: must be 0 or more");
+        else if (p.stallSpeedMps && !(*p.stallSpeedMps > 0))
+            fail(where, "stall_speed_mps: must be greater than 0");
     }
 
     Catalog catalog(const CPLJSONObject& root) {
@@ -182,12 +220,16 @@ std::string catalogToJson(const Catalog& catalog) {
     for (const auto& a : catalog.aircraft) {
         CPLJSONObject o;
         o.Add("name", a.name);
+        if (a.kind != fleet::AircraftKind::Multirotor)
+            o.Add("kind", fleet::aircraftKindId(a.kind));
         o.Add("cruise_speed_mps", jsonNumber(a.cruiseSpeedMps));
         o.Add("turn_rate_deg_s", jsonNumber(a.turnRateDegS));
         if (a.accelerationMps2 != plan::kDefaultAccelerationMps2)
             o.Add("acceleration_mps2", jsonNumber(a.accelerationMps2));
         o.Add("endurance_min", jsonNumber(a.enduranceMin));
         o.Add("max_altitude_m", jsonNumber(a.maxAltitudeM));
+        if (fleet::fliesAsPlane(a.kind) || a.plane != fleet::PlanePerformance{})
+            o.Add("plane", detail::planeToJson(a.plane));
         if (!a.defaultCamera.empty())
             o.Add("default_camera", a.defaultCamera);
         if (!a.notes.empty())

@@ -287,4 +287,20 @@ sensor::Camera JsonReader::camera(const CPLJSONObject& o, const std::string& pat
     return c;
 }
 
+fleet::PlanePerformance JsonReader::plane(const CPLJSONObject& o, const std::string& path) {
+    fleet::PlanePerformance p;
+    if (!expectType(o, path, o.GetType() == CPLJSONObject::Type::Object, "an object"))
+        return p;
+    p.minTurnRadiusM = optionalNumber(o, path, "turn_radius_m");
+    p.maxBankDeg = optionalNumber(o, path, "bank_deg");
+    p.climbRateMps = number(o, path, "climb_rate_mps", p.climbRateMps);
+    p.sinkRateMps = number(o, path, "sink_rate_mps", p.sinkRateMps);
+    p.runInM = number(o, path, "run_in_m", p.runInM);
+    p.stallSpeedMps = optionalNumber(o, path, "stall_speed_mps");
+    checkKeys(o, path,
+              {"turn_radius_m", "bank_deg", "climb_rate_mps", "sink_rate_mps", "run_in_m",
+               "stall_speed_mps"});
+    return p;
+}
+
 } // namespace pf::io::detail

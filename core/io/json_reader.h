@@ -3,6 +3,7 @@
 // first problem becomes "<source>: <field path>: <what>". Internal to io: include from .cpp files only.
 #pragma once
 
+#include "core/fleet/aircraft.h"
 #include "core/geo/types.h"
 #include "core/result.h"
 #include "core/sensor/camera.h"
@@ -99,6 +100,8 @@ public:
     // the messages after it name the camera: "cameras[3] ("Sony RX1R II"): focal_length_mm: ...".
     sensor::Camera camera(const CPLJSONObject& o, const std::string& path, bool named = false);
 
+    // The "plane" object of an aircraft (detail::planeToJson): absent values keep their defaults.
+    fleet::PlanePerformance plane(const CPLJSONObject& o, const std::string& path);
 
 private:
     std::string m_source;

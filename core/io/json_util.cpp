@@ -33,4 +33,18 @@ CPLJSONObject cameraToJson(const sensor::Camera& c) {
     return o;
 }
 
+CPLJSONObject planeToJson(const fleet::PlanePerformance& p) {
+    CPLJSONObject o;
+    if (p.minTurnRadiusM)
+        o.Add("turn_radius_m", jsonNumber(*p.minTurnRadiusM));
+    if (p.maxBankDeg)
+        o.Add("bank_deg", jsonNumber(*p.maxBankDeg));
+    o.Add("climb_rate_mps", jsonNumber(p.climbRateMps));
+    o.Add("sink_rate_mps", jsonNumber(p.sinkRateMps));
+    o.Add("run_in_m", jsonNumber(p.runInM));
+    if (p.stallSpeedMps)
+        o.Add("stall_speed_mps", jsonNumber(*p.stallSpeedMps));
+    return o;
+}
+
 } // namespace pf::io::detail

@@ -1,6 +1,7 @@
 // JSON helpers shared by the io readers and writers (CPLJSON). Internal: include from .cpp files only.
 #pragma once
 
+#include "core/fleet/aircraft.h"
 #include "core/sensor/camera.h"
 
 #include <cpl_json.h>
@@ -16,5 +17,10 @@ CPLJSONObject jsonNumber(double v);
 // A camera as the mission file and the catalog store it: only the definition in use is written
 // (optics or field of view); absent values read back as 0.
 CPLJSONObject cameraToJson(const sensor::Camera& c);
+
+// A plane's figures as the mission file and the catalog store them ("plane": {"turn_radius_m",
+// "bank_deg", "climb_rate_mps", "sink_rate_mps", "run_in_m", "stall_speed_mps"}); the optional
+// values only when set.
+CPLJSONObject planeToJson(const fleet::PlanePerformance& p);
 
 } // namespace pf::io::detail

@@ -1,6 +1,8 @@
 #include "core/io/litchi_csv.h"
 
+#include "core/io/mission_items.h"
 #include "core/io/waypoint_format_util.h"
+#include "core/plan/flight_time.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,6 +13,7 @@ namespace pf::io {
 namespace {
 
 constexpr int kActions = 15;
+constexpr int kStay = 0;      // Litchi action type "stay for" (parameter: milliseconds)
 constexpr int kTakePhoto = 1; // Litchi action type "take photo"
 
 std::vector<std::string> columns() {
@@ -45,15 +48,37 @@ Result<std::string> litchiCsvText(const ExportContext& ctx, std::size_t routeInd
     if (r.waypoints.empty())
         return makeError(ErrorCode::InvalidInput,
                          ctx.routeLabel(routeIndex) + ": the route has no waypoints to export");
+    // Stops and corners flown through as the flight-time model counted them (plan::isStopCorner,
+    // the rule of every export). Litchi's curve size "defines the sharpness of the curve at this
+    // waypoint" in missions flown with curved turns (the path mode is a mission setting the CSV
+    // does not hold: choose "Curved turns"): a corner flown through gets the model's corner cut, a
+    // stop curve size 0 and a "stay for" action (type 0, milliseconds) of the model's hold before
+    // its photo.
+    const plan::FlightTimeModel model = ctx.aircraftFor(routeIndex)
+                                            ? mission::flightModel(*ctx.aircraftFor(routeIndex))
+                                            : plan::FlightTimeModel{};
+    const geo::LonLat home = ctx.homeFor(routeIndex).value_or(r.waypoints.front().position);
+    const std::vector<double> corners =
+        cornerAnglesDeg(r.waypoints, home, ctx.landingFor(routeIndex).value_or(home));
     std::string out = litchiCsvHeader() + "\n";
-    for (const auto& w : r.waypoints) {
+    for (std::size_t i = 0; i < r.waypoints.size(); ++i) {
+        const auto& w = r.waypoints[i];
+        const bool stop = plan::isStopCorner(corners[i], model);
+        const double curve = !stop && corners[i] > plan::kTurnThresholdDeg ? model.cornerCutM : 0.0;
         out += formatNumber(w.position.lat, 9) + ',' + formatNumber(w.position.lon, 9) + ',' +
                formatNumber(w.altitudeM, 4) + ',' +
-               formatNumber(detail::normaliseHeading(w.headingDeg), 4);
-        out += ",0,0,2,-90"; // curve size, rotation direction, gimbal mode interpolate, pitch
-                             // straight down
-        for (int a = 0; a < kActions; ++a)
-            out += (a == 0 && w.kind == route::WaypointKind::Photo) ? ",1,0" : ",-1,0";
+               formatNumber(detail::normaliseHeading(w.headingDeg), 4) + ',' +
+               formatNumber(curve, 3);
+        out += ",0,2,-90"; // rotation direction, gimbal mode interpolate, pitch straight down
+        std::vector<std::pair<int, double>> actions;
+        if (stop)
+            actions.emplace_back(kStay, model.stopHoldS * 1000.0);
+        if (w.kind == route::WaypointKind::Photo)
+            actions.emplace_back(kTakePhoto, 0.0);
+        for (std::size_t a = 0; a < static_cast<std::size_t>(kActions); ++a)
+            out += a < actions.size() ? "," + std::to_string(actions[a].first) + "," +
+                                            formatNumber(actions[a].second, 0)
+                                      : std::string(",-1,0");
         out += ",0," + formatNumber(r.cruiseSpeedMps, 3) + ",0,0,0,0,-1,-1\n";
     }
     return out;

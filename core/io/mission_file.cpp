@@ -127,6 +127,17 @@ std::optional<std::string> firstNonFinite(const mission::Mission& m) {
         for (const auto& [name, v] : fields)
             if (bad(v))
                 return p + "." + name;
+        const auto& pl = a.plane;
+        const std::pair<const char*, double> plane[] = {
+            {"plane.turn_radius_m", pl.minTurnRadiusM.value_or(0.0)},
+            {"plane.bank_deg", pl.maxBankDeg.value_or(0.0)},
+            {"plane.climb_rate_mps", pl.climbRateMps},
+            {"plane.sink_rate_mps", pl.sinkRateMps},
+            {"plane.run_in_m", pl.runInM},
+            {"plane.stall_speed_mps", pl.stallSpeedMps.value_or(0.0)}};
+        for (const auto& [name, v] : plane)
+            if (bad(v))
+                return p + "." + name;
     }
     const auto& o = m.options;
     const std::pair<const char*, double> opts[] = {{"grid_angle_deg", o.gridAngleDeg.value_or(0.0)},
@@ -175,6 +186,13 @@ std::optional<std::string> firstUnreadableRoute(const mission::Mission& m) {
     return std::nullopt;
 }
 
+// Whether an aircraft needs its "kind" and "plane" (version 5): a plane, or a multirotor keeping
+// plane figures the user set before changing its kind (so that the file gives back exactly what it
+// saved).
+bool writesPlane(const mission::AircraftConfig& a) {
+    return a.kind != fleet::AircraftKind::Multirotor || a.plane != fleet::PlanePerformance{};
+}
+
 // The oldest file version that holds everything in `m`, so that older releases (which refuse
 // unknown fields) keep opening files that use nothing newer.
 // Each feature raises the version to the one that introduced it; the file gets the highest.
@@ -189,6 +207,9 @@ int requiredVersion(const mission::Mission& m) {
         v = std::max(v, 3);
     if (!m.terrain.isDefault())
         v = std::max(v, 4);
+    for (const auto& a : m.aircraft)
+        if (writesPlane(a))
+            v = std::max(v, 5);
     for (const auto& r : m.editedRoutes) {
         if (r.homeElevationM)
             v = std::max(v, 4);
@@ -225,6 +246,8 @@ std::string missionToJson(const mission::Mission& m) {
         CPLJSONObject o;
         o.Add("name", a.name);
         o.Add("model", a.model);
+        if (writesPlane(a))
+            o.Add("kind", fleet::aircraftKindId(a.kind));
         o.Add("camera", detail::cameraToJson(a.camera));
         if (a.altitudeM)
             o.Add("altitude_m", jsonNumber(*a.altitudeM));
@@ -238,6 +261,8 @@ std::string missionToJson(const mission::Mission& m) {
             o.Add("acceleration_mps2", jsonNumber(a.accelerationMps2));
         o.Add("endurance_min", jsonNumber(a.enduranceMin));
         o.Add("max_altitude_m", jsonNumber(a.maxAltitudeM));
+        if (writesPlane(a))
+            o.Add("plane", detail::planeToJson(a.plane));
         o.Add("colour", a.colour);
         if (a.home)
             o.Add("home", jsonPosition(*a.home));

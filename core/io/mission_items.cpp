@@ -3,6 +3,7 @@
 #include "core/geo/geodesic.h"
 #include "core/io/trigger_lanes.h"
 #include "core/io/waypoint_format_util.h"
+#include "core/plan/flight_time.h"
 
 #include <algorithm>
 #include <cmath>
@@ -71,7 +72,54 @@ MissionItem triggerDistance(double d, bool now) {
     return action(mav::kDoSetCamTriggDist, {d, 0, now ? 1.0 : 0.0, 0, 0, 0, 0});
 }
 
+// A waypoint flown as the flight-time model counted its corner (plan::isStopCorner). A stop: param
+// 1 (hold, seconds) = the model's hold. ArduCopter stops at a waypoint with a delay and flies
+// through one without when the next navigation command is a waypoint (ModeAuto::set_next_wp; the
+// delay is kept in whole seconds, so 1 s is the shortest that stops); PX4 pauses at a waypoint with
+// a hold time and otherwise sets the next setpoint and flies through (MissionBlock). A corner flown
+// through: hold 0 and param 2 (acceptance radius) the corner cut, which PX4 takes as the distance
+// from the waypoint where its corner curve begins (its corner speed follows from it); ArduCopter
+// ignores param 2 ("Hit Rad - not supported", its WPNAV_RADIUS applies). A plane's waypoints keep
+// the autopilot's own radius (0).
+MissionItem waypointItem(const route::Waypoint& w, double altitude, int frame, bool stop,
+                         const plan::FlightTimeModel& model) {
+    MissionItem it = nav(mav::kNavWaypoint, detail::normaliseHeading(w.headingDeg), w.position,
+                         altitude, stop ? model.stopHoldS : 0.0, frame);
+    it.params[1] = stop || model.fixedWing() ? 0.0 : model.cornerCutM;
+    return it;
+}
+
+// The flight-time model of the route's aircraft (a default multirotor at the route's speed when the
+// route has none, e.g. imported waypoints).
+plan::FlightTimeModel routeModel(const ExportContext& ctx, std::size_t routeIndex) {
+    if (const auto* a = ctx.aircraftFor(routeIndex))
+        return mission::flightModel(*a);
+    plan::FlightTimeModel m;
+    m.speedMps = ctx.routes[routeIndex].cruiseSpeedMps;
+    return m;
+}
+
 } // namespace
+
+std::vector<double> cornerAnglesDeg(const std::vector<route::Waypoint>& wps,
+                                    const geo::LonLat& home, const geo::LonLat& landing) {
+    // Legs shorter than this have no direction worth the name (a waypoint on the home point).
+    constexpr double kNoDirectionM = 0.05;
+    std::vector<double> out(wps.size(), 0.0);
+    for (std::size_t i = 0; i < wps.size(); ++i) {
+        const geo::LonLat& a = i == 0 ? home : wps[i - 1].position;
+        const geo::LonLat& b = wps[i].position;
+        const geo::LonLat& c = i + 1 < wps.size() ? wps[i + 1].position : landing;
+        if (geo::geodesicDistance(a, b) < kNoDirectionM ||
+            geo::geodesicDistance(b, c) < kNoDirectionM)
+            continue;
+        out[i] = std::abs(
+            std::remainder(geo::initialBearingDeg(b, c) - geo::initialBearingDeg(a, b), 360.0));
+    }
+    return out;
+}
+
+namespace {} // namespace
 
 double rallyAltitude(const route::Route& r) {
     double alt = 0;
@@ -113,20 +161,23 @@ Result<std::vector<MissionItem>> missionItems(const ExportContext& ctx, std::siz
     std::vector<TriggerLane> lanes;
     if (options.trigger == CameraTrigger::Distance)
         lanes = findTriggerLanes(wps);
+    const plan::FlightTimeModel model = routeModel(ctx, routeIndex);
+    const std::vector<double> corners = cornerAnglesDeg(wps, home, landing);
+    const auto waypoint = [&](std::size_t i) {
+        return waypointItem(wps[i], alt->of(wps[i]), alt->frame,
+                            plan::isStopCorner(corners[i], model), model);
+    };
     std::size_t lane = 0;
     for (std::size_t i = 0; i < wps.size(); ++i) {
         const auto& w = wps[i];
-        items.push_back(nav(mav::kNavWaypoint, detail::normaliseHeading(w.headingDeg), w.position,
-                            alt->of(w), 0, alt->frame));
+        items.push_back(waypoint(i));
         if (lane < lanes.size() && lanes[lane].first == i) {
             // The camera fires here at once and then every spacing; at the lane's last photo the
             // trigger is switched off with one last photo. A vehicle counts the last waypoint as
             // reached within its acceptance radius, before it has flown the full spacing, so the
             // distance trigger does not fire there a second time.
             items.push_back(triggerDistance(lanes[lane].spacingM, true));
-            const auto& end = wps[lanes[lane].last];
-            items.push_back(nav(mav::kNavWaypoint, detail::normaliseHeading(end.headingDeg),
-                                end.position, alt->of(end), 0, alt->frame));
+            items.push_back(waypoint(lanes[lane].last));
             items.push_back(triggerDistance(0, true));
             i = lanes[lane].last;
             ++lane;

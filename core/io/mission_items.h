@@ -42,12 +42,16 @@ struct MissionItem {
     bool hasPosition() const { return frame != mav::kFrameMission; }
 };
 
-// The route's mission: take-off at home, speed, gimbal straight down, the waypoints (a capture after
-// each photo, or with CameraTrigger::Distance only the lane ends with the trigger distance), and
-// return to launch or land. Without the home item (see homeItem()). Waypoints closer than 0.1 m
-// are merged first. Altitudes in options.altitudeFrame (Auto: above sea level for a route over a
-// terrain model); errors: above sea level without a home elevation, above terrain for a route not
-// planned over a terrain model.
+// The route's mission: take-off at home, speed, gimbal straight down, the waypoints (a capture
+// after each photo, or with CameraTrigger::Distance only the lane ends with the trigger distance),
+// and return to launch or land. Without the home item (see homeItem()). Waypoints closer than 0.1 m
+// are merged first. Each waypoint is a stop or flown through as the flight-time model of the
+// route's aircraft counted its corner (plan::isStopCorner on cornerAnglesDeg): a stop holds
+// FlightTimeModel::stopHoldS (param 1), a corner flown through has hold 0 and the corner cut as its
+// acceptance radius (param 2). The last waypoint is always a stop in practice: neither ArduCopter
+// nor PX4 flies through into a return or a landing. Altitudes in options.altitudeFrame (Auto: above
+// sea level for a route over a terrain model); errors: above sea level without a home elevation,
+// above terrain for a route not planned over a terrain model.
 Result<std::vector<MissionItem>> missionItems(const ExportContext& ctx, std::size_t routeIndex,
                                               const ExportOptions& options = {});
 // The home position as MAVLink item 0 of ArduPilot and Mission Planner: a waypoint in frame 0 at the
@@ -60,6 +64,13 @@ std::vector<MissionItem> fenceItems(const ExportContext& ctx);
 std::vector<MissionItem> rallyItems(const ExportContext& ctx, std::size_t routeIndex);
 // The altitude of the rally point (and of the .plan's rally point): the route's highest waypoint.
 double rallyAltitude(const route::Route& route);
+
+// The heading change in degrees [0, 180] at each waypoint of the flight home -> waypoints ->
+// landing (as the flight-time model sees it: the first waypoint's corner is between the leg from
+// home and the next leg); 0 where a leg is shorter than 5 cm. The exports decide stop or
+// fly-through on it.
+std::vector<double> cornerAnglesDeg(const std::vector<route::Waypoint>& waypoints,
+                                    const geo::LonLat& home, const geo::LonLat& landing);
 
 // A mission read back from a file or a vehicle, items without home, altitudes relative to home:
 // the waypoints, photo where a capture command follows or the camera fires by distance along

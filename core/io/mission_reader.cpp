@@ -54,6 +54,7 @@ public:
             return a;
         a.name = string(o, path, "name", "", true);
         a.model = string(o, path, "model", "custom");
+        aircraftKind(o, path, a);
         a.camera = aircraftCamera(o, path);
         a.altitudeM = optionalNumber(o, path, "altitude_m");
         a.gsdCm = optionalNumber(o, path, "gsd_cm");
@@ -68,10 +69,34 @@ public:
         a.maxAltitudeM = number(o, path, "max_altitude_m", a.maxAltitudeM);
         a.colour = colour(o, path, a.colour);
         a.home = optionalPosition(o, path, "home");
-        checkKeys(o, path, {"name", "model", "camera", "altitude_m", "gsd_cm", "front_overlap", "side_overlap",
-                            "cruise_speed_mps", "turn_rate_deg_s", "acceleration_mps2", "endurance_min",
-                            "max_altitude_m", "colour", "home"});
+        checkKeys(o, path,
+                  {"name", "model", "kind", "camera", "altitude_m", "gsd_cm", "front_overlap",
+                   "side_overlap", "cruise_speed_mps", "turn_rate_deg_s", "acceleration_mps2",
+                   "endurance_min", "max_altitude_m", "plane", "colour", "home"});
         return a;
+    }
+
+    // The aircraft's kind and plane figures (version 5); a multirotor without them before.
+    void aircraftKind(const CPLJSONObject& o, const std::string& path, mission::AircraftConfig& a) {
+        const CPLJSONObject kind = member(o, "kind"), plane = member(o, "plane");
+        if (failed() || (!kind.IsValid() && !plane.IsValid()))
+            return;
+        if (m_version < 5) {
+            fail(join(path, kind.IsValid() ? "kind" : "plane"),
+                 "the aircraft's kind and plane figures need version 5 of the mission file, but "
+                 "the file says "
+                 "version " +
+                     std::to_string(m_version));
+            return;
+        }
+        const std::string id = string(o, path, "kind", fleet::aircraftKindId(a.kind));
+        if (auto k = fleet::aircraftKindFromId(id))
+            a.kind = *k;
+        else if (!failed())
+            fail(join(path, "kind"),
+                 "unknown kind \"" + id + "\" (expected " + fleet::aircraftKindIdList() + ")");
+        if (plane.IsValid() && !failed())
+            a.plane = JsonReader::plane(plane, join(path, "plane"));
     }
 
     mission::PlannerOptions planner(const CPLJSONObject& root) {

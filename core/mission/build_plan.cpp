@@ -18,8 +18,59 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <future>
+#include <string>
 
 namespace pf::mission::detail {
+
+namespace {
+
+// planRegion for aircraft k, moving the progress through its own part of [0, 0.6], its name before
+// the stage (with several aircraft).
+Result<AircraftPlan> planAircraftRegion(const Mission& m, const PlannerOptions& opt,
+                                        const LocalGeometry& geom,
+                                        const std::vector<geo::MultiPolygon>& regions,
+                                        const std::vector<std::optional<geo::Vec2>>& homes,
+                                        const std::optional<geo::Vec2>& landing, std::size_t k) {
+    const std::size_t n = m.aircraft.size();
+    const std::string who = n == 1
+                                ? std::string()
+                                : (m.aircraft[k].name.empty() ? "aircraft " + std::to_string(k + 1)
+                                                              : m.aircraft[k].name) +
+                                      ": ";
+    JobScope part(0.6 * static_cast<double>(k) / static_cast<double>(n),
+                  0.6 * static_cast<double>(k + 1) / static_cast<double>(n), who);
+    return planRegion(regions[k], geom.noFly, m.aircraft[k], opt, homes[k], landing,
+                      laneSpacing(m, k));
+}
+
+// Every aircraft's region planned, each but the first on a thread of its own beside this one. The
+// regions are planned independently (the core keeps no shared mutable state, and planRegion leaves
+// the frame's transformation alone), so the plans are those made one after the other, in about 1/n
+// of the wall time on as many cores: a fleet plan plans its regions once per split tried and once
+// more for the split chosen. Every thread started is joined before this returns, whatever the
+// outcome; a cancelled job stops each of them.
+std::vector<Result<AircraftPlan>> planRegions(const Mission& m, const PlannerOptions& opt,
+                                              const LocalGeometry& geom,
+                                              const std::vector<geo::MultiPolygon>& regions,
+                                              const std::vector<std::optional<geo::Vec2>>& homes,
+                                              const std::optional<geo::Vec2>& landing) {
+    const JobScope::Share job = JobScope::share();
+    std::vector<std::future<Result<AircraftPlan>>> others;
+    for (std::size_t k = 1; k < m.aircraft.size(); ++k)
+        others.push_back(std::async(std::launch::async, [&, k] {
+            JobScope scope(job);
+            return planAircraftRegion(m, opt, geom, regions, homes, landing, k);
+        }));
+    std::vector<Result<AircraftPlan>> out;
+    // Should this throw (out of memory), the futures' destructors still wait for their threads.
+    out.push_back(planAircraftRegion(m, opt, geom, regions, homes, landing, 0));
+    for (auto& f : others)
+        out.push_back(f.get());
+    return out;
+}
+
+} // namespace
 
 Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const LocalGeometry& geomRef,
                               const std::vector<geo::MultiPolygon>& regions,
@@ -33,15 +84,19 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
     plan.frame = frame;
 
     // 2. Each aircraft over its region.
-    for (std::size_t k = 0; k < n; ++k) {
+    for (std::size_t k = 0; k < n; ++k)
         if (regions[k].empty())
             return makeError(ErrorCode::InvalidInput,
                              aircraftLabel(m.aircraft[k]) + ": got no part of the area (too many aircraft for it)");
-        auto ap = planRegion(regions[k], geom->noFly, m.aircraft[k], opt, frame, homes[k], landing, laneSpacing(m, k));
+    std::vector<Result<AircraftPlan>> planned = planRegions(m, opt, *geom, regions, homes, landing);
+    for (std::size_t k = 0; k < n; ++k) {
         if (stopRequested())
             return cancelledError();
+        Result<AircraftPlan>& ap = planned[k];
         if (!ap)
             return ap.error();
+        if (homes[k])
+            ap->route.home = frame.toGeo(*homes[k]);
         ap->subarea = regions[k];
         ap->surveyWaypoints = surveyPart(ap->localWaypoints);
         if (aloneTimes)

@@ -6,6 +6,8 @@ AircraftConfig aircraftFromCatalog(const fleet::AircraftSpec& spec, const sensor
     AircraftConfig a;
     a.name = spec.name;
     a.model = spec.name;
+    a.kind = spec.kind;
+    a.plane = spec.plane;
     if (camera)
         a.camera = *camera;
     a.cruiseSpeedMps = spec.cruiseSpeedMps;
@@ -21,17 +23,22 @@ plan::FlightTimeModel flightModel(const AircraftConfig& a) {
     m.speedMps = a.cruiseSpeedMps;
     m.turnRateDegS = a.turnRateDegS;
     m.accelerationMps2 = a.accelerationMps2;
+    if (fleet::fliesAsPlane(a.kind)) {
+        m.dynamics = plan::FlightDynamics::FixedWing;
+        m.climbRateMps = a.plane.climbRateMps;
+        m.sinkRateMps = a.plane.sinkRateMps;
+    }
     return m;
 }
 
 
 bool operator==(const AircraftConfig& a, const AircraftConfig& b) {
-    return a.name == b.name && a.model == b.model && a.camera == b.camera && a.altitudeM == b.altitudeM &&
-           a.gsdCm == b.gsdCm && a.overlap.front == b.overlap.front && a.overlap.side == b.overlap.side &&
+    return a.name == b.name && a.model == b.model && a.kind == b.kind && a.camera == b.camera &&
+           a.altitudeM == b.altitudeM && a.plane == b.plane && a.gsdCm == b.gsdCm &&
+           a.overlap.front == b.overlap.front && a.overlap.side == b.overlap.side &&
            a.cruiseSpeedMps == b.cruiseSpeedMps && a.turnRateDegS == b.turnRateDegS &&
-           a.accelerationMps2 == b.accelerationMps2 &&
-           a.enduranceMin == b.enduranceMin && a.maxAltitudeM == b.maxAltitudeM && a.colour == b.colour &&
-           a.home == b.home;
+           a.accelerationMps2 == b.accelerationMps2 && a.enduranceMin == b.enduranceMin &&
+           a.maxAltitudeM == b.maxAltitudeM && a.colour == b.colour && a.home == b.home;
 }
 
 bool operator==(const PlannerOptions& a, const PlannerOptions& b) {

@@ -26,6 +26,7 @@ struct NoFlyZone {
 struct AircraftConfig {
     std::string name;  // unique label shown to the user, e.g. "Falcon 8 #1"
     std::string model; // catalog aircraft name, or "custom"
+    fleet::AircraftKind kind = fleet::AircraftKind::Multirotor;
     sensor::Camera camera;
     // Exactly one of altitude and GSD drives the other; altitude wins when both are set.
     std::optional<double> altitudeM;
@@ -36,17 +37,20 @@ struct AircraftConfig {
     double accelerationMps2 = plan::kDefaultAccelerationMps2; // for the stop at each turn
     double enduranceMin = 20.0;
     double maxAltitudeM = 120.0;
+    fleet::PlanePerformance
+        plane; // turn radius, climb, run-in: used when the kind flies as a plane
     std::string colour = "#e6194b"; // #rrggbb, used on the map
     std::optional<geo::LonLat> home; // take-off and landing point; the mission's home if unset
     friend bool operator==(const AircraftConfig& a, const AircraftConfig& b);
 };
 
-// A catalog aircraft as a mission flies it: the catalog name as label and model, its speed, turn rate,
-// endurance and ceiling, and `camera` when given (its default camera, looked up by the caller). The
-// altitude is left for the caller to set.
+// A catalog aircraft as a mission flies it: the catalog name as label and model, its kind, speed,
+// turn rate, acceleration, plane figures, endurance and ceiling, and `camera` when given (its
+// default camera, looked up by the caller). The altitude is left for the caller to set.
 AircraftConfig aircraftFromCatalog(const fleet::AircraftSpec& spec, const sensor::Camera* camera);
 
-// The one flight-time model with this aircraft's speed, turn rate and acceleration.
+// The one flight-time model of this aircraft: its kind (a plane flies FlightDynamics::FixedWing),
+// speed, turn rate and acceleration, and a plane's climb and sink rates.
 plan::FlightTimeModel flightModel(const AircraftConfig& a);
 
 // Auto: per aircraft the fastest of sweep, stride and raster (the default). Lawnmower: the yardstick
@@ -117,9 +121,9 @@ bool sameRoute(const route::Route& a, const route::Route& b);
 
 // Newest mission file format version: 2 added the optional "routes" (hand-edited routes), 3 the
 // aircraft's "acceleration_mps2" and the planners "auto", "sweep" and "lawnmower", 4 "terrain"
-// (terrain following) and the routes' ground heights. A file is written with the oldest version
-// that holds what it contains (version 1 without any of them), so that older releases keep reading
-// it.
-constexpr int kMissionFileVersion = 4;
+// (terrain following) and the routes' ground heights, 5 the aircraft's "kind" (multirotor,
+// fixed-wing, VTOL) and "plane" figures. A file is written with the oldest version that holds what
+// it contains (version 1 without any of them), so that older releases keep reading it.
+constexpr int kMissionFileVersion = 5;
 
 } // namespace pf::mission

@@ -1,70 +1,25 @@
 #include "core/mission/plan_mission.h"
 
-#include "core/fleet/altitude.h"
-#include "core/fleet/area_split.h"
-#include "core/fleet/photo_dedup.h"
-#include "core/fleet/subarea_polygons.h"
-#include "core/geo/polygon_ops.h"
 #include "core/job_scope.h"
 #include "core/mission/build_plan.h"
+#include "core/mission/fleet_plan.h"
 #include "core/mission/memory_estimate.h"
-#include "core/mission/plan_geojson.h"
-#include "core/mission/plan_region.h"
 #include "core/mission/planner_kinds.h"
 #include "core/mission/route_check.h"
 #include "core/mission/terrain_stage.h"
 #include "core/mission/validation.h"
-#include "core/plan/coverage_check.h"
-#include "core/plan/planner.h"
-#include "core/route/photo_waypoints.h"
-#include "core/route/safety.h"
-#include "core/route/sorties.h"
-#include "core/route/transit.h"
+#include "core/sensor/camera.h"
 
-#include <cpl_json.h>
-
-#include <algorithm>
-#include <new>
-#include <chrono>
-#include <cmath>
-#include <cstdio>
 #include <future>
-#include <map>
-#include <tuple>
-#include <sstream>
+#include <new>
+#include <string>
+#include <vector>
 
 namespace pf::mission {
 
 namespace {
 
 using namespace detail;
-
-// Raw time estimates of the fleet split, remembered by aircraft and the sorted cells of the split's
-// base grid. The memo holds one base grid's cells: a different grid (never expected within one
-// planMissionWith, whose area, zones, fleet and split options are fixed) empties it first.
-class EstimateMemo {
-public:
-    template <class Estimate>
-    Result<double> rawS(std::size_t aircraft, const std::vector<int>& cells, const grid::Grid& base, Estimate&& estimate) {
-        const std::tuple<int, int, double, double, double, double> grid{base.cols(), base.rows(), base.cellSize(),
-                                                                        base.angleDeg(), base.origin().x(), base.origin().y()};
-        if (grid != m_grid) {
-            m_known.clear();
-            m_grid = grid;
-        }
-        auto key = std::make_pair(aircraft, cells);
-        if (auto it = m_known.find(key); it != m_known.end())
-            return it->second;
-        Result<double> t = estimate();
-        if (t)
-            m_known.emplace(std::move(key), *t);
-        return t;
-    }
-
-private:
-    std::tuple<int, int, double, double, double, double> m_grid{};
-    std::map<std::pair<std::size_t, std::vector<int>>, double> m_known;
-};
 
 // planMission for one planner kind (never Auto).
 Result<MissionPlan> planMissionWith(const Mission& m) {
@@ -74,12 +29,9 @@ Result<MissionPlan> planMissionWith(const Mission& m) {
     if (!geom)
         return geom.error();
     const geo::LocalFrame& frame = geom->frame;
-    const std::size_t n = m.aircraft.size();
-    const PlannerOptions& opt = m.options;
 
     // Per aircraft: footprint (for the split) and home.
     std::vector<fleet::Capability> caps;
-    std::vector<sensor::EffectiveFootprint> footprints;
     std::vector<std::optional<geo::Vec2>> homes;
     for (const auto& a : m.aircraft) {
         auto alt = resolvedAltitude(a);
@@ -88,7 +40,6 @@ Result<MissionPlan> planMissionWith(const Mission& m) {
         auto eff = sensor::effectiveFootprint(a.camera, *alt, a.overlap);
         if (!eff)
             return makeError(eff.error().code, aircraftLabel(a) + ": " + eff.error().message);
-        footprints.push_back(*eff);
         caps.push_back({a.name, *eff, flightModel(a)});
         const std::optional<geo::LonLat> h = a.home ? a.home : m.home;
         homes.push_back(h ? std::optional<geo::Vec2>(frame.toLocal(*h)) : std::nullopt);
@@ -97,172 +48,11 @@ Result<MissionPlan> planMissionWith(const Mission& m) {
     if (m.landing)
         landing = frame.toLocal(*m.landing);
 
-    // 1. Each aircraft's region: the whole area alone, else a time-balanced split.
-    if (n == 1) {
-        auto one = buildPlan(m, opt, *geom, {geo::MultiPolygon{geom->area}}, homes, landing, true);
-        return one;
-    }
-    // The split estimates times at one fixed angle (a full angle search per estimate would cost 37
-    // times as much): the mission's, or the best for the aircraft with the coarsest grid (the cheapest
-    // search) over the whole area.
-    // With the automatic choice, the split is searched with stride's times (the split needs hundreds
-    // of estimates; three planners each would triple them; stride's split gave the demo a shorter
-    // makespan than raster's, 7.0 against 7.0 min for 0.59 against 0.82 s) and each aircraft's region
-    // is then planned with the soonest of sweep, stride and raster (planRegion): no aircraft flies
-    // longer than stride would make it fly there.
-    PlannerOptions estimateOpt = opt;
-    if (opt.planner == PlannerKind::Auto)
-        estimateOpt.planner = PlannerKind::Stride;
-    double estimateAngle = 0.0;
-    if (opt.gridAngleDeg) {
-        estimateAngle = *opt.gridAngleDeg;
-    } else {
-        std::size_t coarsest = 0;
-        for (std::size_t k = 1; k < n; ++k)
-            if (sensor::cellSizeFor(footprints[k]) > sensor::cellSizeFor(footprints[coarsest]))
-                coarsest = k;
-        auto whole = planRegion(geo::MultiPolygon{geom->area}, geom->noFly, m.aircraft[coarsest], estimateOpt, frame,
-                                homes[coarsest], landing);
-        if (!whole)
-            return whole.error();
-        estimateAngle = whole->gridAngleDeg;
-    }
-    PlannerOptions fixed = estimateOpt;
-    fixed.gridAngleDeg = estimateAngle;
-    // The plans the split's rounds make and measure (the mission's planner at the fixed angle): with
-    // the automatic choice each aircraft's region is planned with its soonest planner, and the
-    // correction factors below carry that back into the split.
-    PlannerOptions fixedPlan = opt;
-    fixedPlan.gridAngleDeg = estimateAngle;
-    // The time of the route the aircraft would fly alone over `sub` (aloneRouteTimeS). The planner's
-    // own cell-path time misses where the photos sit (the route runs through photo waypoints, not
-    // cell centres) and was off by up to 7 % on large footprints; the route leaves only what needs
-    // the neighbours (photos another aircraft already takes) and the no-fly detours to the correction
-    // factors below. An aircraft whose subarea lies far from its home gets less of the area.
-    const auto rawEstimate = [&](std::size_t k, const geo::MultiPolygon& sub) -> Result<double> {
-        auto ap = planRegion(sub, geom->noFly, m.aircraft[k], fixed, frame, homes[k], landing, laneSpacing(m, k));
-        if (!ap)
-            return ap.error();
-        return aloneRouteTimeS(surveyPart(ap->localWaypoints), m.aircraft[k], homes[k], landing);
-    };
-    fleet::AreaSplitOptions so;
-    so.gridAngleDeg = estimateAngle;
-    so.safetyMarginM = opt.safetyMarginM;
-    // Tighter than the balancer's default (5 %): the stages after the estimate add their own spread,
-    // and the target is the final makespan within 10 % of the ideal.
-    so.balance.tolerance = 0.03;
-    // Every split tried, with the makespan of its plan at the fixed angle and whether that makespan
-    // is within kBalanceTarget of the ideal.
-    struct Candidate {
-        bool balanced = false;
-        double makespanS = 0.0;
-        std::vector<geo::MultiPolygon> regions;
-    };
-    std::vector<Candidate> candidates;
-    const auto ratio = [](const MissionPlan& p) { return p.idealS > 0 ? p.makespanS / p.idealS : 1.0; };
-    // Up to two starts: the aircraft in the mission's order, then, if no round of it came within the
-    // balancer's tolerance, reversed. The partition seeds the aircraft one after the other from the
-    // far end of the free cells, so the order decides which aircraft gets which end of the area and
-    // the shapes of the subareas; the flight time depends on those shapes (turns, pieces, photos a
-    // neighbour already takes) far more than on their sizes, so two splits balanced on the estimate
-    // can differ by 10 % in makespan. The second start is skipped when the first is balanced, to keep
-    // the planning time near that of one split. Every split planned is a candidate (below).
-    // The raw estimates already made, by aircraft and subarea cells: every round and both starts
-    // split the same base grid, and the balance search comes back to the same subareas (on the demo
-    // 40 % of the estimates asked for; each also costs a polygon union).
-    EstimateMemo memo;
-    std::vector<std::vector<std::size_t>> orders(1);
-    for (std::size_t k = 0; k < n; ++k)
-        orders[0].push_back(k);
-    orders.emplace_back(orders[0].rbegin(), orders[0].rend());
-    bool reachedTolerance = false;
-    for (const auto& order : orders) {
-        if (reachedTolerance)
-            break;
-        std::vector<fleet::Capability> ordered;
-        for (std::size_t k : order)
-            ordered.push_back(caps[k]);
-        std::vector<double> factor(n, 1.0);
-        // The estimate misses what comes after the per-aircraft plan: photos dropped because a
-        // neighbour with a larger footprint already sees them, detours, the safe transit. So: split,
-        // plan to the end, measure each aircraft's final time against its estimate, and split again
-        // with each estimate scaled by that factor; a few rounds at most per start.
-        constexpr int kRounds = 3;
-        for (int round = 0; round < kRounds; ++round) {
-            const fleet::CellsTimeEstimator estimate = [&](int i, const std::vector<int>& cells,
-                                                           const grid::Grid& base) -> Result<double> {
-                if (stopRequested())
-                    return cancelledError(); // the split stops at its next estimate
-                const std::size_t k = order[static_cast<std::size_t>(i)];
-                auto t = memo.rawS(k, cells, base, [&] { return rawEstimate(k, fleet::cellsPolygon(base, cells, base.admissible())); });
-                if (!t)
-                    return t;
-                return *t * factor[k];
-            };
-            if (stopRequested())
-                return cancelledError();
-            auto split = fleet::splitArea(geom->area, geom->noFly, ordered, so, estimate);
-            if (!split)
-                return makeError(split.error().code,
-                                 "sharing the area between the aircraft: " + split.error().message);
-            std::vector<geo::MultiPolygon> regions(n);
-            for (std::size_t i = 0; i < n; ++i)
-                regions[order[i]] = std::move(split->subareas[i]);
-            std::vector<double> alone; // the estimate of each subarea, as the plan made it
-            auto p = buildPlan(m, fixedPlan, *geom, regions, homes, landing, false, &alone);
-            if (!p)
-                return p.error();
-            // With the automatic choice the estimate is stride's, the plan another planner's: the
-            // factor is taken against the estimate itself.
-            if (opt.planner == PlannerKind::Auto)
-                for (std::size_t k = 0; k < n; ++k) {
-                    auto t = rawEstimate(k, regions[k]);
-                    if (!t)
-                        return t.error();
-                    alone[k] = *t;
-                }
-            // The factors of the plan just made.
-            std::vector<double> next = factor;
-            for (std::size_t k = 0; k < n; ++k)
-                if (alone[k] > 0 && p->aircraft[k].timeS > 0)
-                    next[k] = p->aircraft[k].timeS / alone[k];
-            const bool balanced = ratio(*p) <= 1.0 + so.balance.tolerance;
-            candidates.push_back({ratio(*p) <= kBalanceTarget, p->makespanS, std::move(regions)});
-            reachedTolerance = reachedTolerance || balanced;
-            if (balanced || next == factor)
-                break;
-            factor = std::move(next);
-        }
-    }
-    // The candidates were planned at the estimate's fixed angle (a full angle search per candidate
-    // would cost up to 37 times as much) and without the coverage check. They are ranked: those
-    // within kBalanceTarget of the ideal first (a plan that leaves the other aircraft idle while one
-    // flies on is not what a shared area asks for, even if its makespan is a little shorter), then
-    // by makespan. The first is planned once more with the mission's options (which may search the
-    // angle per subarea; if that makes the makespan longer, the fixed angle is kept) and checked.
-    // Should its photos miss the coverage target or a leg breach a no-fly margin, the next one is
-    // tried; if none passes, the first is returned with its warnings.
-    std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
-        return a.balanced != b.balanced ? a.balanced : a.makespanS < b.makespanS;
-    });
-    std::optional<MissionPlan> first;
-    for (const Candidate& c : candidates) {
-        if (stopRequested())
-            return cancelledError();
-        auto chosen = buildPlan(m, opt, *geom, c.regions, homes, landing, true);
-        if (!chosen)
-            return chosen.error();
-        if (!opt.gridAngleDeg && chosen->makespanS > c.makespanS) {
-            chosen = buildPlan(m, fixedPlan, *geom, c.regions, homes, landing, true);
-            if (!chosen)
-                return chosen.error();
-        }
-        if (chosen->coverageRatio >= kCoverageTarget && chosen->noFlyViolations == 0)
-            return chosen;
-        if (!first)
-            first = std::move(*chosen);
-    }
-    return std::move(*first);
+    // 1. Each aircraft's region: the whole area alone, else a time-balanced split (fleet_plan.h).
+    if (m.aircraft.size() == 1)
+        return buildPlan(m, m.options, *geom, {geo::MultiPolygon{geom->area}}, homes, landing,
+                         true);
+    return planFleet(FleetInput{m, *geom, std::move(caps), std::move(homes), landing});
 }
 
 } // namespace

@@ -15,25 +15,32 @@
 
 namespace pf::mission {
 
-// Plans ONE aircraft over `region` (local metres in `frame`, e.g. the subarea assigned to it), avoiding
-// `noFly` (local metres, un-buffered; the options' safety margin is applied), with options.planner:
-// - grid planners (stride, raster, wavefront): the take-off cell is the visitable cell nearest to `home`
-//   and the landing cell the one nearest to `landing` (home if unset); without a home the path starts
-//   at the grid's first cell. With no grid angle in the options, angles 0, 5, ..., 175 degrees and the
-//   directions of the region's longest edges are tried; the three whose cell paths fly soonest (then
-//   fewer turns) are turned into lanes and the one whose route flies soonest is kept;
+// Plans ONE aircraft over `region` (local metres of the mission's frame, e.g. the subarea assigned
+// to it), avoiding `noFly` (local metres, un-buffered; the options' safety margin is applied), with
+// options.planner:
+// - grid planners (stride, raster, wavefront): the take-off cell is the visitable cell nearest to
+//   `home` and the landing cell the one nearest to `landing` (home if unset); without a home the
+//   path starts at the grid's first cell. With no grid angle in the options, angles 0, 5, ..., 175
+//   degrees and the directions of the region's longest edges are tried; the three whose cell paths
+//   fly soonest (then fewer turns) are turned into lanes and the one whose route flies soonest is
+//   kept;
 // - sweep: plan::planSweep on the exact polygon (the mission's grid angle, if set, as its only lane
 //   direction);
 // - lawnmower: plan::planLawnmower, the Survey pattern over the region, straight over the zones;
-// - auto: sweep, stride and raster are planned in full and the one whose route flies soonest (from home
-//   over its survey waypoints and back, aloneRouteTimeS) is kept; plannerChoice says which and why.
+// - auto: sweep, stride and raster are planned in full and the one whose route flies soonest (from
+//   home over its survey waypoints and back, aloneRouteTimeS) is kept; plannerChoice says which and
+//   why.
 // With `laneSpacing` (over terrain: terrain_stage.h's laneSpacing), every planner's photos are then
 // spaced per lane (route::spaceLanes, before the automatic choice compares them; the lanes respaced
 // and the photos that saved in AircraftPlan::terrain).
+// The plan's route has the aircraft's name and speed but neither home nor waypoints: the caller
+// converts those to WGS84 for the plan it keeps (routeWaypoints from the waypoints finally flown).
+// Nothing here touches the frame's transformation, so regions can be planned on several threads.
 // Errors name the aircraft and the problem.
-Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
+Result<AircraftPlan> planRegion(const geo::MultiPolygon& region,
+                                const std::vector<geo::Polygon>& noFly,
                                 const AircraftConfig& aircraft, const PlannerOptions& options,
-                                const geo::LocalFrame& frame, const std::optional<geo::Vec2>& home,
+                                const std::optional<geo::Vec2>& home,
                                 const std::optional<geo::Vec2>& landing = std::nullopt,
                                 const route::LaneSpacingFn& laneSpacing = {});
 

@@ -26,7 +26,9 @@ constexpr double kUnlimitedEnduranceMin = 1e7;
 void measurePath(SurveyMeasures& s, const plan::FlightTimeModel& model) {
     const plan::FlightTime t = plan::flightTime(s.path, model);
     s.timeS = t.totalS;
-    s.simpleTimeS = t.straightS + t.turnS;
+    // Paper 004's measure: every metre at V, every degree of heading change at omega.
+    s.simpleTimeS = (model.speedMps > 0 ? t.lengthM / model.speedMps : 0.0) +
+                    (model.turnRateDegS > 0 ? t.turnAngleDeg / model.turnRateDegS : 0.0);
     s.simpleStopsTimeS = s.simpleTimeS + kSimpleStopS * t.turns;
     s.pathM = t.lengthM;
     s.turns = t.turns;

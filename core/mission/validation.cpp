@@ -112,7 +112,59 @@ std::string cellBudgetError(const std::string& who, const AircraftConfig& a, dou
     return msg;
 }
 
+// A turn radius given for a plane that its cruise speed would need a steeper bank than this for is
+// suspicious: survey planes are limited to 45-60 degrees (ArduPlane ROLL_LIMIT_DEG 45, PX4 FW_R_LIM
+// 50).
+constexpr double kSteepBankDeg = 60.0;
+
 } // namespace
+
+std::vector<std::string> planeErrors(const AircraftConfig& a, const std::string& who) {
+    std::vector<std::string> out;
+    if (!fleet::fliesAsPlane(a.kind))
+        return out;
+    const auto& p = a.plane;
+    const auto positive = [&](double v, const char* what, const char* unit, const char* why) {
+        if (!std::isfinite(v) || v <= 0.0)
+            out.push_back(who + ": the " + what + " must be greater than 0 " + unit + " (got " +
+                          num("%g", v) + " " + unit + ")" + why);
+    };
+    if (p.minTurnRadiusM)
+        positive(*p.minTurnRadiusM, "minimum turn radius", "m",
+                 ": a plane cannot turn on the spot");
+    else if (p.maxBankDeg &&
+             !(std::isfinite(*p.maxBankDeg) && *p.maxBankDeg > 0 && *p.maxBankDeg < 90))
+        out.push_back(who + ": the bank limit must lie between 0 and 90 degrees (got " +
+                      num("%g", *p.maxBankDeg) +
+                      "): the turn radius follows from it, V^2 / (g tan bank)");
+    positive(p.climbRateMps, "climb rate", "m/s", "");
+    positive(p.sinkRateMps, "sink rate", "m/s", "");
+    if (!std::isfinite(p.runInM) || p.runInM < 0)
+        out.push_back(who + ": the run-in before each lane must be 0 m or more (got " +
+                      num("%g", p.runInM) + " m)");
+    if (p.stallSpeedMps) {
+        positive(*p.stallSpeedMps, "stall speed", "m/s", "");
+        const double least = fleet::kStallMargin * *p.stallSpeedMps;
+        if (*p.stallSpeedMps > 0 && std::isfinite(least) && a.cruiseSpeedMps < least)
+            out.push_back(who + ": the cruise speed of " + num("%.1f", a.cruiseSpeedMps) +
+                          " m/s is below the stall-safe minimum of " + num("%.1f", least) +
+                          " m/s (" + num("%g", fleet::kStallMargin) + " x its stall speed of " +
+                          num("%.1f", *p.stallSpeedMps) + " m/s): fly faster");
+    }
+    return out;
+}
+
+std::string planeRoutingError(const AircraftConfig& a, const std::string& who) {
+    if (!fleet::fliesAsPlane(a.kind))
+        return {};
+    const std::string kind = a.kind == fleet::AircraftKind::Vtol
+                                 ? "a VTOL aircraft (it flies its survey as a plane)"
+                                 : "a fixed-wing aircraft";
+    return who + " is " + kind +
+           ": this version plans routes for multirotors only, which stop and turn on the spot at "
+           "every lane end; "
+           "a plane cannot, and would overshoot every lane. Choose a multirotor for this mission";
+}
 
 std::vector<std::string> altitudeErrors(const Mission& m, const AircraftConfig& a, double altitudeM) {
     std::string who = aircraftLabel(a.name);
@@ -300,6 +352,20 @@ ValidationReport validateMission(const Mission& m) {
                                num("%g", v) + ")");
                 ok = false;
             }
+        for (auto& e : planeErrors(a, who)) {
+            error(out, std::move(e));
+            ok = false;
+        }
+        if (auto e = planeRoutingError(a, who); !e.empty())
+            error(out, std::move(e));
+        if (fleet::fliesAsPlane(a.kind) && a.plane.minTurnRadiusM && *a.plane.minTurnRadiusM > 0 &&
+            fleet::bankAngleDeg(a.plane, a.cruiseSpeedMps) > kSteepBankDeg)
+            warning(
+                out,
+                who + ": a turn radius of " + num("%.0f", *a.plane.minTurnRadiusM) + " m at " +
+                    num("%.1f", a.cruiseSpeedMps) + " m/s needs a bank of " +
+                    num("%.0f", fleet::bankAngleDeg(a.plane, a.cruiseSpeedMps)) +
+                    " degrees; survey planes bank 45-60 degrees at most: check the turn radius");
         // The flight-time model divides by these: a zero or negative figure would give nonsense times.
         for (auto [v, what, unit] : {std::tuple{a.cruiseSpeedMps, "cruise speed", "m/s"},
                                      std::tuple{a.turnRateDegS, "turn rate", "deg/s"},

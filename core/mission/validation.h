@@ -56,9 +56,11 @@ std::vector<std::string> altitudeErrors(const Mission& m, const AircraftConfig& 
 
 // Checks the whole mission: the area and every no-fly zone as polygons, zones outside the area
 // (warning: ignored) or covering all of it (error), the home point, the planner options, and per
-// aircraft the camera, altitude (altitudeErrors: minimum safe altitude, maximum, footprint) or GSD
-// (> 0), overlaps in [0, 1) and the cell budget (an error that says how many cells and which altitude and cell size would fit).
-// Never fails: every finding is in the report.
+// aircraft its kind (planeErrors, planeRoutingError; a warning when a plane's turn radius asks for
+// a bank steeper than 60 degrees), the camera, altitude (altitudeErrors: minimum safe altitude,
+// maximum, footprint) or GSD
+// (> 0), overlaps in [0, 1) and the cell budget (an error that says how many cells and which
+// altitude and cell size would fit). Never fails: every finding is in the report.
 ValidationReport validateMission(const Mission& m);
 
 // The mission's geometry in its local planning frame (centred on the area), as the grid needs it.
@@ -74,6 +76,18 @@ Result<LocalGeometry> localGeometry(const Mission& m);
 // The warning for ground enclosed by merged no-fly margins (grid::Grid::pockets): how many, their area,
 // and that they are photographed from outside, never entered.
 std::string pocketWarning(const geo::MultiPolygon& pockets);
+
+// The errors of a plane's figures (its kind flies as a plane): a minimum turn radius of 0 m or
+// less, a bank limit outside 0-90 degrees, climb or sink rates of 0 or less, a negative run-in, a
+// stall speed of 0 or less, or a cruise speed below fleet::kStallMargin x the stall speed. Each
+// names `who`, the value and the limit. Empty for a multirotor.
+std::vector<std::string> planeErrors(const AircraftConfig& a, const std::string& who);
+
+// The routes the planners make stop and turn on the spot at every lane end: only a multirotor can
+// fly them. The error for an aircraft that flies its survey as a plane (fixed-wing or VTOL), naming
+// it; empty for a multirotor. validateMission reports it and planning refuses such an aircraft with
+// it, so that a plane never gets a multirotor's route.
+std::string planeRoutingError(const AircraftConfig& a, const std::string& who);
 
 // The flight altitude of an aircraft: its altitude, or the one giving its GSD. Errors name the aircraft.
 Result<double> resolvedAltitude(const AircraftConfig& a);

@@ -9,6 +9,9 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
+#include <string>
+#include <vector>
 
 namespace pf::mosaic {
 
@@ -61,6 +64,110 @@ struct WarpOptionsDeleter {
     void operator()(GDALWarpOptions* p) const { GDALDestroyWarpOptions(p); }
 };
 
+// The coarsest reduction of the photo (JPEG decodes 1/2, 1/4, 1/8 directly) still as fine as the
+// output, with its level (0: the stored size).
+GDALDataset* coarsestFineEnough(GDALDataset* ds, double ratio, int bands, int& level) {
+    GDALRasterBand* band1 = ds->GetRasterBand(1);
+    const int storedW = ds->GetRasterXSize();
+    for (int k = band1->GetOverviewCount() - 1; k >= 0; --k) {
+        GDALRasterBand* ovr = band1->GetOverview(k);
+        if (!ovr || !ovr->GetDataset() || ovr->GetDataset()->GetRasterCount() < bands)
+            continue;
+        const double f = static_cast<double>(storedW) / ovr->GetXSize();
+        if (f <= ratio * 1.001) {
+            level = static_cast<int>(std::lround(std::log2(f)));
+            return ovr->GetDataset();
+        }
+    }
+    return ds;
+}
+
+struct SourceRect {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
+// The part of the photo (at its reduction, srcW x srcH) the window needs: a lattice of the window's
+// pixels projected, grown by the resampling kernel's reach; none when it sees nothing.
+std::optional<SourceRect> neededSource(CameraTransform& t, const PixelWindow& window, int srcW,
+                                       int srcH) {
+    double minC = 1e300, minR = 1e300, maxC = -1e300, maxR = -1e300;
+    constexpr int kSamples = 12;
+    for (int j = 0; j <= kSamples; ++j) {
+        for (int i = 0; i <= kSamples; ++i) {
+            double px = window.w * static_cast<double>(i) / kSamples,
+                   py = window.h * static_cast<double>(j) / kSamples;
+            double pz = 0;
+            int ok = 0;
+            cameraTransform(&t, TRUE, 1, &px, &py, &pz, &ok);
+            if (!ok)
+                continue;
+            minC = std::min(minC, px);
+            maxC = std::max(maxC, px);
+            minR = std::min(minR, py);
+            maxR = std::max(maxR, py);
+        }
+    }
+    if (minC > maxC)
+        return std::nullopt;
+    const int pad = 3; // the resampling kernel's reach, and curvature between the samples
+    SourceRect r;
+    r.x0 = std::clamp(static_cast<int>(std::floor(minC)) - pad, 0, srcW);
+    r.y0 = std::clamp(static_cast<int>(std::floor(minR)) - pad, 0, srcH);
+    r.x1 = std::clamp(static_cast<int>(std::ceil(maxC)) + pad, 0, srcW);
+    r.y1 = std::clamp(static_cast<int>(std::ceil(maxR)) + pad, 0, srcH);
+    if (r.x1 <= r.x0 || r.y1 <= r.y0)
+        return std::nullopt;
+    return r;
+}
+
+// An in-memory dataset over band-sequential pixels (sw x sh per band) the warper reads.
+GDALDatasetUniquePtr memoryDataset(std::vector<std::uint8_t>& pixels, int sw, int sh, int bands) {
+    GDALDriver* memDriver = GetGDALDriverManager()->GetDriverByName("MEM");
+    GDALDatasetUniquePtr mem(memDriver->Create("", sw, sh, 0, GDT_Byte, nullptr));
+    for (int b = 0; b < bands; ++b) {
+        char ptr[64];
+        std::snprintf(ptr, sizeof ptr, "DATAPOINTER=%p",
+                      static_cast<void*>(pixels.data() + static_cast<std::size_t>(b) * sw * sh));
+        const char* const bandOptions[] = {ptr, nullptr};
+        mem->AddBand(GDT_Byte, const_cast<char**>(bandOptions));
+    }
+    return mem;
+}
+
+// The decoded part (mem) warped into the window, band-sequential; GDAL's message when it fails.
+Result<std::vector<std::uint8_t>> warpWindow(GDALDataset* mem, CameraTransform& t, int bands,
+                                             Resampling resampling, const PixelWindow& window,
+                                             geo::detail::GdalErrorCapture& errors,
+                                             const std::string& name) {
+    std::unique_ptr<void, ApproxDeleter> approx(
+        GDALCreateApproxTransformer(cameraTransform, &t, 0.125));
+    std::unique_ptr<GDALWarpOptions, WarpOptionsDeleter> wo(GDALCreateWarpOptions());
+    wo->hSrcDS = GDALDataset::ToHandle(mem);
+    wo->hDstDS = nullptr;
+    wo->nBandCount = bands;
+    wo->panSrcBands = static_cast<int*>(CPLMalloc(sizeof(int) * bands));
+    wo->panDstBands = static_cast<int*>(CPLMalloc(sizeof(int) * bands));
+    for (int b = 0; b < bands; ++b)
+        wo->panSrcBands[b] = wo->panDstBands[b] = b + 1;
+    wo->eResampleAlg = resampling == Resampling::Cubic     ? GRA_Cubic
+                       : resampling == Resampling::Lanczos ? GRA_Lanczos
+                                                           : GRA_Bilinear;
+    wo->eWorkingDataType = GDT_Byte;
+    wo->pfnTransformer = GDALApproxTransform;
+    wo->pTransformerArg = approx.get();
+    wo->dfWarpMemoryLimit = 64.0 * 1024 * 1024;
+
+    GDALWarpOperation op;
+    if (op.Initialize(wo.get()) != CE_None)
+        return makeError(ErrorCode::Internal,
+                         name + ": GDAL's warper refused the photo (" + errors.message() + ")");
+    std::vector<std::uint8_t> warped(static_cast<std::size_t>(window.w) * window.h * bands, 0);
+    if (op.WarpRegionToBuffer(0, 0, window.w, window.h, warped.data(), GDT_Byte, 0, 0,
+                              mem->GetRasterXSize(), mem->GetRasterYSize()) != CE_None)
+        return makeError(ErrorCode::Internal, name + ": warping failed (" + errors.message() + ")");
+    return warped;
+}
+
 } // namespace
 
 Result<WarpedWindow> warpPhoto(const std::string& path, const PhotoGeometry& photo,
@@ -83,22 +190,8 @@ Result<WarpedWindow> warpPhoto(const std::string& path, const PhotoGeometry& pho
     if (storedW != photo.camera.storedWidth() || storedH != photo.camera.storedHeight())
         return makeError(ErrorCode::IoError, name + ": changed while the mosaic was made");
     const int bands = std::min(3, ds->GetRasterCount());
-
-    // The coarsest reduction (JPEG decodes 1/2, 1/4, 1/8 directly) still as fine as the output.
-    GDALDataset* src = ds.get();
-    GDALRasterBand* band1 = ds->GetRasterBand(1);
-    const double ratio = grid.gsd / std::max(photo.nadirGsdM, 1e-9);
-    for (int k = band1->GetOverviewCount() - 1; k >= 0; --k) {
-        GDALRasterBand* ovr = band1->GetOverview(k);
-        if (!ovr || !ovr->GetDataset() || ovr->GetDataset()->GetRasterCount() < bands)
-            continue;
-        const double f = static_cast<double>(storedW) / ovr->GetXSize();
-        if (f <= ratio * 1.001) {
-            src = ovr->GetDataset();
-            out.level = static_cast<int>(std::lround(std::log2(f)));
-            break;
-        }
-    }
+    GDALDataset* src =
+        coarsestFineEnough(ds.get(), grid.gsd / std::max(photo.nadirGsdM, 1e-9), bands, out.level);
     const int srcW = src->GetRasterXSize(), srcH = src->GetRasterYSize();
 
     CameraTransform t;
@@ -108,86 +201,28 @@ Result<WarpedWindow> warpPhoto(const std::string& path, const PhotoGeometry& pho
     t.window = window;
     t.scaleX = static_cast<double>(srcW) / storedW;
     t.scaleY = static_cast<double>(srcH) / storedH;
-
-    // The part of the photo the window needs: project a lattice of the window's pixels.
-    double minC = 1e300, minR = 1e300, maxC = -1e300, maxR = -1e300;
-    constexpr int kSamples = 12;
-    for (int j = 0; j <= kSamples; ++j) {
-        for (int i = 0; i <= kSamples; ++i) {
-            double px = window.w * static_cast<double>(i) / kSamples,
-                   py = window.h * static_cast<double>(j) / kSamples;
-            double pz = 0;
-            int ok = 0;
-            cameraTransform(&t, TRUE, 1, &px, &py, &pz, &ok);
-            if (!ok)
-                continue;
-            minC = std::min(minC, px);
-            maxC = std::max(maxC, px);
-            minR = std::min(minR, py);
-            maxR = std::max(maxR, py);
-        }
-    }
-    if (minC > maxC)
+    const std::optional<SourceRect> r = neededSource(t, window, srcW, srcH);
+    if (!r)
         return out;
-    const int pad = 3; // the resampling kernel's reach, and curvature between the samples
-    const int x0 = std::clamp(static_cast<int>(std::floor(minC)) - pad, 0, srcW);
-    const int y0 = std::clamp(static_cast<int>(std::floor(minR)) - pad, 0, srcH);
-    const int x1 = std::clamp(static_cast<int>(std::ceil(maxC)) + pad, 0, srcW);
-    const int y1 = std::clamp(static_cast<int>(std::ceil(maxR)) + pad, 0, srcH);
-    if (x1 <= x0 || y1 <= y0)
-        return out;
-    const int sw = x1 - x0, sh = y1 - y0;
-    t.srcX0 = x0;
-    t.srcY0 = y0;
+    const int sw = r->x1 - r->x0, sh = r->y1 - r->y0;
+    t.srcX0 = r->x0;
+    t.srcY0 = r->y0;
 
     // Decode that part (band-sequential) into an in-memory dataset the warper reads.
     std::vector<std::uint8_t> pixels(static_cast<std::size_t>(sw) * sh * bands);
-    if (src->RasterIO(GF_Read, x0, y0, sw, sh, pixels.data(), sw, sh, GDT_Byte, bands, nullptr, 0,
-                      0, 0, nullptr) != CE_None ||
+    if (src->RasterIO(GF_Read, r->x0, r->y0, sw, sh, pixels.data(), sw, sh, GDT_Byte, bands,
+                      nullptr, 0, 0, 0, nullptr) != CE_None ||
         errors.failed())
         return makeError(ErrorCode::ParseError,
                          name + ": the image data is damaged (" + errors.message() + ")");
-    GDALDriver* memDriver = GetGDALDriverManager()->GetDriverByName("MEM");
-    GDALDatasetUniquePtr mem(memDriver->Create("", sw, sh, 0, GDT_Byte, nullptr));
-    for (int b = 0; b < bands; ++b) {
-        char ptr[64];
-        std::snprintf(ptr, sizeof ptr, "DATAPOINTER=%p",
-                      static_cast<void*>(pixels.data() + static_cast<std::size_t>(b) * sw * sh));
-        const char* const bandOptions[] = {ptr, nullptr};
-        mem->AddBand(GDT_Byte, const_cast<char**>(bandOptions));
-    }
-
-    std::unique_ptr<void, ApproxDeleter> approx(
-        GDALCreateApproxTransformer(cameraTransform, &t, 0.125));
-    std::unique_ptr<GDALWarpOptions, WarpOptionsDeleter> wo(GDALCreateWarpOptions());
-    wo->hSrcDS = GDALDataset::ToHandle(mem.get());
-    wo->hDstDS = nullptr;
-    wo->nBandCount = bands;
-    wo->panSrcBands = static_cast<int*>(CPLMalloc(sizeof(int) * bands));
-    wo->panDstBands = static_cast<int*>(CPLMalloc(sizeof(int) * bands));
-    for (int b = 0; b < bands; ++b)
-        wo->panSrcBands[b] = wo->panDstBands[b] = b + 1;
-    wo->eResampleAlg = resampling == Resampling::Cubic     ? GRA_Cubic
-                       : resampling == Resampling::Lanczos ? GRA_Lanczos
-                                                           : GRA_Bilinear;
-    wo->eWorkingDataType = GDT_Byte;
-    wo->pfnTransformer = GDALApproxTransform;
-    wo->pTransformerArg = approx.get();
-    wo->dfWarpMemoryLimit = 64.0 * 1024 * 1024;
-
-    GDALWarpOperation op;
-    if (op.Initialize(wo.get()) != CE_None)
-        return makeError(ErrorCode::Internal,
-                         name + ": GDAL's warper refused the photo (" + errors.message() + ")");
-    std::vector<std::uint8_t> warped(static_cast<std::size_t>(window.w) * window.h * bands, 0);
-    if (op.WarpRegionToBuffer(0, 0, window.w, window.h, warped.data(), GDT_Byte, 0, 0, sw, sh) !=
-        CE_None)
-        return makeError(ErrorCode::Internal, name + ": warping failed (" + errors.message() + ")");
-
+    GDALDatasetUniquePtr mem = memoryDataset(pixels, sw, sh, bands);
+    auto warped = warpWindow(mem.get(), t, bands, resampling, window, errors, name);
+    if (!warped)
+        return warped.error();
     const std::size_t plane = static_cast<std::size_t>(window.w) * window.h;
     for (std::size_t i = 0; i < plane; ++i)
         for (int c = 0; c < 3; ++c)
-            out.rgb[i * 3 + c] = warped[std::min(c, bands - 1) * plane + i];
+            out.rgb[i * 3 + c] = (*warped)[std::min(c, bands - 1) * plane + i];
     return out;
 }
 

@@ -22,6 +22,74 @@ geo::GeoRing toGeoRing(const geo::Ring& r) {
     return out;
 }
 
+// The plan.geojson properties read, by index (-1: absent).
+struct PlanFields {
+    int kind, aircraft, seq, alt, heading, across, along;
+    explicit PlanFields(const OGRFeatureDefn* defn)
+        : kind(defn->GetFieldIndex("kind")), aircraft(defn->GetFieldIndex("aircraft")),
+          seq(defn->GetFieldIndex("seq")), alt(defn->GetFieldIndex("alt_m")),
+          heading(defn->GetFieldIndex("heading_deg")),
+          across(defn->GetFieldIndex("footprint_across_m")),
+          along(defn->GetFieldIndex("footprint_along_m")) {}
+    std::string aircraftOf(OGRFeature& f) const {
+        return aircraft >= 0 ? f.GetFieldAsString(aircraft) : "";
+    }
+    bool hasFootprint(OGRFeature& f) const {
+        return across >= 0 && along >= 0 && f.IsFieldSetAndNotNull(across) &&
+               f.IsFieldSetAndNotNull(along);
+    }
+};
+
+// A "photo" feature (featureNo counts from 1, for messages). A photo without its own footprint has
+// its aircraft's path's (plan.geojson gives it once).
+Result<PlannedPhoto>
+readPhoto(OGRFeature& f, const PlanFields& fields,
+          const std::map<std::string, std::pair<double, double>>& pathFootprint,
+          const std::string& name, int featureNo) {
+    const OGRGeometry* g = f.GetGeometryRef();
+    const auto* pt = g ? dynamic_cast<const OGRPoint*>(g) : nullptr;
+    if (!pt)
+        return makeError(ErrorCode::ParseError, name + ": feature " + std::to_string(featureNo) +
+                                                    ": a photo must be a Point");
+    if (fields.alt < 0 || !f.IsFieldSetAndNotNull(fields.alt))
+        return makeError(ErrorCode::ParseError,
+                         name + ": feature " + std::to_string(featureNo) + ": photo without alt_m");
+    PlannedPhoto p;
+    p.aircraft = fields.aircraftOf(f);
+    p.seq = fields.seq >= 0 ? f.GetFieldAsInteger(fields.seq) : 0;
+    p.position = {pt->getX(), pt->getY()};
+    p.altitudeM = f.GetFieldAsDouble(fields.alt);
+    p.headingDeg = fields.heading >= 0 ? f.GetFieldAsDouble(fields.heading) : 0.0;
+    const bool ownFootprint = fields.hasFootprint(f);
+    const auto fp = pathFootprint.find(p.aircraft);
+    p.footprintAcrossM = ownFootprint                ? f.GetFieldAsDouble(fields.across)
+                         : fp != pathFootprint.end() ? fp->second.first
+                                                     : 0.0;
+    p.footprintAlongM = ownFootprint                ? f.GetFieldAsDouble(fields.along)
+                        : fp != pathFootprint.end() ? fp->second.second
+                                                    : 0.0;
+    if (!std::isfinite(p.position.lon) || !std::isfinite(p.position.lat) ||
+        std::abs(p.position.lat) > 90 || std::abs(p.position.lon) > 180 ||
+        !std::isfinite(p.altitudeM) || !(p.altitudeM > 0))
+        return makeError(ErrorCode::ParseError, name + ": feature " + std::to_string(featureNo) +
+                                                    ": photo position or altitude out of range");
+    return p;
+}
+
+// Each aircraft's photos in flight order, aircraft in the order they appear.
+void sortByAircraft(std::vector<PlannedPhoto>& photos) {
+    std::vector<std::string> order;
+    for (const auto& p : photos)
+        if (std::find(order.begin(), order.end(), p.aircraft) == order.end())
+            order.push_back(p.aircraft);
+    std::stable_sort(
+        photos.begin(), photos.end(), [&](const PlannedPhoto& a, const PlannedPhoto& b) {
+            const auto ia = std::find(order.begin(), order.end(), a.aircraft) - order.begin();
+            const auto ib = std::find(order.begin(), order.end(), b.aircraft) - order.begin();
+            return ia != ib ? ia < ib : a.seq < b.seq;
+        });
+}
+
 } // namespace
 
 Result<PlannedFlight> readPlannedFlight(const std::string& pathIn) {
@@ -44,15 +112,8 @@ Result<PlannedFlight> readPlannedFlight(const std::string& pathIn) {
                          name + ": not a GeoJSON plan" +
                              (errors.message().empty() ? "" : " (" + errors.message() + ")"));
     OGRLayer* layer = ds->GetLayer(0);
-    const OGRFeatureDefn* defn = layer->GetLayerDefn();
-    const int kind = defn->GetFieldIndex("kind");
-    const int aircraft = defn->GetFieldIndex("aircraft");
-    const int seq = defn->GetFieldIndex("seq");
-    const int alt = defn->GetFieldIndex("alt_m");
-    const int heading = defn->GetFieldIndex("heading_deg");
-    const int across = defn->GetFieldIndex("footprint_across_m");
-    const int along = defn->GetFieldIndex("footprint_along_m");
-    if (kind < 0)
+    const PlanFields fields(layer->GetLayerDefn());
+    if (fields.kind < 0)
         return makeError(ErrorCode::ParseError,
                          name + ": no 'kind' property: not a plan written by photoflight-cli plan");
 
@@ -63,45 +124,18 @@ Result<PlannedFlight> readPlannedFlight(const std::string& pathIn) {
     layer->ResetReading();
     for (auto& f : *layer) {
         ++featureNo;
-        const std::string k = f->GetFieldAsString(kind);
+        const std::string k = f->GetFieldAsString(fields.kind);
         const OGRGeometry* g = f->GetGeometryRef();
         if (k == "photo") {
-            const auto* pt = g ? dynamic_cast<const OGRPoint*>(g) : nullptr;
-            if (!pt)
-                return makeError(ErrorCode::ParseError, name + ": feature " +
-                                                            std::to_string(featureNo) +
-                                                            ": a photo must be a Point");
-            if (alt < 0 || !f->IsFieldSetAndNotNull(alt))
-                return makeError(ErrorCode::ParseError, name + ": feature " +
-                                                            std::to_string(featureNo) +
-                                                            ": photo without alt_m");
-            PlannedPhoto p;
-            p.aircraft = aircraft >= 0 ? f->GetFieldAsString(aircraft) : "";
-            p.seq = seq >= 0 ? f->GetFieldAsInteger(seq) : 0;
-            p.position = {pt->getX(), pt->getY()};
-            p.altitudeM = f->GetFieldAsDouble(alt);
-            p.headingDeg = heading >= 0 ? f->GetFieldAsDouble(heading) : 0.0;
-            // A photo without its own footprint has its aircraft's path's (plan.geojson gives it once).
-            const bool ownFootprint = across >= 0 && along >= 0 && f->IsFieldSetAndNotNull(across) &&
-                                      f->IsFieldSetAndNotNull(along);
-            const auto fp = pathFootprint.find(p.aircraft);
-            p.footprintAcrossM = ownFootprint ? f->GetFieldAsDouble(across)
-                                              : fp != pathFootprint.end() ? fp->second.first : 0.0;
-            p.footprintAlongM = ownFootprint ? f->GetFieldAsDouble(along)
-                                             : fp != pathFootprint.end() ? fp->second.second : 0.0;
-            if (!std::isfinite(p.position.lon) || !std::isfinite(p.position.lat) ||
-                std::abs(p.position.lat) > 90 || std::abs(p.position.lon) > 180 ||
-                !std::isfinite(p.altitudeM) || !(p.altitudeM > 0))
-                return makeError(ErrorCode::ParseError,
-                                 name + ": feature " + std::to_string(featureNo) +
-                                     ": photo position or altitude out of range");
-            flight.photos.push_back(p);
-        } else if (k == "path" && across >= 0 && along >= 0 && f->IsFieldSetAndNotNull(across) &&
-                   f->IsFieldSetAndNotNull(along)) {
-            pathFootprint[aircraft >= 0 ? f->GetFieldAsString(aircraft) : ""] = {
-                f->GetFieldAsDouble(across), f->GetFieldAsDouble(along)};
+            auto p = readPhoto(*f, fields, pathFootprint, name, featureNo);
+            if (!p)
+                return p.error();
+            flight.photos.push_back(*p);
+        } else if (k == "path" && fields.hasFootprint(*f)) {
+            pathFootprint[fields.aircraftOf(*f)] = {f->GetFieldAsDouble(fields.across),
+                                                    f->GetFieldAsDouble(fields.along)};
         } else if (k == "subarea" && g) {
-            const std::string owner = aircraft >= 0 ? f->GetFieldAsString(aircraft) : "";
+            const std::string owner = fields.aircraftOf(*f);
             for (const auto& poly : geo::detail::fromOgr(g)) {
                 geo::GeoPolygon gp;
                 gp.outer = toGeoRing(poly.outer);
@@ -114,19 +148,7 @@ Result<PlannedFlight> readPlannedFlight(const std::string& pathIn) {
     }
     if (flight.photos.empty())
         return makeError(ErrorCode::InvalidInput, name + ": the plan has no photo points");
-    // Keep each aircraft's photos in flight order, aircraft in the order they appear.
-    std::vector<std::string> order;
-    for (const auto& p : flight.photos)
-        if (std::find(order.begin(), order.end(), p.aircraft) == order.end())
-            order.push_back(p.aircraft);
-    std::stable_sort(flight.photos.begin(), flight.photos.end(),
-                     [&](const PlannedPhoto& a, const PlannedPhoto& b) {
-                         const auto ia =
-                             std::find(order.begin(), order.end(), a.aircraft) - order.begin();
-                         const auto ib =
-                             std::find(order.begin(), order.end(), b.aircraft) - order.begin();
-                         return ia != ib ? ia < ib : a.seq < b.seq;
-                     });
+    sortByAircraft(flight.photos);
     return flight;
 }
 

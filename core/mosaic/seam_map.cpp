@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 namespace pf::mosaic {
@@ -72,6 +73,169 @@ struct TileResult {
     long long covered = 0, coveredArea = 0;
 };
 
+// The scratch raster of the labels: two 16-bit bands (best, second), tiled, in the grid.
+Result<GDALDatasetUniquePtr> createLabelRaster(const OutputGrid& grid,
+                                               const std::string& scratchPath) {
+    GDALDriver* gtiff = GetGDALDriverManager()->GetDriverByName("GTiff");
+    const char* const options[] = {"TILED=YES",        "BLOCKXSIZE=256", "BLOCKYSIZE=256",
+                                   "INTERLEAVE=PIXEL", "COMPRESS=ZSTD",  "ZSTD_LEVEL=1",
+                                   "BIGTIFF=IF_SAFER", "SPARSE_OK=TRUE", nullptr};
+    geo::detail::GdalErrorCapture errors;
+    GDALDatasetUniquePtr ds(gtiff ? gtiff->Create(scratchPath.c_str(), grid.width, grid.height, 2,
+                                                  GDT_UInt16, const_cast<char**>(options))
+                                  : nullptr);
+    if (!ds)
+        return makeError(ErrorCode::IoError, "cannot create the scratch file " + scratchPath +
+                                                 " (" + errors.message() + ")");
+    double gt[6];
+    grid.geoTransform(gt);
+    ds->SetGeoTransform(gt);
+    return ds;
+}
+
+// The pixels of a tile a candidate photo colours: their extent in the tile.
+struct Extent {
+    int c0 = 1 << 30, r0 = 1 << 30, c1 = -1, r1 = -1;
+    void add(int c, int r) {
+        c0 = std::min(c0, c);
+        c1 = std::max(c1, c);
+        r0 = std::min(r0, r);
+        r1 = std::max(r1, r);
+    }
+};
+
+// Labels the tiles of the grid: each pixel gets the photo that sees it most from above and, near a
+// seam when feathering, the runner-up.
+class TileLabeller {
+public:
+    TileLabeller(const std::vector<PhotoGeometry>& photos, const GroundModel& ground,
+                 const OutputGrid& grid, const geo::MultiPolygon& area, double featherM)
+        : m_photos(photos), m_ground(ground), m_grid(grid), m_areaRows(area, grid),
+          m_level(ground.levelHeight()), m_featherM(featherM),
+          m_tilesX((grid.width + kTile - 1) / kTile) {}
+
+    long long tiles() const {
+        return static_cast<long long>(m_tilesX) * ((m_grid.height + kTile - 1) / kTile);
+    }
+
+    void label(long long t, TileResult* out) const {
+        const int tx = static_cast<int>(t % m_tilesX), ty = static_cast<int>(t / m_tilesX);
+        const PixelWindow tw{tx * kTile, ty * kTile, std::min(kTile, m_grid.width - tx * kTile),
+                             std::min(kTile, m_grid.height - ty * kTile)};
+        out->window = tw;
+        out->labels.assign(static_cast<std::size_t>(tw.w) * tw.h * 2, 0);
+        out->used.clear();
+        out->covered = out->coveredArea = 0;
+        const std::vector<int> cand = candidates(tw);
+        const std::vector<char> full = holdingWholeTile(cand, tw);
+        std::vector<Extent> ext(cand.size());
+        std::vector<std::uint8_t> inArea(tw.w, 0);
+        std::vector<double> xs;
+        for (int r = 0; r < tw.h; ++r) {
+            const double y = m_grid.y(tw.y0 + r);
+            if (!m_areaRows.empty())
+                m_areaRows.fill(tw.y0 + r, tw.x0, tw.w, inArea.data(), &xs);
+            for (int c = 0; c < tw.w; ++c) {
+                const bool seen = labelPixel(cand, full, tw, c, r, y, ext, out);
+                if (seen && !m_areaRows.empty() && inArea[c])
+                    ++out->coveredArea;
+            }
+        }
+        for (std::size_t k = 0; k < cand.size(); ++k)
+            if (ext[k].c1 >= 0)
+                out->used[cand[k]] =
+                    PixelWindow{tw.x0 + ext[k].c0, tw.y0 + ext[k].r0, ext[k].c1 - ext[k].c0 + 1,
+                                ext[k].r1 - ext[k].r0 + 1};
+    }
+
+private:
+    // The photos whose footprint meets the tile, nearest to its middle first.
+    std::vector<int> candidates(const PixelWindow& tw) const {
+        const geo::Box box{
+            {m_grid.originX + tw.x0 * m_grid.gsd, m_grid.originY - (tw.y0 + tw.h) * m_grid.gsd},
+            {m_grid.originX + (tw.x0 + tw.w) * m_grid.gsd, m_grid.originY - tw.y0 * m_grid.gsd}};
+        const geo::Vec2 mid = 0.5 * (box.min + box.max);
+        std::vector<int> cand;
+        for (int i = 0; i < static_cast<int>(m_photos.size()); ++i)
+            if (m_photos[i].seesGround && m_photos[i].footprintBox.intersects(box))
+                cand.push_back(i);
+        std::sort(cand.begin(), cand.end(), [&](int a, int b) {
+            const Vec3& ca = m_photos[a].camera.centre();
+            const Vec3& cb = m_photos[b].camera.centre();
+            return (geo::Vec2(ca.x(), ca.y()) - mid).squaredNorm() <
+                   (geo::Vec2(cb.x(), cb.y()) - mid).squaredNorm();
+        });
+        return cand;
+    }
+
+    // On a level ground a photo that holds the tile's four corners holds all of it: the ground seen
+    // within a view angle is convex, and so is the image of a rectangle.
+    std::vector<char> holdingWholeTile(const std::vector<int>& cand, const PixelWindow& tw) const {
+        std::vector<char> full(cand.size(), 0);
+        if (!m_level)
+            return full;
+        const double z = *m_level;
+        for (std::size_t k = 0; k < cand.size(); ++k) {
+            const PhotoGeometry& g = m_photos[cand[k]];
+            full[k] = g.sees(m_grid.x(tw.x0), m_grid.y(tw.y0), z) &&
+                      g.sees(m_grid.x(tw.x0 + tw.w - 1), m_grid.y(tw.y0), z) &&
+                      g.sees(m_grid.x(tw.x0), m_grid.y(tw.y0 + tw.h - 1), z) &&
+                      g.sees(m_grid.x(tw.x0 + tw.w - 1), m_grid.y(tw.y0 + tw.h - 1), z);
+        }
+        return full;
+    }
+
+    // Labels pixel (c, r) of the tile (at grid height y); true if a photo sees it.
+    bool labelPixel(const std::vector<int>& cand, const std::vector<char>& full,
+                    const PixelWindow& tw, int c, int r, double y, std::vector<Extent>& ext,
+                    TileResult* out) const {
+        const bool feather = m_featherM > 0;
+        const double x = m_grid.x(tw.x0 + c);
+        const double z = m_level ? *m_level : m_ground.heightAt(x, y);
+        double best = 1e300, second = 1e300;
+        int kb = -1, kc = -1;
+        for (std::size_t k = 0; k < cand.size(); ++k) {
+            const PhotoGeometry& g = m_photos[cand[k]];
+            const double s2 = g.viewScore2(x, y, z);
+            if (s2 >= (feather ? second : best))
+                continue;
+            if (!full[k] && !g.sees(x, y, z))
+                continue;
+            if (s2 < best) {
+                second = best;
+                kc = kb;
+                best = s2;
+                kb = static_cast<int>(k);
+            } else {
+                second = s2;
+                kc = static_cast<int>(k);
+            }
+        }
+        if (kb < 0)
+            return false;
+        const std::size_t at = (static_cast<std::size_t>(r) * tw.w + c) * 2;
+        out->labels[at] = static_cast<std::uint16_t>(cand[kb] + 1);
+        ++out->covered;
+        ext[kb].add(c, r);
+        if (feather && kc >= 0) {
+            const double h = m_photos[cand[kb]].camera.centre().z() - z;
+            if ((std::sqrt(second) - std::sqrt(best)) * h < m_featherM) {
+                out->labels[at + 1] = static_cast<std::uint16_t>(cand[kc] + 1);
+                ext[kc].add(c, r);
+            }
+        }
+        return true;
+    }
+
+    const std::vector<PhotoGeometry>& m_photos;
+    const GroundModel& m_ground;
+    const OutputGrid& m_grid;
+    const AreaRows m_areaRows;
+    const std::optional<double> m_level;
+    const double m_featherM;
+    const int m_tilesX;
+};
+
 } // namespace
 
 struct SeamMap::Impl {
@@ -101,124 +265,14 @@ Result<std::unique_ptr<SeamMap>> SeamMap::compute(const std::vector<PhotoGeometr
     map->m_windows.assign(photos.size(), PixelWindow{});
     map->m_impl = std::make_unique<Impl>();
     map->m_impl->path = scratchPath;
+    auto ds = createLabelRaster(grid, scratchPath);
+    if (!ds)
+        return ds.error();
+    map->m_impl->ds = std::move(*ds);
 
-    GDALDriver* gtiff = GetGDALDriverManager()->GetDriverByName("GTiff");
-    const char* const options[] = {"TILED=YES",        "BLOCKXSIZE=256", "BLOCKYSIZE=256",
-                                   "INTERLEAVE=PIXEL", "COMPRESS=ZSTD",  "ZSTD_LEVEL=1",
-                                   "BIGTIFF=IF_SAFER", "SPARSE_OK=TRUE", nullptr};
-    geo::detail::GdalErrorCapture errors;
-    map->m_impl->ds.reset(gtiff ? gtiff->Create(scratchPath.c_str(), grid.width, grid.height, 2,
-                                                GDT_UInt16, const_cast<char**>(options))
-                                : nullptr);
-    if (!map->m_impl->ds)
-        return makeError(ErrorCode::IoError, "cannot create the scratch file " + scratchPath +
-                                                 " (" + errors.message() + ")");
-    double gt[6];
-    grid.geoTransform(gt);
-    map->m_impl->ds->SetGeoTransform(gt);
-
-    const AreaRows areaRows(area, grid);
-    const auto level = ground.levelHeight();
-    const bool feather = featherM > 0;
-    const int tilesX = (grid.width + kTile - 1) / kTile, tilesY = (grid.height + kTile - 1) / kTile;
-    const long long tiles = static_cast<long long>(tilesX) * tilesY;
-
-    auto labelTile = [&](long long t, TileResult* out) {
-        const int tx = static_cast<int>(t % tilesX), ty = static_cast<int>(t / tilesX);
-        PixelWindow tw{tx * kTile, ty * kTile, std::min(kTile, grid.width - tx * kTile),
-                       std::min(kTile, grid.height - ty * kTile)};
-        out->window = tw;
-        out->labels.assign(static_cast<std::size_t>(tw.w) * tw.h * 2, 0);
-        out->used.clear();
-        out->covered = out->coveredArea = 0;
-        const geo::Box box{
-            {grid.originX + tw.x0 * grid.gsd, grid.originY - (tw.y0 + tw.h) * grid.gsd},
-            {grid.originX + (tw.x0 + tw.w) * grid.gsd, grid.originY - tw.y0 * grid.gsd}};
-        const geo::Vec2 mid = 0.5 * (box.min + box.max);
-        std::vector<int> cand;
-        for (int i = 0; i < static_cast<int>(photos.size()); ++i)
-            if (photos[i].seesGround && photos[i].footprintBox.intersects(box))
-                cand.push_back(i);
-        std::sort(cand.begin(), cand.end(), [&](int a, int b) {
-            const Vec3& ca = photos[a].camera.centre();
-            const Vec3& cb = photos[b].camera.centre();
-            return (geo::Vec2(ca.x(), ca.y()) - mid).squaredNorm() <
-                   (geo::Vec2(cb.x(), cb.y()) - mid).squaredNorm();
-        });
-        // On a level ground a photo that holds the tile's four corners holds all of it: the ground
-        // seen within a view angle is convex, and so is the image of a rectangle.
-        std::vector<char> full(cand.size(), 0);
-        if (level) {
-            for (std::size_t k = 0; k < cand.size(); ++k) {
-                const PhotoGeometry& g = photos[cand[k]];
-                full[k] = g.sees(grid.x(tw.x0), grid.y(tw.y0), *level) &&
-                          g.sees(grid.x(tw.x0 + tw.w - 1), grid.y(tw.y0), *level) &&
-                          g.sees(grid.x(tw.x0), grid.y(tw.y0 + tw.h - 1), *level) &&
-                          g.sees(grid.x(tw.x0 + tw.w - 1), grid.y(tw.y0 + tw.h - 1), *level);
-            }
-        }
-        struct Extent {
-            int c0 = 1 << 30, r0 = 1 << 30, c1 = -1, r1 = -1;
-            void add(int c, int r) {
-                c0 = std::min(c0, c);
-                c1 = std::max(c1, c);
-                r0 = std::min(r0, r);
-                r1 = std::max(r1, r);
-            }
-        };
-        std::vector<Extent> ext(cand.size());
-        std::vector<std::uint8_t> inArea(tw.w, 0);
-        std::vector<double> xs;
-        for (int r = 0; r < tw.h; ++r) {
-            const double y = grid.y(tw.y0 + r);
-            if (!areaRows.empty())
-                areaRows.fill(tw.y0 + r, tw.x0, tw.w, inArea.data(), &xs);
-            for (int c = 0; c < tw.w; ++c) {
-                const double x = grid.x(tw.x0 + c);
-                const double z = level ? *level : ground.heightAt(x, y);
-                double best = 1e300, second = 1e300;
-                int kb = -1, kc = -1;
-                for (std::size_t k = 0; k < cand.size(); ++k) {
-                    const PhotoGeometry& g = photos[cand[k]];
-                    const double s2 = g.viewScore2(x, y, z);
-                    if (s2 >= (feather ? second : best))
-                        continue;
-                    if (!full[k] && !g.sees(x, y, z))
-                        continue;
-                    if (s2 < best) {
-                        second = best;
-                        kc = kb;
-                        best = s2;
-                        kb = static_cast<int>(k);
-                    } else {
-                        second = s2;
-                        kc = static_cast<int>(k);
-                    }
-                }
-                const std::size_t at = (static_cast<std::size_t>(r) * tw.w + c) * 2;
-                if (kb >= 0) {
-                    out->labels[at] = static_cast<std::uint16_t>(cand[kb] + 1);
-                    ++out->covered;
-                    ext[kb].add(c, r);
-                    if (feather && kc >= 0) {
-                        const double h = photos[cand[kb]].camera.centre().z() - z;
-                        if ((std::sqrt(second) - std::sqrt(best)) * h < featherM) {
-                            out->labels[at + 1] = static_cast<std::uint16_t>(cand[kc] + 1);
-                            ext[kc].add(c, r);
-                        }
-                    }
-                }
-                if (kb >= 0 && !areaRows.empty() && inArea[c])
-                    ++out->coveredArea;
-            }
-        }
-        for (std::size_t k = 0; k < cand.size(); ++k)
-            if (ext[k].c1 >= 0)
-                out->used[cand[k]] =
-                    PixelWindow{tw.x0 + ext[k].c0, tw.y0 + ext[k].r0, ext[k].c1 - ext[k].c0 + 1,
-                                ext[k].r1 - ext[k].r0 + 1};
-    };
-
+    // Every tile labelled by a worker, then written and counted under the lock.
+    const TileLabeller labeller(photos, ground, grid, area, featherM);
+    const long long tiles = labeller.tiles();
     std::atomic<long long> next{0};
     std::atomic<bool> stop{false};
     std::string writeError;
@@ -226,7 +280,7 @@ Result<std::unique_ptr<SeamMap>> SeamMap::compute(const std::vector<PhotoGeometr
     auto worker = [&] {
         TileResult tile;
         for (long long t = next++; t < tiles && !stop; t = next++) {
-            labelTile(t, &tile);
+            labeller.label(t, &tile);
             std::lock_guard<std::mutex> lock(map->m_impl->mutex);
             geo::detail::GdalErrorCapture werrors;
             const CPLErr err = map->m_impl->ds->RasterIO(

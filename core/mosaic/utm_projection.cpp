@@ -88,4 +88,20 @@ double UtmProjection::scaleFactor(geo::LonLat p) const {
     return (toGrid(q) - toGrid(p)).norm() / 10.0;
 }
 
+geo::GeoRing ringToGeo(const geo::Ring& r, const UtmProjection& utm) {
+    geo::GeoRing out;
+    out.reserve(r.size());
+    for (const auto& p : r)
+        out.push_back(utm.toGeo(p));
+    return out;
+}
+
+geo::GeoPolygon polygonToGeo(const geo::Polygon& p, const UtmProjection& utm) {
+    geo::GeoPolygon out;
+    out.outer = ringToGeo(p.outer, utm);
+    for (const auto& h : p.holes)
+        out.holes.push_back(ringToGeo(h, utm));
+    return out;
+}
+
 } // namespace pf::mosaic

@@ -45,4 +45,8 @@ private:
     std::unique_ptr<Impl> m_impl;
 };
 
+// A ring or polygon of the grid in WGS84.
+geo::GeoRing ringToGeo(const geo::Ring& r, const UtmProjection& utm);
+geo::GeoPolygon polygonToGeo(const geo::Polygon& p, const UtmProjection& utm);
+
 } // namespace pf::mosaic

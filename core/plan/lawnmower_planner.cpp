@@ -159,11 +159,7 @@ double normalisedAngle(double deg) {
 
 bool positiveFinite(double v) { return v > 0 && std::isfinite(v); }
 
-} // namespace
-
-std::vector<geo::Vec2> flownPath(const LawnmowerPlan& plan) { return withHome(plan.flight, plan.home); }
-
-Result<LawnmowerPlan> planLawnmower(const geo::MultiPolygon& area, const LawnmowerOptions& o) {
+Status checkOptions(const geo::MultiPolygon& area, const LawnmowerOptions& o) {
     if (!positiveFinite(o.trackSpacingM))
         return makeError(ErrorCode::InvalidInput, "lawnmower: the track spacing must be a positive number of metres");
     if (!positiveFinite(o.photoSpacingM))
@@ -178,43 +174,56 @@ Result<LawnmowerPlan> planLawnmower(const geo::MultiPolygon& area, const Lawnmow
         return makeError(ErrorCode::InvalidInput, "lawnmower: the home point must be finite");
     if (!(geo::area(area) > 0))
         return makeError(ErrorCode::InvalidGeometry, "lawnmower: the area has no surface to photograph");
-    const auto rings = ringsOf(area);
     const geo::Box box = geo::bounds(area);
     if ((box.max - box.min).norm() / std::min(o.trackSpacingM, o.photoSpacingM) > kMaxTransectsAcross)
         return makeError(ErrorCode::TooLarge, "lawnmower: the area is too large for the spacings (more than " +
                                                   std::to_string(static_cast<long long>(kMaxTransectsAcross)) +
                                                   " transects or photos along one)");
-    const double dwellS = std::max(0.0, o.time.photoDwellS);
+    return {};
+}
 
+// The transect angles searched: the one given, else every degree and every edge's direction.
+std::vector<double> transectAngles(const std::vector<const geo::Ring*>& rings,
+                                   const LawnmowerOptions& o) {
     std::vector<double> angles;
     if (o.angleDeg) {
         angles.push_back(normalisedAngle(*o.angleDeg));
-    } else {
-        for (int d = 0; d < 180; ++d)
-            angles.push_back(d);
-        for (const auto* r : rings)
-            for (std::size_t i = 0; i < r->size(); ++i) {
-                const geo::Vec2 e = (*r)[(i + 1) % r->size()] - (*r)[i];
-                if (e.squaredNorm() > 0)
-                    angles.push_back(normalisedAngle(std::atan2(e.y(), e.x()) * 180.0 / kPi));
-            }
-        std::sort(angles.begin(), angles.end());
-        angles.erase(std::unique(angles.begin(), angles.end(), [](double a, double b) { return b - a < 1e-9; }),
-                     angles.end());
+        return angles;
     }
+    for (int d = 0; d < 180; ++d)
+        angles.push_back(d);
+    for (const auto* r : rings)
+        for (std::size_t i = 0; i < r->size(); ++i) {
+            const geo::Vec2 e = (*r)[(i + 1) % r->size()] - (*r)[i];
+            if (e.squaredNorm() > 0)
+                angles.push_back(normalisedAngle(std::atan2(e.y(), e.x()) * 180.0 / kPi));
+        }
+    std::sort(angles.begin(), angles.end());
+    angles.erase(
+        std::unique(angles.begin(), angles.end(), [](double a, double b) { return b - a < 1e-9; }),
+        angles.end());
+    return angles;
+}
 
-    // Every angle and entry corner, fastest first. Keys compare the time to the millisecond (a flight and
-    // its reverse take the same time), then fewer photos, then the entry nearest to home, then the order
-    // tried (the smaller angle).
-    struct Candidate {
-        long long timeMs = 0;
-        int photos = 0;
-        long long entryUm = 0;
-        int order = 0;
-        std::size_t angleIndex = 0;
-        Entry entry;
-    };
-    std::vector<std::vector<Transect>> perAngle(angles.size());
+// An angle and entry corner. Keys compare the time to the millisecond (a flight and its reverse
+// take the same time), then fewer photos, then the entry nearest to home, then the order tried
+// (the smaller angle).
+struct Candidate {
+    long long timeMs = 0;
+    int photos = 0;
+    long long entryUm = 0;
+    int order = 0;
+    std::size_t angleIndex = 0;
+    Entry entry;
+};
+
+// Every angle's transects (perAngle) and every angle and entry corner, fastest first.
+std::vector<Candidate> candidatesBySpeed(const std::vector<const geo::Ring*>& rings,
+                                         const std::vector<double>& angles,
+                                         const LawnmowerOptions& o,
+                                         std::vector<std::vector<Transect>>& perAngle) {
+    const double dwellS = std::max(0.0, o.time.photoDwellS);
+    perAngle.assign(angles.size(), {});
     std::vector<Candidate> candidates;
     for (std::size_t ai = 0; ai < angles.size(); ++ai) {
         perAngle[ai] = transectsAt(rings, angles[ai], o.trackSpacingM);
@@ -230,48 +239,74 @@ Result<LawnmowerPlan> planLawnmower(const geo::MultiPolygon& area, const Lawnmow
                                   static_cast<int>(candidates.size()), ai, e});
         }
     }
-    if (candidates.empty())
-        return makeError(ErrorCode::InvalidGeometry, "lawnmower: no transect crosses the area");
     std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
         return std::tie(a.timeMs, a.photos, a.entryUm, a.order) < std::tie(b.timeMs, b.photos, b.entryUm, b.order);
     });
+    return candidates;
+}
 
+// The fastest candidate whose photos see enough of the area (minCoverage); the best-covering one if
+// none does, among the first kMaxCoverageChecks checked. An angle whose fastest entry misses the
+// target is not tried with its other entries (they fly the same transects; only the trigger points
+// shift). `coverage`: the chosen one's covered fraction.
+Result<std::size_t> fastestCovering(const geo::MultiPolygon& area,
+                                    const std::vector<Candidate>& candidates,
+                                    const std::vector<std::vector<Transect>>& perAngle,
+                                    const LawnmowerOptions& o, double& coverage) {
+    CoverageCheckOptions co;
+    co.resolutionM = o.searchCoverageResolutionM;
+    std::vector<char> failed(perAngle.size(), 0);
+    std::size_t chosen = 0, checks = 0;
+    for (std::size_t i = 0; i < candidates.size() && checks < kMaxCoverageChecks; ++i) {
+        const Candidate& c = candidates[i];
+        if (failed[c.angleIndex])
+            continue;
+        ++checks;
+        std::vector<PhotoFootprint> fps;
+        for (const auto& t : flownTransects(perAngle[c.angleIndex], c.entry)) {
+            const double heading = makeLane(t.a, t.b, o.photoSpacingM).headingDeg;
+            for (const auto& p : triggerPoints(t.a, t.b, o.photoSpacingM))
+                fps.push_back({p, heading, o.footprintAcrossM, o.footprintAlongM});
+        }
+        auto cov = checkCoverage(area, fps, co);
+        if (!cov)
+            return makeError(cov.error().code, "lawnmower: " + cov.error().message);
+        if (cov->coveredFraction > coverage + 1e-9) {
+            coverage = cov->coveredFraction;
+            chosen = i;
+        }
+        if (cov->coveredFraction >= o.minCoverage) {
+            chosen = i;
+            coverage = cov->coveredFraction;
+            break;
+        }
+        failed[c.angleIndex] = 1;
+    }
+    return chosen;
+}
+
+} // namespace
+
+std::vector<geo::Vec2> flownPath(const LawnmowerPlan& plan) {
+    return withHome(plan.flight, plan.home);
+}
+
+Result<LawnmowerPlan> planLawnmower(const geo::MultiPolygon& area, const LawnmowerOptions& o) {
+    if (Status st = checkOptions(area, o); !st)
+        return st.error();
+    const auto rings = ringsOf(area);
+    const std::vector<double> angles = transectAngles(rings, o);
+    std::vector<std::vector<Transect>> perAngle;
+    const std::vector<Candidate> candidates = candidatesBySpeed(rings, angles, o, perAngle);
+    if (candidates.empty())
+        return makeError(ErrorCode::InvalidGeometry, "lawnmower: no transect crosses the area");
     std::size_t chosen = 0;
     double coverage = -1.0;
-    const bool checkCover = !o.angleDeg && o.footprintAcrossM > 0 && o.footprintAlongM > 0;
-    if (checkCover) {
-        // The fastest candidate whose photos see enough of the area; the best-covering one if none does.
-        CoverageCheckOptions co;
-        co.resolutionM = o.searchCoverageResolutionM;
-        // An angle whose fastest entry misses the target is not tried with its other entries (they fly
-        // the same transects; only the trigger points shift).
-        std::vector<char> failed(angles.size(), 0);
-        std::size_t checks = 0;
-        for (std::size_t i = 0; i < candidates.size() && checks < kMaxCoverageChecks; ++i) {
-            const Candidate& c = candidates[i];
-            if (failed[c.angleIndex])
-                continue;
-            ++checks;
-            std::vector<PhotoFootprint> fps;
-            for (const auto& t : flownTransects(perAngle[c.angleIndex], c.entry)) {
-                const double heading = makeLane(t.a, t.b, o.photoSpacingM).headingDeg;
-                for (const auto& p : triggerPoints(t.a, t.b, o.photoSpacingM))
-                    fps.push_back({p, heading, o.footprintAcrossM, o.footprintAlongM});
-            }
-            auto cov = checkCoverage(area, fps, co);
-            if (!cov)
-                return makeError(cov.error().code, "lawnmower: " + cov.error().message);
-            if (cov->coveredFraction > coverage + 1e-9) {
-                coverage = cov->coveredFraction;
-                chosen = i;
-            }
-            if (cov->coveredFraction >= o.minCoverage) {
-                chosen = i;
-                coverage = cov->coveredFraction;
-                break;
-            }
-            failed[c.angleIndex] = 1;
-        }
+    if (!o.angleDeg && o.footprintAcrossM > 0 && o.footprintAlongM > 0) {
+        auto c = fastestCovering(area, candidates, perAngle, o, coverage);
+        if (!c)
+            return c.error();
+        chosen = *c;
     }
     const Candidate& best = candidates[chosen];
 
@@ -289,7 +324,7 @@ Result<LawnmowerPlan> planLawnmower(const geo::MultiPolygon& area, const Lawnmow
         plan.transects.push_back(std::move(lane));
     }
     plan.time = flightTime(flownPath(plan), o.time);
-    plan.time.totalS += plan.photos * dwellS;
+    plan.time.totalS += plan.photos * std::max(0.0, o.time.photoDwellS);
     return plan;
 }
 

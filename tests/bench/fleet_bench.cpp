@@ -1,5 +1,6 @@
 // Fleet stages: partition speed, time balancing with the real planner, planMission end to end with
 // several aircraft (time and makespan), coverage check, detours.
+#include "core/fleet/area_split.h"
 #include "core/fleet/capability.h"
 #include "core/fleet/partition.h"
 #include "core/fleet/subarea_polygons.h"
@@ -10,8 +11,9 @@
 #include "core/io/catalog.h"
 #include "core/io/mission_file.h"
 #include "core/mission/plan_mission.h"
-#include "core/plan/evaluation.h"
+#include "core/mission/validation.h"
 #include "core/plan/coverage_check.h"
+#include "core/plan/evaluation.h"
 #include "core/route/safety.h"
 #include "tests/sample_missions.h"
 
@@ -128,7 +130,8 @@ void BM_BalanceDemoWithStridePlanner(benchmark::State& state) {
     po.safetyMarginM = 5;
     auto estimate = [&](int k, const std::vector<int>& cells) -> Result<double> {
         const auto region = fleet::cellsPolygon(b, cells, g->admissible());
-        auto ap = mission::planRegion(region, d.noFly, fleetCfg[static_cast<std::size_t>(k)], po, d.frame, d.home);
+        auto ap =
+            mission::planRegion(region, d.noFly, fleetCfg[static_cast<std::size_t>(k)], po, d.home);
         if (!ap)
             return ap.error();
         return ap->metrics.estimatedTimeS;
@@ -153,6 +156,57 @@ void BM_BalanceDemoWithStridePlanner(benchmark::State& state) {
     state.counters["estimator_calls"] = calls;
 }
 BENCHMARK(BM_BalanceDemoWithStridePlanner)->Arg(2)->Arg(3)->Arg(4)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// splitArea on the demo at 3.5 m with the extra zone (50,000 base cells), balanced on an analytic
+// time (the cells' area over the aircraft's sweep rate, plus a turn per grid row; the first
+// aircraft's scaled by 1.4 as a correction round scales an estimate, so that thousands of cells
+// move), so that the time is the partition's and the cell moves' own: the cost of moving cells past
+// the zone.
+void BM_SplitDemoLowWithZone(benchmark::State& state) {
+    auto m = test::lowDemoWithZone(PF_RESOURCES_DIR);
+    if (!m) {
+        state.SkipWithError(m.error().message.c_str());
+        return;
+    }
+    auto geom = mission::localGeometry(*m);
+    if (!geom) {
+        state.SkipWithError(geom.error().message.c_str());
+        return;
+    }
+    std::vector<fleet::Capability> caps;
+    for (const auto& a : m->aircraft)
+        caps.push_back({a.name, *sensor::effectiveFootprint(a.camera, *a.altitudeM, a.overlap),
+                        mission::flightModel(a)});
+    fleet::AreaSplitOptions so;
+    so.safetyMarginM = m->options.safetyMarginM;
+    so.balance.tolerance = 0.03;
+    const fleet::CellsTimeEstimator estimate = [&](int k, const std::vector<int>& cells,
+                                                   const grid::Grid& g) {
+        std::vector<int> rows;
+        for (int c : cells)
+            rows.push_back(c / g.cols());
+        std::sort(rows.begin(), rows.end());
+        rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+        const auto& c = caps[static_cast<std::size_t>(k)];
+        const double sweep = static_cast<double>(cells.size()) * g.cellSize() * g.cellSize() /
+                             (c.footprint.acrossM * c.time.speedMps);
+        return Result<double>((k == 0 ? 1.4 : 1.0) *
+                              (sweep + 3.0 * static_cast<double>(rows.size())));
+    };
+    double calls = 0, ratio = 0;
+    for (auto _ : state) {
+        auto split = fleet::splitArea(geom->area, geom->noFly, caps, so, estimate);
+        if (!split) {
+            state.SkipWithError(split.error().message.c_str());
+            return;
+        }
+        calls = split->balance->estimatorCalls;
+        ratio = split->balance->makespan / split->balance->ideal;
+    }
+    state.counters["estimator_calls"] = calls;
+    state.counters["makespan_over_ideal"] = ratio;
+}
+BENCHMARK(BM_SplitDemoLowWithZone)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 // planMission end to end on the demo mission (two aircraft, grid angle searched): the time-balanced
 // split with its correction rounds, then every stage after it. Counters: the makespan and its ratio

@@ -113,6 +113,56 @@ TEST(AircraftPanel, CatalogAircraftAndCameraChoiceAndRemove) {
     EXPECT_EQ(doc->mission().aircraft[0].model, spec.name);
 }
 
+// A catalog plane: its kind and figures shown (the plane's rows only for a plane), radius and bank
+// driving each other through the speed, every edit undoable, and the footprint saying why it is not
+// plannable. By hand at 16 m/s: bank 50 gives 16^2 / (9.80665 tan 50) = 21.9 m, bank 40 31.1 m; a
+// 50 m radius needs atan(256 / (9.80665 x 50)) = 27.6 degrees.
+TEST(AircraftPanel, PlaneKindAndFiguresAreUndoable) {
+    auto w = test::makeWindow();
+    auto* panel = w->aircraftPanel();
+    auto* doc = w->document();
+    auto* stack = doc->undoStack();
+    panel->addFromCatalog(QStringLiteral("DeltaQuad Pro"));
+    ASSERT_EQ(doc->mission().aircraft.size(), 1u);
+    EXPECT_EQ(doc->mission().aircraft[0].kind, fleet::AircraftKind::Vtol);
+    EXPECT_EQ(panel->kindBox()->currentIndex(), static_cast<int>(fleet::AircraftKind::Vtol));
+    EXPECT_TRUE(panel->turnRadiusBox()->isVisibleTo(panel));
+    EXPECT_TRUE(panel->runInBox()->isVisibleTo(panel));
+    EXPECT_NEAR(panel->turnRadiusBox()->value(), 21.9, 0.05);
+    EXPECT_NEAR(panel->bankBox()->value(), 50.0, 0.5);
+    EXPECT_TRUE(panel->footprintLabel()->text().contains(QStringLiteral("VTOL aircraft")))
+        << panel->footprintLabel()->text().toStdString();
+    const int start = stack->count();
+
+    panel->bankBox()->setValue(40);
+    const auto& a = doc->mission().aircraft[0];
+    EXPECT_EQ(a.plane.maxBankDeg, 40.0);
+    EXPECT_FALSE(a.plane.minTurnRadiusM.has_value());
+    EXPECT_NEAR(panel->turnRadiusBox()->value(), 31.1, 0.05);
+    panel->turnRadiusBox()->setValue(50);
+    EXPECT_EQ(doc->mission().aircraft[0].plane.minTurnRadiusM, 50.0);
+    EXPECT_NEAR(panel->bankBox()->value(), 27.6, 0.5);
+    panel->climbBox()->setValue(3.5);
+    panel->runInBox()->setValue(80);
+    EXPECT_EQ(doc->mission().aircraft[0].plane.climbRateMps, 3.5);
+    EXPECT_EQ(doc->mission().aircraft[0].plane.runInM, 80.0);
+
+    panel->kindBox()->setCurrentIndex(static_cast<int>(fleet::AircraftKind::Multirotor));
+    EXPECT_EQ(doc->mission().aircraft[0].kind, fleet::AircraftKind::Multirotor);
+    EXPECT_FALSE(panel->turnRadiusBox()->isVisibleTo(panel));
+    EXPECT_FALSE(panel->footprintLabel()->text().contains(QStringLiteral("VTOL aircraft")));
+    EXPECT_EQ(stack->count(), start + 5);
+
+    stack->undo(); // the kind
+    EXPECT_EQ(doc->mission().aircraft[0].kind, fleet::AircraftKind::Vtol);
+    EXPECT_TRUE(panel->turnRadiusBox()->isVisibleTo(panel));
+    EXPECT_EQ(panel->kindBox()->currentIndex(), static_cast<int>(fleet::AircraftKind::Vtol));
+    while (stack->index() > start)
+        stack->undo();
+    EXPECT_EQ(doc->mission().aircraft[0].plane.maxBankDeg, 50.0);
+    EXPECT_NEAR(panel->turnRadiusBox()->value(), 21.9, 0.05);
+}
+
 TEST(GroundStation, ReplaysAnNmeaLogAndCentresOnTheOperator) {
     auto w = test::makeWindow();
     auto* gs = w->groundStation();

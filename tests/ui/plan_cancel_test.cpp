@@ -1,5 +1,7 @@
 // GUI tests of cancelling long plans: the worker stops soon after Cancel, edits never queue more
 // than one plan behind a running one, closing the window stops all work, the progress bar shows.
+#include "core/io/mission_file.h"
+#include "tests/sample_missions.h"
 #include "ui/planning/plan_controller.h"
 #include "ui/planning/plan_progress_widget.h"
 #include "ui_test_util.h"
@@ -66,11 +68,90 @@ qint64 msUntilIdle(PlanController* planner, int timeoutMs) {
     return t.elapsed();
 }
 
+// The demo at 3.5 m with one more zone: a fleet plan that spends seconds sharing the area between
+// its two aircraft (estimates of each subarea, then a plan of each split tried).
+QString writeSharingMission(const QTemporaryDir& dir) {
+    auto m = pf::test::lowDemoWithZone(PF_RESOURCES_DIR);
+    EXPECT_TRUE(m.ok()) << m.error().message;
+    const QString path = dir.filePath(QStringLiteral("sharing.json"));
+    EXPECT_TRUE(io::writeMissionFile(*m, path.toStdString()).ok());
+    return path;
+}
+
+// Waits (processing events) until the plan reports `stage`.
+bool waitForStage(PlanController* planner, const QString& stage, int timeoutMs) {
+    bool seen = false;
+    QMetaObject::Connection c =
+        QObject::connect(planner, &PlanController::progressChanged,
+                         [&](double, const QString& s) { seen = seen || s == stage; });
+    QElapsedTimer t;
+    t.start();
+    while (!seen && t.elapsed() < timeoutMs)
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+    QObject::disconnect(c);
+    return seen;
+}
+
+const QString kEstimating = QStringLiteral("sharing the area: estimating flight times");
+const QString kPlanningSplit = QStringLiteral("sharing the area: planning split 1");
+
 } // namespace
+
+// Cancel while the area is shared between two aircraft, as the estimates run: the worker stops at
+// once, where the sharing alone had seconds to go (PlanCancel.SharingTheAreaStopsAtItsNextCheck in
+// pf_core_tests cancels the core in each of its steps).
+TEST(PlanCancel, CancelStopsSharingTheAreaAtOnce) {
+    QTemporaryDir dir;
+    const QString path = writeSharingMission(dir);
+    for (const QString& stage : {kEstimating}) {
+        auto w = ui::test::makeWindow();
+        auto* planner = w->planController();
+        planner->setAutoPlan(false);
+        QString error;
+        ASSERT_TRUE(w->openMission(path, &error)) << error.toStdString();
+        w->planNow();
+        ASSERT_TRUE(waitForStage(planner, stage, 60000)) << stage.toStdString();
+        w->planProgress()->cancelButton()->click();
+        EXPECT_FALSE(planner->isBusy());
+        EXPECT_EQ(w->statusText(), QStringLiteral("Planning cancelled."));
+        const qint64 stop = msUntilIdle(planner, 30000);
+        ASSERT_GE(stop, 0);
+        // The core stops within 0.2 s; a loaded CI machine gets slack, still far below the seconds
+        // the sharing takes.
+        EXPECT_LT(stop, 1000) << stage.toStdString();
+        EXPECT_FALSE(planner->plan().has_value());
+        EXPECT_EQ(QThreadPool::globalInstance()->activeThreadCount(), 0);
+    }
+}
+
+// Quit (File > Quit: the window closes and goes) while a split of the area is planned: it returns
+// at once, and nothing computes afterwards.
+TEST(PlanCancel, QuitWhileSharingTheAreaReturnsAtOnce) {
+    QTemporaryDir dir;
+    const QString path = writeSharingMission(dir);
+    for (const QString& stage : {kPlanningSplit}) {
+        auto w = ui::test::makeWindow();
+        auto* planner = w->planController();
+        planner->setAutoPlan(false);
+        QString error;
+        ASSERT_TRUE(w->openMission(path, &error)) << error.toStdString();
+        w->planNow();
+        ASSERT_TRUE(waitForStage(planner, stage, 60000)) << stage.toStdString();
+        QElapsedTimer t;
+        t.start();
+        EXPECT_TRUE(w->close());
+        w.reset();
+        // The application's exit waits for the thread pool too.
+        EXPECT_TRUE(QThreadPool::globalInstance()->waitForDone(1000));
+        // The target is 0.5 s; a loaded CI machine gets slack, still far below the seconds the
+        // sharing takes.
+        EXPECT_LT(t.elapsed(), 1000) << stage.toStdString();
+    }
+}
 
 TEST(PlanCancel, CancelStopsTheWorkerLongBeforeThePlanCouldFinish) {
     QTemporaryDir dir;
-    auto w = test::makeWindow();
+    auto w = ui::test::makeWindow();
     auto* planner = w->planController();
     planner->setAutoPlan(false);
     QString error;
@@ -100,7 +181,7 @@ TEST(PlanCancel, CancelStopsTheWorkerLongBeforeThePlanCouldFinish) {
 
 TEST(PlanCancel, EditsNeverQueueMoreThanOnePlanAndClosingStopsAllWork) {
     QTemporaryDir dir;
-    auto w = test::makeWindow();
+    auto w = ui::test::makeWindow();
     auto* planner = w->planController();
     planner->setAutoPlan(false);
     QString error;

@@ -12,6 +12,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -141,6 +142,28 @@ AircraftPanel::AircraftPanel(MissionDocument* doc, io::Catalog catalog, QWidget*
     m_side = spin(0.0, 95.0, 0, 5.0, tr(" %"));
     m_speed = spin(0.5, 60.0, 1, 0.5, tr(" m/s"));
     m_endurance = spin(1.0, 600.0, 0, 1.0, tr(" min"));
+    m_kind = new QComboBox;
+    m_kind->setObjectName(QStringLiteral("KindBox"));
+    m_kind->addItem(tr("Multirotor"));
+    m_kind->addItem(tr("Fixed-wing"));
+    m_kind->addItem(tr("VTOL (flies the survey as a plane)"));
+    m_kind->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_kind->setMinimumContentsLength(10);
+    // Wide ranges: validation names a value a plane cannot fly, as for the altitude.
+    m_turnRadius = spin(0.0, 5000.0, 1, 5.0, tr(" m"));
+    m_turnRadius->setObjectName(QStringLiteral("TurnRadiusBox"));
+    m_turnRadius->setToolTip(
+        tr("The plane's tightest turn at its cruise speed; editing it sets the bank it needs"));
+    m_bank = spin(1.0, 89.0, 0, 1.0, tr(" °"));
+    m_bank->setObjectName(QStringLiteral("BankBox"));
+    m_bank->setToolTip(
+        tr("The autopilot's bank limit (ArduPlane ROLL_LIMIT_DEG, PX4 FW_R_LIM); editing it sets "
+           "the turn radius: V² / (g tan bank)"));
+    m_climb = spin(0.1, 30.0, 1, 0.5, tr(" m/s"));
+    m_sink = spin(0.1, 30.0, 1, 0.5, tr(" m/s"));
+    m_runIn = spin(0.0, 2000.0, 0, 5.0, tr(" m"));
+    m_runIn->setToolTip(tr(
+        "Straight flight before each lane's first photo: the camera level and the track settled"));
     m_colour = new QPushButton;
     form->addRow(tr("Name"), m_name);
     form->addRow(tr("Model"), m_model);
@@ -151,8 +174,20 @@ AircraftPanel::AircraftPanel(MissionDocument* doc, io::Catalog catalog, QWidget*
     form->addRow(tr("Footprint"), m_footprint);
     form->addRow(tr("Front overlap"), m_front);
     form->addRow(tr("Side overlap"), m_side);
+    form->addRow(tr("Kind"), m_kind);
     form->addRow(tr("Speed"), m_speed);
     form->addRow(tr("Endurance"), m_endurance);
+    // A plane's own figures in a box of their own, hidden for a multirotor (a form row hidden in Qt
+    // 5 still takes its spacing).
+    m_planeBox = new QGroupBox(tr("Plane"));
+    auto* planeForm = new QFormLayout(m_planeBox);
+    planeForm->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    planeForm->addRow(tr("Turn radius"), m_turnRadius);
+    planeForm->addRow(tr("Bank limit"), m_bank);
+    planeForm->addRow(tr("Climb rate"), m_climb);
+    planeForm->addRow(tr("Sink rate"), m_sink);
+    planeForm->addRow(tr("Run-in"), m_runIn);
+    form->addRow(m_planeBox);
     form->addRow(tr("Colour"), m_colour);
     layout->addWidget(m_form);
     layout->addStretch();
@@ -203,6 +238,7 @@ AircraftPanel::AircraftPanel(MissionDocument* doc, io::Catalog catalog, QWidget*
     connect(m_endurance, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double v) {
         editCurrent(tr("endurance"), [&](mission::AircraftConfig& a) { a.enduranceMin = v; });
     });
+    connectPlaneFields();
     connect(m_colour, &QPushButton::clicked, this, [this] {
         const int i = current();
         if (i < 0) return;
@@ -216,6 +252,42 @@ AircraftPanel::AircraftPanel(MissionDocument* doc, io::Catalog catalog, QWidget*
     });
     refreshList();
     refreshForm();
+}
+
+void AircraftPanel::connectPlaneFields() {
+    connect(m_kind, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this](int i) {
+        if (i < 0)
+            return;
+        editCurrent(tr("kind"), [&](mission::AircraftConfig& a) {
+            a.kind = static_cast<fleet::AircraftKind>(i);
+        });
+    });
+    // Radius and bank drive each other through the speed: whichever the user edits is stored.
+    connect(m_turnRadius, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
+            [this](double v) {
+                editCurrent(tr("turn radius"),
+                            [&](mission::AircraftConfig& a) { a.plane.minTurnRadiusM = v; });
+            });
+    connect(m_bank, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        editCurrent(tr("bank limit"), [&](mission::AircraftConfig& a) {
+            a.plane.maxBankDeg = v;
+            a.plane.minTurnRadiusM.reset();
+        });
+    });
+    connect(m_climb, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        editCurrent(tr("climb rate"),
+                    [&](mission::AircraftConfig& a) { a.plane.climbRateMps = v; });
+    });
+    connect(m_sink, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        editCurrent(tr("sink rate"), [&](mission::AircraftConfig& a) { a.plane.sinkRateMps = v; });
+    });
+    connect(m_runIn, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        editCurrent(tr("run-in"), [&](mission::AircraftConfig& a) { a.plane.runInM = v; });
+    });
+}
+
+void AircraftPanel::showPlaneRows(bool plane) {
+    m_planeBox->setVisible(plane);
 }
 
 int AircraftPanel::current() const { return m_list->currentRow(); }
@@ -346,11 +418,16 @@ void AircraftPanel::refreshForm(bool keepError) {
     if (!keepError) m_altitudeError->hide();
     if (!has) {
         // No aircraft: the greyed form shows nothing of one that is gone.
-        const QList<QDoubleSpinBox*> boxes{m_altitude, m_gsd, m_front, m_side, m_speed, m_endurance};
+        const QList<QDoubleSpinBox*> boxes{m_altitude, m_gsd,       m_front,      m_side,
+                                           m_speed,    m_endurance, m_turnRadius, m_bank,
+                                           m_climb,    m_sink,      m_runIn};
         for (auto* b : boxes) {
             const QSignalBlocker block(b);
             b->clear();
         }
+        showPlaneRows(false);
+        const QSignalBlocker blockKind(m_kind);
+        m_kind->setCurrentIndex(-1);
         const QSignalBlocker block(m_camera);
         m_name->clear();
         m_model->clear();
@@ -362,7 +439,9 @@ void AircraftPanel::refreshForm(bool keepError) {
     }
     const mission::AircraftConfig& a = m_doc->mission().aircraft[std::size_t(i)];
     m_updating = true;
-    const QList<QWidget*> boxes{m_altitude, m_gsd, m_front, m_side, m_speed, m_endurance, m_camera, m_name};
+    const QList<QWidget*> boxes{m_altitude,  m_gsd,    m_front, m_side, m_speed,
+                                m_endurance, m_camera, m_name,  m_kind, m_turnRadius,
+                                m_bank,      m_climb,  m_sink,  m_runIn};
     for (auto* w : boxes) w->blockSignals(true);
     m_name->setText(QString::fromStdString(a.name));
     m_model->setText(a.model == "custom" ? tr("custom aircraft") : QString::fromStdString(a.model));
@@ -392,6 +471,13 @@ void AircraftPanel::refreshForm(bool keepError) {
     m_side->setValue(a.overlap.side * 100.0);
     m_speed->setValue(a.cruiseSpeedMps);
     m_endurance->setValue(a.enduranceMin);
+    m_kind->setCurrentIndex(static_cast<int>(a.kind));
+    m_turnRadius->setValue(fleet::minTurnRadiusM(a.plane, a.cruiseSpeedMps));
+    m_bank->setValue(fleet::bankAngleDeg(a.plane, a.cruiseSpeedMps));
+    m_climb->setValue(a.plane.climbRateMps);
+    m_sink->setValue(a.plane.sinkRateMps);
+    m_runIn->setValue(a.plane.runInM);
+    showPlaneRows(fleet::fliesAsPlane(a.kind));
     for (auto* w : boxes) w->blockSignals(false);
     m_colour->setIcon(swatch(QString::fromStdString(a.colour)));
     m_colour->setText(QString::fromStdString(a.colour));
@@ -411,6 +497,12 @@ void AircraftPanel::refreshForm(bool keepError) {
         // A value from a mission file can be out of limits too: say so in red, it will not be planned.
         QStringList errors;
         for (const auto& e : mission::altitudeErrors(m_doc->mission(), a, *alt)) errors << QString::fromStdString(e).toHtmlEscaped();
+        // A plane's figures, and that no planner routes a plane yet, the same way.
+        const std::string who = "aircraft \"" + a.name + "\"";
+        for (const auto& e : mission::planeErrors(a, who))
+            errors << QString::fromStdString(e).toHtmlEscaped();
+        if (const auto e = mission::planeRoutingError(a, who); !e.empty())
+            errors << QString::fromStdString(e).toHtmlEscaped();
         text = text.toHtmlEscaped().replace(QLatin1Char('\n'), QStringLiteral("<br>"));
         if (!errors.isEmpty())
             text += QStringLiteral("<br><span style='color:#b00020; font-weight:bold'>%1</span>")

@@ -10,6 +10,7 @@
 
 class QComboBox;
 class QDoubleSpinBox;
+class QGroupBox;
 class QLabel;
 class QLineEdit;
 class QListWidget;
@@ -41,6 +42,15 @@ public:
     QDoubleSpinBox* sideOverlapBox() const { return m_side; }
     QDoubleSpinBox* speedBox() const { return m_speed; }
     QDoubleSpinBox* enduranceBox() const { return m_endurance; }
+    // The kind (multirotor, fixed-wing, VTOL; items in fleet::AircraftKind order) and, shown for a
+    // plane only, its minimum turn radius and bank limit (whichever is edited is stored, the other
+    // follows from the speed), climb and sink rates and the run-in before each lane.
+    QComboBox* kindBox() const { return m_kind; }
+    QDoubleSpinBox* turnRadiusBox() const { return m_turnRadius; }
+    QDoubleSpinBox* bankBox() const { return m_bank; }
+    QDoubleSpinBox* climbBox() const { return m_climb; }
+    QDoubleSpinBox* sinkBox() const { return m_sink; }
+    QDoubleSpinBox* runInBox() const { return m_runIn; }
     QLabel* footprintLabel() const { return m_footprint; }
     // Why the last altitude or GSD typed was refused; empty when none was.
     QString altitudeError() const;
@@ -49,6 +59,9 @@ public:
 private:
     void refreshList();
     void refreshForm(bool keepError = false);
+    // Shows the plane's figures for a plane, hides them for a multirotor.
+    void showPlaneRows(bool plane);
+    void connectPlaneFields();
     // Checks a typed altitude (or GSD) against the aircraft's limits (mission::altitudeErrors); a
     // refused value shows its reason and the box gets the stored value back.
     bool acceptAltitude(double value, bool isGsd);
@@ -75,6 +88,13 @@ private:
     QDoubleSpinBox* m_side;
     QDoubleSpinBox* m_speed;
     QDoubleSpinBox* m_endurance;
+    QComboBox* m_kind;
+    QDoubleSpinBox* m_turnRadius;
+    QDoubleSpinBox* m_bank;
+    QDoubleSpinBox* m_climb;
+    QDoubleSpinBox* m_sink;
+    QDoubleSpinBox* m_runIn;
+    QGroupBox* m_planeBox;
     QPushButton* m_colour;
 };
 

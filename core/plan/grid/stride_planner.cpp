@@ -310,10 +310,38 @@ private:
         searchParts(groups);
     }
 
+    // The waves of searchParts: one per seed group, grown in turn; waves that meet merge
+    // (m_waveUf).
+    struct ClosedPart {
+        int root;
+        int size;
+    };
+
     void searchParts(int groups) {
         if (m_trace)
             ++m_trace->partitionSearches;
-        const std::uint32_t s = ++m_partStamp;
+        startWaves(groups);
+        std::vector<ClosedPart> closed;
+        while (m_live >= 2) {
+            for (int gi = 0; gi < groups && m_live >= 2; ++gi) {
+                if (m_heads[gi] == m_queues[gi].size())
+                    continue;
+                const int r = expandWave(gi);
+                if (m_pending[r] == 0) {
+                    closed.push_back({r, m_size[r]});
+                    --m_live;
+                }
+            }
+        }
+        if (closed.empty())
+            return;
+        growLastOpen(groups, closed);
+        targetSmallest(groups, closed);
+    }
+
+    // One wave per seed group, its seeds queued.
+    void startWaves(int groups) {
+        m_waveStamp = ++m_partStamp;
         if (m_queues.size() < static_cast<std::size_t>(groups))
             m_queues.resize(static_cast<std::size_t>(groups));
         for (int gi = 0; gi < groups; ++gi)
@@ -321,93 +349,81 @@ private:
         m_heads.assign(groups, 0);
         m_size.assign(groups, 0);
         m_pending.assign(groups, 0);
-        UnionFind guf;
-        guf.reset(groups);
+        m_waveUf.reset(groups);
         for (std::size_t k = 0; k < m_seeds.size(); ++k) {
             const int gi = m_groupOfRoot[m_uf.find(static_cast<int>(k))];
             const int c = m_seeds[k];
-            m_partMark[c] = s;
+            m_partMark[c] = m_waveStamp;
             m_partGroup[c] = gi;
             m_queues[gi].push_back(c);
             ++m_size[gi];
             ++m_pending[gi];
         }
-        int live = groups;
-        struct Closed {
-            int root;
-            int size;
-        };
-        std::vector<Closed> closed;
-        // Takes the next cell of group gi's queue and grows its wave by that cell's free neighbours,
-        // merging waves that meet. Returns the wave's root.
-        auto expand = [&](int gi) {
-            const int x = m_queues[gi][m_heads[gi]++];
-            int r = guf.find(gi);
-            --m_pending[r];
-            for (int d = 0; d < 4; ++d) {
-                if (blocked(m_g, m_visited, x, d))
-                    continue;
-                const int n = x + dirOffset(m_g, d);
-                if (m_partMark[n] != s) {
-                    m_partMark[n] = s;
-                    m_partGroup[n] = gi;
-                    m_queues[gi].push_back(n);
-                    ++m_size[r];
-                    ++m_pending[r];
-                } else {
-                    const int h = guf.find(m_partGroup[n]);
-                    if (h != r) {
-                        const int sz = m_size[r] + m_size[h], pend = m_pending[r] + m_pending[h];
-                        r = guf.unite(r, h);
-                        m_size[r] = sz;
-                        m_pending[r] = pend;
-                        --live;
-                    }
-                }
-            }
-            return r;
-        };
-        while (live >= 2) {
-            for (int gi = 0; gi < groups && live >= 2; ++gi) {
-                if (m_heads[gi] == m_queues[gi].size())
-                    continue;
-                const int r = expand(gi);
-                if (m_pending[r] == 0) {
-                    closed.push_back({r, m_size[r]});
-                    --live;
+        m_live = groups;
+    }
+
+    // Takes the next cell of group gi's queue and grows its wave by that cell's free neighbours,
+    // merging waves that meet. Returns the wave's root.
+    int expandWave(int gi) {
+        const int x = m_queues[gi][m_heads[gi]++];
+        int r = m_waveUf.find(gi);
+        --m_pending[r];
+        for (int d = 0; d < 4; ++d) {
+            if (blocked(m_g, m_visited, x, d))
+                continue;
+            const int n = x + dirOffset(m_g, d);
+            if (m_partMark[n] != m_waveStamp) {
+                m_partMark[n] = m_waveStamp;
+                m_partGroup[n] = gi;
+                m_queues[gi].push_back(n);
+                ++m_size[r];
+                ++m_pending[r];
+            } else {
+                const int h = m_waveUf.find(m_partGroup[n]);
+                if (h != r) {
+                    const int sz = m_size[r] + m_size[h], pend = m_pending[r] + m_pending[h];
+                    r = m_waveUf.unite(r, h);
+                    m_size[r] = sz;
+                    m_pending[r] = pend;
+                    --m_live;
                 }
             }
         }
-        if (closed.empty())
-            return;
-        // A wave made of several seed groups grows several cells per round, so the part it explores
-        // can close first and still be larger than the last open part. Grow the last open wave until
-        // it has more cells than the smallest closed part (it is then larger) or closes itself.
+        return r;
+    }
+
+    // A wave made of several seed groups grows several cells per round, so the part it explores can
+    // close first and still be larger than the last open part. Grow the last open wave until it has
+    // more cells than the smallest closed part (it is then larger) or closes itself.
+    void growLastOpen(int groups, std::vector<ClosedPart>& closed) {
         int minClosed = closed.front().size;
         for (const auto& c : closed)
             minClosed = std::min(minClosed, c.size);
         int open = -1;
         for (int gi = 0; gi < groups && open < 0; ++gi) {
-            const int r = guf.find(gi);
+            const int r = m_waveUf.find(gi);
             if (m_pending[r] > 0)
                 open = r;
         }
         while (open >= 0 && m_pending[open] > 0 && m_size[open] <= minClosed) {
             for (int gi = 0; gi < groups; ++gi)
-                if (guf.find(gi) == open && m_heads[gi] < m_queues[gi].size())
-                    expand(gi);
+                if (m_waveUf.find(gi) == open && m_heads[gi] < m_queues[gi].size())
+                    expandWave(gi);
         }
         if (open >= 0 && m_pending[open] == 0)
             closed.push_back({open, m_size[open]});
-        const Closed* smallest = &closed.front();
+    }
+
+    // The smallest part becomes the target: its cells are marked so that strides and dead-end paths
+    // stay in it until it is done.
+    void targetSmallest(int groups, const std::vector<ClosedPart>& closed) {
+        const ClosedPart* smallest = &closed.front();
         for (const auto& c : closed)
             if (c.size < smallest->size)
                 smallest = &c;
-        // The smallest part becomes the target: its cells are marked so that strides and dead-end
-        // paths stay in it until it is done.
         const std::uint32_t id = ++m_targetId;
         for (int gi = 0; gi < groups; ++gi)
-            if (guf.find(gi) == smallest->root)
+            if (m_waveUf.find(gi) == smallest->root)
                 for (int c : m_queues[gi])
                     m_targetMark[c] = id;
         if (!m_targets.empty())
@@ -445,6 +461,9 @@ private:
     std::vector<std::vector<int>> m_queues;
     std::vector<std::size_t> m_heads;
     std::vector<int> m_size, m_pending;
+    UnionFind m_waveUf;
+    std::uint32_t m_waveStamp = 0;
+    int m_live = 0; // waves not closed nor merged
 
     // Parts to finish first, innermost last.
     struct Target {

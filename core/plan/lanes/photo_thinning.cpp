@@ -122,6 +122,138 @@ private:
     std::unordered_map<std::uint64_t, std::vector<int>> m_cells;
 };
 
+// Each lane's photos from first to last grown by `ext` at both ends (far away for a lane without
+// photos).
+std::vector<std::pair<Vec2, Vec2>> extendedSegments(const std::vector<Lane>& lanes, double ext) {
+    std::vector<std::pair<Vec2, Vec2>> seg(lanes.size());
+    for (std::size_t li = 0; li < lanes.size(); ++li) {
+        const Lane& l = lanes[li];
+        if (l.photos.empty()) {
+            seg[li] = {Vec2(1e300, 1e300), Vec2(1e300, 1e300)};
+            continue;
+        }
+        const Vec2 u = laneDirection(l);
+        seg[li] = {l.photos.front() - ext * u, l.photos.back() + ext * u};
+    }
+    return seg;
+}
+
+// The normal of the first lane with photos (the lanes of a sweep are parallel).
+Vec2 lanesNormal(const std::vector<Lane>& lanes) {
+    for (const auto& l : lanes)
+        if (!l.photos.empty()) {
+            const Vec2 u = laneDirection(l);
+            return Vec2(-u.y(), u.x());
+        }
+    return Vec2(0, 1);
+}
+
+// n evenly spread probes over [a, b], 5 cm inside its ends (at most half of it), at most `step`
+// apart.
+std::vector<double> probesOver(double a, double b, double step) {
+    std::vector<double> t;
+    const double in = std::min(0.05, 0.5 * (b - a));
+    const double lo = a + in, hi = b - in;
+    const int n = std::max(1, static_cast<int>(std::ceil((hi - lo) / step)));
+    for (int k = 0; k <= n; ++k)
+        t.push_back(lo + (hi - lo) * k / n);
+    return t;
+}
+
+// Whether a photo's interior ground is seen by other kept photos: with the effective footprint
+// (spacing across, trigger distance along) and, when larger, with the real one.
+class Redundancy {
+public:
+    Redundancy(const std::vector<Shot>& shots, const PhotoThinningOptions& opt, double ra,
+               double rl, const std::function<bool(const Vec2&)>& ground)
+        : m_shots(shots), m_indexed(shots.size(), 1),
+          m_index(shots, m_indexed, std::max(ra, rl), 0.5 * std::hypot(ra, rl)),
+          m_s(opt.trackSpacingM), m_ph(opt.photoSpacingM), m_ra(ra), m_rl(rl),
+          m_step(std::max(0.25, opt.stepM)), m_ground(ground) {}
+
+    bool operator()(int i) {
+        const Shot& sh = m_shots[static_cast<std::size_t>(i)];
+        const double r = 0.5 * std::hypot(m_ra, m_rl);
+        m_index.near(sh.c - Vec2(r, r), sh.c + Vec2(r, r), i, m_nearby);
+        return seenByOthers(sh, 0.5 * m_ph, 0.5 * m_s) &&
+               (m_ra <= m_s && m_rl <= m_ph ? true : seenByOthers(sh, 0.5 * m_rl, 0.5 * m_ra));
+    }
+
+private:
+    // Whether every point of ground in the footprint of half-sizes (hx along, hy across) centred on
+    // the photo lies in the footprint of the same size of another kept photo on a parallel lane:
+    // the footprint is cut at the others' edges into strips across, and in each strip the stretches
+    // no other footprint covers are probed for ground every stepM (and 5 cm inside their ends).
+    // Photos on lanes at an angle (a photographed turn) are not counted as seeing anything here.
+    bool seenByOthers(const Shot& sh, double hx, double hy) {
+        const Vec2 v(-sh.u.y(), sh.u.x());
+        m_spansX.clear();
+        m_spansY.clear();
+        for (int j : m_nearby) {
+            const Shot& o = m_shots[static_cast<std::size_t>(j)];
+            if (std::fabs(o.u.dot(sh.u)) < 0.9999)
+                continue;
+            const Vec2 d = o.c - sh.c;
+            const double x = d.dot(sh.u), y = d.dot(v);
+            if (x - hx >= hx || x + hx <= -hx || y - hy >= hy || y + hy <= -hy)
+                continue;
+            m_spansX.emplace_back(x - hx, x + hx);
+            m_spansY.emplace_back(y - hy, y + hy);
+        }
+        std::vector<double> cuts{-hy, hy};
+        for (const auto& [y0, y1] : m_spansY)
+            for (double y : {y0, y1})
+                if (y > -hy && y < hy)
+                    cuts.push_back(y);
+        std::sort(cuts.begin(), cuts.end());
+        for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
+            const double ya = cuts[c], yb = cuts[c + 1];
+            if (yb - ya < 1e-9)
+                continue;
+            if (!stripSeen(sh, v, hx, ya, yb))
+                return false;
+        }
+        return true;
+    }
+
+    // The strip [ya, yb] across of the footprint (half-length hx along): the stretches the others'
+    // footprints leave hold no ground.
+    bool stripSeen(const Shot& sh, const Vec2& v, double hx, double ya, double yb) {
+        m_cover.clear();
+        for (std::size_t k = 0; k < m_spansY.size(); ++k)
+            if (m_spansY[k].first <= ya + 1e-9 && m_spansY[k].second >= yb - 1e-9)
+                m_cover.emplace_back(std::max(-hx, m_spansX[k].first),
+                                     std::min(hx, m_spansX[k].second));
+        std::sort(m_cover.begin(), m_cover.end());
+        auto gap = [&](double xa, double xb) {
+            if (xb - xa < 1e-9)
+                return true;
+            for (double py : probesOver(ya, yb, m_step))
+                for (double px : probesOver(xa, xb, m_step))
+                    if (m_ground(sh.c + px * sh.u + py * v))
+                        return false;
+            return true;
+        };
+        double x = -hx;
+        for (const auto& [x0, x1] : m_cover) {
+            if (x0 > x && !gap(x, x0))
+                return false;
+            x = std::max(x, x1);
+        }
+        return !(x < hx && !gap(x, hx));
+    }
+
+    const std::vector<Shot>& m_shots;
+    const std::vector<char> m_indexed;
+    const ShotIndex m_index;
+    const double m_s, m_ph, m_ra, m_rl, m_step;
+    const std::function<bool(const Vec2&)>& m_ground;
+    // Scratch: the kept photos near the one checked, their footprints in its frame, a strip's
+    // cover.
+    std::vector<int> m_nearby;
+    std::vector<std::pair<double, double>> m_spansX, m_spansY, m_cover;
+};
+
 } // namespace
 
 int thinLanePhotos(std::vector<Lane>& lanes, const std::vector<char>& fixedLanes,
@@ -131,43 +263,22 @@ int thinLanePhotos(std::vector<Lane>& lanes, const std::vector<char>& fixedLanes
     if (!(s > 0) || !(ph > 0))
         return 0;
     const double ra = std::max(opt.realAcrossM, s), rl = std::max(opt.realAlongM, ph);
-    const double step = std::max(0.25, opt.stepM);
     // Only a photo whose centre another lane's effective band reaches can be redundant (the centre,
     // on the flown line, is ground); only photos within a real footprint's width of such a lane can
     // see its ground. Regular lanes a spacing apart have neither: nothing to index.
     const std::size_t nl = lanes.size();
-    auto extended = [&](double ext) {
-        std::vector<std::pair<Vec2, Vec2>> seg(nl);
-        for (std::size_t li = 0; li < nl; ++li) {
-            const Lane& l = lanes[li];
-            if (l.photos.empty()) {
-                seg[li] = {Vec2(1e300, 1e300), Vec2(1e300, 1e300)};
-                continue;
-            }
-            const Vec2 u = laneDirection(l);
-            seg[li] = {l.photos.front() - ext * u, l.photos.back() + ext * u};
-        }
-        return seg;
-    };
-    const Vec2 normal = [&] {
-        for (const auto& l : lanes)
-            if (!l.photos.empty()) {
-                const Vec2 u = laneDirection(l);
-                return Vec2(-u.y(), u.x());
-            }
-        return Vec2(0, 1);
-    }();
+    const Vec2 normal = lanesNormal(lanes);
     auto hasInterior = [&](std::size_t li) {
         return lanes[li].photos.size() > 2 && !(li < fixedLanes.size() && fixedLanes[li]);
     };
     std::vector<char> candidate(nl, 0), context(nl, 0);
-    closePairs(extended(0.5 * ph), normal, 0.5 * s, [&](int a, int b) {
+    closePairs(extendedSegments(lanes, 0.5 * ph), normal, 0.5 * s, [&](int a, int b) {
         candidate[static_cast<std::size_t>(a)] |= hasInterior(static_cast<std::size_t>(a)) ? 1 : 0;
         candidate[static_cast<std::size_t>(b)] |= hasInterior(static_cast<std::size_t>(b)) ? 1 : 0;
     });
     if (std::none_of(candidate.begin(), candidate.end(), [](char c) { return c != 0; }))
         return 0;
-    closePairs(extended(0.5 * rl), normal, ra + 0.5, [&](int a, int b) {
+    closePairs(extendedSegments(lanes, 0.5 * rl), normal, ra + 0.5, [&](int a, int b) {
         if (candidate[static_cast<std::size_t>(a)] || candidate[static_cast<std::size_t>(b)])
             context[static_cast<std::size_t>(a)] = context[static_cast<std::size_t>(b)] = 1;
     });
@@ -184,86 +295,7 @@ int thinLanePhotos(std::vector<Lane>& lanes, const std::vector<char>& fixedLanes
                                  candidate[li] && k > 0 && k + 1 < l.photos.size(), true});
     }
     firstShot[nl] = shots.size();
-    const std::vector<char> indexed(shots.size(), 1);
-    const double reach = 0.5 * std::hypot(ra, rl);
-    const ShotIndex index(shots, indexed, std::max(ra, rl), reach);
-
-    // Whether every point of `ground` in the footprint of half-sizes (hx along, hy across) centred
-    // on the photo lies in the footprint of the same size of another kept photo on a parallel lane:
-    // the footprint is cut at the others' edges into strips across, and in each strip the stretches
-    // no other footprint covers are probed for ground every stepM (and 5 cm inside their ends).
-    // Photos on lanes at an angle (a photographed turn) are not counted as seeing anything here.
-    std::vector<int> nearby;
-    std::vector<std::pair<double, double>> spansX,
-        spansY; // other footprints, in this photo's frame
-    auto seenByOthers = [&](const Shot& sh, double hx, double hy) {
-        const Vec2 v(-sh.u.y(), sh.u.x());
-        spansX.clear();
-        spansY.clear();
-        for (int j : nearby) {
-            const Shot& o = shots[static_cast<std::size_t>(j)];
-            if (std::fabs(o.u.dot(sh.u)) < 0.9999)
-                continue;
-            const Vec2 d = o.c - sh.c;
-            const double x = d.dot(sh.u), y = d.dot(v);
-            if (x - hx >= hx || x + hx <= -hx || y - hy >= hy || y + hy <= -hy)
-                continue;
-            spansX.emplace_back(x - hx, x + hx);
-            spansY.emplace_back(y - hy, y + hy);
-        }
-        std::vector<double> cuts{-hy, hy};
-        for (const auto& [y0, y1] : spansY)
-            for (double y : {y0, y1})
-                if (y > -hy && y < hy)
-                    cuts.push_back(y);
-        std::sort(cuts.begin(), cuts.end());
-        std::vector<std::pair<double, double>> cover;
-        auto probes = [&](double a, double b) {
-            std::vector<double> t;
-            const double in = std::min(0.05, 0.5 * (b - a));
-            const double lo = a + in, hi = b - in;
-            const int n = std::max(1, static_cast<int>(std::ceil((hi - lo) / step)));
-            for (int k = 0; k <= n; ++k)
-                t.push_back(lo + (hi - lo) * k / n);
-            return t;
-        };
-        for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
-            const double ya = cuts[c], yb = cuts[c + 1];
-            if (yb - ya < 1e-9)
-                continue;
-            cover.clear();
-            for (std::size_t k = 0; k < spansY.size(); ++k)
-                if (spansY[k].first <= ya + 1e-9 && spansY[k].second >= yb - 1e-9)
-                    cover.emplace_back(std::max(-hx, spansX[k].first),
-                                       std::min(hx, spansX[k].second));
-            std::sort(cover.begin(), cover.end());
-            double x = -hx;
-            auto gap = [&](double xa, double xb) {
-                if (xb - xa < 1e-9)
-                    return true;
-                for (double py : probes(ya, yb))
-                    for (double px : probes(xa, xb))
-                        if (ground(sh.c + px * sh.u + py * v))
-                            return false;
-                return true;
-            };
-            for (const auto& [x0, x1] : cover) {
-                if (x0 > x && !gap(x, x0))
-                    return false;
-                x = std::max(x, x1);
-            }
-            if (x < hx && !gap(x, hx))
-                return false;
-        }
-        return true;
-    };
-    auto redundant = [&](int i) {
-        const Shot& sh = shots[static_cast<std::size_t>(i)];
-        const double r = 0.5 * std::hypot(ra, rl);
-        index.near(sh.c - Vec2(r, r), sh.c + Vec2(r, r), i, nearby);
-        return seenByOthers(sh, 0.5 * ph, 0.5 * s) &&
-               (ra <= s && rl <= ph ? true : seenByOthers(sh, 0.5 * rl, 0.5 * ra));
-    };
+    Redundancy redundant(shots, opt, ra, rl, ground);
 
     // Most redundant lanes first.
     std::vector<double> share(lanes.size(), 0.0);

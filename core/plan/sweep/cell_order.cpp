@@ -82,16 +82,14 @@ double orderCost(const OrderProblem& problem, const std::vector<OrderStep>& step
     return s.cost(steps);
 }
 
-OrderResult orderCells(const OrderProblem& problem, const OrderOptions& options) {
-    OrderResult out;
+namespace {
+
+// The cells the construction starts from: with a take-off, the cheapest to begin with (two per
+// start tried); when the start is free (all equal), cells spread over the decomposition's order
+// (from one side of the area to the other), each both ways.
+std::vector<OrderStep> firstCells(const OrderProblem& problem, const OrderOptions& options,
+                                  Search& s) {
     const std::size_t n = problem.cells.size();
-    Search s(problem);
-    if (n == 0) {
-        out.costS = out.constructedCostS = s.cost({});
-        return out;
-    }
-    // First cells: the cheapest to begin with from the take-off; when the start is free (all equal),
-    // cells spread over the decomposition's order (from one side of the area to the other).
     struct First {
         double c;
         OrderStep s;
@@ -120,13 +118,22 @@ OrderResult orderCells(const OrderProblem& problem, const OrderOptions& options)
         for (std::size_t k = 0; k < firsts.size() && tries.size() < static_cast<std::size_t>(2 * starts); ++k)
             tries.push_back(firsts[k].s);
     }
-    double bestC = kInf;
-    for (const auto& f : tries) {
+    return tries;
+}
+
+// The cheapest construction: nearest neighbour from each first cell, and the sweep's own order both
+// ways (each cell its best way). Its cost in `cost`.
+std::vector<OrderStep> construct(const OrderProblem& problem, const OrderOptions& options,
+                                 Search& s, double& cost) {
+    const std::size_t n = problem.cells.size();
+    std::vector<OrderStep> best;
+    cost = kInf;
+    for (const auto& f : firstCells(problem, options, s)) {
         auto seq = s.nearestNeighbour(f);
         const double c = s.cost(seq);
-        if (c < bestC) {
-            bestC = c;
-            out.steps = std::move(seq);
+        if (c < cost) {
+            cost = c;
+            best = std::move(seq);
         }
     }
     if (problem.sweepOrder.size() == n) {
@@ -136,46 +143,66 @@ OrderResult orderCells(const OrderProblem& problem, const OrderOptions& options)
                 seq.push_back(OrderStep{problem.sweepOrder[dir ? n - 1 - k : k], 0, false});
             s.bestWays(seq);
             const double c = s.cost(seq);
-            if (c < bestC) {
-                bestC = c;
-                out.steps = std::move(seq);
+            if (c < cost) {
+                cost = c;
+                best = std::move(seq);
             }
         }
     }
-    out.constructedCostS = bestC;
+    return best;
+}
+
+// Iterated local search: a double bridge (A B C D -> A C B D) and a flipped way or two, then the
+// local search; kept when the whole flies faster. Seeded: the same problem gives the same order.
+// n: the cells.
+void kickAndImprove(std::size_t n, const OrderOptions& options, Search& s,
+                    std::vector<OrderStep>& steps) {
+    std::mt19937 rng(12345);
+    double cur = s.cost(steps);
+    for (int k = 0; k < options.kicks; ++k) {
+        std::vector<OrderStep> t = steps;
+        std::uniform_int_distribution<std::size_t> cut(1, n - 1);
+        std::size_t c1 = cut(rng), c2 = cut(rng), c3 = cut(rng);
+        if (c1 > c2)
+            std::swap(c1, c2);
+        if (c2 > c3)
+            std::swap(c2, c3);
+        if (c1 > c2)
+            std::swap(c1, c2);
+        std::vector<OrderStep> k2(t.begin(), t.begin() + static_cast<std::ptrdiff_t>(c1));
+        k2.insert(k2.end(), t.begin() + static_cast<std::ptrdiff_t>(c2),
+                  t.begin() + static_cast<std::ptrdiff_t>(c3));
+        k2.insert(k2.end(), t.begin() + static_cast<std::ptrdiff_t>(c1),
+                  t.begin() + static_cast<std::ptrdiff_t>(c2));
+        k2.insert(k2.end(), t.begin() + static_cast<std::ptrdiff_t>(c3), t.end());
+        std::uniform_int_distribution<std::size_t> any(0, n - 1);
+        k2[any(rng)].reversed ^= true;
+        OrderResult scratch;
+        s.improve(k2, options, scratch);
+        const double c = s.cost(k2);
+        if (c < cur - kGainEps) {
+            cur = c;
+            steps = std::move(k2);
+        }
+    }
+}
+
+} // namespace
+
+OrderResult orderCells(const OrderProblem& problem, const OrderOptions& options) {
+    OrderResult out;
+    const std::size_t n = problem.cells.size();
+    Search s(problem);
+    if (n == 0) {
+        out.costS = out.constructedCostS = s.cost({});
+        return out;
+    }
+    out.steps = construct(problem, options, s, out.constructedCostS);
     out.constructed = out.steps;
     if (options.improve) {
         s.improve(out.steps, options, out);
-        if (!problem.near && n >= 4) {
-            // Iterated local search: a double bridge (A B C D -> A C B D) and a flipped way or two,
-            // then the local search; kept when the whole flies faster.
-            std::mt19937 rng(12345);
-            double cur = s.cost(out.steps);
-            for (int k = 0; k < options.kicks; ++k) {
-                std::vector<OrderStep> t = out.steps;
-                std::uniform_int_distribution<std::size_t> cut(1, n - 1);
-                std::size_t c1 = cut(rng), c2 = cut(rng), c3 = cut(rng);
-                if (c1 > c2)
-                    std::swap(c1, c2);
-                if (c2 > c3)
-                    std::swap(c2, c3);
-                if (c1 > c2)
-                    std::swap(c1, c2);
-                std::vector<OrderStep> k2(t.begin(), t.begin() + static_cast<std::ptrdiff_t>(c1));
-                k2.insert(k2.end(), t.begin() + static_cast<std::ptrdiff_t>(c2), t.begin() + static_cast<std::ptrdiff_t>(c3));
-                k2.insert(k2.end(), t.begin() + static_cast<std::ptrdiff_t>(c1), t.begin() + static_cast<std::ptrdiff_t>(c2));
-                k2.insert(k2.end(), t.begin() + static_cast<std::ptrdiff_t>(c3), t.end());
-                std::uniform_int_distribution<std::size_t> any(0, n - 1);
-                k2[any(rng)].reversed ^= true;
-                OrderResult scratch;
-                s.improve(k2, options, scratch);
-                const double c = s.cost(k2);
-                if (c < cur - kGainEps) {
-                    cur = c;
-                    out.steps = std::move(k2);
-                }
-            }
-        }
+        if (!problem.near && n >= 4)
+            kickAndImprove(n, options, s, out.steps);
     }
     out.costS = s.cost(out.steps);
     out.moves = s.moves;

@@ -78,10 +78,297 @@ struct Vertex {
     int index = 0;
 };
 
+Error badOutline(const char* what) {
+    return makeError(
+        ErrorCode::InvalidGeometry,
+        std::string("The area's outline could not be decomposed along the sweep direction (") +
+            what + "): it may touch or cross itself.");
+}
+
+void linkCells(std::vector<MonotoneCell>& cells, int lower, int upper) {
+    cells[static_cast<std::size_t>(lower)].above.push_back(upper);
+    cells[static_cast<std::size_t>(upper)].below.push_back(lower);
+}
+
+// The polygons' rings in the frame, without repeated points; rings of fewer than 3 points dropped.
+std::vector<std::vector<Vec2>> frameRings(const geo::MultiPolygon& polys, const SweepFrame& frame) {
+    std::vector<std::vector<Vec2>> rings;
+    for (const auto& poly : polys) {
+        auto add = [&](const geo::Ring& ring) {
+            std::vector<Vec2> r;
+            r.reserve(ring.size());
+            for (const auto& p : ring) {
+                const Vec2 q = frame.toFrame(p);
+                if (r.empty() || r.back() != q)
+                    r.push_back(q);
+            }
+            while (r.size() > 1 && r.front() == r.back())
+                r.pop_back();
+            if (r.size() >= 3)
+                rings.push_back(std::move(r));
+        };
+        add(poly.outer);
+        for (const auto& h : poly.holes)
+            add(h);
+    }
+    return rings;
+}
+
+// The sweep line moving up through the rings' vertices in (y, x) order: the edges it crosses, left
+// to right, and the cell open between each pair of them.
+class SweepLine {
+public:
+    SweepLine(const std::vector<std::vector<Vec2>>& rings, std::vector<MonotoneCell>& cells)
+        : m_rings(rings), m_cells(cells) {
+        buildEdges();
+    }
+
+    // Every vertex in turn; an error when the rings cannot be ordered consistently.
+    Status run() {
+        for (const auto& vx : m_verts) {
+            const auto& ring = m_rings[static_cast<std::size_t>(vx.ring)];
+            const int n = static_cast<int>(ring.size());
+            const Vec2& v = vx.p;
+            const Vec2& u = ring[static_cast<std::size_t>((vx.index + n - 1) % n)];
+            const Vec2& w = ring[static_cast<std::size_t>((vx.index + 1) % n)];
+            const int eu =
+                m_ringStart[static_cast<std::size_t>(vx.ring)] + (vx.index + n - 1) % n; // u - v
+            const int ew = m_ringStart[static_cast<std::size_t>(vx.ring)] + vx.index;    // v - w
+            const bool uAbove = lexLess(v, u), wAbove = lexLess(v, w);
+            Status st;
+            if (uAbove != wAbove)
+                st = regular(v, uAbove ? ew : eu, uAbove ? eu : ew);
+            else if (uAbove)
+                begin(v, u, w, eu, ew);
+            else
+                st = close(v, eu, ew);
+            if (!st)
+                return st;
+        }
+        if (!m_active.empty())
+            return badOutline("the sweep ended with open edges");
+        return {};
+    }
+
+private:
+    // Edges: edge (ring, i) joins vertex i to vertex i + 1; the vertices in the sweep's order.
+    void buildEdges() {
+        m_ringStart.assign(m_rings.size() + 1, 0);
+        for (std::size_t r = 0; r < m_rings.size(); ++r)
+            m_ringStart[r + 1] = m_ringStart[r] + static_cast<int>(m_rings[r].size());
+        m_edges.resize(static_cast<std::size_t>(m_ringStart.back()));
+        m_verts.reserve(m_edges.size());
+        for (std::size_t r = 0; r < m_rings.size(); ++r) {
+            const auto& ring = m_rings[r];
+            const int n = static_cast<int>(ring.size());
+            for (int i = 0; i < n; ++i) {
+                const Vec2& a = ring[static_cast<std::size_t>(i)];
+                const Vec2& b = ring[static_cast<std::size_t>((i + 1) % n)];
+                Edge& e = m_edges[static_cast<std::size_t>(m_ringStart[r] + i)];
+                e.lo = lexLess(a, b) ? a : b;
+                e.hi = lexLess(a, b) ? b : a;
+                m_verts.push_back(Vertex{a, static_cast<int>(r), i});
+            }
+        }
+        std::sort(m_verts.begin(), m_verts.end(), [](const Vertex& a, const Vertex& b) {
+            if (a.p != b.p)
+                return lexLess(a.p, b.p);
+            return a.ring != b.ring ? a.ring < b.ring : a.index < b.index;
+        });
+    }
+
+    int indexOf(int e) const {
+        auto it = std::find(m_active.begin(), m_active.end(), e);
+        return it == m_active.end() ? -1 : static_cast<int>(it - m_active.begin());
+    }
+
+    int newCell(const Vec2& l, const Vec2& r) {
+        MonotoneCell c;
+        c.left.push_back(l);
+        c.right.push_back(r);
+        c.ylo = l.y();
+        m_cells.push_back(std::move(c));
+        return static_cast<int>(m_cells.size()) - 1;
+    }
+
+    MonotoneCell& cell(int i) { return m_cells[static_cast<std::size_t>(i)]; }
+    const Edge& edge(int e) const { return m_edges[static_cast<std::size_t>(e)]; }
+    // x at height y of the active edge at position i.
+    double activeX(int i, double y) const {
+        return edge(m_active[static_cast<std::size_t>(i)]).xAt(y);
+    }
+
+    // Regular: the edge from below ends here and the one above continues the same chain.
+    Status regular(const Vec2& v, int ending, int starting) {
+        const int idx = indexOf(ending);
+        if (idx < 0)
+            return badOutline("a boundary edge was lost");
+        m_active[static_cast<std::size_t>(idx)] = starting;
+        auto& c = cell(m_openCell[static_cast<std::size_t>(idx / 2)]);
+        (idx % 2 == 0 ? c.left : c.right).push_back(v);
+        return {};
+    }
+
+    // Two edges begin: a new piece of free space (start), or an obstacle inside an interval
+    // (split).
+    void begin(const Vec2& v, const Vec2& u, const Vec2& w, int eu, int ew) {
+        // The left one is the more counter-clockwise direction.
+        const bool uLeft = cross(w - v, u - v) > 0;
+        const int eL = uLeft ? eu : ew, eR = uLeft ? ew : eu;
+        int pos = 0;
+        for (int e : m_active) {
+            const Edge& ed = edge(e);
+            if (cross(ed.hi - ed.lo, v - ed.lo) < 0)
+                ++pos;
+            else
+                break;
+        }
+        if (pos % 2 == 0) {
+            m_active.insert(m_active.begin() + pos, {eL, eR});
+            const int ci = newCell(v, v);
+            cell(ci).bottomTouches.push_back(v);
+            m_openCell.insert(m_openCell.begin() + pos / 2, ci);
+            return;
+        }
+        // Split: the interval's cell ends, two begin.
+        const int k = (pos - 1) / 2;
+        const int ci = m_openCell[static_cast<std::size_t>(k)];
+        const double xl = activeX(2 * k, v.y());
+        const double xr = activeX(2 * k + 1, v.y());
+        {
+            auto& c = cell(ci);
+            c.left.emplace_back(xl, v.y());
+            c.right.emplace_back(xr, v.y());
+            c.topTouches.push_back(v);
+            const Edge& er = edge(eR);
+            if (er.horizontal())
+                c.topContacts.emplace_back(er.lo.x(), er.hi.x());
+        }
+        const int cl = newCell(Vec2(xl, v.y()), v);
+        const int cr = newCell(v, Vec2(xr, v.y()));
+        linkCells(m_cells, ci, cl);
+        linkCells(m_cells, ci, cr);
+        m_active.insert(m_active.begin() + pos, {eL, eR});
+        m_openCell[static_cast<std::size_t>(k)] = cl;
+        m_openCell.insert(m_openCell.begin() + k + 1, cr);
+    }
+
+    // Two edges end here: an interval closes (end), or an obstacle ends and the two cells beside it
+    // end and one begins above it (merge).
+    Status close(const Vec2& v, int eu, int ew) {
+        const int iu = indexOf(eu), iw = indexOf(ew);
+        if (iu < 0 || iw < 0 || std::abs(iu - iw) != 1)
+            return badOutline("two closing edges are not neighbours");
+        const int lo = std::min(iu, iw);
+        if (lo % 2 == 0) {
+            auto& c = cell(m_openCell[static_cast<std::size_t>(lo / 2)]);
+            c.left.push_back(v);
+            c.right.push_back(v);
+            c.topTouches.push_back(v);
+            m_active.erase(m_active.begin() + lo, m_active.begin() + lo + 2);
+            m_openCell.erase(m_openCell.begin() + lo / 2);
+            return {};
+        }
+        const int k = (lo - 1) / 2;
+        const int c1 = m_openCell[static_cast<std::size_t>(k)],
+                  c2 = m_openCell[static_cast<std::size_t>(k + 1)];
+        const double xl = activeX(2 * k, v.y());
+        const double xr = activeX(2 * k + 3, v.y());
+        cell(c1).left.emplace_back(xl, v.y());
+        cell(c1).right.push_back(v);
+        cell(c2).left.push_back(v);
+        cell(c2).right.emplace_back(xr, v.y());
+        const int cm = newCell(Vec2(xl, v.y()), Vec2(xr, v.y()));
+        cell(cm).bottomTouches.push_back(v);
+        const Edge& el = edge(m_active[static_cast<std::size_t>(lo)]);
+        if (el.horizontal())
+            cell(cm).bottomContacts.emplace_back(el.lo.x(), el.hi.x());
+        linkCells(m_cells, c1, cm);
+        linkCells(m_cells, c2, cm);
+        m_active.erase(m_active.begin() + lo, m_active.begin() + lo + 2);
+        m_openCell[static_cast<std::size_t>(k)] = cm;
+        m_openCell.erase(m_openCell.begin() + k + 1);
+        return {};
+    }
+
+    const std::vector<std::vector<Vec2>>& m_rings;
+    std::vector<MonotoneCell>& m_cells;
+    std::vector<int> m_ringStart;
+    std::vector<Edge> m_edges;
+    std::vector<Vertex> m_verts;
+    std::vector<int> m_active;   // edge ids crossing the sweep line, left to right
+    std::vector<int> m_openCell; // cell between active[2k] and active[2k + 1]
+};
+
+// Each cell's height range, and the chains' horizontal runs along its bottom or top: boundary lies
+// flat there.
+void finishCells(std::vector<MonotoneCell>& cells) {
+    for (auto& c : cells) {
+        c.ylo = std::min(c.left.front().y(), c.right.front().y());
+        c.yhi = std::max(c.left.back().y(), c.right.back().y());
+        auto runs = [&](const std::vector<Vec2>& chain) {
+            for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
+                const Vec2 &a = chain[i], &b = chain[i + 1];
+                if (a.y() != b.y() || a.x() == b.x())
+                    continue;
+                const std::pair<double, double> r{std::min(a.x(), b.x()), std::max(a.x(), b.x())};
+                if (a.y() == c.ylo)
+                    c.bottomContacts.push_back(r);
+                else if (a.y() == c.yhi)
+                    c.topContacts.push_back(r);
+            }
+        };
+        runs(c.left);
+        runs(c.right);
+    }
+}
+
+// Drops cells without height, joining their neighbours across them, and renumbers the rest.
+void dropFlatCells(std::vector<MonotoneCell>& cells) {
+    std::vector<char> keep(cells.size(), 1);
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+        auto& c = cells[i];
+        if (c.yhi - c.ylo > 1e-9)
+            continue;
+        keep[i] = 0;
+        for (int b : c.below)
+            for (int a : c.above)
+                linkCells(cells, b, a);
+    }
+    std::vector<int> newId(cells.size(), -1);
+    int next = 0;
+    for (std::size_t i = 0; i < cells.size(); ++i)
+        if (keep[i])
+            newId[i] = next++;
+    std::vector<MonotoneCell> kept;
+    kept.reserve(static_cast<std::size_t>(next));
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+        if (!keep[i])
+            continue;
+        MonotoneCell c = std::move(cells[i]);
+        auto remap = [&](std::vector<int>& ids) {
+            std::vector<int> r;
+            for (int id : ids)
+                if (newId[static_cast<std::size_t>(id)] >= 0 &&
+                    std::find(r.begin(), r.end(), newId[static_cast<std::size_t>(id)]) == r.end())
+                    r.push_back(newId[static_cast<std::size_t>(id)]);
+            ids = std::move(r);
+        };
+        remap(c.below);
+        remap(c.above);
+        kept.push_back(std::move(c));
+    }
+    cells = std::move(kept);
+}
+
 } // namespace
 
-double MonotoneCell::xLeft(double y) const { return chainX(left, std::clamp(y, ylo, yhi), true); }
-double MonotoneCell::xRight(double y) const { return chainX(right, std::clamp(y, ylo, yhi), false); }
+double MonotoneCell::xLeft(double y) const {
+    return chainX(left, std::clamp(y, ylo, yhi), true);
+}
+double MonotoneCell::xRight(double y) const {
+    return chainX(right, std::clamp(y, ylo, yhi), false);
+}
 
 double MonotoneCell::minLeft(double y1, double y2) const {
     y1 = std::clamp(y1, ylo, yhi);
@@ -111,237 +398,18 @@ geo::Ring MonotoneCell::ring() const {
     return r;
 }
 
-double MonotoneCell::area() const { return std::abs(geo::signedArea(ring())); }
+double MonotoneCell::area() const {
+    return std::abs(geo::signedArea(ring()));
+}
 
 Result<Decomposition> decompose(const geo::MultiPolygon& polys, const SweepFrame& frame) {
     Decomposition out;
     out.frame = frame;
-    // Rings in the frame, without repeated points.
-    std::vector<std::vector<Vec2>> rings;
-    for (const auto& poly : polys) {
-        auto add = [&](const geo::Ring& ring) {
-            std::vector<Vec2> r;
-            r.reserve(ring.size());
-            for (const auto& p : ring) {
-                const Vec2 q = frame.toFrame(p);
-                if (r.empty() || r.back() != q)
-                    r.push_back(q);
-            }
-            while (r.size() > 1 && r.front() == r.back())
-                r.pop_back();
-            if (r.size() >= 3)
-                rings.push_back(std::move(r));
-        };
-        add(poly.outer);
-        for (const auto& h : poly.holes)
-            add(h);
-    }
-    // Edges: edge (ring, i) joins vertex i to vertex i + 1.
-    std::vector<int> ringStart(rings.size() + 1, 0);
-    for (std::size_t r = 0; r < rings.size(); ++r)
-        ringStart[r + 1] = ringStart[r] + static_cast<int>(rings[r].size());
-    std::vector<Edge> edges(static_cast<std::size_t>(ringStart.back()));
-    std::vector<Vertex> verts;
-    verts.reserve(edges.size());
-    for (std::size_t r = 0; r < rings.size(); ++r) {
-        const auto& ring = rings[r];
-        const int n = static_cast<int>(ring.size());
-        for (int i = 0; i < n; ++i) {
-            const Vec2& a = ring[static_cast<std::size_t>(i)];
-            const Vec2& b = ring[static_cast<std::size_t>((i + 1) % n)];
-            Edge& e = edges[static_cast<std::size_t>(ringStart[r] + i)];
-            e.lo = lexLess(a, b) ? a : b;
-            e.hi = lexLess(a, b) ? b : a;
-            verts.push_back(Vertex{a, static_cast<int>(r), i});
-        }
-    }
-    std::sort(verts.begin(), verts.end(), [](const Vertex& a, const Vertex& b) {
-        if (a.p != b.p)
-            return lexLess(a.p, b.p);
-        return a.ring != b.ring ? a.ring < b.ring : a.index < b.index;
-    });
-
-    auto& cells = out.cells;
-    std::vector<int> active;   // edge ids crossing the sweep line, left to right
-    std::vector<int> openCell; // cell between active[2k] and active[2k + 1]
-    auto bad = [&](const char* what) {
-        return makeError(ErrorCode::InvalidGeometry,
-                         std::string("The area's outline could not be decomposed along the sweep direction (") + what +
-                             "): it may touch or cross itself.");
-    };
-    auto indexOf = [&](int e) {
-        auto it = std::find(active.begin(), active.end(), e);
-        return it == active.end() ? -1 : static_cast<int>(it - active.begin());
-    };
-    auto newCell = [&](const Vec2& l, const Vec2& r) {
-        MonotoneCell c;
-        c.left.push_back(l);
-        c.right.push_back(r);
-        c.ylo = l.y();
-        cells.push_back(std::move(c));
-        return static_cast<int>(cells.size()) - 1;
-    };
-    auto link = [&](int lower, int upper) {
-        cells[static_cast<std::size_t>(lower)].above.push_back(upper);
-        cells[static_cast<std::size_t>(upper)].below.push_back(lower);
-    };
-
-    for (const auto& vx : verts) {
-        const auto& ring = rings[static_cast<std::size_t>(vx.ring)];
-        const int n = static_cast<int>(ring.size());
-        const Vec2& v = vx.p;
-        const Vec2& u = ring[static_cast<std::size_t>((vx.index + n - 1) % n)];
-        const Vec2& w = ring[static_cast<std::size_t>((vx.index + 1) % n)];
-        const int eu = ringStart[static_cast<std::size_t>(vx.ring)] + (vx.index + n - 1) % n; // u - v
-        const int ew = ringStart[static_cast<std::size_t>(vx.ring)] + vx.index;               // v - w
-        const bool uAbove = lexLess(v, u), wAbove = lexLess(v, w);
-        if (uAbove != wAbove) {
-            // Regular: the edge from below ends here and the one above continues the same chain.
-            const int ending = uAbove ? ew : eu, starting = uAbove ? eu : ew;
-            const int idx = indexOf(ending);
-            if (idx < 0)
-                return bad("a boundary edge was lost");
-            active[static_cast<std::size_t>(idx)] = starting;
-            auto& c = cells[static_cast<std::size_t>(openCell[static_cast<std::size_t>(idx / 2)])];
-            (idx % 2 == 0 ? c.left : c.right).push_back(v);
-            continue;
-        }
-        if (uAbove) {
-            // Two edges begin: the left one is the more counter-clockwise direction.
-            const bool uLeft = cross(w - v, u - v) > 0;
-            const int eL = uLeft ? eu : ew, eR = uLeft ? ew : eu;
-            int pos = 0;
-            for (int e : active) {
-                const Edge& ed = edges[static_cast<std::size_t>(e)];
-                if (cross(ed.hi - ed.lo, v - ed.lo) < 0)
-                    ++pos;
-                else
-                    break;
-            }
-            if (pos % 2 == 0) {
-                // Start: a new piece of free space.
-                active.insert(active.begin() + pos, {eL, eR});
-                const int ci = newCell(v, v);
-                cells[static_cast<std::size_t>(ci)].bottomTouches.push_back(v);
-                openCell.insert(openCell.begin() + pos / 2, ci);
-            } else {
-                // Split: an obstacle begins inside the interval; its cell ends, two begin.
-                const int k = (pos - 1) / 2;
-                const int ci = openCell[static_cast<std::size_t>(k)];
-                const double xl = edges[static_cast<std::size_t>(active[static_cast<std::size_t>(2 * k)])].xAt(v.y());
-                const double xr = edges[static_cast<std::size_t>(active[static_cast<std::size_t>(2 * k + 1)])].xAt(v.y());
-                {
-                    auto& c = cells[static_cast<std::size_t>(ci)];
-                    c.left.emplace_back(xl, v.y());
-                    c.right.emplace_back(xr, v.y());
-                    c.topTouches.push_back(v);
-                    const Edge& er = edges[static_cast<std::size_t>(eR)];
-                    if (er.horizontal())
-                        c.topContacts.emplace_back(er.lo.x(), er.hi.x());
-                }
-                const int cl = newCell(Vec2(xl, v.y()), v);
-                const int cr = newCell(v, Vec2(xr, v.y()));
-                link(ci, cl);
-                link(ci, cr);
-                active.insert(active.begin() + pos, {eL, eR});
-                openCell[static_cast<std::size_t>(k)] = cl;
-                openCell.insert(openCell.begin() + k + 1, cr);
-            }
-            continue;
-        }
-        // Two edges end here.
-        const int iu = indexOf(eu), iw = indexOf(ew);
-        if (iu < 0 || iw < 0 || std::abs(iu - iw) != 1)
-            return bad("two closing edges are not neighbours");
-        const int lo = std::min(iu, iw);
-        if (lo % 2 == 0) {
-            // End: the interval closes at v.
-            auto& c = cells[static_cast<std::size_t>(openCell[static_cast<std::size_t>(lo / 2)])];
-            c.left.push_back(v);
-            c.right.push_back(v);
-            c.topTouches.push_back(v);
-            active.erase(active.begin() + lo, active.begin() + lo + 2);
-            openCell.erase(openCell.begin() + lo / 2);
-        } else {
-            // Merge: an obstacle ends; the two cells beside it end and one begins above it.
-            const int k = (lo - 1) / 2;
-            const int c1 = openCell[static_cast<std::size_t>(k)], c2 = openCell[static_cast<std::size_t>(k + 1)];
-            const double xl = edges[static_cast<std::size_t>(active[static_cast<std::size_t>(2 * k)])].xAt(v.y());
-            const double xr = edges[static_cast<std::size_t>(active[static_cast<std::size_t>(2 * k + 3)])].xAt(v.y());
-            cells[static_cast<std::size_t>(c1)].left.emplace_back(xl, v.y());
-            cells[static_cast<std::size_t>(c1)].right.push_back(v);
-            cells[static_cast<std::size_t>(c2)].left.push_back(v);
-            cells[static_cast<std::size_t>(c2)].right.emplace_back(xr, v.y());
-            const int cm = newCell(Vec2(xl, v.y()), Vec2(xr, v.y()));
-            cells[static_cast<std::size_t>(cm)].bottomTouches.push_back(v);
-            const Edge& el = edges[static_cast<std::size_t>(active[static_cast<std::size_t>(lo)])];
-            if (el.horizontal())
-                cells[static_cast<std::size_t>(cm)].bottomContacts.emplace_back(el.lo.x(), el.hi.x());
-            link(c1, cm);
-            link(c2, cm);
-            active.erase(active.begin() + lo, active.begin() + lo + 2);
-            openCell[static_cast<std::size_t>(k)] = cm;
-            openCell.erase(openCell.begin() + k + 1);
-        }
-    }
-    if (!active.empty())
-        return bad("the sweep ended with open edges");
-
-    for (auto& c : cells) {
-        c.ylo = std::min(c.left.front().y(), c.right.front().y());
-        c.yhi = std::max(c.left.back().y(), c.right.back().y());
-        // Chains that run horizontally along the bottom or the top: boundary lies flat there.
-        auto runs = [&](const std::vector<Vec2>& chain) {
-            for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
-                const Vec2 &a = chain[i], &b = chain[i + 1];
-                if (a.y() != b.y() || a.x() == b.x())
-                    continue;
-                const std::pair<double, double> r{std::min(a.x(), b.x()), std::max(a.x(), b.x())};
-                if (a.y() == c.ylo)
-                    c.bottomContacts.push_back(r);
-                else if (a.y() == c.yhi)
-                    c.topContacts.push_back(r);
-            }
-        };
-        runs(c.left);
-        runs(c.right);
-    }
-
-    // Drop cells without height; join their neighbours across them.
-    std::vector<char> keep(cells.size(), 1);
-    for (std::size_t i = 0; i < cells.size(); ++i) {
-        auto& c = cells[i];
-        if (c.yhi - c.ylo > 1e-9)
-            continue;
-        keep[i] = 0;
-        for (int b : c.below)
-            for (int a : c.above)
-                link(b, a);
-    }
-    std::vector<int> newId(cells.size(), -1);
-    int next = 0;
-    for (std::size_t i = 0; i < cells.size(); ++i)
-        if (keep[i])
-            newId[i] = next++;
-    std::vector<MonotoneCell> kept;
-    kept.reserve(static_cast<std::size_t>(next));
-    for (std::size_t i = 0; i < cells.size(); ++i) {
-        if (!keep[i])
-            continue;
-        MonotoneCell c = std::move(cells[i]);
-        auto remap = [&](std::vector<int>& ids) {
-            std::vector<int> r;
-            for (int id : ids)
-                if (newId[static_cast<std::size_t>(id)] >= 0 &&
-                    std::find(r.begin(), r.end(), newId[static_cast<std::size_t>(id)]) == r.end())
-                    r.push_back(newId[static_cast<std::size_t>(id)]);
-            ids = std::move(r);
-        };
-        remap(c.below);
-        remap(c.above);
-        kept.push_back(std::move(c));
-    }
-    cells = std::move(kept);
+    const std::vector<std::vector<Vec2>> rings = frameRings(polys, frame);
+    if (Status st = SweepLine(rings, out.cells).run(); !st)
+        return st.error();
+    finishCells(out.cells);
+    dropFlatCells(out.cells);
     return out;
 }
 

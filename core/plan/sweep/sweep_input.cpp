@@ -45,4 +45,16 @@ Status checkSweepInput(const geo::MultiPolygon& region, const SweepOptions& opt)
     return {};
 }
 
+Status checkSweepEnds(const geo::NoFlyField& field, const std::optional<geo::Vec2>& home,
+                      const std::optional<geo::Vec2>& landing, double safetyMarginM) {
+    for (const auto* p : {&home, &landing})
+        if (*p && !field.pointIsSafe(**p))
+            return makeError(ErrorCode::NoPath,
+                             std::string(p == &home ? "The home point" : "The landing point") +
+                                 " (" + fmt((*p)->x()) + ", " + fmt((*p)->y()) +
+                                 ") m lies within the " + fmt(safetyMarginM) +
+                                 " m safety margin of a no-fly zone.");
+    return {};
+}
+
 } // namespace pf::plan::sweep_detail

@@ -14,110 +14,6 @@ using geo::Vec2;
 
 namespace {
 
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-// The ground model probes points a few centimetres off a boundary, never on one: the even-odd rule
-// alone is exact there.
-bool insideAny(const std::vector<geo::EvenOddIndex>& polys, const std::vector<geo::Box>& boxes,
-               const Vec2& p) {
-    for (std::size_t i = 0; i < polys.size(); ++i)
-        if (boxes[i].contains(p) && polys[i].inside(p))
-            return true;
-    return false;
-}
-
-void addRings(const geo::Polygon& poly, std::vector<geo::Ring>& out) {
-    out.push_back(poly.outer);
-    for (const auto& h : poly.holes)
-        out.push_back(h);
-}
-
-} // namespace
-
-SweepGround::SweepGround(const geo::MultiPolygon& area, const std::vector<geo::Polygon>& zones,
-                         const geo::MultiPolygon& grownZones)
-    : m_area(area), m_grown(grownZones), m_zones(zones) {
-    auto add = [&](const geo::Polygon& poly) {
-        Rings r;
-        addRings(poly, r.rings);
-        r.box = geo::bounds(poly);
-        m_blockers.push_back(std::move(r));
-    };
-    for (const auto& z : zones)
-        add(z);
-    for (const auto& g : grownZones)
-        add(g);
-    for (const auto& a : area)
-        add(a);
-    for (const auto& a : area) {
-        m_areaBoxes.push_back(geo::bounds(a));
-        m_areaIndex.emplace_back(a);
-    }
-    for (const auto& g : grownZones) {
-        m_grownBoxes.push_back(geo::bounds(g));
-        m_grownIndex.emplace_back(g);
-    }
-    for (const auto& z : zones)
-        m_zoneIndex.emplace_back(z);
-}
-
-bool SweepGround::insideArea(const Vec2& p) const {
-    return insideAny(m_areaIndex, m_areaBoxes, p);
-}
-
-bool SweepGround::inMargin(const Vec2& p) const { return insideArea(p) && inGrown(p); }
-
-bool SweepGround::inGrown(const Vec2& p) const {
-    return insideAny(m_grownIndex, m_grownBoxes, p);
-}
-
-bool SweepGround::inZone(const Vec2& p) const {
-    for (std::size_t i = 0; i < m_zones.size(); ++i)
-        if (m_blockers[i].box.contains(p) && m_zoneIndex[i].inside(p))
-            return true;
-    return false;
-}
-
-double SweepGround::runToBoundary(const Vec2& p, const Vec2& u, double cap) const {
-    double best = cap;
-    const Vec2 far = p + cap * u;
-    const geo::Box ray{p.cwiseMin(far), p.cwiseMax(far)};
-    for (const auto& b : m_blockers) {
-        if (!b.box.intersects(ray))
-            continue;
-        for (const auto& ring : b.rings) {
-            const std::size_t n = ring.size();
-            for (std::size_t i = 0; i < n; ++i) {
-                const Vec2& c = ring[i];
-                const Vec2 e = ring[(i + 1) % n] - c;
-                const double den = cross(u, e);
-                if (std::abs(den) < 1e-15)
-                    continue;
-                const Vec2 pc = c - p;
-                const double t = cross(pc, e) / den;  // along the ray
-                const double s = cross(pc, u) / den;  // along the edge
-                if (t > 0.02 && t < best && s >= 0.0 && s <= 1.0)
-                    best = t;
-            }
-        }
-    }
-    return best;
-}
-
-std::vector<int> SweepGround::zonesNear(const Vec2& p, double d) const {
-    std::vector<int> out;
-    for (std::size_t i = 0; i < m_zones.size(); ++i) {
-        const geo::Box& b = m_blockers[i].box;
-        if (p.x() < b.min.x() - d || p.x() > b.max.x() + d || p.y() < b.min.y() - d || p.y() > b.max.y() + d)
-            continue;
-        if (geo::insideEvenOdd(m_zones[i], p) || geo::distanceToBoundary(m_zones[i], p) <= d)
-            out.push_back(static_cast<int>(i));
-    }
-    return out;
-}
-
-namespace {
-
 struct Window {
     double lo, hi;
     bool optional = false; // for time only (a lane may fly out over an outline's step instead)
@@ -238,34 +134,18 @@ Need cutNeedsLane(const Decomposition& d, const MonotoneCell& wide, bool top, co
     return Need::None;
 }
 
-} // namespace
-
-std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, const SweepLaneParams& p,
-                                const SweepGround& ground, std::optional<double> coverFrom,
-                                std::optional<double> coverTo, const std::vector<double>& fixed) {
-    const auto& first = d.cells[static_cast<std::size_t>(m.parts.front())];
-    const auto& last = d.cells[static_cast<std::size_t>(m.parts.back())];
-    const double ylo = first.ylo, yhi = last.yhi, s = p.trackSpacingM;
-    if (yhi - ylo <= 0.04)
-        return {0.5 * (ylo + yhi)};
-    const double eps = 0.01;
-    const double cap = 0.5 * s - 2 * eps;
-    auto reach = [&](const MonotoneCell& c, bool top) { return std::min(cap, contactReach(d, c, top, p, ground)); };
-    std::vector<Window> w;
-    // The heights the outer strips must reach.
-    const double from = coverFrom ? *coverFrom : ylo - reach(first, false);
-    const double to = coverTo ? *coverTo : yhi + reach(last, true);
-    if (m.parts.size() == 1 && from >= to && fixed.empty())
-        return {};
-    const double et = to - yhi;
-    w.push_back(Window{ylo + eps, from + 0.5 * s});
-    w.push_back(Window{to - 0.5 * s, yhi - eps, false, true});
+// Windows at the cuts between a merged cell's parts: where the wider part must keep a lane by the
+// cut (cutNeedsLane), or the margin's ground beyond the cut needs one.
+void cutWindows(const Decomposition& d, const MergedCell& m, const SweepLaneParams& p,
+                const SweepGround& ground, double cap, double eps, std::vector<Window>& w) {
+    const double s = p.trackSpacingM;
     for (std::size_t i = 1; i < m.parts.size(); ++i) {
         const auto& lo = d.cells[static_cast<std::size_t>(m.parts[i - 1])];
         const auto& up = d.cells[static_cast<std::size_t>(m.parts[i])];
         const double c = lo.yhi;
         const bool narrowing = up.xLeft(up.ylo) >= lo.xLeft(lo.yhi) - 1e-6 && up.xRight(up.ylo) <= lo.xRight(lo.yhi) + 1e-6;
-        const double ec = narrowing ? reach(lo, true) : reach(up, false);
+        const double ec = narrowing ? std::min(cap, contactReach(d, lo, true, p, ground))
+                                    : std::min(cap, contactReach(d, up, false, p, ground));
         const Need need = ec > 0 ? Need::ForCoverage : cutNeedsLane(d, narrowing ? lo : up, narrowing, p);
         if (need == Need::None)
             continue;
@@ -274,9 +154,14 @@ std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, con
         else
             w.push_back(Window{c + eps, c + 0.5 * s - ec, need == Need::ForTime});
     }
-    // Steps of the outline inside a part (a chain running along the lanes): the wide side keeps a lane
-    // within half a spacing when the step is longer than the footprints from the narrow side reach
-    // along their lanes (or they would fly far out over the step, or cannot, kept inside).
+}
+
+// Steps of the outline inside a part (a chain running along the lanes): the wide side keeps a lane
+// within half a spacing when the step is longer than the footprints from the narrow side reach
+// along their lanes (or they would fly far out over the step, or cannot, kept inside).
+void stepWindows(const Decomposition& d, const MergedCell& m, const SweepLaneParams& p,
+                 const SweepGround& ground, double cap, double eps, std::vector<Window>& w) {
+    const double s = p.trackSpacingM;
     for (int pi : m.parts) {
         const auto& c = d.cells[static_cast<std::size_t>(pi)];
         for (int side = 0; side < 2; ++side) {
@@ -299,6 +184,81 @@ std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, con
             }
         }
     }
+}
+
+// The lanes on the shared lines within the cell, then, for every window no lane meets yet (by
+// their upper ends, as the greedy choice that meets all with the fewest lanes goes), a lane at the
+// end farthest from the boundary its strip must reach. Lines are at most s apart, so the spacing
+// holds; the outer windows keep the cell's edges covered.
+// A cut or a step inside the cell (windows [2, innerEnd)) gets no lane of its own: the shared lines
+// run on (the neighbour cell's line beyond the cut covers what the line below leaves, on the same
+// lattice), and what they leave beside a zone's edge there (a wedge less than half a spacing deep)
+// goes to spot photos (plan::chooseSpotPhotos), flown where they cost least; a lane per such window
+// cost more turns than that on the generated areas (measured in the sweep note). The cell's bottom
+// and top windows and the heights others lean on keep their lanes; the planner checks the finished
+// plan's coverage before it prefers shared lines.
+std::vector<double> onSharedLines(const std::vector<Window>& w, std::size_t innerEnd,
+                                  const SweepLaneParams& p, double ylo, double yhi, double eps) {
+    std::vector<double> ys(std::lower_bound(p.sharedLines.begin(), p.sharedLines.end(), ylo + eps),
+                           std::upper_bound(p.sharedLines.begin(), p.sharedLines.end(), yhi - eps));
+    std::vector<Window> need;
+    for (std::size_t wi = 0; wi < w.size(); ++wi) {
+        const auto& x = w[wi];
+        const bool inner = !ys.empty() && wi >= 2 && wi < innerEnd;
+        if (!x.optional && !inner)
+            need.push_back(x);
+    }
+    std::sort(need.begin(), need.end(),
+              [](const Window& a, const Window& b) { return a.hi < b.hi; });
+    for (const auto& x : need)
+        if (std::none_of(ys.begin(), ys.end(),
+                         [&](double y) { return y >= x.lo - 1e-12 && y <= x.hi + 1e-12; }))
+            ys.push_back(x.coversUp ? x.lo : x.hi);
+    std::sort(ys.begin(), ys.end());
+    return ys;
+}
+
+// The fewest lanes placed in the windows: windows kept for time only are dropped when that saves
+// a lane.
+std::vector<double> fewestLanes(const std::vector<Window>& w, double ylo, double yhi, double et,
+                                double s, double eps) {
+    const std::vector<double> all = place(w, ylo, yhi, et, s, eps);
+    if (std::none_of(w.begin(), w.end(), [](const Window& x) { return x.optional; }))
+        return all;
+    std::vector<Window> needed;
+    for (const auto& x : w)
+        if (!x.optional)
+            needed.push_back(x);
+    const std::vector<double> fewer = place(needed, ylo, yhi, et, s, eps);
+    return fewer.size() < all.size() ? fewer : all;
+}
+
+} // namespace
+
+std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m,
+                                const SweepLaneParams& p, const SweepGround& ground,
+                                std::optional<double> coverFrom, std::optional<double> coverTo,
+                                const std::vector<double>& fixed) {
+    const auto& first = d.cells[static_cast<std::size_t>(m.parts.front())];
+    const auto& last = d.cells[static_cast<std::size_t>(m.parts.back())];
+    const double ylo = first.ylo, yhi = last.yhi, s = p.trackSpacingM;
+    if (yhi - ylo <= 0.04)
+        return {0.5 * (ylo + yhi)};
+    const double eps = 0.01;
+    const double cap = 0.5 * s - 2 * eps;
+    // The heights the outer strips must reach.
+    const double from =
+        coverFrom ? *coverFrom : ylo - std::min(cap, contactReach(d, first, false, p, ground));
+    const double to =
+        coverTo ? *coverTo : yhi + std::min(cap, contactReach(d, last, true, p, ground));
+    if (m.parts.size() == 1 && from >= to && fixed.empty())
+        return {};
+    const double et = to - yhi;
+    std::vector<Window> w;
+    w.push_back(Window{ylo + eps, from + 0.5 * s});
+    w.push_back(Window{to - 0.5 * s, yhi - eps, false, true});
+    cutWindows(d, m, p, ground, cap, eps, w);
+    stepWindows(d, m, p, ground, cap, eps, w);
     const std::size_t innerEnd = w.size(); // w[0], w[1]: the outer windows; then the cuts' and steps'
     for (double y : fixed)
         w.push_back(Window{y, y});
@@ -318,45 +278,9 @@ std::vector<double> laneHeights(const Decomposition& d, const MergedCell& m, con
         if (win.lo > win.hi)
             win.lo = win.hi;
     }
-    if (!p.sharedLines.empty()) {
-        // The shared lines within the cell, then, for every window no lane meets yet (by their
-        // upper ends, as the greedy choice that meets all with the fewest lanes goes), a lane at
-        // the end farthest from the boundary its strip must reach. Lines are at most s apart, so
-        // the spacing holds; the outer windows keep the cell's edges covered.
-        std::vector<double> ys(
-            std::lower_bound(p.sharedLines.begin(), p.sharedLines.end(), ylo + eps),
-            std::upper_bound(p.sharedLines.begin(), p.sharedLines.end(), yhi - eps));
-        // A cut or a step inside the cell gets no lane of its own: the shared lines run on (the
-        // neighbour cell's line beyond the cut covers what the line below leaves, on the same
-        // lattice), and what they leave beside a zone's edge there (a wedge less than half a spacing
-        // deep) goes to spot photos (plan::chooseSpotPhotos), flown where they cost least; a lane per
-        // such window cost more turns than that on the generated areas (measured in the sweep note).
-        // The cell's bottom and top windows and the heights others lean on keep their lanes; the
-        // planner checks the finished plan's coverage before it prefers shared lines.
-        std::vector<Window> need;
-        for (std::size_t wi = 0; wi < w.size(); ++wi) {
-            const auto& x = w[wi];
-            const bool inner = !ys.empty() && wi >= 2 && wi < innerEnd;
-            if (!x.optional && !inner)
-                need.push_back(x);
-        }
-        std::sort(need.begin(), need.end(), [](const Window& a, const Window& b) { return a.hi < b.hi; });
-        for (const auto& x : need)
-            if (std::none_of(ys.begin(), ys.end(), [&](double y) { return y >= x.lo - 1e-12 && y <= x.hi + 1e-12; }))
-                ys.push_back(x.coversUp ? x.lo : x.hi);
-        std::sort(ys.begin(), ys.end());
-        return ys;
-    }
-    // Windows kept for time only are dropped when that saves a lane.
-    const std::vector<double> all = place(w, ylo, yhi, et, s, eps);
-    if (std::none_of(w.begin(), w.end(), [](const Window& x) { return x.optional; }))
-        return all;
-    std::vector<Window> needed;
-    for (const auto& x : w)
-        if (!x.optional)
-            needed.push_back(x);
-    const std::vector<double> fewer = place(needed, ylo, yhi, et, s, eps);
-    return fewer.size() < all.size() ? fewer : all;
+    if (!p.sharedLines.empty())
+        return onSharedLines(w, innerEnd, p, ylo, yhi, eps);
+    return fewestLanes(w, ylo, yhi, et, s, eps);
 }
 
 std::vector<std::vector<double>> allLaneHeights(const Decomposition& d, const std::vector<MergedCell>& merged,

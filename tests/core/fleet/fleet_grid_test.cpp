@@ -210,7 +210,7 @@ TEST(FleetOnGrid, BalanceWithTheStridePlannerWithinTenPercent) {
         const geo::Vec2 home(-20, -20);
         auto estimate = [&](int k, const std::vector<int>& cells) -> Result<double> {
             auto ap = mission::planRegion(cellsPolygon(b, cells, g->admissible()), noFly,
-                                          cfg[static_cast<std::size_t>(k)], po, *frame, home);
+                                          cfg[static_cast<std::size_t>(k)], po, home);
             if (!ap)
                 return ap.error();
             return ap->metrics.estimatedTimeS;
@@ -261,7 +261,7 @@ TEST(FleetOnGrid, DemoSiteEndToEndCoveredAndSafe) {
     po.safetyMarginM = margin;
     std::vector<AircraftPhotos> photos;
     for (std::size_t k = 0; k < cfg.size(); ++k) {
-        auto ap = mission::planRegion(subareas[k], site.noFly, cfg[k], po, *frame, site.home);
+        auto ap = mission::planRegion(subareas[k], site.noFly, cfg[k], po, site.home);
         ASSERT_TRUE(ap.ok()) << ap.error().message;
         AircraftPhotos a;
         a.waypoints = ap->localWaypoints;
@@ -320,12 +320,15 @@ TEST(SplitArea, DemoSiteWithThePlannerAsEstimator) {
     po.safetyMarginM = 5;
     AreaSplitOptions opt;
     opt.safetyMarginM = 5;
-    auto split = splitArea(site.area, site.noFly, caps, opt, [&](int k, const geo::MultiPolygon& region) -> Result<double> {
-        auto ap = mission::planRegion(region, site.noFly, cfg[static_cast<std::size_t>(k)], po, *frame, site.home);
-        if (!ap)
-            return ap.error();
-        return ap->metrics.estimatedTimeS;
-    });
+    auto split = splitArea(site.area, site.noFly, caps, opt,
+                           [&](int k, const geo::MultiPolygon& region) -> Result<double> {
+                               auto ap = mission::planRegion(region, site.noFly,
+                                                             cfg[static_cast<std::size_t>(k)], po,
+                                                             site.home);
+                               if (!ap)
+                                   return ap.error();
+                               return ap->metrics.estimatedTimeS;
+                           });
     ASSERT_TRUE(split.ok()) << split.error().message;
     ASSERT_EQ(split->subareas.size(), 3u);
     ASSERT_TRUE(split->balance.has_value());

@@ -246,10 +246,14 @@ TEST(CatalogErrors, EntriesAreNamed) {
     EXPECT_EQ(errorOfText(catalogText(kCam, R"({"name": "NoTime", "cruise_speed_mps": 5, "turn_rate_deg_s": 90,
         "max_altitude_m": 120})")),
               "c.json: aircraft[0] (\"NoTime\"): endurance_min: missing required field");
-    EXPECT_EQ(errorOfText(catalogText(kCam, R"({"name": "Typo", "cruise_speed_mps": 5, "turn_rate_deg_s": 90,
+    EXPECT_EQ(
+        errorOfText(
+            catalogText(kCam, R"({"name": "Typo", "cruise_speed_mps": 5, "turn_rate_deg_s": 90,
         "endurance_min": 25, "max_altitude_m": 120, "default_camer": "Cam"})")),
-              "c.json: aircraft[0] (\"Typo\"): default_camer: unknown field (known here: name, cruise_speed_mps, "
-              "turn_rate_deg_s, acceleration_mps2, endurance_min, max_altitude_m, default_camera)");
+        "c.json: aircraft[0] (\"Typo\"): default_camer: unknown field (known here: name, kind, "
+        "cruise_speed_mps, turn_rate_deg_s, acceleration_mps2, endurance_min, max_altitude_m, "
+        "plane, "
+        "default_camera)");
     EXPECT_EQ(errorOfText(R"({"format": "photoflight-catalog", "version": 1, "aircraft": {}})"),
               "c.json: aircraft: expected an array but found an object");
 }

@@ -392,10 +392,13 @@ TEST(MissionFileErrors, MisspeltFieldsAreNotIgnored) {
     EXPECT_EQ(errorOf(with(kMinimal, "\"planner\": \"stride\"", "\"planner\": \"stride\", \"safety_margin\": 20")),
               "x.json: planner.safety_margin: unknown field (known here: planner, grid_angle_deg, safety_margin_m, "
               "keep_inside_area, inside_margin_m, altitude_separation_m, battery_reserve, max_cells)");
-    EXPECT_EQ(errorOf(with(kMinimal, "\"altitude_m\": 50.0", "\"altitude_m\": 50.0, \"front_overlpa\": 0.8")),
-              "x.json: aircraft[0].front_overlpa: unknown field (known here: name, model, camera, altitude_m, gsd_cm, "
-              "front_overlap, side_overlap, cruise_speed_mps, turn_rate_deg_s, acceleration_mps2, endurance_min, "
-              "max_altitude_m, colour, home)");
+    EXPECT_EQ(errorOf(with(kMinimal, "\"altitude_m\": 50.0",
+                           "\"altitude_m\": 50.0, \"front_overlpa\": 0.8")),
+              "x.json: aircraft[0].front_overlpa: unknown field (known here: name, model, kind, "
+              "camera, altitude_m, "
+              "gsd_cm, front_overlap, side_overlap, cruise_speed_mps, turn_rate_deg_s, "
+              "acceleration_mps2, "
+              "endurance_min, max_altitude_m, plane, colour, home)");
     // "note" is allowed anywhere for the user's remarks.
     EXPECT_EQ(errorOf(with(kMinimal, "\"name\": \"t\",", "\"name\": \"t\", \"note\": \"surveyed twice\",")),
               "<parsed>");

@@ -98,3 +98,35 @@ TEST(PlanCancel, AutomaticFleetPlanStopsItsWorkerThreads) {
     EXPECT_EQ(plan.error().code, ErrorCode::Cancelled);
     EXPECT_LT(took, 0.5 * whole) << "the whole plan took " << whole << " s";
 }
+
+// The demo at 3.5 m with one more zone spends most of its plan sharing the area between its two
+// aircraft (estimates of each subarea's flight time, then a plan of each split tried). Cancelled as
+// an estimate or a split's plan begins, the plan returns Cancelled at its next check: no stage
+// reports after the cancel, and it returns within a fraction of a second, where the sharing had
+// seconds to go.
+TEST(PlanCancel, SharingTheAreaStopsAtItsNextCheck) {
+    auto m = pf::test::lowDemoWithZone(PF_RESOURCES_DIR);
+    ASSERT_TRUE(m.ok()) << m.error().message;
+    for (const std::string stage :
+         {"sharing the area: estimating flight times", "sharing the area: planning split 1"}) {
+        Clock::time_point cancelledAt;
+        int reportsAfter = 0;
+        Progress* self = nullptr;
+        Progress progress([&](double, const std::string& s) {
+            if (self->cancelled())
+                ++reportsAfter;
+            else if (s == stage) {
+                cancelledAt = Clock::now();
+                self->cancel();
+            }
+        });
+        self = &progress;
+        auto plan = planMission(*m, &progress);
+        const double latency = std::chrono::duration<double>(Clock::now() - cancelledAt).count();
+        ASSERT_TRUE(progress.cancelled()) << stage;
+        ASSERT_FALSE(plan) << stage;
+        EXPECT_EQ(plan.error().code, ErrorCode::Cancelled) << stage;
+        EXPECT_EQ(reportsAfter, 0) << stage;
+        EXPECT_LT(latency, 0.5) << stage;
+    }
+}

@@ -23,12 +23,13 @@ std::vector<LocalWaypoint> photoLine(int x0, int x1) {
     }
     return out;
 }
-// Paper 004's model alone: no stop at the turns (infinite acceleration).
+// Paper 004's model alone: no stop at the turns (infinite acceleration, no hold).
 FlightModel noStops(double speed, double turnRate) {
     FlightModel m;
     m.speedMps = speed;
     m.turnRateDegS = turnRate;
     m.accelerationMps2 = std::numeric_limits<double>::infinity();
+    m.stopHoldS = 0.0;
     return m;
 }
 } // namespace

@@ -428,12 +428,14 @@ TEST(SweepPlanner, SharedLinesNeverLeaveMoreUnseenOnTheEvalSet) {
     EXPECT_GE(kept, 10);
 }
 
-// The Survey's direction (the lawnmower's fastest angle over the outline, zones ignored) is planned in
-// full besides the directions the quick estimate ranks best. On the eval's generated set the estimate,
-// which sees cells and not the flow of lanes round the zones, ranked it outside its best three on many
-// areas where it flies fastest: with it the set flies sooner in total and in the median, a few areas a
-// little later (the planned directions are compared by the search's time, before spot photos), none
-// by much; the plans stay safe and complete.
+// The Survey's direction (the lawnmower's fastest angle over the outline, zones ignored) is planned
+// in full besides the directions the quick estimate ranks best. On the eval's generated set the
+// estimate, which sees cells and not the flow of lanes round the zones, ranked it outside its best
+// three on many areas where it flies fastest: with it the set flies sooner in total and in the
+// median, a few areas a little later (the planned directions are compared by the search's time,
+// before spot photos), none by much; the plans stay safe and complete. The saving in total was over
+// 2 % when the time model stopped at every turn; with corners flown through (detours round zones
+// cost less) it is 1.4 %.
 TEST(SweepPlanner, SurveyDirectionPlannedAndFasterOnTheEvalSet) {
     const Camera cam;
     double withTotal = 0, withoutTotal = 0;
@@ -461,7 +463,7 @@ TEST(SweepPlanner, SurveyDirectionPlannedAndFasterOnTheEvalSet) {
                 "%d of %zu areas\n",
                 withTotal / withoutTotal, median(ratios), *std::min_element(ratios.begin(), ratios.end()),
                 *std::max_element(ratios.begin(), ratios.end()), chosen, ratios.size());
-    EXPECT_LT(withTotal, 0.98 * withoutTotal);
+    EXPECT_LT(withTotal, 0.99 * withoutTotal);
     EXPECT_LE(median(ratios), 1.0);
     EXPECT_GE(chosen, 6);
 }
