@@ -524,8 +524,9 @@ void MainWindow::buildPlanning() {
 
     // The running plan's progress with Cancel, and the notice of a plan waiting for the user.
     m_progress = new PlanProgressWidget(m_planner);
-    statusBar()->insertPermanentWidget(0, m_progress);
-    statusBar()->insertPermanentWidget(0, new PlanNotice(m_planner));
+    // First of the permanent widgets: index 1, after the hint label (the one normal widget).
+    statusBar()->insertPermanentWidget(1, m_progress);
+    statusBar()->insertPermanentWidget(1, new PlanNotice(m_planner));
     connect(m_planner, &PlanController::message, this, [this](const QString& text) { statusBar()->showMessage(text, 8000); });
 
     // Docks: statistics and comparison on the right, waypoints and problems below the map.
