@@ -28,6 +28,7 @@
 #include "ui/planning/planning_toolbar.h"
 #include "ui/terrain/terrain_controller.h"
 #include "ui/tools/draw_circle_tool.h"
+#include "ui/tools/draw_corridor_tool.h"
 #include "ui/tools/draw_polygon_tool.h"
 #include "ui/tools/home_tool.h"
 #include "ui/tools/pan_tool.h"
@@ -97,13 +98,13 @@ MainWindow::MainWindow(QWidget* parent, bool interactive) : QMainWindow(parent),
     m_tools[ToolId::DrawArea] = new DrawPolygonTool(DrawPolygonTool::Target::Area, m_doc, m_layer, this);
     m_tools[ToolId::DrawNoFly] = new DrawPolygonTool(DrawPolygonTool::Target::NoFlyZone, m_doc, m_layer, this);
     m_tools[ToolId::DrawCircle] = new DrawCircleTool(m_doc, m_layer, this);
+    m_tools[ToolId::DrawCorridor] = new DrawCorridorTool(m_doc, m_layer, this);
     m_tools[ToolId::Home] = new HomeTool(m_doc, m_layer, this);
     m_tools[ToolId::Waypoints] = new WaypointTool(m_doc, m_layer, m_planLayer, this);
     for (auto& [id, tool] : m_tools)
         connect(tool, &AbstractTool::statusMessage, this, &MainWindow::showHint);
 
-    // The tools' hints and messages wrap onto a second line rather than be cut off where the
-    // permanent widgets begin (a status bar's own message is one line).
+    // Tool hints wrap rather than be cut off (a status bar's own message is one line).
     m_hint = new QLabel;
     m_hint->setObjectName(QStringLiteral("HintLabel"));
     m_hint->setWordWrap(true);
@@ -227,8 +228,9 @@ void MainWindow::buildActions() {
     // Tools
     QMenu* toolsMenu = menuBar()->addMenu(tr("&Tools"));
     auto* toolGroup = new QActionGroup(this);
-    const ToolId order[] = {ToolId::Pan,        ToolId::Select, ToolId::DrawArea, ToolId::DrawNoFly,
-                            ToolId::DrawCircle, ToolId::Home,   ToolId::Waypoints};
+    const ToolId order[] = {ToolId::Pan,       ToolId::Select,     ToolId::DrawArea,
+                            ToolId::DrawNoFly, ToolId::DrawCircle, ToolId::DrawCorridor,
+                            ToolId::Home,      ToolId::Waypoints};
     for (ToolId id : order) {
         AbstractTool* t = m_tools.at(id);
         auto* a = toolsMenu->addAction(t->icon(), t->name());
@@ -363,15 +365,14 @@ void MainWindow::buildDocks() {
     // One column of tabs on the right keeps the map tall; the plan's docks go below it.
     tabifyDockWidget(aircraftDock, missionDock);
     tabifyDockWidget(missionDock, historyDock);
-    // The Mosaic dock, hidden until a mosaic is shown, is a tab there too (View > Mosaic).
-    auto* mosaicDock = m_mosaic->createPanel();
     aircraftDock->raise();
     resizeDocks({aircraftDock}, {360}, Qt::Horizontal);
 
     m_viewMenu->addAction(aircraftDock->toggleViewAction());
     m_viewMenu->addAction(missionDock->toggleViewAction());
     m_viewMenu->addAction(historyDock->toggleViewAction());
-    m_viewMenu->addAction(mosaicDock->toggleViewAction());
+    // The Mosaic dock: a tab on the right too, hidden until a mosaic is shown.
+    m_viewMenu->addAction(m_mosaic->createPanel()->toggleViewAction());
 }
 
 QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWidget* widget, Qt::DockWidgetArea area) {
@@ -514,18 +515,17 @@ void MainWindow::buildPlanning() {
     planMenu->addAction(m_planning->autoPlanAction());
     planMenu->addSeparator();
     planMenu->addAction(m_planning->keepInsideAction());
+    planMenu->addAction(m_planning->doubleGridAction());
     planMenu->addAction(icon("compare"), tr("Co&mpare planners"), m_planner, &PlanController::compare);
     planMenu->addSeparator();
     planMenu->addAction(exportAct);
     planMenu->addAction(tr("&Open waypoint file…"), m_files, &MissionFiles::askOpenWaypointFile);
-    // Where files are written, users look in File too.
     exportAct->setObjectName(QStringLiteral("ExportAction"));
-    m_afterImport->parentWidget()->insertAction(m_afterImport, exportAct);
+    m_afterImport->parentWidget()->insertAction(m_afterImport, exportAct); // in File too
 
     // The running plan's progress with Cancel, and the notice of a plan waiting for the user.
     m_progress = new PlanProgressWidget(m_planner);
-    // First of the permanent widgets: index 1, after the hint label (the one normal widget).
-    statusBar()->insertPermanentWidget(1, m_progress);
+    statusBar()->insertPermanentWidget(1, m_progress); // 1: first after the hint label
     statusBar()->insertPermanentWidget(1, new PlanNotice(m_planner));
     connect(m_planner, &PlanController::message, this, [this](const QString& text) { statusBar()->showMessage(text, 8000); });
 

@@ -38,7 +38,7 @@ class WaypointPanel;
 class TileLayer;
 class TileSource;
 
-enum class ToolId { Pan, Select, DrawArea, DrawNoFly, DrawCircle, Home, Waypoints };
+enum class ToolId { Pan, Select, DrawArea, DrawNoFly, DrawCircle, DrawCorridor, Home, Waypoints };
 
 class MainWindow : public QMainWindow {
     Q_OBJECT

@@ -1,6 +1,7 @@
 #include "ui/mission_document.h"
 
 #include "core/io/mission_file.h"
+#include "core/mission/corridor.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -100,17 +101,28 @@ bool MissionDocument::save(const QString& path, QString* error) {
 
 geo::GeoPolygon MissionDocument::shape(const ShapeRef& ref) const {
     if (ref.kind == ShapeRef::Kind::Area) return m_mission.area;
+    if (ref.kind == ShapeRef::Kind::Corridor)
+        return m_mission.corridor ? geo::GeoPolygon{m_mission.corridor->line, {}}
+                                  : geo::GeoPolygon{};
     return hasShape(ref) ? m_mission.noFlyZones[std::size_t(ref.index)].polygon : geo::GeoPolygon{};
 }
 
 bool MissionDocument::hasShape(const ShapeRef& ref) const {
     if (ref.kind == ShapeRef::Kind::Area) return !m_mission.area.outer.empty();
+    if (ref.kind == ShapeRef::Kind::Corridor)
+        return m_mission.corridor.has_value();
     return ref.index >= 0 && std::size_t(ref.index) < m_mission.noFlyZones.size();
 }
 
 void MissionDocument::setShape(const ShapeRef& ref, const geo::GeoPolygon& poly) {
     if (ref.kind == ShapeRef::Kind::Area) {
         setArea(poly);
+        return;
+    }
+    if (ref.kind == ShapeRef::Kind::Corridor) {
+        mission::Corridor c = m_mission.corridor.value_or(mission::Corridor{});
+        c.line = poly.outer;
+        setCorridor(c);
         return;
     }
     auto zone = m_mission.noFlyZones.at(std::size_t(ref.index));
@@ -120,6 +132,12 @@ void MissionDocument::setShape(const ShapeRef& ref, const geo::GeoPolygon& poly)
 
 void MissionDocument::setArea(const geo::GeoPolygon& area) {
     m_mission.area = area;
+    emit areaChanged();
+    emit changed();
+}
+
+void MissionDocument::setCorridor(const std::optional<mission::Corridor>& corridor) {
+    mission::applyCorridor(m_mission, corridor);
     emit areaChanged();
     emit changed();
 }

@@ -10,13 +10,16 @@
 
 namespace pf::ui {
 
-// Addresses one editable polygon of the mission: the area or a no-fly zone.
+// Addresses one editable shape of the mission: the area, a no-fly zone or the corridor's centre
+// line (its vertices as the "outer ring" of an open shape: the vertex commands edit it as they edit
+// a ring).
 struct ShapeRef {
-    enum class Kind { Area, NoFlyZone };
+    enum class Kind { Area, NoFlyZone, Corridor };
     Kind kind = Kind::Area;
-    int index = 0; // no-fly zone index; 0 for the area
+    int index = 0; // no-fly zone index; 0 for the area and the corridor
     static ShapeRef area() { return {Kind::Area, 0}; }
     static ShapeRef noFly(int i) { return {Kind::NoFlyZone, i}; }
+    static ShapeRef corridor() { return {Kind::Corridor, 0}; }
     friend bool operator==(const ShapeRef& a, const ShapeRef& b) { return a.kind == b.kind && a.index == b.index; }
     friend bool operator!=(const ShapeRef& a, const ShapeRef& b) { return !(a == b); }
 };
@@ -54,6 +57,9 @@ public:
     bool hasShape(const ShapeRef& ref) const;
     void setShape(const ShapeRef& ref, const geo::GeoPolygon& poly);
     void setArea(const geo::GeoPolygon& area);
+    // The corridor (its line and width) and with it the area, its ground; nullopt: an area mission
+    // again, without an area.
+    void setCorridor(const std::optional<mission::Corridor>& corridor);
     void insertNoFlyZone(int index, const mission::NoFlyZone& zone);
     void removeNoFlyZone(int index);
     void setNoFlyZone(int index, const mission::NoFlyZone& zone);

@@ -5,11 +5,14 @@
 #include "core/io/area_import.h"
 #include "core/io/mission_file.h"
 #include "core/io/waypoint_formats.h"
+#include "core/mission/corridor.h"
 #include "ui/autosave.h"
 #include "ui/commands/add_no_fly_zone_command.h"
 #include "ui/commands/replace_route_command.h"
 #include "ui/commands/set_area_command.h"
+#include "ui/commands/set_corridor_command.h"
 #include "ui/mission_document.h"
+#include "ui/tools/draw_corridor_tool.h"
 
 #include <QPushButton>
 #include <QCoreApplication>
@@ -24,6 +27,8 @@
 #include <QStatusBar>
 #include <QUndoStack>
 
+#include <algorithm>
+
 namespace pf::ui {
 
 namespace {
@@ -31,8 +36,28 @@ namespace {
 constexpr int kMaxRecent = 8;
 
 QString importFilter() {
-    return QCoreApplication::translate("MainWindow",
-                                       "Areas (*.geojson *.json *.kml *.shp *.gpkg *.gml);;All files (*)");
+    return QCoreApplication::translate(
+        "MainWindow", "Areas and corridor lines (*.geojson *.json *.kml *.gpx *.shp "
+                      "*.gpkg *.gml);;All files (*)");
+}
+
+// A file with lines and no polygon: its longest line becomes the corridor's centre line (one undo
+// step), at the width the next corridor gets. Returns false when the file holds no line either.
+bool importCorridorLine(MissionDocument* doc, const QString& path) {
+    auto lines = io::importLines(path.toStdString());
+    if (!lines || lines->empty())
+        return false;
+    const auto longest =
+        std::max_element(lines->begin(), lines->end(), [](const auto& a, const auto& b) {
+            return mission::corridorLengthM({a.line, 1.0}) <
+                   mission::corridorLengthM({b.line, 1.0});
+        });
+    const mission::Corridor c{longest->line, DrawCorridorTool::corridorWidthM(doc)};
+    doc->undoStack()->push(
+        new SetCorridorCommand(doc, c,
+                               QCoreApplication::translate("MainWindow", "Import corridor %1")
+                                   .arg(QString::fromStdString(longest->name))));
+    return true;
 }
 
 } // namespace
@@ -245,6 +270,15 @@ bool MissionFiles::maybeSave() {
 
 int MissionFiles::importAreas(const QString& path, ImportRole role, QString* error) {
     auto imported = io::importPolygons(path.toStdString());
+    if (!imported && imported.error().code == ErrorCode::InvalidGeometry &&
+        importCorridorLine(m_doc, path)) {
+        showStatus(
+            tr("Imported a corridor's centre line from %1: set its width in the Mission dock")
+                .arg(QFileInfo(path).fileName()),
+            8000);
+        emit missionShown();
+        return 1;
+    }
     if (!imported) {
         fail(error, tr("Import"), QString::fromStdString(imported.error().message));
         return 0;

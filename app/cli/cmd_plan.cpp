@@ -339,6 +339,11 @@ int runPlan(const std::vector<std::string>& argv) {
         plan->uncoveredAreaM2, plan->makespanS / 60.0, plan->idealS / 60.0,
         plan->idealS > 0 ? plan->makespanS / plan->idealS : 1.0, plan->noFlyViolations);
     std::cout << line;
+    if (plan->passCoverage.size() == 2) { // a double grid: every point seen by each pass
+        std::snprintf(line, sizeof line, "coverage per pass of the double grid: %.2f %%, %.2f %%\n",
+                      100.0 * plan->passCoverage[0], 100.0 * plan->passCoverage[1]);
+        std::cout << line;
+    }
     if (!plan->plannerChoice.empty())
         std::cout << "planner: " << plan->plannerChoice << '\n';
     for (const auto& a : plan->aircraft) {

@@ -3,6 +3,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/mission_args.h"
 
+#include "core/mission/corridor.h"
 #include "core/mission/memory_estimate.h"
 #include "core/mission/terrain_stage.h"
 #include "core/mission/validation.h"
@@ -87,6 +88,10 @@ int runValidate(const std::vector<std::string>& argv) {
                << " waypoints";
         os << "), read but not checked here; 'plan' does not use them\n";
     }
+    if (m.corridor) // its ground is the area below
+        os << "Corridor:         " << fmt("%.2f", mission::corridorLengthM(*m.corridor) / 1000.0) << " km x "
+           << fmt("%.0f", m.corridor->widthM) << " m, " << m.corridor->line.size() << " points"
+           << (mission::plansCorridorLanes(m) ? " (lanes along the line)" : " (planned as an area)") << "\n";
     os << "Area:             " << grouped(r.areaM2) << " m² (" << fmt("%.2f", r.areaM2 / 10000.0) << " ha)\n";
     os << "Admissible area:  " << grouped(r.admissibleAreaM2) << " m² (area minus " << m.noFlyZones.size()
        << " no-fly zone" << (m.noFlyZones.size() == 1 ? "" : "s") << ")\n";

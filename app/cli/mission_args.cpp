@@ -4,6 +4,7 @@
 #include "core/io/catalog.h"
 #include "core/io/mission_file.h"
 #include "core/mission/aircraft_naming.h"
+#include "core/mission/corridor.h"
 #include "core/mission/planner_kinds.h"
 
 #include <algorithm>
@@ -19,10 +20,17 @@ namespace pf::cli {
 const char* const kMissionOptionsHelp = PF_CLI_MISSION_OPTIONS_HELP;
 
 std::vector<OptionSpec> missionOptionSpecs() {
-    return {{"area"},     {"nofly", true, true}, {"camera"},      {"hfov"},    {"vfov"},
-            {"altitude"}, {"gsd"},               {"overlap"},     {"front"},   {"side"},
-            {"planner"},  {"grid-angle"},        {"home"},        {"aircraft", true, true},
-            {"safety-margin"}, {"max-cells"}, {"dem"}, {"terrain"}, {"min-clearance"}};
+    return {{"area"},          {"nofly", true, true},
+            {"camera"},        {"hfov"},
+            {"vfov"},          {"altitude"},
+            {"gsd"},           {"overlap"},
+            {"front"},         {"side"},
+            {"planner"},       {"grid-angle"},
+            {"home"},          {"aircraft", true, true},
+            {"safety-margin"}, {"max-cells"},
+            {"dem"},           {"terrain"},
+            {"min-clearance"}, {"corridor"},
+            {"width"},         {"double-grid", false}};
 }
 
 namespace {
@@ -134,12 +142,13 @@ bool isMissionFile(const std::string& path) {
     return !geoJson;
 }
 
-Status applyMissionFlags(const Args& args, MissionInput& in) {
-    mission::Mission& m = in.mission;
-    std::optional<io::Catalog> catalog;
-    Error err;
+namespace {
 
-    // 2. Aircraft: replaced by --aircraft, or a default one when the file gave none.
+// --aircraft: the mission's aircraft replaced (each NAME[:ALT_M] from the catalog), or a default
+// one when the file gave none.
+Status aircraftFromFlags(const Args& args, MissionInput& in, std::optional<io::Catalog>& catalog) {
+    mission::Mission& m = in.mission;
+    Error err;
     const auto aircraftFlags = args.values("aircraft");
     if (!aircraftFlags.empty()) {
         const io::Catalog* cat = catalogOrError(catalog, &err);
@@ -186,22 +195,28 @@ Status applyMissionFlags(const Args& args, MissionInput& in) {
             in.notes.push_back("no aircraft given: using the catalog's " + s.name);
         }
     }
-    // Unique labels when the same model flies twice.
+    return {};
+}
+
+// Aircraft given with --aircraft: unique labels when the same model flies twice, and the colours in
+// their order.
+void labelFlagAircraft(mission::Mission& m) {
     for (std::size_t i = 0; i < m.aircraft.size(); ++i) {
         const auto same = std::count_if(m.aircraft.begin(), m.aircraft.end(),
                                         [&](const auto& b) { return b.model == m.aircraft[i].model; });
-        if (!aircraftFlags.empty()) {
-            if (same > 1) {
-                std::vector<std::string> taken;
-                for (std::size_t j = 0; j < i; ++j)
-                    taken.push_back(m.aircraft[j].name);
-                m.aircraft[i].name = mission::numberedAircraftName(m.aircraft[i].model, taken);
-            }
-            m.aircraft[i].colour = mission::aircraftColour(i);
+        if (same > 1) {
+            std::vector<std::string> taken;
+            for (std::size_t j = 0; j < i; ++j)
+                taken.push_back(m.aircraft[j].name);
+            m.aircraft[i].name = mission::numberedAircraftName(m.aircraft[i].model, taken);
         }
+        m.aircraft[i].colour = mission::aircraftColour(i);
     }
+}
 
-    // 3. Camera, altitude, overlaps: for every aircraft.
+// --camera NAME or --hfov/--vfov: one camera for every aircraft.
+Status cameraFromFlags(const Args& args, mission::Mission& m, std::optional<io::Catalog>& catalog) {
+    Error err;
     if (auto c = args.value("camera")) {
         if (args.has("hfov") || args.has("vfov"))
             return flagError("camera", "give either --camera or --hfov/--vfov, not both");
@@ -237,7 +252,13 @@ Status applyMissionFlags(const Args& args, MissionInput& in) {
             a.camera = cam;
         }
     }
+    return {};
+}
 
+// --altitude or --gsd for every aircraft that has no altitude of its own from --aircraft; the
+// default altitude (with a note) for an aircraft that has neither.
+Status altitudeFromFlags(const Args& args, MissionInput& in, bool ownAltitudes) {
+    mission::Mission& m = in.mission;
     // No upper bound here: validation names the aircraft's maximum altitude an altitude exceeds.
     auto altitude = numberIn(args, "altitude", 0, true, HUGE_VAL, false, "greater than 0 m");
     if (!altitude)
@@ -249,7 +270,7 @@ Status applyMissionFlags(const Args& args, MissionInput& in) {
         return flagError("gsd", "give either --altitude or --gsd, not both");
     for (std::size_t i = 0; i < m.aircraft.size(); ++i) {
         auto& a = m.aircraft[i];
-        const bool ownAltitude = !aircraftFlags.empty() && a.altitudeM.has_value();
+        const bool ownAltitude = ownAltitudes && a.altitudeM.has_value();
         if (altitude->has_value() && !ownAltitude) {
             a.altitudeM = **altitude;
             a.gsdCm.reset();
@@ -261,7 +282,11 @@ Status applyMissionFlags(const Args& args, MissionInput& in) {
             in.notes.push_back("no altitude given for " + a.name + ": using " + num(*a.altitudeM) + " m");
         }
     }
+    return {};
+}
 
+// --overlap, or --front and --side apart, for every aircraft.
+Status overlapFromFlags(const Args& args, mission::Mission& m) {
     const std::string overlapRange = "in [0, 1), e.g. 0.7 for 70 %";
     auto overlap = numberIn(args, "overlap", 0, false, 1, true, overlapRange);
     if (!overlap)
@@ -282,8 +307,12 @@ Status applyMissionFlags(const Args& args, MissionInput& in) {
         if (side->has_value())
             a.overlap.side = **side;
     }
+    return {};
+}
 
-    // 4. Planner options and points.
+// Planner options and points: --planner, --grid-angle, --double-grid, --home, --safety-margin,
+// --max-cells.
+Status plannerFromFlags(const Args& args, mission::Mission& m) {
     if (auto p = args.value("planner")) {
         if (auto k = mission::plannerKindFromId(*p))
             m.options.planner = *k;
@@ -300,6 +329,8 @@ Status applyMissionFlags(const Args& args, MissionInput& in) {
             m.options.gridAngleDeg = **v;
         }
     }
+    if (args.has("double-grid"))
+        m.options.doubleGrid = true;
     if (auto h = args.value("home")) {
         auto p = parseLonLat(*h, "--home");
         if (!p)
@@ -319,7 +350,10 @@ Status applyMissionFlags(const Args& args, MissionInput& in) {
             return flagError("max-cells", "must be a whole number of cells (got " + num(**cells) + ")");
         m.options.maxCells = static_cast<std::size_t>(**cells);
     }
+    return {};
+}
 
+Status terrainFromFlags(const Args& args, mission::Mission& m) {
     // 5. Terrain: a DEM alone turns following on (what a user giving one wants); --terrain off keeps
     // the flat world with the DEM known.
     if (auto d = args.value("dem")) {
@@ -352,6 +386,73 @@ Status applyMissionFlags(const Args& args, MissionInput& in) {
     }
     return {};
 }
+
+} // namespace
+
+Status applyMissionFlags(const Args& args, MissionInput& in) {
+    std::optional<io::Catalog> catalog;
+    if (auto st = aircraftFromFlags(args, in, catalog); !st)
+        return st;
+    const bool aircraftGiven = args.has("aircraft");
+    if (aircraftGiven)
+        labelFlagAircraft(in.mission);
+    if (auto st = cameraFromFlags(args, in.mission, catalog); !st)
+        return st;
+    if (auto st = altitudeFromFlags(args, in, aircraftGiven); !st)
+        return st;
+    if (auto st = overlapFromFlags(args, in.mission); !st)
+        return st;
+    if (auto st = plannerFromFlags(args, in.mission); !st)
+        return st;
+    return terrainFromFlags(args, in.mission);
+}
+
+namespace {
+
+// --corridor FILE (its one line) and --width M: the mission becomes a survey of that corridor (a
+// mission file's corridor gets a new line or width).
+Status corridorFromArgs(const Args& args, MissionInput& in) {
+    mission::Mission& m = in.mission;
+    const auto file = args.value("corridor");
+    auto width = numberIn(args, "width", 0, true, mission::kMaxCorridorWidthM, false,
+                          "greater than 0 and at most " + num(mission::kMaxCorridorWidthM) + " m");
+    if (!width)
+        return width.error();
+    if (!file && !width->has_value())
+        return {};
+    if (!file && !m.corridor)
+        return flagError("width",
+                         "is the width of a corridor: give its centre line with --corridor FILE");
+    mission::Corridor c = m.corridor.value_or(mission::Corridor{});
+    if (file) {
+        auto lines = io::importLines(*file);
+        if (!lines)
+            return makeError(lines.error().code, "--corridor: " + lines.error().message);
+        if (lines->size() != 1) {
+            std::string names;
+            for (std::size_t i = 0; i < lines->size() && i < 5; ++i)
+                names += std::string(i ? ", " : "") + "'" + (*lines)[i].name + "'";
+            return flagError(
+                "corridor",
+                *file + " holds " + std::to_string(lines->size()) + " lines (" + names +
+                    (lines->size() > 5 ? ", ..." : "") +
+                    "), but a corridor follows one: keep only its centre line in the file");
+        }
+        c.line = lines->front().line;
+        if (in.source.empty()) {
+            in.source = *file;
+            m.name = stem(*file);
+        }
+    }
+    if (width->has_value())
+        c.widthM = **width;
+    else if (!m.corridor)
+        return flagError("corridor", "needs the corridor's full width: give --width M");
+    mission::applyCorridor(m, std::move(c));
+    return {};
+}
+
+} // namespace
 
 Result<MissionInput> missionFromArgs(const Args& args, std::size_t positional) {
     MissionInput in;
@@ -390,8 +491,11 @@ Result<MissionInput> missionFromArgs(const Args& args, std::size_t positional) {
             m.name = stem(*a);
         }
     }
+    if (auto st = corridorFromArgs(args, in); !st)
+        return st.error();
     if (in.source.empty())
-        return makeError(ErrorCode::InvalidInput, "no mission or area file given (see --help)");
+        return makeError(ErrorCode::InvalidInput,
+                         "no mission or area file given (nor --corridor: see --help)");
     for (const auto& f : args.values("nofly")) {
         auto polys = polygonsOf(f, "nofly");
         if (!polys)

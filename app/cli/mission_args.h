@@ -1,20 +1,29 @@
 // Builds a Mission from the command line: a mission or area file, then flags that override it.
 //
-//   [MISSION.json | AREA]           a mission file (photoflight-mission JSON), or an area file in any
-//                                   format OGR reads (GeoJSON, KML, Shapefile, GeoPackage, GML) holding
-//                                   exactly one polygon (the area)
+//   [MISSION.json | AREA]           a mission file (photoflight-mission JSON), or an area file in
+//   any
+//                                   format OGR reads (GeoJSON, KML, Shapefile, GeoPackage, GML)
+//                                   holding exactly one polygon (the area)
 //   --area FILE                     the area from FILE (replaces the mission's area)
 //   --nofly FILE                    every polygon of FILE becomes a no-fly zone, named after its
 //                                   feature (repeatable; added to the mission's zones)
+//   --corridor FILE --width M       a corridor survey instead of an area: the one line of FILE
+//                                   (GeoJSON, KML, GPX, Shapefile, GeoPackage, GML) as its centre
+//                                   line, M metres wide (--width alone changes a mission file's
+//                                   corridor)
 //   --camera NAME                   a catalog camera, for every aircraft
-//   --hfov DEG --vfov DEG           a camera given by its fields of view (long / short side), for every
+//   --hfov DEG --vfov DEG           a camera given by its fields of view (long / short side), for
+//   every
 //                                   aircraft; the image size of the aircraft's camera is kept
 //                                   (4000 x 3000 px if it has none)
-//   --altitude M | --gsd CM         flight altitude in metres, or the wanted ground sample distance in
+//   --altitude M | --gsd CM         flight altitude in metres, or the wanted ground sample distance
+//   in
 //                                   cm/px, for every aircraft (not both)
-//   --overlap F | --front F --side F  overlaps in [0, 1) (0.7 = 70 %): both, or front and side apart
+//   --overlap F | --front F --side F  overlaps in [0, 1) (0.7 = 70 %): both, or front and side
+//   apart
 //   --planner stride|raster|wavefront
-//   --grid-angle DEG|auto           grid rotation counter-clockwise from east, or the planner's search
+//   --grid-angle DEG|auto           grid rotation counter-clockwise from east, or the planner's
+//   search
 //   --home LON,LAT                  take-off and landing point
 //   --aircraft NAME[:ALT_M]         a catalog aircraft with its default camera, optionally its own
 //                                   altitude (repeatable; replaces the mission's aircraft)
@@ -25,8 +34,9 @@
 //   --min-clearance M               minimum clearance of every leg above the ground
 //
 // Without a mission file and without --aircraft, the first aircraft of the catalog is used, and
-// without --altitude or --gsd an altitude of 100 m (or the aircraft's maximum if lower); the defaults
-// applied are listed in MissionInput::notes. Every error names the flag or the file at fault.
+// without --altitude or --gsd an altitude of 100 m (or the aircraft's maximum if lower); the
+// defaults applied are listed in MissionInput::notes. Every error names the flag or the file at
+// fault.
 #pragma once
 
 #include "app/cli/args.h"
@@ -41,6 +51,9 @@
 #define PF_CLI_MISSION_OPTIONS_HELP \
     "  --area FILE                  the area (one polygon) from FILE: GeoJSON, KML, Shapefile, GeoPackage, GML\n" \
     "  --nofly FILE                 add every polygon of FILE as a no-fly zone (repeatable)\n" \
+    "  --corridor FILE              survey a corridor along the one line of FILE (GeoJSON, KML, GPX,\n" \
+    "                               Shapefile, GeoPackage, GML) instead of an area; needs --width\n" \
+    "  --width M                    the corridor's full width in metres (lanes along its line)\n" \
     "  --camera NAME                a camera of the catalog, for every aircraft (see: photoflight-cli catalog)\n" \
     "  --hfov DEG --vfov DEG        a camera given by its fields of view across the long and the short side\n" \
     "  --altitude M                 flight altitude in metres, for every aircraft\n" \

@@ -1,4 +1,5 @@
-// Area and no-fly-zone import through OGR: any supported vector format and CRS -> WGS84 2D polygons.
+// Area, no-fly-zone and line import through OGR: any supported vector format and CRS -> WGS84 2D
+// polygons and lines.
 #include "core/io/area_import.h"
 
 #include "core/io/waypoint_format_util.h"
@@ -18,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <memory>
 #include <mutex>
 
@@ -157,8 +159,23 @@ void initGdal() {
     });
 }
 
-Result<std::vector<ImportedPolygon>> importPolygons(const std::string& path) {
-    initGdal();
+namespace {
+
+// The formats a line may come from besides those of areas: GPS tracks and routes.
+constexpr Format kGpx{"GPX", "GPX"};
+constexpr const char* kSupportedLines = "GeoJSON (.geojson), KML (.kml), GPX (.gpx), Shapefile "
+                                        "(.shp), GeoPackage (.gpkg) or GML (.gml)";
+
+// An opened vector file with the words for its format.
+struct OpenedFile {
+    DatasetPtr ds;
+    std::string formatLabel;
+};
+
+// Opens `path` with one of the documented drivers (GPX too with `lines`). Errors name the file and
+// the problem: missing, a folder, empty, unreadable, unsupported or damaged.
+Result<OpenedFile> openVectorFile(const std::string& path, bool lines,
+                                  detail::GdalErrorScope& errors) {
     VSIStatBufL st;
     if (VSIStatL(path.c_str(), &st) != 0)
         return makeError(ErrorCode::IoError, path + ": cannot import: the file does not exist");
@@ -172,26 +189,36 @@ Result<std::vector<ImportedPolygon>> importPolygons(const std::string& path) {
         return makeError(ErrorCode::IoError, path + ": cannot read the file: " + std::strerror(errno));
 
     const std::string ext = detail::extensionOf(path);
-    detail::GdalErrorScope errors;
+    const char* supported = lines ? kSupportedLines : kSupported;
+    const auto known = [&](const char* driver) {
+        return formatForDriver(driver) || (lines && EQUAL(driver, kGpx.driver));
+    };
+    const auto labelFor = [&](const std::string& e) -> const char* {
+        return lines && e == ".gpx" ? kGpx.label : labelForExtension(e);
+    };
 
     // Refuse formats outside the documented list before opening: GDAL would read many more, but only
     // these are tested and documented.
     GDALDriverH identified = GDALIdentifyDriverEx(path.c_str(), GDAL_OF_VECTOR, nullptr, nullptr);
-    if (identified && !formatForDriver(GDALGetDriverShortName(identified)))
+    if (identified && !known(GDALGetDriverShortName(identified)))
         return makeError(ErrorCode::Unsupported, path + ": unsupported format (" +
-                                                     GDALGetDriverLongName(identified) + "); expected " + kSupported);
-    if (!identified && !labelForExtension(ext))
+                                                     GDALGetDriverLongName(identified) +
+                                                     "); expected " + supported);
+    if (!identified && !labelFor(ext))
         return makeError(ErrorCode::Unsupported,
-                         path + ": unsupported or unrecognised format; expected " + kSupported);
+                         path + ": unsupported or unrecognised format; expected " + supported);
 
     const char* const drivers[] = {"GeoJSON", "KML", "LIBKML", "ESRI Shapefile", "GPKG", "GML", nullptr};
+    const char* const lineDrivers[] = {"GeoJSON", "KML", "LIBKML", "ESRI Shapefile",
+                                       "GPKG",    "GML", "GPX",    nullptr};
     // GML: do not leave a .gfs schema file beside the user's file.
     const char* const openOptions[] = {"WRITE_GFS=NO", nullptr};
     const bool isGml = (identified && EQUAL(GDALGetDriverShortName(identified), "GML")) || ext == ".gml";
-    DatasetPtr ds(static_cast<GDALDataset*>(GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, drivers,
-                                                       isGml ? openOptions : nullptr, nullptr)));
+    DatasetPtr ds(static_cast<GDALDataset*>(
+        GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, lines ? lineDrivers : drivers,
+                   isGml ? openOptions : nullptr, nullptr)));
     if (!ds) {
-        const char* label = labelForExtension(ext);
+        const char* label = labelFor(ext);
         std::string why = errors.firstError();
         return makeError(ErrorCode::ParseError,
                          path + ": cannot read the file: it is damaged or not a valid " +
@@ -199,51 +226,71 @@ Result<std::vector<ImportedPolygon>> importPolygons(const std::string& path) {
                              (why.empty() ? std::string() : " (" + why + ")"));
     }
     const Format* format = formatForDriver(ds->GetDriverName());
-    const std::string formatLabel = format ? format->label : ds->GetDriverName();
+    std::string label = format                                    ? format->label
+                        : EQUAL(ds->GetDriverName(), kGpx.driver) ? kGpx.label
+                                                                  : ds->GetDriverName();
+    return OpenedFile{std::move(ds), std::move(label)};
+}
 
+// The transformation of a layer's coordinates to WGS84 (null when it has no CRS), after checking
+// that coordinates without a CRS look like longitude/latitude.
+Result<std::unique_ptr<OGRCoordinateTransformation>>
+layerToWgs84(const std::string& path, OGRLayer& layer, const std::string& formatLabel,
+             const OGRSpatialReference& wgs84) {
+    std::unique_ptr<OGRCoordinateTransformation> toWgs84;
+    const OGRSpatialReference* layerSrs = layer.GetSpatialRef();
+    if (layerSrs) {
+        std::unique_ptr<OGRSpatialReference> src(layerSrs->Clone());
+        src->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+        toWgs84.reset(OGRCreateCoordinateTransformation(src.get(), &wgs84));
+        if (!toWgs84) {
+            const char* srsName = src->GetName();
+            return makeError(ErrorCode::Unsupported,
+                             path + ": layer '" + layer.GetName() +
+                                 "': cannot convert its coordinate system (" +
+                                 (srsName ? srsName : "unnamed") + ") to WGS84 longitude/latitude");
+        }
+    }
+    // No CRS (GeoJSON and KML without one are WGS84 by definition, so OGR says WGS84): the
+    // coordinates must at least look like longitude/latitude. Projected metres (UTM) are one
+    // request for the CRS, not a list of out-of-range vertices.
+    if (!layerSrs || layerSrs->IsGeographic()) {
+        OGREnvelope env;
+        if (layer.GetExtent(&env, TRUE) == OGRERR_NONE && !plausibleLonLat(env)) {
+            char buf[200];
+            std::snprintf(buf, sizeof buf, "x %.0f..%.0f, y %.0f..%.0f", env.MinX, env.MaxX,
+                          env.MinY, env.MaxY);
+            const bool wgs84ByDefinition =
+                formatLabel == "GeoJSON" || formatLabel == "KML" || formatLabel == "GPX";
+            return makeError(
+                ErrorCode::InvalidInput,
+                path + ": layer '" + layer.GetName() + "' has " +
+                    (layerSrs ? "longitude/latitude as its coordinate reference system but"
+                              : "no coordinate reference system and") +
+                    " its coordinates (" + buf + ") are not longitude/latitude; " +
+                    (wgs84ByDefinition
+                         ? "a " + formatLabel +
+                               " file without a CRS must be in WGS84: "
+                               "reproject it (e.g. ogr2ogr -t_srs EPSG:4326) or give it its CRS"
+                         : std::string("save the file with its CRS (for a Shapefile, the .prj "
+                                       "file beside it)")));
+        }
+    }
+    return toWgs84;
+}
+
+// Every feature's geometry of every layer, linear, 2D and in WGS84, handed to `visit` with its
+// feature and layer. Counts the features read.
+Status forEachGeometry(const std::string& path, const OpenedFile& file,
+                       const std::function<void(OGRFeature&, OGRLayer&, const OGRGeometry&)>& visit,
+                       int& features) {
     OGRSpatialReference wgs84;
     wgs84.SetWellKnownGeogCS("WGS84");
     wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-
-    std::vector<ImportedPolygon> out;
-    int otherGeometries = 0;
-    int features = 0;
-    for (OGRLayer* layer : ds->GetLayers()) {
-        std::unique_ptr<OGRCoordinateTransformation> toWgs84;
-        const OGRSpatialReference* layerSrs = layer->GetSpatialRef();
-        if (layerSrs) {
-            std::unique_ptr<OGRSpatialReference> src(layerSrs->Clone());
-            src->SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-            toWgs84.reset(OGRCreateCoordinateTransformation(src.get(), &wgs84));
-            if (!toWgs84) {
-                const char* srsName = src->GetName();
-                return makeError(ErrorCode::Unsupported,
-                                 path + ": layer '" + layer->GetName() + "': cannot convert its coordinate system (" +
-                                     (srsName ? srsName : "unnamed") + ") to WGS84 longitude/latitude");
-            }
-        }
-        // No CRS (GeoJSON and KML without one are WGS84 by definition, so OGR says WGS84): the
-        // coordinates must at least look like longitude/latitude. Projected metres (UTM) are one
-        // request for the CRS, not a list of out-of-range vertices.
-        if (!layerSrs || layerSrs->IsGeographic()) {
-            OGREnvelope env;
-            if (layer->GetExtent(&env, TRUE) == OGRERR_NONE && !plausibleLonLat(env)) {
-                char buf[200];
-                std::snprintf(buf, sizeof buf, "x %.0f..%.0f, y %.0f..%.0f", env.MinX, env.MaxX, env.MinY, env.MaxY);
-                const bool wgs84ByDefinition = formatLabel == "GeoJSON" || formatLabel == "KML";
-                return makeError(ErrorCode::InvalidInput,
-                                 path + ": layer '" + layer->GetName() + "' has " +
-                                     (layerSrs ? "longitude/latitude as its coordinate reference system but"
-                                               : "no coordinate reference system and") +
-                                     " its coordinates (" + buf + ") are not longitude/latitude; " +
-                                     (wgs84ByDefinition
-                                          ? "a " + formatLabel + " file without a CRS must be in WGS84: "
-                                            "reproject it (e.g. ogr2ogr -t_srs EPSG:4326) or give it its CRS"
-                                          : std::string("save the file with its CRS (for a Shapefile, the .prj "
-                                                        "file beside it)")));
-            }
-        }
-
+    for (OGRLayer* layer : file.ds->GetLayers()) {
+        auto toWgs84 = layerToWgs84(path, *layer, file.formatLabel, wgs84);
+        if (!toWgs84)
+            return toWgs84.error();
         layer->ResetReading();
         for (auto& feature : *layer) {
             ++features;
@@ -254,33 +301,111 @@ Result<std::vector<ImportedPolygon>> importPolygons(const std::string& path) {
             if (!g)
                 continue;
             g->flattenTo2D();
-            if (toWgs84 && g->transform(toWgs84.get()) != OGRERR_NONE)
+            if (*toWgs84 && g->transform(toWgs84->get()) != OGRERR_NONE)
                 return makeError(ErrorCode::InvalidInput, path + ": feature '" + featureName(*feature, *layer) +
                                                               "' could not be converted to WGS84");
-            std::vector<geo::GeoPolygon> polys;
-            collectPolygons(g.get(), polys, otherGeometries);
-            const std::string name = featureName(*feature, *layer);
-            const std::string role = featureRole(*feature);
-            for (std::size_t i = 0; i < polys.size(); ++i) {
-                ImportedPolygon ip;
-                ip.name = polys.size() == 1 ? name : name + " (part " + std::to_string(i + 1) + ")";
-                ip.layer = layer->GetName();
-                ip.role = role;
-                ip.polygon = std::move(polys[i]);
-                out.push_back(std::move(ip));
-            }
+            visit(*feature, *layer, *g);
         }
     }
-    // A driver that stumbles half-way reports it as an error and stops: importing the features read
-    // so far would silently drop the rest of the area.
-    if (!errors.firstError().empty())
-        return makeError(ErrorCode::ParseError, path + ": cannot read the file: " + errors.firstError());
-    if (out.empty()) {
-        std::string found = features == 0 ? "it has no features"
-                                          : "it has " + std::to_string(features) + " feature(s)" +
-                                                (otherGeometries > 0 ? ", only points or lines" : ", none with a polygon");
-        return makeError(ErrorCode::InvalidGeometry, path + ": no polygon to import: " + found);
+    return {};
+}
+
+void collectLines(const OGRGeometry* g, std::vector<geo::GeoRing>& out, int& others) {
+    if (!g || g->IsEmpty())
+        return;
+    const auto type = wkbFlatten(g->getGeometryType());
+    if (type == wkbLineString) {
+        const auto* l = g->toLineString();
+        geo::GeoRing line;
+        for (int i = 0; i < l->getNumPoints(); ++i) {
+            const geo::LonLat p{l->getX(i), l->getY(i)};
+            if (line.empty() || line.back() != p)
+                line.push_back(p);
+        }
+        out.push_back(std::move(line));
+    } else if (OGR_GT_IsSubClassOf(type, wkbGeometryCollection)) {
+        for (const auto* part : *g->toGeometryCollection())
+            collectLines(part, out, others);
+    } else {
+        ++others;
     }
+}
+
+// Why an import found nothing to import, or nothing: a driver that stumbled half-way (importing
+// the features read so far would silently drop the rest), or no shape of the `kind` asked for.
+Status importOutcome(const std::string& path, const detail::GdalErrorScope& errors, bool found,
+                     int features, int others, const char* kind, const char* otherKinds) {
+    if (!errors.firstError().empty())
+        return makeError(ErrorCode::ParseError,
+                         path + ": cannot read the file: " + errors.firstError());
+    if (found)
+        return {};
+    const std::string what = features == 0
+                                 ? "it has no features"
+                                 : "it has " + std::to_string(features) + " feature(s)" +
+                                       (others > 0 ? std::string(", only ") + otherKinds
+                                                   : std::string(", none with a ") + kind);
+    return makeError(ErrorCode::InvalidGeometry, path + ": no " + kind + " to import: " + what);
+}
+
+} // namespace
+
+Result<std::vector<ImportedPolygon>> importPolygons(const std::string& path) {
+    initGdal();
+    detail::GdalErrorScope errors;
+    auto file = openVectorFile(path, false, errors);
+    if (!file)
+        return file.error();
+    std::vector<ImportedPolygon> out;
+    int otherGeometries = 0;
+    int features = 0;
+    const auto visit = [&](OGRFeature& feature, OGRLayer& layer, const OGRGeometry& g) {
+        std::vector<geo::GeoPolygon> polys;
+        collectPolygons(&g, polys, otherGeometries);
+        const std::string name = featureName(feature, layer);
+        const std::string role = featureRole(feature);
+        for (std::size_t i = 0; i < polys.size(); ++i) {
+            ImportedPolygon ip;
+            ip.name = polys.size() == 1 ? name : name + " (part " + std::to_string(i + 1) + ")";
+            ip.layer = layer.GetName();
+            ip.role = role;
+            ip.polygon = std::move(polys[i]);
+            out.push_back(std::move(ip));
+        }
+    };
+    if (auto st = forEachGeometry(path, *file, visit, features); !st)
+        return st.error();
+    if (auto st = importOutcome(path, errors, !out.empty(), features, otherGeometries, "polygon",
+                                "points or lines");
+        !st)
+        return st.error();
+    return out;
+}
+
+Result<std::vector<ImportedLine>> importLines(const std::string& path) {
+    initGdal();
+    detail::GdalErrorScope errors;
+    auto file = openVectorFile(path, true, errors);
+    if (!file)
+        return file.error();
+    std::vector<ImportedLine> out;
+    int otherGeometries = 0;
+    int features = 0;
+    const auto visit = [&](OGRFeature& feature, OGRLayer& layer, const OGRGeometry& g) {
+        std::vector<geo::GeoRing> lines;
+        collectLines(&g, lines, otherGeometries);
+        const std::string name = featureName(feature, layer);
+        for (std::size_t i = 0; i < lines.size(); ++i)
+            out.push_back(
+                {lines.size() == 1 ? name : name + " (part " + std::to_string(i + 1) + ")",
+                 layer.GetName(), std::move(lines[i])});
+    };
+    if (auto st = forEachGeometry(path, *file, visit, features); !st)
+        return st.error();
+    if (auto st = importOutcome(path, errors, !out.empty(), features, otherGeometries, "line",
+                                "points or polygons");
+        !st)
+        return st.error();
     return out;
 }
 

@@ -1,4 +1,5 @@
-// Import of areas and no-fly zones from GeoJSON, KML, Shapefile, GeoPackage and GML (OGR inside).
+// Import of areas and no-fly zones from GeoJSON, KML, Shapefile, GeoPackage and GML, and of
+// corridor lines from those and GPX (OGR inside).
 #pragma once
 
 #include "core/geo/types.h"
@@ -21,6 +22,17 @@ struct ImportedPolygon {
 // Reads every polygon of every layer, reprojected to WGS84 from the file's CRS, flattened to 2D.
 // Errors name the file and the problem (cannot open, no polygon, unknown CRS, ...).
 Result<std::vector<ImportedPolygon>> importPolygons(const std::string& path);
+
+struct ImportedLine {
+    std::string name; // feature name or "<layer> #<fid>"
+    std::string layer;
+    geo::GeoRing line; // WGS84 lon/lat, 2D, in the file's order (multilines are split)
+};
+
+// Reads every line (LineString, the parts of a MultiLineString: a GPX track or route too) of every
+// layer, as importPolygons reads polygons, from GeoJSON, KML, GPX, Shapefile, GeoPackage or GML.
+// Errors name the file and the problem (cannot open, no line, unknown CRS, ...).
+Result<std::vector<ImportedLine>> importLines(const std::string& path);
 
 // Registers GDAL/OGR's drivers once (thread-safe; later calls are cheap) and keeps GDAL from printing
 // on stderr: its messages become Result errors at the io boundary instead. Every io function calls

@@ -103,6 +103,8 @@ std::optional<std::string> firstNonFinite(const mission::Mission& m) {
     };
     if (polyBad(m.area))
         return std::string("area");
+    if (m.corridor && (ringBad(m.corridor->line) || bad(m.corridor->widthM)))
+        return std::string("corridor");
     for (std::size_t i = 0; i < m.noFlyZones.size(); ++i)
         if (polyBad(m.noFlyZones[i].polygon))
             return "no_fly_zones[" + std::to_string(i) + "].polygon";
@@ -210,6 +212,8 @@ int requiredVersion(const mission::Mission& m) {
     for (const auto& a : m.aircraft)
         if (writesPlane(a))
             v = std::max(v, 5);
+    if (m.corridor || m.options.doubleGrid)
+        v = std::max(v, 5);
     for (const auto& r : m.editedRoutes) {
         if (r.homeElevationM)
             v = std::max(v, 4);
@@ -228,7 +232,19 @@ std::string missionToJson(const mission::Mission& m) {
     root.Add("format", kMissionFormatName);
     root.Add("version", requiredVersion(m));
     root.Add("name", m.name);
-    root.Add("area", jsonPolygon(m.area));
+    // A corridor's ground is derived from its line and width (mission::applyCorridor): only they
+    // are kept.
+    if (m.corridor) {
+        CPLJSONObject c;
+        CPLJSONArray line;
+        for (const auto& p : m.corridor->line)
+            line.Add(jsonPosition(p));
+        c.Add("line", line);
+        c.Add("width_m", jsonNumber(m.corridor->widthM));
+        root.Add("corridor", c);
+    } else {
+        root.Add("area", jsonPolygon(m.area));
+    }
     CPLJSONArray zones;
     for (const auto& z : m.noFlyZones) {
         CPLJSONObject o;
@@ -281,6 +297,8 @@ std::string missionToJson(const mission::Mission& m) {
     planner.Add("altitude_separation_m", jsonNumber(m.options.altitudeSeparationM));
     planner.Add("battery_reserve", jsonNumber(m.options.batteryReserve));
     planner.Add("max_cells", static_cast<GInt64>(m.options.maxCells));
+    if (m.options.doubleGrid)
+        planner.Add("double_grid", true);
     root.Add("planner", planner);
     if (!m.terrain.isDefault()) {
         CPLJSONObject t;

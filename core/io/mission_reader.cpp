@@ -5,6 +5,7 @@
 #include "core/io/area_import.h"
 #include "core/io/json_reader.h"
 #include "core/io/json_util.h"
+#include "core/mission/corridor.h"
 #include "core/mission/planner_kinds.h"
 
 #include <cpl_json.h>
@@ -132,8 +133,16 @@ public:
         opt.batteryReserve = number(o, p, "battery_reserve", opt.batteryReserve);
         opt.maxCells = static_cast<std::size_t>(integer(o, p, "max_cells", static_cast<long long>(opt.maxCells),
                                                         false, 1, 1'000'000'000'000LL));
-        checkKeys(o, p, {"planner", "grid_angle_deg", "safety_margin_m", "keep_inside_area", "inside_margin_m",
-                         "altitude_separation_m", "battery_reserve", "max_cells"});
+        opt.doubleGrid = boolean(o, p, "double_grid", false);
+        if (!failed() && opt.doubleGrid && m_version < 5)
+            fail("planner.double_grid",
+                 "a double grid needs version 5 of the mission file, but the file says "
+                 "version " +
+                     std::to_string(m_version));
+        checkKeys(o, p,
+                  {"planner", "grid_angle_deg", "safety_margin_m", "keep_inside_area",
+                   "inside_margin_m", "altitude_separation_m", "battery_reserve", "max_cells",
+                   "double_grid"});
         return opt;
     }
 
@@ -236,6 +245,32 @@ public:
         return t;
     }
 
+    // {"line": [[lon, lat], ...], "width_m": W}: the centre line as drawn (a line ending where it
+    // started is a loop, kept so), the width checked by validation like an altitude.
+    mission::Corridor corridor(const CPLJSONObject& root) {
+        mission::Corridor c;
+        const std::string p = "corridor";
+        if (m_version < 5) {
+            fail(p, "a corridor needs version 5 of the mission file, but the file says version " +
+                        std::to_string(m_version));
+            return c;
+        }
+        CPLJSONObject o = object(root, "", "corridor", true);
+        if (failed())
+            return c;
+        CPLJSONObject line = member(o, "line");
+        if (!line.IsValid()) {
+            fail("corridor.line", "missing required field");
+            return c;
+        }
+        CPLJSONArray a = array(line, "corridor.line");
+        for (int i = 0; i < a.Size() && !failed(); ++i)
+            c.line.push_back(position(a[i], "corridor.line[" + std::to_string(i) + "]"));
+        c.widthM = number(o, p, "width_m", 0.0, true);
+        checkKeys(o, p, {"line", "width_m"});
+        return c;
+    }
+
     std::vector<route::Route> editedRoutes(const CPLJSONObject& root, long long version) {
         std::vector<route::Route> out;
         CPLJSONObject routes = member(root, "routes");
@@ -286,7 +321,16 @@ public:
         m_version = version;
 
         m.name = string(root, "", "name", "");
-        m.area = polygon(root, "", "area");
+        if (member(root, "corridor").IsValid()) {
+            if (member(root, "area").IsValid())
+                fail("area", "a corridor mission has no area of its own (its ground is the "
+                             "corridor's): give \"area\" or \"corridor\", not both");
+            mission::Corridor c = corridor(root);
+            if (!failed())
+                mission::applyCorridor(m, std::move(c));
+        } else {
+            m.area = polygon(root, "", "area");
+        }
 
         CPLJSONObject zones = member(root, "no_fly_zones");
         if (zones.IsValid() && !failed()) {
@@ -319,8 +363,9 @@ public:
             m.terrain = terrain(root);
         if (!failed())
             m.editedRoutes = editedRoutes(root, version);
-        checkKeys(root, "", {"format", "version", "name", "area", "no_fly_zones", "home", "landing", "aircraft",
-                             "planner", "terrain", "routes"});
+        checkKeys(root, "",
+                  {"format", "version", "name", "area", "corridor", "no_fly_zones", "home",
+                   "landing", "aircraft", "planner", "terrain", "routes"});
         return m;
     }
 

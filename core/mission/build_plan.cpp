@@ -4,6 +4,7 @@
 #include "core/fleet/photo_dedup.h"
 #include "core/geo/polygon_ops.h"
 #include "core/job_scope.h"
+#include "core/mission/double_grid.h"
 #include "core/mission/plan_messages.h"
 #include "core/mission/plan_region.h"
 #include "core/mission/planner_kinds.h"
@@ -54,7 +55,14 @@ std::vector<Result<AircraftPlan>> planRegions(const Mission& m, const PlannerOpt
                                               const LocalGeometry& geom,
                                               const std::vector<geo::MultiPolygon>& regions,
                                               const std::vector<std::optional<geo::Vec2>>& homes,
-                                              const std::optional<geo::Vec2>& landing) {
+                                              const std::optional<geo::Vec2>& landing,
+                                              const RegionPlanner& planner) {
+    std::vector<Result<AircraftPlan>> out;
+    if (planner) { // a planner of the caller's (a corridor's stretches): one after the other
+        for (std::size_t k = 0; k < m.aircraft.size(); ++k)
+            out.push_back(planner(k, regions[k]));
+        return out;
+    }
     const JobScope::Share job = JobScope::share();
     std::vector<std::future<Result<AircraftPlan>>> others;
     for (std::size_t k = 1; k < m.aircraft.size(); ++k)
@@ -62,7 +70,6 @@ std::vector<Result<AircraftPlan>> planRegions(const Mission& m, const PlannerOpt
             JobScope scope(job);
             return planAircraftRegion(m, opt, geom, regions, homes, landing, k);
         }));
-    std::vector<Result<AircraftPlan>> out;
     // Should this throw (out of memory), the futures' destructors still wait for their threads.
     out.push_back(planAircraftRegion(m, opt, geom, regions, homes, landing, 0));
     for (auto& f : others)
@@ -76,7 +83,7 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
                               const std::vector<geo::MultiPolygon>& regions,
                               const std::vector<std::optional<geo::Vec2>>& homes,
                               const std::optional<geo::Vec2>& landing, bool check,
-                              std::vector<double>* aloneTimes) {
+                              std::vector<double>* aloneTimes, const RegionPlanner& planner) {
     const LocalGeometry* geom = &geomRef;
     const geo::LocalFrame& frame = geom->frame;
     const std::size_t n = m.aircraft.size();
@@ -88,7 +95,8 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         if (regions[k].empty())
             return makeError(ErrorCode::InvalidInput,
                              aircraftLabel(m.aircraft[k]) + ": got no part of the area (too many aircraft for it)");
-    std::vector<Result<AircraftPlan>> planned = planRegions(m, opt, *geom, regions, homes, landing);
+    std::vector<Result<AircraftPlan>> planned =
+        planRegions(m, opt, *geom, regions, homes, landing, planner);
     for (std::size_t k = 0; k < n; ++k) {
         if (stopRequested())
             return cancelledError();
@@ -110,7 +118,8 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         for (const auto& a : plan.aircraft)
             photos.push_back({a.surveyWaypoints, a.footprint.acrossM, a.footprint.alongM, a.footprint.real.longSideM,
                               a.footprint.real.shortSideM});
-        auto saved = fleet::dropDuplicatePhotos(photos);
+        auto saved = opt.doubleGrid ? dropDuplicatePhotosPerPass(photos)
+                                    : fleet::dropDuplicatePhotos(photos);
         if (!saved)
             return saved.error();
         for (std::size_t k = 0; k < n; ++k) {
@@ -132,6 +141,7 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
     const route::SafePathFinder straightFinder;
     std::vector<std::vector<geo::Vec2>> flownPaths;
     std::vector<plan::PhotoFootprint> photoFootprints;
+    std::vector<int> photoPasses; // parallel: a double grid's pass of each photo
     for (std::size_t k = 0; k < n; ++k) {
         AircraftPlan& ap = plan.aircraft[k];
         const AircraftConfig& cfg = m.aircraft[k];
@@ -254,9 +264,11 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         if (stopRequested())
             return cancelledError();
         for (const auto& w : flown)
-            if (w.kind == route::WaypointKind::Photo)
+            if (w.kind == route::WaypointKind::Photo) {
                 photoFootprints.push_back(
                     {w.pos, w.headingDeg, ap.footprint.real.longSideM, ap.footprint.real.shortSideM});
+                photoPasses.push_back(w.pass);
+            }
         ap.sortieRoutes.clear();
         // Only the sortie's own waypoints are copied: a copy of the whole route per sortie (then cut)
         // kept its full capacity, sorties x waypoints in all (3.3 GB for 158 sorties of 523,000).
@@ -299,7 +311,11 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
     if (check) {
         reportProgress(0.85, "coverage check");
         JobScope stage(0.85, 1.0);
-        auto cov = plan::checkCoverage(admissible, photoFootprints, {}, m.terrain.prepared ? &terrainOutlines : nullptr);
+        const auto* outlines = m.terrain.prepared ? &terrainOutlines : nullptr;
+        // A double grid's passes are checked one by one: every point must be seen twice.
+        auto cov = opt.doubleGrid ? checkPassCoverage(admissible, photoFootprints, photoPasses,
+                                                      outlines, plan.passCoverage)
+                                  : plan::checkCoverage(admissible, photoFootprints, {}, outlines);
         if (stopRequested())
             return cancelledError();
         if (!cov)
@@ -311,7 +327,9 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
             plan.uncovered.push_back({p.shape, p.areaM2});
         attributeUncovered(plan, geom->noFly);
         if (cov->coveredFraction < kCoverageTarget)
-            plan.warnings.push_back(uncoveredMessage(plan));
+            plan.warnings.push_back(
+                std::string(opt.doubleGrid ? "one pass of the double grid: " : "") +
+                uncoveredMessage(plan));
         geo::MultiPolygon pockets;
         for (const auto& a : plan.aircraft)
             pockets.insert(pockets.end(), a.grid.pockets().begin(), a.grid.pockets().end());
@@ -343,6 +361,10 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         sumTime += a.timeS;
     }
     plan.idealS = sumTime / static_cast<double>(n);
+    if (opt.doubleGrid) // say so whatever the planner: its passes
+        for (const auto& a : plan.aircraft)
+            plan.plannerChoice += (plan.plannerChoice.empty() ? "" : "; ") +
+                                  (n > 1 ? a.aircraft + ": " : "") + a.plannerChoice;
     if (t.jumps > 0) {
         int detours = 0;
         for (const auto& a : plan.aircraft)

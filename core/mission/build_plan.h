@@ -12,6 +12,7 @@
 #include "core/result.h"
 
 #include <cstdio>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,13 +43,20 @@ inline std::string metres(double v, int decimals = 0) {
     return buf;
 }
 
-// Steps 2 to 6 of planMission for given regions (one per aircraft), planned with `opt`. Without
-// `check`, step 6 (the coverage raster and the margin breaches) is left out: the candidates of the
-// split are compared on their times alone, and only the plan returned is checked.
-Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const LocalGeometry& geom,
+// Plans aircraft k over its region (step 2) in place of planRegion: a corridor's lanes.
+using RegionPlanner =
+    std::function<Result<AircraftPlan>(std::size_t k, const geo::MultiPolygon& region)>;
+
+// Steps 2 to 6 of planMission for given regions (one per aircraft), planned with `opt` (by
+// planRegion, or by `planner` when given). Without `check`, step 6 (the coverage raster and the
+// margin breaches) is left out: the candidates of the split are compared on their times alone, and
+// only the plan returned is checked.
+Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt,
+                              const LocalGeometry& geom,
                               const std::vector<geo::MultiPolygon>& regions,
                               const std::vector<std::optional<geo::Vec2>>& homes,
                               const std::optional<geo::Vec2>& landing, bool check,
-                              std::vector<double>* aloneTimes = nullptr);
+                              std::vector<double>* aloneTimes = nullptr,
+                              const RegionPlanner& planner = {});
 
 } // namespace pf::mission::detail

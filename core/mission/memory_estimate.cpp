@@ -2,6 +2,7 @@
 
 #include "core/geo/polygon_ops.h"
 #include "core/grid/grid.h"
+#include "core/mission/corridor.h"
 #include "core/mission/validation.h"
 #include "core/sensor/camera.h"
 
@@ -48,7 +49,10 @@ MemoryEstimate estimatePlanMemory(const Mission& m) {
         auto eff = sensor::effectiveFootprint(a.camera, *alt, a.overlap);
         if (!eff || !(eff->acrossM > 0) || !(eff->alongM > 0))
             continue;
-        e.cells += grid::Grid::sizeFor(area, sensor::cellSizeFor(*eff), m.options.gridAngleDeg.value_or(0.0)).cells();
+        if (!plansCorridorLanes(m)) // corridor lanes need no grid
+            e.cells += grid::Grid::sizeFor(area, sensor::cellSizeFor(*eff),
+                                           m.options.gridAngleDeg.value_or(0.0))
+                           .cells();
         // Several aircraft share the area: each photographs a part, the sum is the whole (at most).
         e.photos = std::max(e.photos, areaM2 / (eff->acrossM * eff->alongM));
     }

@@ -42,10 +42,11 @@ bool operator==(const AircraftConfig& a, const AircraftConfig& b) {
 }
 
 bool operator==(const PlannerOptions& a, const PlannerOptions& b) {
-    return a.planner == b.planner && a.gridAngleDeg == b.gridAngleDeg && a.safetyMarginM == b.safetyMarginM &&
-           a.keepInsideArea == b.keepInsideArea && a.insideMarginM == b.insideMarginM &&
-           a.altitudeSeparationM == b.altitudeSeparationM && a.batteryReserve == b.batteryReserve &&
-           a.maxCells == b.maxCells;
+    return a.planner == b.planner && a.gridAngleDeg == b.gridAngleDeg &&
+           a.safetyMarginM == b.safetyMarginM && a.keepInsideArea == b.keepInsideArea &&
+           a.insideMarginM == b.insideMarginM && a.altitudeSeparationM == b.altitudeSeparationM &&
+           a.batteryReserve == b.batteryReserve && a.maxCells == b.maxCells &&
+           a.doubleGrid == b.doubleGrid;
 }
 
 bool sameRoute(const route::Route& a, const route::Route& b) {
@@ -59,8 +60,9 @@ bool operator==(const Mission& a, const Mission& b) {
     for (std::size_t i = 0; i < a.editedRoutes.size(); ++i)
         if (!sameRoute(a.editedRoutes[i], b.editedRoutes[i]))
             return false;
-    return a.name == b.name && a.area == b.area && a.noFlyZones == b.noFlyZones && a.home == b.home &&
-           a.landing == b.landing && a.aircraft == b.aircraft && a.options == b.options && a.terrain == b.terrain;
+    return a.name == b.name && a.area == b.area && a.corridor == b.corridor &&
+           a.noFlyZones == b.noFlyZones && a.home == b.home && a.landing == b.landing &&
+           a.aircraft == b.aircraft && a.options == b.options && a.terrain == b.terrain;
 }
 
 } // namespace pf::mission

@@ -22,6 +22,19 @@ struct NoFlyZone {
     }
 };
 
+// A corridor survey (a road, a river, a rail line, a dike): the ground within half the width of a
+// centre line, cut square at the line's ends. A mission surveys either an area or a corridor; with
+// a corridor, Mission::area holds the corridor's ground (core/mission/corridor.h keeps the two
+// together).
+struct Corridor {
+    geo::GeoRing line;   // the centre line, WGS84, an open polyline in the order drawn
+    double widthM = 0.0; // the full width, > 0
+    friend bool operator==(const Corridor& a, const Corridor& b) {
+        return a.line == b.line && a.widthM == b.widthM;
+    }
+    friend bool operator!=(const Corridor& a, const Corridor& b) { return !(a == b); }
+};
+
 // One aircraft taking part in the mission, with its camera and flight settings.
 struct AircraftConfig {
     std::string name;  // unique label shown to the user, e.g. "Falcon 8 #1"
@@ -69,6 +82,9 @@ struct PlannerOptions {
     double altitudeSeparationM = 10.0;  // between aircraft flying at the same time
     double batteryReserve = 0.2;        // fraction of endurance kept in reserve
     std::size_t maxCells = 4'000'000;   // grid cell budget
+    // Double grid (for 3D models): a second pass over the area with lanes at 90 degrees to the
+    // first, each pass a complete survey of its own (core/mission/double_grid.h).
+    bool doubleGrid = false;
     friend bool operator==(const PlannerOptions& a, const PlannerOptions& b);
 };
 
@@ -102,6 +118,9 @@ struct TerrainOptions {
 struct Mission {
     std::string name;
     geo::GeoPolygon area;
+    // Set: the mission surveys this corridor with lanes along its line, and `area` is the
+    // corridor's ground (mission::applyCorridor), empty while the corridor is not valid.
+    std::optional<Corridor> corridor;
     std::vector<NoFlyZone> noFlyZones;
     std::optional<geo::LonLat> home;    // take-off point
     std::optional<geo::LonLat> landing; // landing point; home if unset
@@ -122,8 +141,9 @@ bool sameRoute(const route::Route& a, const route::Route& b);
 // Newest mission file format version: 2 added the optional "routes" (hand-edited routes), 3 the
 // aircraft's "acceleration_mps2" and the planners "auto", "sweep" and "lawnmower", 4 "terrain"
 // (terrain following) and the routes' ground heights, 5 the aircraft's "kind" (multirotor,
-// fixed-wing, VTOL) and "plane" figures. A file is written with the oldest version that holds what
-// it contains (version 1 without any of them), so that older releases keep reading it.
+// fixed-wing, VTOL) and "plane" figures, a "corridor" and the double grid. A file is written with
+// the oldest version that holds what it contains (version 1 without any of them), so that older
+// releases keep reading it.
 constexpr int kMissionFileVersion = 5;
 
 } // namespace pf::mission

@@ -115,7 +115,9 @@ struct MissionPlan {
         notes; // things worth knowing that ask for nothing (e.g. sorties needed)
 
     // Filled by planMission over all aircraft:
-    double coverageRatio = 0.0;    // admissible area seen by the REAL footprints of all photos
+    double coverageRatio = 0.0; // admissible area seen by the REAL footprints of all photos (with a
+                                // double grid: by each pass on its own, the lower of the two)
+    std::vector<double> passCoverage; // a double grid: the share each pass sees on its own
     double uncoveredAreaM2 = 0.0;
     std::vector<UncoveredArea> uncovered; // the largest uncovered patches, largest first
     int uncoveredPatchCount = 0;          // all of them, listed or not

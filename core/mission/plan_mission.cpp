@@ -2,8 +2,12 @@
 
 #include "core/job_scope.h"
 #include "core/mission/build_plan.h"
+#include "core/mission/corridor.h"
 #include "core/mission/fleet_plan.h"
 #include "core/mission/memory_estimate.h"
+#include "core/mission/plan_corridor.h"
+#include "core/mission/plan_geojson.h"
+#include "core/mission/plan_region.h"
 #include "core/mission/planner_kinds.h"
 #include "core/mission/route_check.h"
 #include "core/mission/terrain_stage.h"
@@ -117,6 +121,8 @@ Result<MissionPlan> planMissionChecked(const Mission& m, Progress* progress) {
     const std::size_t budget = memoryBudgetBytes();
     if (auto fits = checkPlanMemory(m, budget); !fits)
         return fits.error();
+    if (plansCorridorLanes(m)) // lanes along the corridor: no planner to choose
+        return planCorridorMission(m);
     Mission one = m;
     std::string why;
     // The automatic choice holds two plans of a region at once (the soonest so far and the next);

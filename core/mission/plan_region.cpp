@@ -2,6 +2,7 @@
 
 #include "core/job_scope.h"
 #include "core/mission/aircraft_naming.h"
+#include "core/mission/double_grid.h"
 #include "core/mission/planner_kinds.h"
 #include "core/mission/validation.h"
 #include "core/plan/best_candidate.h"
@@ -83,22 +84,6 @@ void finish(AircraftPlan& p, const Aircraft& a, PlannerKind kind) {
                                                       [](const auto& w) { return w.kind == route::WaypointKind::Photo; }));
     p.route.aircraft = a.cfg.name;
     p.route.cruiseSpeedMps = a.cfg.cruiseSpeedMps;
-}
-
-// Metrics of a plan made without a grid (sweep, lawnmower): the flown survey's length and turns by the
-// one model; no cells.
-void routeMetrics(AircraftPlan& p, const plan::FlightTimeModel& model) {
-    std::vector<geo::Vec2> pts;
-    pts.reserve(p.localWaypoints.size());
-    for (const auto& w : p.localWaypoints)
-        pts.push_back(w.pos);
-    const plan::FlightTime t = plan::flightTime(pts, model);
-    p.metrics.pathLengthM = t.lengthM;
-    p.metrics.distanceM = t.lengthM;
-    p.metrics.turns = t.turns;
-    p.metrics.turnAngleDeg = t.turnAngleDeg;
-    p.metrics.estimatedTimeS = t.totalS;
-    p.metrics.occurrences = static_cast<int>(pts.size());
 }
 
 // Heading of the leg a -> b (north when a == b).
@@ -432,6 +417,20 @@ Result<AircraftPlan> planOne(const geo::MultiPolygon& region,
 
 } // namespace
 
+void routeMetrics(AircraftPlan& p, const plan::FlightTimeModel& model) {
+    std::vector<geo::Vec2> pts;
+    pts.reserve(p.localWaypoints.size());
+    for (const auto& w : p.localWaypoints)
+        pts.push_back(w.pos);
+    const plan::FlightTime t = plan::flightTime(pts, model);
+    p.metrics.pathLengthM = t.lengthM;
+    p.metrics.distanceM = t.lengthM;
+    p.metrics.turns = t.turns;
+    p.metrics.turnAngleDeg = t.turnAngleDeg;
+    p.metrics.estimatedTimeS = t.totalS;
+    p.metrics.occurrences = static_cast<int>(pts.size());
+}
+
 std::vector<double> candidateAngles(const geo::MultiPolygon& region) {
     std::vector<double> angles;
     for (int a = 0; a < 180; a += 5)
@@ -463,6 +462,8 @@ Result<AircraftPlan> planRegion(const geo::MultiPolygon& region,
                                 const std::optional<geo::Vec2>& home,
                                 const std::optional<geo::Vec2>& landing,
                                 const route::LaneSpacingFn& laneSpacing) {
+    if (options.doubleGrid) // two passes, each planned here without it
+        return planDoubleGrid(region, noFly, aircraft, options, home, landing, laneSpacing);
     const auto t0 = std::chrono::steady_clock::now();
     auto a = prepare(aircraft);
     if (!a)

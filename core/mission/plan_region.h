@@ -15,7 +15,7 @@
 
 namespace pf::mission {
 
-// Plans ONE aircraft over `region` (local metres of the mission's frame, e.g. the subarea assigned
+// Plans ONE aircraft over `region` (local metres in `frame`, e.g. the subarea assigned
 // to it), avoiding `noFly` (local metres, un-buffered; the options' safety margin is applied), with
 // options.planner:
 // - grid planners (stride, raster, wavefront): the take-off cell is the visitable cell nearest to
@@ -29,7 +29,8 @@ namespace pf::mission {
 // - lawnmower: plan::planLawnmower, the Survey pattern over the region, straight over the zones;
 // - auto: sweep, stride and raster are planned in full and the one whose route flies soonest (from
 //   home over its survey waypoints and back, aloneRouteTimeS) is kept; plannerChoice says which and
-//   why.
+//   why;
+// - with options.doubleGrid, planDoubleGrid (core/mission/double_grid.h): two passes at 90 degrees.
 // With `laneSpacing` (over terrain: terrain_stage.h's laneSpacing), every planner's photos are then
 // spaced per lane (route::spaceLanes, before the automatic choice compares them; the lanes respaced
 // and the photos that saved in AircraftPlan::terrain).
@@ -43,6 +44,10 @@ Result<AircraftPlan> planRegion(const geo::MultiPolygon& region,
                                 const std::optional<geo::Vec2>& home,
                                 const std::optional<geo::Vec2>& landing = std::nullopt,
                                 const route::LaneSpacingFn& laneSpacing = {});
+
+// A plan made without a grid (sweep, lawnmower, corridor, a double grid): its metrics from its
+// flown survey, the length and turns by the one model; no cells.
+void routeMetrics(AircraftPlan& p, const plan::FlightTimeModel& model);
 
 // The angles the automatic search tries for a region.
 std::vector<double> candidateAngles(const geo::MultiPolygon& region);

@@ -2,6 +2,7 @@
 
 #include "core/geo/polygon_ops.h"
 #include "core/mission/aircraft_naming.h"
+#include "core/mission/corridor.h"
 
 #include <cmath>
 #include <cstdio>
@@ -51,6 +52,18 @@ std::string count(double n) {
 }
 
 void error(std::vector<Problem>& out, std::string msg) { out.push_back({Severity::Error, std::move(msg)}); }
+
+// The area's problems; with a corridor, the corridor's, then those of its ground.
+std::vector<Problem> areaProblemsOf(const Mission& m) {
+    if (!m.corridor)
+        return geo::validatePolygon(m.area, "the area");
+    auto problems = validateCorridor(*m.corridor);
+    if (!geo::hasError(problems)) {
+        const auto ground = geo::validatePolygon(m.area, "the corridor's ground");
+        problems.insert(problems.end(), ground.begin(), ground.end());
+    }
+    return problems;
+}
 void warning(std::vector<Problem>& out, std::string msg) { out.push_back({Severity::Warning, std::move(msg)}); }
 
 // The altitude's own limits: a number at or above the minimum safe altitude, at most the aircraft's
@@ -172,7 +185,7 @@ std::vector<std::string> altitudeErrors(const Mission& m, const AircraftConfig& 
         if (m.aircraft[i].name == a.name)
             who = aircraftName(a, i);
     auto out = altitudeLimitErrors(who, a, altitudeM, false);
-    if (!out.empty() || m.options.maxCells == 0)
+    if (!out.empty() || m.options.maxCells == 0 || plansCorridorLanes(m))
         return out;
     auto eff = sensor::effectiveFootprint(a.camera, altitudeM, a.overlap);
     auto geom = localGeometry(m);
@@ -207,7 +220,7 @@ Result<double> resolvedAltitude(const AircraftConfig& a) {
 }
 
 Result<LocalGeometry> localGeometry(const Mission& m) {
-    const auto areaProblems = geo::validatePolygon(m.area, "the area");
+    const auto areaProblems = areaProblemsOf(m);
     if (geo::hasError(areaProblems))
         return makeError(ErrorCode::InvalidGeometry, areaProblems.front().message);
     const geo::GeoPolygon area = geo::cleanPolygon(m.area);
@@ -253,8 +266,8 @@ ValidationReport validateMission(const Mission& m) {
     ValidationReport r;
     auto& out = r.problems;
 
-    // Geometry: the area, then each no-fly zone, each as a polygon of its own.
-    const auto areaProblems = geo::validatePolygon(m.area, "the area");
+    // Geometry: the area (or the corridor), then each no-fly zone, each as a polygon of its own.
+    const auto areaProblems = areaProblemsOf(m);
     out.insert(out.end(), areaProblems.begin(), areaProblems.end());
     bool zonesOk = true;
     for (std::size_t i = 0; i < m.noFlyZones.size(); ++i) {
@@ -323,6 +336,9 @@ ValidationReport validateMission(const Mission& m) {
         error(out, "the grid angle must be a finite number of degrees");
     if (o.maxCells == 0)
         error(out, "the cell budget must be at least 1 cell");
+    if (o.doubleGrid && plansCorridorLanes(m))
+        warning(out, "the double grid is for area surveys: the corridor is flown once, with lanes "
+                     "along its line");
     if (m.aircraft.empty())
         error(out, "the mission has no aircraft: add at least one");
     // Names label each aircraft's route and files: a second "Falcon 8" would overwrite the first's.
@@ -414,7 +430,8 @@ ValidationReport validateMission(const Mission& m) {
             }
         }
         f.gridAngleDeg = o.gridAngleDeg.value_or(0.0);
-        if (ok && geom && r.admissibleAreaM2 > 0 && o.maxCells > 0 && std::isfinite(f.gridAngleDeg)) {
+        if (ok && geom && r.admissibleAreaM2 > 0 && o.maxCells > 0 &&
+            std::isfinite(f.gridAngleDeg) && !plansCorridorLanes(m)) {
             grid::Grid::Size size;
             const std::string budget = cellBudgetError(who, a, f.altitudeM, f.cellSizeM, admissible, f.gridAngleDeg,
                                                        o.maxCells, &size);

@@ -40,6 +40,7 @@ struct LocalWaypoint {
     double headingDeg = 0.0; // clockwise from north
     WaypointKind kind = WaypointKind::Photo;
     int cell = -1; // grid cell the waypoint photographs, -1 for none
+    int pass = 0;  // a double grid's pass: 0 the first, 1 the second at 90 degrees to it
 };
 
 // One aircraft's flight: the ordered waypoints of one sortie (take-off at home, land at home).

@@ -6,10 +6,14 @@
 
 namespace pf::ui {
 
-MoveShapeCommand::MoveShapeCommand(MissionDocument* doc, ShapeRef ref, QPointF sceneDelta, QUndoCommand* parent)
+MoveShapeCommand::MoveShapeCommand(MissionDocument* doc, ShapeRef ref, QPointF sceneDelta,
+                                   QUndoCommand* parent)
     : ShapeEditCommand(doc, ref,
-                       ref.kind == ShapeRef::Kind::Area ? QCoreApplication::translate("Commands", "Move area")
-                                                        : QCoreApplication::translate("Commands", "Move no-fly zone"),
+                       ref.kind == ShapeRef::Kind::Area
+                           ? QCoreApplication::translate("Commands", "Move area")
+                       : ref.kind == ShapeRef::Kind::Corridor
+                           ? QCoreApplication::translate("Commands", "Move corridor")
+                           : QCoreApplication::translate("Commands", "Move no-fly zone"),
                        parent) {
     auto move = [&](geo::GeoRing& ring) {
         for (auto& p : ring) p = fromScene(toScene(p) + sceneDelta);

@@ -1,7 +1,8 @@
 #include "ui/map/mission_layer.h"
 
-#include "core/geo/polygon_ops.h"
 #include "core/geo/local_frame.h"
+#include "core/geo/polygon_ops.h"
+#include "core/mission/corridor.h"
 #include "ui/geo_adapter.h"
 #include "ui/shape_validation.h"
 
@@ -325,6 +326,8 @@ QVector<QPolygonF> MissionLayer::sceneRings(const ShapeRef& ref) const {
 
 ShapeItem* MissionLayer::itemFor(const ShapeRef& ref) const {
     if (ref.kind == ShapeRef::Kind::Area) return m_area;
+    if (ref.kind == ShapeRef::Kind::Corridor)
+        return m_corridorLine;
     return ref.index >= 0 && std::size_t(ref.index) < m_noFly.size() ? m_noFly[std::size_t(ref.index)] : nullptr;
 }
 
@@ -338,7 +341,28 @@ void MissionLayer::rebuild() {
     }
     m_area->setRings(sceneRings(ShapeRef::area()));
     m_area->setHandleMargin(margin);
-    if (!m.area.outer.empty()) {
+    if (!m_corridorLine) {
+        m_corridorLine = new ShapeItem(ShapeStyle::Area);
+        m_corridorLine->setClosed(false);
+        m_corridorLine->setZValue(11);
+        m_scene->addItem(m_corridorLine);
+    }
+    m_corridorLine->setRings(sceneRings(ShapeRef::corridor()));
+    m_corridorLine->setHandleMargin(margin);
+    if (m.corridor) {
+        // The corridor's ground is the area: its problems are the line's and the width's.
+        const QString problem = corridorProblem(*m.corridor);
+        m_corridorLine->setProblem(problem);
+        m_area->setProblem({});
+        if (!problem.isEmpty())
+            problems << problem;
+        m_area->setLabel(problem.isEmpty()
+                             ? tr("Corridor · %1 km × %2 m")
+                                   .arg(mission::corridorLengthM(*m.corridor) / 1000.0, 0, 'f', 2)
+                                   .arg(m.corridor->widthM, 0, 'f', 0)
+                             : tr("Corridor (invalid)"));
+        m_area->setLabelAnchor(std::nullopt);
+    } else if (!m.area.outer.empty()) {
         const QString problem = shapeProblem(m.area, tr("the area"));
         m_area->setProblem(problem);
         if (!problem.isEmpty()) problems << problem;
@@ -398,6 +422,9 @@ void MissionLayer::rebuild() {
 
 void MissionLayer::applySelection() {
     if (m_area) m_area->setHighlighted(m_selected && *m_selected == ShapeRef::area(), m_selectedVertex);
+    if (m_corridorLine)
+        m_corridorLine->setHighlighted(m_selected && *m_selected == ShapeRef::corridor(),
+                                       m_selectedVertex);
     for (std::size_t i = 0; i < m_noFly.size(); ++i)
         m_noFly[i]->setHighlighted(m_selected && *m_selected == ShapeRef::noFly(int(i)), m_selectedVertex);
 }
@@ -422,6 +449,8 @@ void MissionLayer::setMetresPerPixel(double mpp) {
     if (std::abs(mpp - m_mpp) < 1e-12) return;
     m_mpp = mpp;
     if (m_area) m_area->setHandleMargin(60 * mpp);
+    if (m_corridorLine)
+        m_corridorLine->setHandleMargin(60 * mpp);
     for (auto* item : m_noFly) item->setHandleMargin(60 * mpp);
 }
 
@@ -437,18 +466,22 @@ QRectF MissionLayer::missionBounds() const {
 }
 
 namespace {
-std::vector<ShapeRef> hitOrder(const std::optional<ShapeRef>& selected, std::size_t zones, bool hasArea) {
+std::vector<ShapeRef> hitOrder(const std::optional<ShapeRef>& selected,
+                               const MissionDocument& doc) {
     std::vector<ShapeRef> order;
     if (selected) order.push_back(*selected);
-    for (std::size_t i = zones; i-- > 0;)
+    for (std::size_t i = doc.mission().noFlyZones.size(); i-- > 0;)
         if (!selected || *selected != ShapeRef::noFly(int(i))) order.push_back(ShapeRef::noFly(int(i)));
-    if (hasArea && (!selected || *selected != ShapeRef::area())) order.push_back(ShapeRef::area());
+    // A corridor's ground is edited through its line: the corridor is the shape, not the area.
+    const ShapeRef ground = doc.mission().corridor ? ShapeRef::corridor() : ShapeRef::area();
+    if (doc.hasShape(ground) && (!selected || *selected != ground))
+        order.push_back(ground);
     return order;
 }
 } // namespace
 
 std::optional<MissionLayer::VertexHit> MissionLayer::hitVertex(const QPointF& p, double tol) const {
-    for (const auto& ref : hitOrder(m_selected, m_doc->mission().noFlyZones.size(), m_doc->hasShape(ShapeRef::area()))) {
+    for (const auto& ref : hitOrder(m_selected, *m_doc)) {
         const auto rings = sceneRings(ref);
         std::optional<VertexHit> best;
         double bestD = tol;
@@ -466,13 +499,15 @@ std::optional<MissionLayer::VertexHit> MissionLayer::hitVertex(const QPointF& p,
 }
 
 std::optional<MissionLayer::EdgeHit> MissionLayer::hitEdge(const QPointF& p, double tol) const {
-    for (const auto& ref : hitOrder(m_selected, m_doc->mission().noFlyZones.size(), m_doc->hasShape(ShapeRef::area()))) {
+    for (const auto& ref : hitOrder(m_selected, *m_doc)) {
         const auto rings = sceneRings(ref);
         std::optional<EdgeHit> best;
         double bestD = tol;
+        // A corridor's line is open: no edge from its last point back to its first.
+        const int open = ref.kind == ShapeRef::Kind::Corridor ? 1 : 0;
         for (int r = 0; r < rings.size(); ++r) {
             const QPolygonF& ring = rings[r];
-            for (int i = 0; i < ring.size(); ++i) {
+            for (int i = 0; i + open < ring.size(); ++i) {
                 QPointF q;
                 const double d = distanceToSegment(p, ring[i], ring[(i + 1) % ring.size()], &q);
                 if (d <= bestD) {
@@ -487,8 +522,10 @@ std::optional<MissionLayer::EdgeHit> MissionLayer::hitEdge(const QPointF& p, dou
 }
 
 std::optional<ShapeRef> MissionLayer::hitShape(const QPointF& p) const {
-    for (const auto& ref : hitOrder(std::nullopt, m_doc->mission().noFlyZones.size(), m_doc->hasShape(ShapeRef::area()))) {
-        const auto rings = sceneRings(ref);
+    for (const auto& ref : hitOrder(std::nullopt, *m_doc)) {
+        // Inside a corridor is inside its ground.
+        const auto rings =
+            sceneRings(ref.kind == ShapeRef::Kind::Corridor ? ShapeRef::area() : ref);
         if (rings.isEmpty()) continue;
         bool inside = rings[0].containsPoint(p, Qt::OddEvenFill);
         for (int r = 1; r < rings.size() && inside; ++r)

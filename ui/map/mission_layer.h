@@ -83,7 +83,8 @@ public:
         QPointF point;      // nearest point on the edge (scene)
     };
     // Hit tests in scene coordinates with a tolerance in scene metres. Selected shape first, then
-    // no-fly zones (drawn on top), then the area.
+    // no-fly zones (drawn on top), then the corridor's line, then the area (not with a corridor:
+    // the area is then the corridor's ground, edited through its line and width).
     std::optional<VertexHit> hitVertex(const QPointF& p, double tolerance) const;
     std::optional<EdgeHit> hitEdge(const QPointF& p, double tolerance) const;
     std::optional<ShapeRef> hitShape(const QPointF& p) const;
@@ -118,6 +119,7 @@ private:
     MissionDocument* m_doc;
     QGraphicsScene* m_scene;
     ShapeItem* m_area = nullptr;
+    ShapeItem* m_corridorLine = nullptr; // the corridor's centre line over its ground (m_area)
     std::vector<ShapeItem*> m_noFly;
     HomeItem* m_home = nullptr;
     std::optional<ShapeRef> m_selected;

@@ -84,15 +84,36 @@ AircraftPanel::AircraftPanel(MissionDocument* doc, io::Catalog catalog, QWidget*
     : QWidget(parent), m_doc(doc), m_catalog(std::move(catalog)) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(6, 6, 6, 6);
+    buildList();
+    layout->addWidget(m_list);
+    layout->addLayout(buildButtons());
+    createFields();
+    buildForm();
+    layout->addWidget(m_form);
+    layout->addStretch();
 
+    connectFields();
+    connectPlaneFields();
+    connect(doc, &MissionDocument::aircraftChanged, this, [this] {
+        refreshList();
+        refreshForm();
+    });
+    refreshList();
+    refreshForm();
+}
+
+// The list of the mission's aircraft.
+void AircraftPanel::buildList() {
     m_list = new QListWidget;
     m_list->setMaximumHeight(110);
     m_list->setIconSize(QSize(14, 14));
     // A long camera name is shortened in the middle, never cut by a scroll bar; the tip has it all.
     m_list->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     m_list->setTextElideMode(Qt::ElideMiddle);
-    layout->addWidget(m_list);
+}
 
+// Add aircraft (a menu of the catalog's aircraft and a custom one) and Remove.
+QHBoxLayout* AircraftPanel::buildButtons() {
     auto* buttons = new QHBoxLayout;
     m_addButton = new QToolButton;
     m_addButton->setText(tr("Add aircraft"));
@@ -111,12 +132,12 @@ AircraftPanel::AircraftPanel(MissionDocument* doc, io::Catalog catalog, QWidget*
     buttons->addWidget(m_addButton);
     buttons->addStretch();
     buttons->addWidget(m_removeButton);
-    layout->addLayout(buttons);
+    return buttons;
+}
 
-    m_form = new QWidget;
-    auto* form = new QFormLayout(m_form);
-    form->setContentsMargins(0, 6, 0, 0);
-    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+// The form's fields: wide ranges, so that a value out of the aircraft's limits is refused with the
+// reason instead of being clamped.
+void AircraftPanel::createFields() {
     m_name = new QLineEdit;
     m_model = new QLabel;
     m_model->setStyleSheet(QStringLiteral("color: palette(mid);"));
@@ -165,6 +186,14 @@ AircraftPanel::AircraftPanel(MissionDocument* doc, io::Catalog catalog, QWidget*
     m_runIn->setToolTip(tr(
         "Straight flight before each lane's first photo: the camera level and the track settled"));
     m_colour = new QPushButton;
+}
+
+// The form: the aircraft's fields, and a plane's own figures in a box of their own.
+void AircraftPanel::buildForm() {
+    m_form = new QWidget;
+    auto* form = new QFormLayout(m_form);
+    form->setContentsMargins(0, 6, 0, 0);
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     form->addRow(tr("Name"), m_name);
     form->addRow(tr("Model"), m_model);
     form->addRow(tr("Camera"), m_camera);
@@ -189,9 +218,10 @@ AircraftPanel::AircraftPanel(MissionDocument* doc, io::Catalog catalog, QWidget*
     planeForm->addRow(tr("Run-in"), m_runIn);
     form->addRow(m_planeBox);
     form->addRow(tr("Colour"), m_colour);
-    layout->addWidget(m_form);
-    layout->addStretch();
+}
 
+// Every field edits the current aircraft (one undo step each).
+void AircraftPanel::connectFields() {
     connect(m_list, &QListWidget::currentRowChanged, this, [this] { refreshForm(); });
     connect(m_removeButton, &QPushButton::clicked, this, &AircraftPanel::removeCurrent);
     connect(m_name, &QLineEdit::editingFinished, this, [this] {
@@ -235,23 +265,19 @@ AircraftPanel::AircraftPanel(MissionDocument* doc, io::Catalog catalog, QWidget*
     connect(m_speed, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double v) {
         editCurrent(tr("speed"), [&](mission::AircraftConfig& a) { a.cruiseSpeedMps = v; });
     });
-    connect(m_endurance, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double v) {
-        editCurrent(tr("endurance"), [&](mission::AircraftConfig& a) { a.enduranceMin = v; });
-    });
-    connectPlaneFields();
+    connect(
+        m_endurance, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+            editCurrent(tr("endurance"), [&](mission::AircraftConfig& a) { a.enduranceMin = v; });
+        });
     connect(m_colour, &QPushButton::clicked, this, [this] {
         const int i = current();
-        if (i < 0) return;
+        if (i < 0)
+            return;
         const QColor c = QColorDialog::getColor(QColor(QString::fromStdString(m_doc->mission().aircraft[std::size_t(i)].colour)),
                                                 this, tr("Path colour"));
-        if (c.isValid()) setColour(c);
+        if (c.isValid())
+            setColour(c);
     });
-    connect(doc, &MissionDocument::aircraftChanged, this, [this] {
-        refreshList();
-        refreshForm();
-    });
-    refreshList();
-    refreshForm();
 }
 
 void AircraftPanel::connectPlaneFields() {

@@ -9,6 +9,7 @@
 #include <functional>
 
 class QComboBox;
+class QHBoxLayout;
 class QDoubleSpinBox;
 class QGroupBox;
 class QLabel;
@@ -61,6 +62,11 @@ private:
     void refreshForm(bool keepError = false);
     // Shows the plane's figures for a plane, hides them for a multirotor.
     void showPlaneRows(bool plane);
+    void buildList();
+    QHBoxLayout* buildButtons();
+    void createFields();
+    void buildForm();
+    void connectFields();
     void connectPlaneFields();
     // Checks a typed altitude (or GSD) against the aircraft's limits (mission::altitudeErrors); a
     // refused value shows its reason and the box gets the stored value back.

@@ -1,8 +1,10 @@
-// MissionPanel: a summary of the open mission (area, no-fly zones, home) with selection of its shapes.
+// MissionPanel: a summary of the open mission (area or corridor, no-fly zones, home) with selection
+// of its shapes, and the corridor's width.
 #pragma once
 
 #include <QWidget>
 
+class QDoubleSpinBox;
 class QLabel;
 class QListWidget;
 
@@ -28,6 +30,7 @@ private:
     QLabel* m_summary;
     QListWidget* m_shapes;
     QLabel* m_problems;
+    QDoubleSpinBox* m_width; // the corridor's width (or the next one drawn), one undo step per edit
 };
 
 } // namespace pf::ui

@@ -101,11 +101,17 @@ void ProblemsPanel::addPlanItems() {
     const auto& plan = m_planner->plan();
     if (!plan)
         return;
-    // The ground no photo sees is said once, with where it is on the map.
-    const std::string uncovered = mission::uncoveredMessage(*plan);
-    for (const auto& w : plan->warnings)
-        if (w != uncovered)
+    // The ground no photo sees is said once, with where it is on the map (as the planner words
+    // it: a double grid says which pass).
+    std::string uncovered = mission::uncoveredMessage(*plan);
+    for (const auto& w : plan->warnings) {
+        const bool same = !uncovered.empty() && w.size() >= uncovered.size() &&
+                          w.compare(w.size() - uncovered.size(), uncovered.size(), uncovered) == 0;
+        if (same)
+            uncovered = w;
+        else
             add(QString::fromStdString(w), tr("planner"), Severity::Warning);
+    }
     for (const auto& n : plan->notes)
         add(QString::fromStdString(n), tr("planner"), Severity::Info);
     if (!uncovered.empty())

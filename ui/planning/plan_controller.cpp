@@ -138,11 +138,13 @@ void PlanController::launch(const Request& request) {
     if (request.replaceEdited)
         m_replaceGeneration = generation;
     mission::Mission m = m_doc->mission();
-    if (m.area.outer.size() < 3 || m.aircraft.empty()) {
+    // A corridor without ground yet (an invalid one) goes to the planner, which says what is wrong.
+    const bool noArea = !m.corridor && m.area.outer.size() < 3;
+    if (noArea || m.aircraft.empty()) {
         // Nothing to plan yet: say what is missing instead of a planner error.
         setBusy(false);
-        m_error = m.area.outer.size() < 3 ? tr("No plan: draw or import the area of interest.")
-                                          : tr("No plan: add an aircraft.");
+        m_error = noArea ? tr("No plan: draw or import the area of interest (or a corridor).")
+                         : tr("No plan: add an aircraft.");
         emit planChanged();
         return;
     }

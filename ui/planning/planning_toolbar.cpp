@@ -64,6 +64,21 @@ PlanningToolBar::PlanningToolBar(MissionDocument* doc, PlanController* planner, 
         m_doc->undoStack()->push(new SetPlannerOptionsCommand(
             m_doc, o, on ? tr("Keep waypoints inside the area") : tr("Let lanes end beyond the area")));
     });
+    // A second pass across the first: two independent views of every point, for 3D models.
+    m_doubleGrid = new QAction(icon("double_grid"), tr("Double grid"), this);
+    m_doubleGrid->setObjectName(QStringLiteral("DoubleGridAction"));
+    m_doubleGrid->setCheckable(true);
+    m_doubleGrid->setToolTip(
+        tr("Double grid: a second pass with lanes at 90° to the first, each pass covering the "
+           "whole area (two independent views of every point, for 3D models)"));
+    connect(m_doubleGrid, &QAction::triggered, this, [this](bool on) {
+        auto o = m_doc->mission().options;
+        if (o.doubleGrid == on)
+            return;
+        o.doubleGrid = on;
+        m_doc->undoStack()->push(
+            new SetPlannerOptionsCommand(m_doc, o, on ? tr("Double grid") : tr("Single grid")));
+    });
     m_angleBox = new QDoubleSpinBox;
     m_angleBox->setObjectName(QStringLiteral("GridAngleBox"));
     m_angleBox->setToolTip(tr("Grid angle in degrees from east; Auto tries many angles and keeps the fastest plan"));
@@ -104,6 +119,7 @@ PlanningToolBar::PlanningToolBar(MissionDocument* doc, PlanController* planner, 
     addWidget(m_plannerBox);
     addWidget(m_angleBox);
     addAction(m_keepInside);
+    addAction(m_doubleGrid);
     addAction(exportRoutes);
     syncControls();
 }
@@ -123,6 +139,7 @@ void PlanningToolBar::syncControls() {
         }
     m_plannerBox->setCurrentIndex(m_plannerBox->findData(int(o.planner)));
     m_keepInside->setChecked(o.keepInsideArea);
+    m_doubleGrid->setChecked(o.doubleGrid);
     m_angleBox->setValue(o.gridAngleDeg ? *o.gridAngleDeg : -1.0);
 }
 

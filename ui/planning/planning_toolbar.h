@@ -1,6 +1,7 @@
 // PlanningToolBar: the Planning tool bar and the actions the Plan menu shares with it: Plan (asking
-// before edited routes are replaced), Cancel, planning after every edit, the planner, the grid angle
-// (or Auto) and Keep inside area, each edit of the mission's options one undo step.
+// before edited routes are replaced), Cancel, planning after every edit, the planner, the grid
+// angle (or Auto), Keep inside area and Double grid, each edit of the mission's options one undo
+// step.
 #pragma once
 
 #include <QToolBar>
@@ -28,6 +29,8 @@ public:
     QAction* autoPlanAction() const { return m_autoPlan; }
     // The "Keep inside area" toggle (object name "KeepInsideAction").
     QAction* keepInsideAction() const { return m_keepInside; }
+    // The "Double grid" toggle (object name "DoubleGridAction").
+    QAction* doubleGridAction() const { return m_doubleGrid; }
 
     // Plans now; when routes were edited by hand, asks first (interactive windows) and otherwise
     // keeps the edits until the user replaces them from the notice.
@@ -44,6 +47,7 @@ private:
     QAction* m_cancel;
     QAction* m_autoPlan;
     QAction* m_keepInside;
+    QAction* m_doubleGrid;
     QComboBox* m_plannerBox;
     QDoubleSpinBox* m_angleBox;
 };

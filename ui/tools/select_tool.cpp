@@ -6,10 +6,12 @@
 #include "ui/commands/remove_no_fly_zone_command.h"
 #include "ui/commands/remove_vertex_command.h"
 #include "ui/commands/set_area_command.h"
+#include "ui/commands/set_corridor_command.h"
 #include "ui/commands/set_home_command.h"
 #include "ui/geo_adapter.h"
 #include "ui/map/map_view.h"
 #include "ui/shape_validation.h"
+#include "ui/tools/draw_corridor_tool.h"
 
 #include <QApplication>
 #include <QGraphicsScene>
@@ -73,12 +75,20 @@ void SelectTool::updatePreview(const QPointF& p) {
         m_homePreview->setPos(p);
         return;
     }
+    const bool corridor = m_dragShape.kind == ShapeRef::Kind::Corridor;
     if (!m_preview) {
-        m_preview = std::make_unique<ShapeItem>(m_dragShape.kind == ShapeRef::Kind::Area ? ShapeStyle::Area
-                                                                                          : ShapeStyle::NoFly);
+        m_preview = std::make_unique<ShapeItem>(
+            m_dragShape.kind == ShapeRef::Kind::NoFlyZone ? ShapeStyle::NoFly : ShapeStyle::Area);
         m_preview->setZValue(60);
+        m_preview->setClosed(!corridor);
         m_view->scene()->addItem(m_preview.get());
         m_layer->setShapeHidden(m_dragShape, true);
+        if (corridor) { // the ground follows the line as it is dragged
+            m_groundPreview = std::make_unique<ShapeItem>(ShapeStyle::Area);
+            m_groundPreview->setZValue(59);
+            m_view->scene()->addItem(m_groundPreview.get());
+            m_layer->setShapeHidden(ShapeRef::area(), true);
+        }
     }
     QVector<QPolygonF> rings = m_layer->sceneRings(m_dragShape);
     if (m_drag == Drag::Vertex) {
@@ -94,7 +104,14 @@ void SelectTool::updatePreview(const QPointF& p) {
     geo::GeoPolygon poly;
     poly.outer = ringFromScene(rings[0]);
     for (int r = 1; r < rings.size(); ++r) poly.holes.push_back(ringFromScene(rings[r]));
-    const QString problem = shapeProblem(poly);
+    QString problem;
+    if (corridor) {
+        const mission::Corridor c{poly.outer, DrawCorridorTool::corridorWidthM(m_doc)};
+        problem = corridorProblem(c);
+        m_groundPreview->setRings(corridorGroundRings(c));
+    } else {
+        problem = shapeProblem(poly);
+    }
     m_preview->setProblem(problem);
     emit statusMessage(problem);
 }
@@ -159,10 +176,17 @@ void SelectTool::deleteSelection() {
     const auto shape = m_layer->selectedShape();
     if (!shape) return;
     auto* stack = m_doc->undoStack();
+    const bool corridor = shape->kind == ShapeRef::Kind::Corridor;
     if (const auto vertex = m_layer->selectedVertex()) {
         const geo::GeoPolygon poly = m_doc->shape(*shape);
         const auto& ring = vertex->ring == 0 ? poly.outer : poly.holes.at(std::size_t(vertex->ring - 1));
-        if (ring.size() <= 3) {
+        if (corridor && ring.size() <= 2) {
+            emit statusMessage(tr(
+                "A corridor's line needs at least 2 points: delete the whole corridor instead."));
+            m_layer->select(*shape);
+            return;
+        }
+        if (!corridor && ring.size() <= 3) {
             emit statusMessage(tr("A polygon needs at least 3 vertices: delete the whole shape instead."));
             m_layer->select(*shape);
             return;
@@ -171,7 +195,9 @@ void SelectTool::deleteSelection() {
         m_layer->select(*shape);
         return;
     }
-    if (shape->kind == ShapeRef::Kind::Area)
+    if (corridor)
+        stack->push(new SetCorridorCommand(m_doc, std::nullopt, tr("Delete corridor")));
+    else if (shape->kind == ShapeRef::Kind::Area)
         stack->push(new SetAreaCommand(m_doc, geo::GeoPolygon{}, tr("Delete area")));
     else
         stack->push(new RemoveNoFlyZoneCommand(m_doc, shape->index));
@@ -182,6 +208,10 @@ void SelectTool::endDrag() {
     if (m_preview) {
         m_layer->setShapeHidden(m_dragShape, false);
         m_preview.reset();
+    }
+    if (m_groundPreview) {
+        m_layer->setShapeHidden(ShapeRef::area(), false);
+        m_groundPreview.reset();
     }
     if (m_homePreview) {
         m_layer->setHomeHidden(false);

@@ -36,6 +36,7 @@ private:
     QPointF m_pressPos;
     bool m_moved = false;
     std::unique_ptr<ShapeItem> m_preview;
+    std::unique_ptr<ShapeItem> m_groundPreview; // a corridor's ground while its line is dragged
     std::unique_ptr<HomeItem> m_homePreview;
 };
 

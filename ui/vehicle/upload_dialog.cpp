@@ -79,6 +79,22 @@ UploadDialog::UploadDialog(MissionDocument* doc, QWidget* parent, std::map<QStri
            "serial:DEVICE:BAUD. System id 0 takes the first vehicle heard."));
     intro->setWordWrap(true);
 
+    buildTable();
+    QGroupBox* options = buildOptions();
+    QDialogButtonBox* buttons = buildButtons();
+    connectManager();
+
+    auto* lay = new QVBoxLayout(this);
+    lay->addWidget(intro);
+    lay->addWidget(m_table, 1);
+    lay->addWidget(options);
+    lay->addWidget(m_status);
+    lay->addWidget(buttons);
+    resize(1120, 520);
+}
+
+// The table: a row per aircraft (its battery, connection, system id, progress and answer).
+void UploadDialog::buildTable() {
     m_table = new QTableWidget(0, 6);
     m_table->setObjectName(QStringLiteral("UploadTable"));
     m_table->setHorizontalHeaderLabels({tr("Aircraft"), tr("Battery"), tr("Connection"),
@@ -93,50 +109,13 @@ UploadDialog::UploadDialog(MissionDocument* doc, QWidget* parent, std::map<QStri
         ports << QStringLiteral("serial:%1:57600").arg(p.systemLocation());
     QSettings settings;
     std::vector<route::Route> routes;
-    for (const auto& r : doc->routes())
+    for (const auto& r : m_doc->routes())
         routes.push_back(r.route);
-    const io::ExportContext ctx = io::makeExportContext(doc->mission(), routes);
+    const io::ExportContext ctx = io::makeExportContext(m_doc->mission(), routes);
     int row = 0;
-    for (const auto& r : doc->routes()) {
-        const QString name = QString::fromStdString(r.route.aircraft);
+    for (const auto& r : m_doc->routes()) {
         m_table->insertRow(row);
-        Row w;
-        w.use = new QCheckBox(name);
-        w.use->setChecked(!r.route.waypoints.empty());
-        // The battery: by default the one after the last verified upload, else the first.
-        const int sorties =
-            r.route.waypoints.empty() ? 1 : int(io::sortieCount(ctx, std::size_t(row)));
-        w.sortie = sortieBox(name, sorties, row);
-        if (m_sent && m_sent->count(name) && m_sent->at(name) < sorties)
-            w.sortie->setCurrentIndex(m_sent->at(name));
-        w.connection = new QComboBox;
-        w.connection->setEditable(true);
-        w.connection->addItem(settings.value(settingsKey(QStringLiteral("connection"), name),
-                                             QStringLiteral("udp::%1").arg(14550 + row))
-                                  .toString());
-        for (const QString& s : {QStringLiteral("udp:127.0.0.1:14550"), QStringLiteral("tcp:127.0.0.1:5760")})
-            if (w.connection->findText(s) < 0)
-                w.connection->addItem(s);
-        w.connection->addItems(ports);
-        w.connection->setMinimumWidth(200);
-        w.systemId = new QSpinBox;
-        w.systemId->setRange(0, 255);
-        w.systemId->setSpecialValueText(tr("auto"));
-        w.systemId->setValue(settings.value(settingsKey(QStringLiteral("sysid"), name), 0).toInt());
-        w.progress = new QProgressBar;
-        w.progress->setRange(0, 100);
-        w.progress->setValue(0);
-        w.answer = new QLabel(tr("Not sent"));
-        w.answer->setWordWrap(true);
-        w.answer->setTextInteractionFlags(Qt::TextSelectableByMouse);
-        m_table->setCellWidget(row, 0, centred(w.use));
-        m_table->setCellWidget(row, 1, centred(w.sortie));
-        m_table->setCellWidget(row, 2, centred(w.connection));
-        m_table->setCellWidget(row, 3, centred(w.systemId));
-        m_table->setCellWidget(row, 4, centred(w.progress));
-        m_table->setCellWidget(row, 5, w.answer);
-        m_table->setRowHeight(row, kRowHeight);
-        m_rows.push_back(w);
+        addVehicleRow(row, r.route, ctx, settings, ports);
         ++row;
     }
     // Room for every row (three lines of answer each) up to a screenful; then it scrolls.
@@ -149,7 +128,57 @@ UploadDialog::UploadDialog(MissionDocument* doc, QWidget* parent, std::map<QStri
     m_table->setColumnWidth(3, 80);
     m_table->setColumnWidth(4, 130);
     m_table->horizontalHeader()->setSectionResizeMode(5, QHeaderView::Stretch);
+}
 
+// Row `row` of the table for `route`: checked when it has waypoints, the battery after the last
+// verified upload (else the first), the connection and system id last used for the aircraft.
+void UploadDialog::addVehicleRow(int row, const route::Route& route, const io::ExportContext& ctx,
+                                 const QSettings& settings, const QStringList& ports) {
+    const QString name = QString::fromStdString(route.aircraft);
+    Row w;
+    w.use = new QCheckBox(name);
+    w.use->setChecked(!route.waypoints.empty());
+    // The battery: by default the one after the last verified upload, else the first.
+    const int sorties = route.waypoints.empty() ? 1 : int(io::sortieCount(ctx, std::size_t(row)));
+    w.sortie = sortieBox(name, sorties, row);
+    if (m_sent && m_sent->count(name) && m_sent->at(name) < sorties)
+        w.sortie->setCurrentIndex(m_sent->at(name));
+    w.connection = new QComboBox;
+    w.connection->setEditable(true);
+    w.connection->addItem(settings
+                              .value(settingsKey(QStringLiteral("connection"), name),
+                                     QStringLiteral("udp::%1").arg(14550 + row))
+                              .toString());
+    for (const QString& s :
+         {QStringLiteral("udp:127.0.0.1:14550"), QStringLiteral("tcp:127.0.0.1:5760")})
+        if (w.connection->findText(s) < 0)
+            w.connection->addItem(s);
+    w.connection->addItems(ports);
+    w.connection->setMinimumWidth(200);
+    w.systemId = new QSpinBox;
+    w.systemId->setRange(0, 255);
+    w.systemId->setSpecialValueText(tr("auto"));
+    w.systemId->setValue(settings.value(settingsKey(QStringLiteral("sysid"), name), 0).toInt());
+    w.progress = new QProgressBar;
+    w.progress->setRange(0, 100);
+    w.progress->setValue(0);
+    w.answer = new QLabel(tr("Not sent"));
+    w.answer->setWordWrap(true);
+    w.answer->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_table->setCellWidget(row, 0, centred(w.use));
+    m_table->setCellWidget(row, 1, centred(w.sortie));
+    m_table->setCellWidget(row, 2, centred(w.connection));
+    m_table->setCellWidget(row, 3, centred(w.systemId));
+    m_table->setCellWidget(row, 4, centred(w.progress));
+    m_table->setCellWidget(row, 5, w.answer);
+    m_table->setRowHeight(row, kRowHeight);
+    m_rows.push_back(w);
+}
+
+// The mission options: gimbal command, photo trigger, what follows the last waypoint (as last
+// used).
+QGroupBox* UploadDialog::buildOptions() {
+    QSettings settings;
     m_gimbal = new QComboBox;
     m_gimbal->addItem(tr("Straight down: DO_MOUNT_CONTROL"), int(io::GimbalCommand::MountControl));
     m_gimbal->addItem(tr("Straight down: DO_GIMBAL_MANAGER_PITCHYAW"),
@@ -173,6 +202,11 @@ UploadDialog::UploadDialog(MissionDocument* doc, QWidget* parent, std::map<QStri
     form->addRow(tr("Photos:"), m_trigger);
     form->addRow(tr("After the last waypoint:"), m_end);
 
+    return options;
+}
+
+// The status line and the buttons: Connect and Upload, Cancel upload, Close.
+QDialogButtonBox* UploadDialog::buildButtons() {
     m_status = new QLabel;
     m_status->setObjectName(QStringLiteral("UploadStatus"));
     m_status->setWordWrap(true);
@@ -186,6 +220,12 @@ UploadDialog::UploadDialog(MissionDocument* doc, QWidget* parent, std::map<QStri
     connect(m_cancel, &QPushButton::clicked, m_manager, &UploadManager::cancel);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
 
+    return buttons;
+}
+
+// The manager's answers: each row's progress, the next battery offered after a verified upload,
+// the summary when every job has ended.
+void UploadDialog::connectManager() {
     connect(m_manager, &UploadManager::jobProgress, this, &UploadDialog::refreshRow);
     connect(m_manager, &UploadManager::jobVehicle, this, &UploadDialog::refreshRow);
     connect(m_manager, &UploadManager::jobFinished, this, &UploadDialog::refreshRow);
@@ -213,14 +253,6 @@ UploadDialog::UploadDialog(MissionDocument* doc, QWidget* parent, std::map<QStri
                               : done + QLatin1Char('\n') + m_warnings.join(QLatin1Char('\n')));
         emit uploadsFinished(ok, failed);
     });
-
-    auto* lay = new QVBoxLayout(this);
-    lay->addWidget(intro);
-    lay->addWidget(m_table, 1);
-    lay->addWidget(options);
-    lay->addWidget(m_status);
-    lay->addWidget(buttons);
-    resize(1120, 520);
 }
 
 void UploadDialog::setConnection(int row, const QString& connection, int systemId) {

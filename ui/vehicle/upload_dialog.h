@@ -12,10 +12,14 @@
 
 class QCheckBox;
 class QComboBox;
+class QDialogButtonBox;
+class QGroupBox;
 class QLabel;
 class QProgressBar;
 class QPushButton;
+class QSettings;
 class QSpinBox;
+class QStringList;
 class QTableWidget;
 
 namespace pf::ui {
@@ -55,6 +59,12 @@ private:
         QProgressBar* progress;
         QLabel* answer;
     };
+    void buildTable();
+    void addVehicleRow(int row, const route::Route& route, const io::ExportContext& ctx,
+                       const QSettings& settings, const QStringList& ports);
+    QGroupBox* buildOptions();
+    QDialogButtonBox* buildButtons();
+    void connectManager();
     void refreshRow(int job);
     void saveSettings() const;
 

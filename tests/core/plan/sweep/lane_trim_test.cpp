@@ -97,7 +97,9 @@ TEST(LaneTrim, KeepsTheOverlapOnGeneratedAreas) {
     effective.realAlong = cam.photo();
     for (bool placed : {false, true}) {
         int before = 0, after = 0, compared = 0;
-        for (unsigned seed = 1; seed <= 8; ++seed) {
+        // Twelve areas without the placed lines, so that enough of them fly the same segments
+        // both ways; eight with them.
+        for (unsigned seed = 1; seed <= (placed ? 8u : 12u); ++seed) {
             const Area a = generateArea(seed + 300, 6 + static_cast<int>(seed % 3) * 5);
             const std::string what = a.name + (placed ? " (placed lines)" : "");
             SweepOptions o = options(cam);
@@ -119,7 +121,7 @@ TEST(LaneTrim, KeepsTheOverlapOnGeneratedAreas) {
         }
         if (!placed) {
             EXPECT_LT(after, before);
-            EXPECT_GE(compared, 6);
+            EXPECT_GE(compared, 8);
         }
     }
 }
