@@ -16,6 +16,7 @@
 #include "ui/mission_document.h"
 #include "ui/mission_files.h"
 #include "ui/mosaic/mosaic_controller.h"
+#include "ui/mosaic/mosaic_panel.h"
 #include "ui/panels/aircraft_panel.h"
 #include "ui/panels/mission_panel.h"
 #include "ui/panels/problems_panel.h"
@@ -34,8 +35,8 @@
 #include "ui/tools/select_tool.h"
 #include "ui/tools/waypoint_tool.h"
 #include "ui/vehicle/upload_dialog.h"
+#include "ui/window_shortcut_guard.h"
 
-#include <QAbstractSpinBox>
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
@@ -47,7 +48,6 @@
 #include <QFileInfo>
 #include <QGraphicsScene>
 #include <QInputDialog>
-#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenuBar>
@@ -102,8 +102,13 @@ MainWindow::MainWindow(QWidget* parent, bool interactive) : QMainWindow(parent),
     m_tools[ToolId::Home] = new HomeTool(m_doc, m_layer, this);
     m_tools[ToolId::Waypoints] = new WaypointTool(m_doc, m_layer, m_planLayer, this);
     for (auto& [id, tool] : m_tools)
-        connect(tool, &AbstractTool::statusMessage, this, [this](const QString& text) { statusBar()->showMessage(text); });
+        connect(tool, &AbstractTool::statusMessage, this, &MainWindow::showHint);
 
+    // Tool hints wrap rather than be cut off (a status bar's own message is one line).
+    m_hint = new QLabel;
+    m_hint->setObjectName(QStringLiteral("HintLabel"));
+    m_hint->setWordWrap(true);
+    statusBar()->addWidget(m_hint, 1);
     m_coords = new QLabel;
     m_coords->setMinimumWidth(230);
     m_scale = new QLabel;
@@ -147,23 +152,7 @@ MainWindow::MainWindow(QWidget* parent, bool interactive) : QMainWindow(parent),
     updateTitle();
     onViewChanged();
     resize(1400, 900);
-    qApp->installEventFilter(this);
-}
-
-bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
-    // A line edit (and so every spin box) claims Ctrl+E as "end of line" through a shortcut override,
-    // which would silence Plan > Export while the focus is in the Aircraft dock. The window's action
-    // wins; End still moves to the end of the line.
-    if (event->type() == QEvent::ShortcutOverride) {
-        auto* w = qobject_cast<QWidget*>(watched);
-        auto* key = static_cast<QKeyEvent*>(event);
-        if (w && w->window() == this && (qobject_cast<QLineEdit*>(w) || qobject_cast<QAbstractSpinBox*>(w)) &&
-            QKeySequence(int(key->modifiers()) | key->key()) == QKeySequence(Qt::CTRL | Qt::Key_E)) {
-            event->ignore();
-            return true;
-        }
-    }
-    return QMainWindow::eventFilter(watched, event);
+    new WindowShortcutGuard(this);
 }
 
 MainWindow::~MainWindow() {
@@ -206,7 +195,7 @@ void MainWindow::buildActions() {
     auto* importAct = file->addAction(icon("import"), tr("&Import area or no-fly zones…"), m_files,
                                       &MissionFiles::askImportAreas);
     importAct->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
-    file->addSeparator();
+    m_afterImport = file->addSeparator(); // Export waypoints goes before it (buildPlanning)
     // Mosaic (issue 19): the dialog, the map layer and the dock live in ui/mosaic/.
     m_mosaic = new MosaicController(this, m_view, m_scene, m_planner, &m_catalog);
     file->addAction(icon("map"), tr("Build &mosaic from photos…"), m_mosaic, &MosaicController::showDialog);
@@ -382,6 +371,8 @@ void MainWindow::buildDocks() {
     m_viewMenu->addAction(aircraftDock->toggleViewAction());
     m_viewMenu->addAction(missionDock->toggleViewAction());
     m_viewMenu->addAction(historyDock->toggleViewAction());
+    // The Mosaic dock: a tab on the right too, hidden until a mosaic is shown.
+    m_viewMenu->addAction(m_mosaic->createPanel()->toggleViewAction());
 }
 
 QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWidget* widget, Qt::DockWidgetArea area) {
@@ -410,7 +401,14 @@ void MainWindow::showError(const QString& title, const QString& message) {
     reportError(this, m_interactive, title, message);
 }
 
-QString MainWindow::statusText() const { return statusBar()->currentMessage(); }
+QString MainWindow::statusText() const {
+    return statusBar()->currentMessage().isEmpty() ? m_hint->text() : statusBar()->currentMessage();
+}
+
+void MainWindow::showHint(const QString& text) {
+    statusBar()->clearMessage();
+    m_hint->setText(text);
+}
 
 void MainWindow::startup(const QString& missionPath) { m_files->startup(missionPath); }
 bool MainWindow::openMission(const QString& path, QString* error) { return m_files->openMission(path, error); }
@@ -522,11 +520,13 @@ void MainWindow::buildPlanning() {
     planMenu->addSeparator();
     planMenu->addAction(exportAct);
     planMenu->addAction(tr("&Open waypoint file…"), m_files, &MissionFiles::askOpenWaypointFile);
+    exportAct->setObjectName(QStringLiteral("ExportAction"));
+    m_afterImport->parentWidget()->insertAction(m_afterImport, exportAct); // in File too
 
     // The running plan's progress with Cancel, and the notice of a plan waiting for the user.
     m_progress = new PlanProgressWidget(m_planner);
-    statusBar()->insertPermanentWidget(0, m_progress);
-    statusBar()->insertPermanentWidget(0, new PlanNotice(m_planner));
+    statusBar()->insertPermanentWidget(1, m_progress); // 1: first after the hint label
+    statusBar()->insertPermanentWidget(1, new PlanNotice(m_planner));
     connect(m_planner, &PlanController::message, this, [this](const QString& text) { statusBar()->showMessage(text, 8000); });
 
     // Docks: statistics and comparison on the right, waypoints and problems below the map.

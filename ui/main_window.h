@@ -91,12 +91,11 @@ public:
     void zoomToMission();
     // Repaints until every visible tile is drawn from its own zoom level (or the timeout passes).
     bool waitForMap(int timeoutMs);
+    // The status bar's message, else the current tool's hint or message.
     QString statusText() const;
 
 protected:
     void closeEvent(QCloseEvent* e) override;
-    // Keeps the window's own shortcuts (Ctrl+E export) working while a text field has the focus.
-    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     void buildActions();
@@ -108,6 +107,7 @@ private:
     void openDropped(const QStringList& paths);
     void onViewChanged();
     void buildPlanning();
+    void showHint(const QString& text);
 
     bool m_interactive;
     MissionDocument* m_doc;
@@ -129,6 +129,8 @@ private:
     QMenu* m_recentMenu = nullptr;
     QMenu* m_viewMenu = nullptr;
     QLabel* m_coords;
+    QLabel* m_hint = nullptr;
+    QAction* m_afterImport = nullptr;
     QLabel* m_scale;
     QLabel* m_mapLabel;
     QLabel* m_problems;

@@ -8,6 +8,7 @@
 #include "core/io/plan_export.h"
 #include "core/io/waypoint_formats.h"
 #include "core/mission/plan_geojson.h"
+#include "core/mission/plan_messages.h"
 #include "core/mission/plan_mission.h"
 #include "core/mission/planner_kinds.h"
 #include "core/mission/route_check.h"
@@ -27,31 +28,47 @@ namespace pf::cli {
 const char* const kPlanUsage =
     "Usage: photoflight-cli plan MISSION.json|AREA [OPTIONS] [--format LIST] [--out DIR]\n"
     "\n"
-    "Plans the mission end to end for every aircraft: with several aircraft the area is shared between\n"
-    "them (balanced on the estimated flight times), each plans its part (grid of cells, coverage path,\n"
-    "photo waypoints; by default per aircraft the planner that flies soonest), photos another aircraft\n"
+    "Plans the mission end to end for every aircraft: with several aircraft the area is shared "
+    "between\n"
+    "them (balanced on the estimated flight times), each plans its part (grid of cells, coverage "
+    "path,\n"
+    "photo waypoints; by default per aircraft the planner that flies soonest), photos another "
+    "aircraft\n"
     "already takes are dropped,\n"
-    "waypoints keep out of every no-fly zone and its safety margin (detours), each flight gets its safe\n"
-    "transit from and back to its home and is cut into sorties (batteries) that fit its endurance less a\n"
-    "20 % reserve. Altitudes closer than 10 m between aircraft flying together give a warning. Finally an\n"
-    "independent check lays the real photo footprints over the area (coverage ratio, uncovered patches)\n"
-    "and counts margin breaches. Prints a table per aircraft (photos, photos saved, flight distance, time,\n"
-    "sorties, turns) and the totals with the coverage and the makespan (the longest aircraft's time).\n"
+    "waypoints keep out of every no-fly zone and its safety margin (detours), each flight gets its "
+    "safe\n"
+    "transit from and back to its home and is cut into sorties (batteries) that fit its endurance "
+    "less a\n"
+    "20 % reserve. Altitudes closer than 10 m between aircraft flying together give a warning. "
+    "Finally an\n"
+    "independent check lays the real photo footprints over the area (coverage ratio, uncovered "
+    "patches)\n"
+    "and counts margin breaches. Prints a table per aircraft (photos, photos saved, flight "
+    "distance, time,\n"
+    "sorties, turns) and the totals with the coverage and the makespan (the longest aircraft's "
+    "time).\n"
     "\n"
     "With --out, writes into DIR:\n"
-    "  plan.geojson   WGS84 FeatureCollection, one feature per line (written as a stream, about 190\n"
+    "  plan.geojson   WGS84 FeatureCollection, one feature per line (written as a stream, about "
+    "190\n"
     "                 bytes per photo): per aircraft a LineString of the flown path (home, every\n"
     "                 waypoint, back home; kind \"path\", aircraft, alt_m, footprint_across_m,\n"
-    "                 footprint_along_m: the real ground footprint of its photos, photos, sorties),\n"
-    "                 one Point per photo (kind \"photo\", aircraft, seq, alt_m, heading_deg clockwise\n"
+    "                 footprint_along_m: the real ground footprint of its photos, photos, "
+    "sorties),\n"
+    "                 one Point per photo (kind \"photo\", aircraft, seq, alt_m, heading_deg "
+    "clockwise\n"
     "                 from north), with --footprints one Polygon per photo (kind \"footprint\",\n"
-    "                 aircraft, seq), its subarea (kind \"subarea\") and the uncovered patches (kind\n"
+    "                 aircraft, seq), its subarea (kind \"subarea\") and the uncovered patches "
+    "(kind\n"
     "                 \"uncovered\", area_m2)\n"
-    "  metrics.json   {\"aircraft\": [{\"name\", cells, photos, path_length_m, distance_m, turns, jumps,\n"
+    "  metrics.json   {\"aircraft\": [{\"name\", cells, photos, path_length_m, distance_m, turns, "
+    "jumps,\n"
     "                 revisits, estimated_time_s, time_s (home to home, every sortie), sorties,\n"
-    "                 photos_saved, detours, ...}], \"total\": {..., coverage_ratio, nofly_violations,\n"
-    "                 makespan_s, ideal_s, photos_saved}, \"coverage_ratio\", \"nofly_violations\",\n"
-    "                 \"warnings\": [...]}\n"
+    "                 photos_saved, detours, coverage_ratio and uncovered_m2 of its part, ...}],\n"
+    "                 \"total\": {..., coverage_ratio, nofly_violations, makespan_s, ideal_s,\n"
+    "                 photos_saved}, \"coverage_ratio\", \"nofly_violations\", \"warnings\": "
+    "[...],\n"
+    "                 \"notes\": [...]}\n"
     "  and per format of --format (the desktop application's export writes the same files):\n"
     "    plan, waypoints, csv, kmz (a vehicle flies them): one file per flight, mission-AIRCRAFT.EXT for an\n"
     "                 aircraft flying one sortie, mission-AIRCRAFT-sortieN.EXT per battery for one that\n"
@@ -74,7 +91,8 @@ const char* const kPlanUsage =
     "  --format LIST                comma-separated waypoint formats to write (needs --out):\n"
     "                                 plan       QGroundControl .plan\n"
     "                                 waypoints  QGC WPL 110 .waypoints (Mission Planner)\n"
-    "                                 kml        KML: area, no-fly zones, path, photos, footprints\n"
+    "                                 kml        KML: area, no-fly zones, path, photos, "
+    "footprints\n"
     "                                 gpx        GPX waypoints and route\n"
     "                                 geojson    GeoJSON waypoints\n"
     "                                 csv        Litchi mission hub CSV\n"
@@ -90,17 +108,25 @@ const char* const kPlanUsage =
     "  --aircraft \"Falcon 8:40\" --aircraft \"DJI Phantom 4 Pro:45\". Each aircraft flies from its own\n"
     "home if the mission file gives one, else from the mission's home (--home).\n"
     "\n"
-    "Planners: auto (the default: per aircraft the plan that flies soonest of sweep, stride and raster,\n"
-    "the choice and the times compared printed after the table), sweep (straight lanes over the exact\n"
-    "area, cell by cell round the no-fly zones), stride (long straight strides, few turns, no jumps),\n"
+    "Planners: auto (the default: per aircraft the plan that flies soonest of sweep, stride and "
+    "raster,\n"
+    "the choice and the times compared printed after the table), sweep (straight lanes over the "
+    "exact\n"
+    "area, cell by cell round the no-fly zones), stride (long straight strides, few turns, no "
+    "jumps),\n"
     "raster (row or column boustrophedon, the paper's baseline, may jump over holes), wavefront\n"
-    "(gradient ascent on a navigation function, 8-connected, the candidate with the smallest completion\n"
-    "time), lawnmower (what a ground station's Survey flies: one angle, straight over the no-fly zones;\n"
-    "a yardstick whose crossings the route check refuses unless --force, and a warning names the zones\n"
+    "(gradient ascent on a navigation function, 8-connected, the candidate with the smallest "
+    "completion\n"
+    "time), lawnmower (what a ground station's Survey flies: one angle, straight over the no-fly "
+    "zones;\n"
+    "a yardstick whose crossings the route check refuses unless --force, and a warning names the "
+    "zones\n"
     "it crosses: not a planner for a mission with no-fly zones). Every grid planner's path is\n"
     "flown as straight lanes: photos at the trigger distance, lanes ending where the area ends.\n"
-    "--grid-angle auto tries 0, 5, ..., 175 degrees and the directions of the longest edges of each\n"
-    "aircraft's part and keeps the plan with the smallest estimated time T = length / speed + turn\n"
+    "--grid-angle auto tries 0, 5, ..., 175 degrees and the directions of the longest edges of "
+    "each\n"
+    "aircraft's part and keeps the plan with the smallest estimated time T = length / speed + "
+    "turn\n"
     "angles / turn rate.\n"
     "\n"
     "Terrain following (--dem FILE, --terrain follow|off, --min-clearance M): every photo at its altitude\n"
@@ -120,7 +146,8 @@ const char* const kPlanUsage =
     "even with --force), Litchi CSV or a MAVLink mission for a DJI Enterprise aircraft.\n"
     "\n"
     "Exit codes: 0 planned, 2 bad input (message on stderr), 1 internal error.\n"
-    "Example: photoflight-cli plan resources/demo/demo_mission.json --format plan,kml --out plan/\n";
+    "Example: photoflight-cli plan resources/demo/demo_mission.json --format plan,kml --out "
+    "plan/\n";
 
 namespace {
 
@@ -244,6 +271,8 @@ int runPlan(const std::vector<std::string>& argv) {
     for (const auto& w : plan->warnings)
         if (std::find(printed.begin(), printed.end(), w) == printed.end())
             std::cerr << "photoflight-cli: warning: " << w << '\n';
+    for (const auto& n : plan->notes)
+        std::cerr << "photoflight-cli: note: " << n << '\n';
 
     // The check every exported route passes (as in the desktop application): a route with an error is
     // refused unless the user insists.
@@ -325,11 +354,15 @@ int runPlan(const std::vector<std::string>& argv) {
     std::snprintf(line, sizeof line, "%-20s %-9s %6s %6s %6s %6d %6d %9.0f %8.1f %7d %6d %5d\n", "total", "", "", "",
                   "", t.photos, plan->photosSaved, dist, plan->makespanS / 60.0, sorties, t.flightTurns, t.jumps);
     std::cout << line;
-    std::snprintf(line, sizeof line,
-                  "coverage %.2f %% (uncovered %.0f m2), makespan %.1f min (ideal %.1f min, x%.3f), no-fly "
-                  "violations %d\n",
-                  100.0 * plan->coverageRatio, plan->uncoveredAreaM2, plan->makespanS / 60.0, plan->idealS / 60.0,
-                  plan->idealS > 0 ? plan->makespanS / plan->idealS : 1.0, plan->noFlyViolations);
+    // The covered share never reads 100 while ground is left unseen (the same figure as in the
+    // desktop application's statistics).
+    std::snprintf(
+        line, sizeof line,
+        "coverage %s %% (uncovered %.0f m²), makespan %.1f min (ideal %.1f min, x%.3f), no-fly "
+        "violations %d\n",
+        mission::coveragePercentText(plan->coverageRatio, plan->uncoveredAreaM2).c_str(),
+        plan->uncoveredAreaM2, plan->makespanS / 60.0, plan->idealS / 60.0,
+        plan->idealS > 0 ? plan->makespanS / plan->idealS : 1.0, plan->noFlyViolations);
     std::cout << line;
     if (plan->passCoverage.size() == 2) { // a double grid: every point seen by each pass
         std::snprintf(line, sizeof line, "coverage per pass of the double grid: %.2f %%, %.2f %%\n",

@@ -8,10 +8,16 @@
 namespace pf::fleet {
 
 namespace {
+// "3.5 m", "50 m", "3.25 m": with the precision the value has (up to centimetres), so that two
+// aircraft at 3.5 m never read "4 m".
 std::string metres(double v) {
     char buf[32];
-    std::snprintf(buf, sizeof buf, "%.0f m", v);
-    return buf;
+    std::snprintf(buf, sizeof buf, "%.2f", v);
+    std::string s = buf;
+    s.erase(s.find_last_not_of('0') + 1);
+    if (s.back() == '.')
+        s.pop_back();
+    return s + " m";
 }
 bool together(const AltitudeSlot& a, const AltitudeSlot& b) { return a.startS < b.endS && b.startS < a.endS; }
 } // namespace
@@ -30,9 +36,15 @@ AltitudeCheck checkAltitudeSeparation(const std::vector<AltitudeSlot>& slots, do
             c.a = a;
             c.b = b;
             c.separationM = d;
-            c.message = "Aircraft \"" + sa.name + "\" (" + metres(sa.altitudeM) + ") and \"" + sb.name + "\" (" +
-                        metres(sb.altitudeM) + ") fly at the same time only " + metres(d) +
-                        " apart; keep at least " + metres(sep) + " between them or fly them one after the other.";
+            const std::string advice =
+                "; keep at least " + metres(sep) + " between them or fly them one after the other.";
+            c.message = d < 0.005
+                            ? sa.name + " and " + sb.name +
+                                  " fly at the same time at the same altitude (" +
+                                  metres(sa.altitudeM) + ")" + advice
+                            : sa.name + " (" + metres(sa.altitudeM) + ") and " + sb.name + " (" +
+                                  metres(sb.altitudeM) + ") fly at the same time only " +
+                                  metres(d) + " apart" + advice;
             out.warnings.push_back(c.message);
             out.conflicts.push_back(std::move(c));
         }
@@ -61,9 +73,11 @@ AltitudeCheck checkAltitudeSeparation(const std::vector<AltitudeSlot>& slots, do
         placed.push_back(k);
         if (alt > sk.maxAltitudeM + 1e-9) {
             out.proposalFits = false;
-            out.warnings.push_back("No altitude plan keeps " + metres(sep) + " between the aircraft in the air together: \"" +
-                                   sk.name + "\" would need " + metres(alt) + ", above its ceiling of " +
-                                   metres(sk.maxAltitudeM) + ". Fly some aircraft one after the other.");
+            out.warnings.push_back("No altitude plan keeps " + metres(sep) +
+                                   " between the aircraft in the air together: " + sk.name +
+                                   " would need " + metres(alt) + ", above its ceiling of " +
+                                   metres(sk.maxAltitudeM) +
+                                   ". Fly some aircraft one after the other.");
         }
     }
     return out;

@@ -24,15 +24,17 @@ Result<std::vector<double>> capabilityShares(const std::vector<Capability>& flee
     std::vector<double> rates;
     double sum = 0;
     for (const auto& c : fleet) {
+        // Named as every message names an aircraft (mission/aircraft_naming.h: aircraftLabel).
+        const std::string who = c.name.empty() ? std::string("The aircraft") : c.name;
         if (!(c.footprint.acrossM > 0) || !(c.footprint.alongM > 0))
             return makeError(ErrorCode::InvalidInput,
-                             "Aircraft \"" + c.name + "\" has no usable camera footprint (check altitude and overlap).");
+                             who + " has no usable camera footprint (check altitude and overlap).");
         if (!(c.time.speedMps > 0))
             return makeError(ErrorCode::InvalidInput,
-                             "Aircraft \"" + c.name + "\" has a cruise speed that is not positive.");
+                             who + " has a cruise speed that is not positive.");
         if (!(c.time.turnRateDegS > 0))
             return makeError(ErrorCode::InvalidInput,
-                             "Aircraft \"" + c.name + "\" has a turn rate that is not positive.");
+                             who + " has a turn rate that is not positive.");
         rates.push_back(areaRateM2PerS(c, track));
         sum += rates.back();
     }

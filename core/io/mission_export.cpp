@@ -183,8 +183,8 @@ namespace {
 // One aircraft's vehicle files: "<stem>-<aircraft>.<ext>", or one per sortie.
 Status exportVehicleRoute(const ExportContext& ctx, std::size_t i, WaypointFormat format,
                           const MissionExportRequest& request, MissionExportReport& report) {
-    const std::string path = folderPrefix(request) + request.stem + "-" +
-                             fileNameSafe(ctx.routeLabel(i)) + formatInfo(format).extension;
+    const std::string path = folderPrefix(request) + request.stem + "-" + routeFileStem(ctx, i) +
+                             formatInfo(format).extension;
     auto r = exportVehicleFlights(ctx, i, format, path, request.options);
     if (!r)
         return r.error();
@@ -211,8 +211,7 @@ Status exportDisplayFormat(const ExportContext& ctx, WaypointFormat format,
             for (std::size_t k = 0; k < owner.size(); ++k)
                 if (owner[k] == i)
                     mine.push_back(k);
-            const std::string path =
-                prefix + "-" + fileNameSafe(ctx.routeLabel(i)) + info.extension;
+            const std::string path = prefix + "-" + routeFileStem(ctx, i) + info.extension;
             if (auto st = exportCombined(subContext(shown, mine), format, path, request.options);
                 !st)
                 return st;

@@ -1,5 +1,6 @@
 #include "core/io/plan_export.h"
 
+#include "core/mission/plan_messages.h"
 #include "core/mission/planner_kinds.h"
 
 #include <cpl_json.h>
@@ -38,7 +39,8 @@ std::string planMetricsJson(const MissionPlan& plan, const std::string& plannerN
     if (!plan.plannerChoice.empty())
         root.Add("planner_choice", plan.plannerChoice);
     CPLJSONArray list;
-    for (const auto& a : plan.aircraft) {
+    for (std::size_t k = 0; k < plan.aircraft.size(); ++k) {
+        const auto& a = plan.aircraft[k];
         CPLJSONObject o;
         o.Add("name", a.aircraft);
         o.Add("planner", mission::plannerKindInfo(a.planner).id);
@@ -71,6 +73,11 @@ std::string planMetricsJson(const MissionPlan& plan, const std::string& plannerN
         o.Add("kept_inside", a.keptInside);
         o.Add("footprint_across_m", a.footprint.real.longSideM);
         o.Add("footprint_along_m", a.footprint.real.shortSideM);
+        // Its part of the area as the independent check saw it (plan_messages.h).
+        if (const auto cov = mission::aircraftCoverage(plan, k)) {
+            o.Add("coverage_ratio", *cov);
+            o.Add("uncovered_m2", a.uncoveredAreaM2);
+        }
         if (a.terrain.active) { // terrain following (terrain_stage.h)
             CPLJSONObject t;
             t.Add("height_above_ground_m", a.terrain.heightAboveGroundM);
@@ -123,6 +130,10 @@ std::string planMetricsJson(const MissionPlan& plan, const std::string& plannerN
     for (const auto& w : plan.warnings)
         warnings.Add(w);
     root.Add("warnings", warnings);
+    CPLJSONArray notes;
+    for (const auto& n : plan.notes)
+        notes.Add(n);
+    root.Add("notes", notes);
     return doc.SaveAsString();
 }
 

@@ -321,15 +321,33 @@ std::string aircraftFormatProblem(const ExportContext& ctx, std::size_t routeInd
 }
 
 std::string fileNameSafe(const std::string& name) {
-    std::string out = name;
-    for (char& c : out)
-        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.'))
-            c = '_';
-    return out;
+    std::string out;
+    for (char c : name) {
+        const bool safe =
+            std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.';
+        // "DJI Mavic 3 Enterprise #1" -> "DJI_Mavic_3_Enterprise_1": one '_' for a run.
+        if (safe && c != '_')
+            out += c;
+        else if (!out.empty() && out.back() != '_')
+            out += '_';
+    }
+    while (!out.empty() && out.back() == '_')
+        out.pop_back();
+    return out.empty() ? "aircraft" : out;
+}
+
+std::string routeFileStem(const ExportContext& ctx, std::size_t routeIndex) {
+    const std::string stem = fileNameSafe(ctx.routeLabel(routeIndex));
+    // Two names that read alike in a file name ("Falcon 8 #1", "Falcon 8 1") must not write one
+    // file.
+    int same = 0;
+    for (std::size_t k = 0; k < routeIndex && k < ctx.routes.size(); ++k)
+        same += fileNameSafe(ctx.routeLabel(k)) == stem ? 1 : 0;
+    return same == 0 ? stem : stem + "_" + std::to_string(same + 1);
 }
 
 std::string routeFileName(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat format) {
-    return fileNameSafe(ctx.routeLabel(routeIndex)) + formatInfo(format).extension;
+    return routeFileStem(ctx, routeIndex) + formatInfo(format).extension;
 }
 
 Result<std::vector<std::string>> exportAll(const ExportContext& ctx, WaypointFormat format,

@@ -89,10 +89,15 @@ Status exportRoute(const ExportContext& ctx, std::size_t routeIndex, WaypointFor
 Status exportCombined(const ExportContext& ctx, WaypointFormat format, const std::string& path,
                       const ExportOptions& options = {});
 
-// `name` with every character but ASCII letters, digits, '-', '_' and '.' replaced by '_' (byte by
-// byte, so a non-ASCII letter becomes one '_' per UTF-8 byte): the rule of every exported file name.
+// `name` with every run of characters but ASCII letters, digits, '-' and '.' (non-ASCII letters
+// included, byte by byte) turned into one '_', none at the end or the start: the rule of every
+// exported file name ("DJI Mavic 3 Enterprise #1" -> "DJI_Mavic_3_Enterprise_1"); "aircraft" when
+// nothing is left.
 std::string fileNameSafe(const std::string& name);
-// "<aircraft>.<ext>" by fileNameSafe ("Route N" if unnamed).
+// The aircraft part of route `routeIndex`'s file names: fileNameSafe of its label ("Route N" if
+// unnamed), with "_2", "_3", … after a name an earlier route of `ctx` already reads as.
+std::string routeFileStem(const ExportContext& ctx, std::size_t routeIndex);
+// "<aircraft>.<ext>" by routeFileStem.
 std::string routeFileName(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat format);
 // Writes "<dir>/<stem>-<aircraft>.<ext>" per route (a vehicle format: one file per sortie of an
 // aircraft needing several batteries, see exportMission), plus "<dir>/<stem>.<ext>" with every

@@ -25,4 +25,8 @@ std::string numberedAircraftName(const std::string& model, const std::vector<std
     }
 }
 
+std::string aircraftLabel(const std::string& name, const std::string& unnamed) {
+    return name.empty() ? unnamed : name;
+}
+
 } // namespace pf::mission

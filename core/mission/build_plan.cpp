@@ -5,6 +5,7 @@
 #include "core/geo/polygon_ops.h"
 #include "core/job_scope.h"
 #include "core/mission/double_grid.h"
+#include "core/mission/plan_messages.h"
 #include "core/mission/plan_region.h"
 #include "core/mission/planner_kinds.h"
 #include "core/mission/terrain_stage.h"
@@ -224,9 +225,10 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
                     ap.sorties.push_back(sum);
                 }
                 if (sp->sorties.size() > 1)
-                    plan.warnings.push_back(who + ": the flight needs " + std::to_string(sp->sorties.size()) +
-                                            " batteries (sorties returning home), " + metres(sp->totalTimeS / 60.0, 1) +
-                                            " min in all for " + metres(sp->budgetS / 60.0, 1) + " min per battery");
+                    plan.notes.push_back(
+                        who + ": the flight needs " + std::to_string(sp->sorties.size()) +
+                        " batteries (sorties returning home), " + metres(sp->totalTimeS / 60.0, 1) +
+                        " min in all for " + metres(sp->budgetS / 60.0, 1) + " min per battery");
             }
             // Every sortie starts and ends at home: the legs between sorties are flown through it.
             path.push_back(*home);
@@ -300,8 +302,7 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
                              plan.aircraft[k].timeS});
         const fleet::AltitudeCheck alt = fleet::checkAltitudeSeparation(slots, opt.altitudeSeparationM);
         plan.altitudeConflicts = static_cast<int>(alt.conflicts.size());
-        for (const auto& w : alt.warnings)
-            plan.warnings.push_back(w);
+        addAltitudeMessages(plan, alt, slots, opt.altitudeSeparationM, homes);
     }
 
     // 6. The independent check: real footprints of every photo of every aircraft, margin breaches.
@@ -321,14 +322,14 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
             return makeError(cov.error().code, "checking the coverage: " + cov.error().message);
         plan.coverageRatio = cov->coveredFraction;
         plan.uncoveredAreaM2 = cov->uncoveredAreaM2;
+        plan.uncoveredPatchCount = cov->patchCount;
         for (const auto& p : cov->patches)
             plan.uncovered.push_back({p.shape, p.areaM2});
+        attributeUncovered(plan, geom->noFly);
         if (cov->coveredFraction < kCoverageTarget)
             plan.warnings.push_back(
                 std::string(opt.doubleGrid ? "one pass of the double grid: " : "") +
-                "the photos leave " + metres(cov->uncoveredAreaM2) + " m2 of the area (" +
-                metres(100.0 * (1.0 - cov->coveredFraction), 1) + " %) unseen, in " +
-                std::to_string(cov->patchCount) + " patch(es)");
+                uncoveredMessage(plan));
         geo::MultiPolygon pockets;
         for (const auto& a : plan.aircraft)
             pockets.insert(pockets.end(), a.grid.pockets().begin(), a.grid.pockets().end());

@@ -5,6 +5,7 @@
 // Internal to mission/plan_mission.
 #pragma once
 
+#include "core/mission/aircraft_naming.h"
 #include "core/mission/mission.h"
 #include "core/mission/mission_plan.h"
 #include "core/mission/validation.h"
@@ -26,7 +27,7 @@ constexpr double kBalanceTarget = 1.10;
 inline Error cancelledError() { return makeError(ErrorCode::Cancelled, "planning cancelled"); }
 
 inline std::string aircraftLabel(const AircraftConfig& a) {
-    return a.name.empty() ? std::string("the aircraft") : "aircraft \"" + a.name + "\"";
+    return mission::aircraftLabel(a.name);
 }
 
 inline double polylineLength(const std::vector<geo::Vec2>& p) {

@@ -84,6 +84,10 @@ struct AircraftPlan {
     int waypointsMoved = 0;       // waypoints pushed out of a no-fly margin
     int keptInside = 0;           // waypoints moved inside the area (options.keepInsideArea)
     TerrainSummary terrain;       // terrain following, when the mission asks for it
+    // The coverage check over its part (plan_messages.h: attributeUncovered): the part less the
+    // zones, and the plan's listed uncovered patches within it.
+    double admissibleAreaM2 = 0.0;
+    double uncoveredAreaM2 = 0.0;
 };
 
 struct PlanTotals {
@@ -107,6 +111,8 @@ struct MissionPlan {
     std::vector<AircraftPlan> aircraft;
     PlanTotals totals;
     std::vector<std::string> warnings; // things the user must know (e.g. aircraft left unplanned)
+    std::vector<std::string>
+        notes; // things worth knowing that ask for nothing (e.g. sorties needed)
 
     // Filled by planMission over all aircraft:
     double coverageRatio = 0.0; // admissible area seen by the REAL footprints of all photos (with a
@@ -114,6 +120,7 @@ struct MissionPlan {
     std::vector<double> passCoverage; // a double grid: the share each pass sees on its own
     double uncoveredAreaM2 = 0.0;
     std::vector<UncoveredArea> uncovered; // the largest uncovered patches, largest first
+    int uncoveredPatchCount = 0;          // all of them, listed or not
     int noFlyViolations = 0;       // waypoints and legs (home to home) closer to a zone than the margin
     double makespanS = 0.0;        // the longest aircraft's timeS: they fly at the same time
     double idealS = 0.0;           // sum of the aircraft's timeS / number of aircraft

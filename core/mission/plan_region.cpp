@@ -1,6 +1,7 @@
 #include "core/mission/plan_region.h"
 
 #include "core/job_scope.h"
+#include "core/mission/aircraft_naming.h"
 #include "core/mission/double_grid.h"
 #include "core/mission/planner_kinds.h"
 #include "core/mission/validation.h"
@@ -39,7 +40,7 @@ double normaliseAngle(double a) {
 }
 
 std::string label(const AircraftConfig& a) {
-    return a.name.empty() ? std::string("the aircraft") : "aircraft \"" + a.name + "\"";
+    return aircraftLabel(a.name);
 }
 
 // What every planner of a region needs about the aircraft.

@@ -3,6 +3,8 @@
 #include "core/geo/local_frame.h"
 #include "core/geo/no_fly_field.h"
 #include "core/geo/polygon_ops.h"
+#include "core/geo/prepared_region.h"
+#include "core/sensor/footprint.h"
 
 #include <algorithm>
 #include <cmath>
@@ -47,7 +49,86 @@ Result<geo::LocalFrame> frameFor(const route::Route& route, const RouteLimits& l
     return geo::LocalFrame::forArea(box);
 }
 
+// Whether the photo a waypoint outside the area would take sees part of it: its footprint at the
+// waypoint's height above the ground, turned to its heading, meets the area. `d` is the waypoint's
+// distance from the area. Unset when the camera gives no footprint.
+std::optional<bool> photoSeesArea(const route::Route& route, std::size_t i, const geo::Vec2& p,
+                                  double d, const sensor::Camera& cam, const geo::Polygon& area,
+                                  std::optional<geo::PreparedRegion>& prepared) {
+    const auto& w = route.waypoints[i];
+    const double h = route.homeElevationM && w.groundM
+                         ? *route.homeElevationM + w.altitudeM - *w.groundM
+                         : w.altitudeM;
+    const auto fp = sensor::footprintAt(cam, h);
+    if (!fp)
+        return std::nullopt;
+    if (d <= 0.5 * fp->shortSideM)
+        return true; // the disc the footprint always holds reaches the area
+    if (d > 0.5 * std::hypot(fp->longSideM, fp->shortSideM))
+        return false; // farther than the footprint's corners
+    if (!prepared)
+        prepared.emplace(geo::MultiPolygon{area});
+    const sensor::PhotoFootprint f{p, w.headingDeg, fp->longSideM, fp->shortSideM};
+    return prepared->intersects(geo::Polygon{sensor::footprintRing(f), {}});
+}
+
+// The waypoints outside the area, grouped by why they are there (OutsideReason); `total` gets their
+// number.
+std::vector<OutsideGroup> outsideGroups(const route::Route& route, const RouteLimits& limits,
+                                        const geo::LocalFrame& frame,
+                                        const std::vector<geo::Vec2>& local, int* total) {
+    const geo::Polygon area = frame.toLocal(limits.area);
+    // A lane ends on the boundary itself: a waypoint within 5 cm of it (rounding of the exact
+    // geometry and of the WGS84 round trip) is inside.
+    constexpr double kOnBoundaryM = 0.05;
+    // Home as the route's transit waypoint between two sorties lies within this of it.
+    constexpr double kAtHomeM = 1.0;
+    const bool hasHome = limits.home.has_value();
+    const geo::Vec2 home = hasHome ? frame.toLocal(*limits.home) : geo::Vec2(0, 0);
+    std::vector<OutsideGroup> groups(4);
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        groups[g].reason = OutsideReason(g);
+        groups[g].atHomeOnly = groups[g].reason == OutsideReason::Transit;
+    }
+    std::optional<geo::PreparedRegion> prepared;
+    for (std::size_t i = 0; i < local.size(); ++i) {
+        if (geo::contains(area, local[i]))
+            continue;
+        const double d = geo::distanceTo(area, local[i]);
+        if (d <= kOnBoundaryM)
+            continue;
+        const bool transit = route.waypoints[i].kind == route::WaypointKind::Transit;
+        std::optional<bool> sees;
+        if (!transit && limits.camera)
+            sees = photoSeesArea(route, i, local[i], d, *limits.camera, area, prepared);
+        const OutsideReason reason = transit ? OutsideReason::Transit
+                                     : !sees ? OutsideReason::Unknown
+                                     : *sees ? OutsideReason::CoversBoundary
+                                             : OutsideReason::SeesNothing;
+        OutsideGroup& g = groups[std::size_t(reason)];
+        g.waypoints.push_back(int(i));
+        if (transit && !(hasHome && (local[i] - home).norm() <= kAtHomeM))
+            g.atHomeOnly = false;
+        if (d > g.farthestM) {
+            g.farthestM = d;
+            g.farthest = int(i);
+        }
+        ++*total;
+    }
+    groups.erase(std::remove_if(groups.begin(), groups.end(),
+                                [](const OutsideGroup& g) { return g.waypoints.empty(); }),
+                 groups.end());
+    return groups;
+}
+
 } // namespace
+
+const OutsideGroup* RouteCheck::outsideGroup(OutsideReason reason) const {
+    for (const auto& g : outside)
+        if (g.reason == reason)
+            return &g;
+    return nullptr;
+}
 
 int RouteCheck::count() const {
     int n = (fromHome.empty() ? 0 : 1) + (toHome.empty() ? 0 : 1);
@@ -178,24 +259,8 @@ RouteCheck checkRoute(const route::Route& route, const RouteLimits& limits) {
         if (entered[z])
             out.zonesEntered.push_back(z);
 
-    if (limits.area.outer.size() >= 3) {
-        const geo::Polygon area = frame->toLocal(limits.area);
-        // A lane ends on the boundary itself: a waypoint within 5 cm of it (rounding of the exact
-        // geometry and of the WGS84 round trip) is inside.
-        constexpr double kOnBoundaryM = 0.05;
-        for (std::size_t i = 0; i < n; ++i) {
-            if (geo::contains(area, local[i]))
-                continue;
-            const double d = geo::distanceTo(area, local[i]);
-            if (d <= kOnBoundaryM)
-                continue;
-            ++out.outsideArea;
-            if (d > out.farthestOutsideM) {
-                out.farthestOutsideM = d;
-                out.farthestOutside = int(i);
-            }
-        }
-    }
+    if (limits.area.outer.size() >= 3)
+        out.outside = outsideGroups(route, limits, *frame, local, &out.outsideArea);
     return out;
 }
 
@@ -208,6 +273,7 @@ RouteLimits routeLimits(const Mission& m, const route::Route& route) {
     for (const auto& a : m.aircraft)
         if (a.name == route.aircraft) {
             l.maxAltitudeM = a.maxAltitudeM;
+            l.camera = a.camera;
             if (!l.home)
                 l.home = a.home;
         }

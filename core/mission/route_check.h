@@ -5,6 +5,7 @@
 #include "core/mission/mission.h"
 #include "core/mission/mission_plan.h"
 #include "core/route/waypoint.h"
+#include "core/sensor/camera.h"
 
 #include <optional>
 #include <string>
@@ -23,8 +24,31 @@ struct RouteLimits {
     std::optional<double> maxAltitudeM; // the aircraft's ceiling; unset: unknown, not checked
     double minAltitudeM = kMinSafeAltitudeM;
     geo::GeoPolygon area;                // optional: waypoints outside it are counted (a note)
+    // The camera of the aircraft flying the route, when known: whether the photo of a waypoint
+    // outside the area still sees part of it (its footprint at the waypoint's height above ground).
+    std::optional<sensor::Camera> camera;
     std::optional<geo::LonLat> home;     // take-off: the leg to the first waypoint is checked
     std::optional<geo::LonLat> landing;  // the leg from the last waypoint; home when unset
+};
+
+// Why waypoints lie outside the area: each group of RouteCheck::outside has one reason, true of
+// every waypoint it lists.
+enum class OutsideReason {
+    CoversBoundary, // photo and turn waypoints whose photo still sees the area: lanes end where the
+                    // photos cover the boundary, which may lie beyond it
+    SeesNothing,    // photo and turn waypoints whose photo sees none of the area
+    Unknown,        // photo and turn waypoints of an aircraft whose camera is not known
+    Transit, // transit waypoints (no photo): to and from home, around zones, home between sorties
+};
+
+// The waypoints outside the area for one reason.
+struct OutsideGroup {
+    OutsideReason reason = OutsideReason::CoversBoundary;
+    std::vector<int> waypoints; // indices into the route, ascending
+    int farthest = -1;          // the one farthest from the area
+    double farthestM = 0.0;
+    bool atHomeOnly =
+        false; // Transit: every one lies at the route's home (where batteries are changed)
 };
 
 // The errors found, in words, per waypoint and per leg ("" where fine), and the notes.
@@ -34,11 +58,11 @@ struct RouteCheck {
     std::string fromHome;              // take-off -> first waypoint
     std::string toHome;                // last waypoint -> landing
     int noFly = 0;                     // waypoints and legs (home legs included) within a margin
-    // Note, not an error: waypoints outside the area (lanes end where the photos cover the
-    // boundary, which may lie beyond it), and the farthest one.
+    // Notes, not errors: the waypoints outside the area (all of them), and the same by reason, one
+    // group per reason that has any, in the order of OutsideReason.
     int outsideArea = 0;
-    int farthestOutside = -1;
-    double farthestOutsideM = 0.0;
+    std::vector<OutsideGroup> outside;
+    const OutsideGroup* outsideGroup(OutsideReason reason) const;
     // The zones (indices into RouteLimits::zones, ascending) a waypoint or leg comes within the
     // margin of.
     std::vector<std::size_t> zonesEntered;
@@ -52,9 +76,9 @@ struct RouteCheck {
 
 RouteCheck checkRoute(const route::Route& route, const RouteLimits& limits);
 
-// The limits of a route of mission `m`: its no-fly zones and margin, its area, the ceiling of the
-// aircraft the route is named after (none when no aircraft has that name), the route's home (else
-// the aircraft's, else the mission's) and the mission's landing point.
+// The limits of a route of mission `m`: its no-fly zones and margin, its area, the ceiling and the
+// camera of the aircraft the route is named after (none when no aircraft has that name), the
+// route's home (else the aircraft's, else the mission's) and the mission's landing point.
 RouteLimits routeLimits(const Mission& m, const route::Route& route);
 
 // Checks every route against its limits in `m`; the lines of RouteCheck::messages, route after route.

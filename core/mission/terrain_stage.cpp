@@ -1,7 +1,8 @@
 #include "core/mission/terrain_stage.h"
 
-#include "core/geo/polygon_ops.h"
 #include "core/data_dir.h"
+#include "core/geo/polygon_ops.h"
+#include "core/mission/aircraft_naming.h"
 #include "core/route/terrain_follow.h"
 #include "core/sensor/camera.h"
 #include "core/terrain/terrain_footprint.h"
@@ -22,7 +23,7 @@ std::string fmt(double v, int decimals = 1) {
 }
 
 std::string label(const AircraftConfig& a) {
-    return a.name.empty() ? std::string("the aircraft") : "aircraft \"" + a.name + "\"";
+    return aircraftLabel(a.name);
 }
 
 bool exists(const std::string& p) {

@@ -1,6 +1,7 @@
 #include "core/mission/validation.h"
 
 #include "core/geo/polygon_ops.h"
+#include "core/mission/aircraft_naming.h"
 #include "core/mission/corridor.h"
 
 #include <cmath>
@@ -11,8 +12,8 @@ namespace pf::mission {
 
 std::string pocketWarning(const geo::MultiPolygon& pockets) {
     char buf[96];
-    std::snprintf(buf, sizeof buf, "%d pocket(s) with %.0f m2 of the area", static_cast<int>(pockets.size()),
-                  geo::area(pockets));
+    std::snprintf(buf, sizeof buf, "%d pocket(s) with %.0f m² of the area",
+                  static_cast<int>(pockets.size()), geo::area(pockets));
     return std::string(buf) +
            " lie enclosed by no-fly margins that merge round them: no safe path leads in, so they are not "
            "entered; their ground is photographed from outside as far as the footprints reach (the plan's "
@@ -36,7 +37,7 @@ std::string zoneName(const NoFlyZone& z, std::size_t i) {
 }
 
 std::string aircraftName(const AircraftConfig& a, std::size_t i) {
-    return a.name.empty() ? "aircraft " + std::to_string(i + 1) : "aircraft \"" + a.name + "\"";
+    return aircraftLabel(a.name, "aircraft " + std::to_string(i + 1));
 }
 
 std::string count(double n) {
@@ -179,7 +180,7 @@ std::string planeRoutingError(const AircraftConfig& a, const std::string& who) {
 }
 
 std::vector<std::string> altitudeErrors(const Mission& m, const AircraftConfig& a, double altitudeM) {
-    std::string who = a.name.empty() ? "the aircraft" : "aircraft \"" + a.name + "\"";
+    std::string who = aircraftLabel(a.name);
     for (std::size_t i = 0; i < m.aircraft.size(); ++i)
         if (m.aircraft[i].name == a.name)
             who = aircraftName(a, i);

@@ -85,14 +85,14 @@ std::string formatReport(const MosaicReport& r) {
     }
     if (r.areaM2 > 0) {
         out << "Coverage of the planned area: " << fmt("%.2f", r.coveredRatio * 100) << " % of "
-            << fmt("%.0f", r.areaM2) << " m2";
+            << fmt("%.0f", r.areaM2) << " m²";
         if (r.gaps.empty()) {
             out << ", no gap\n";
         } else {
             out << "; " << r.gaps.size() << " gap(s), " << fmt("%.1f", r.gapAreaM2)
-                << " m2 in total:\n";
+                << " m² in total:\n";
             for (std::size_t i = 0; i < r.gaps.size() && i < 20; ++i)
-                out << "  gap " << i + 1 << ": " << fmt("%.1f", r.gaps[i].areaM2) << " m2 around "
+                out << "  gap " << i + 1 << ": " << fmt("%.1f", r.gaps[i].areaM2) << " m² around "
                     << lonLat(r.gaps[i].centre) << '\n';
             if (r.gaps.size() > 20)
                 out << "  ... (every gap is in the vectors' gaps layer)\n";

@@ -371,8 +371,9 @@ Result<std::vector<GeneratedArea>> generateAreas(const AreaGeneratorOptions& o) 
         return makeError(ErrorCode::InvalidInput, "area generator: the number of areas must be at least 1");
     if (!(o.minAreaM2 >= 1000.0) || !(o.maxAreaM2 >= o.minAreaM2) || !std::isfinite(o.maxAreaM2) ||
         o.maxAreaM2 > 1e8)
-        return makeError(ErrorCode::InvalidInput,
-                         "area generator: the area range must lie between 1,000 m2 and 100 km2, smallest first");
+        return makeError(
+            ErrorCode::InvalidInput,
+            "area generator: the area range must lie between 1,000 m² and 100 km², smallest first");
     if (o.minZones < 0 || o.maxZones < o.minZones || o.maxZones > 200)
         return makeError(ErrorCode::InvalidInput,
                          "area generator: the zone count range must lie between 0 and 200, smallest first");

@@ -32,7 +32,7 @@ double flightTimeS(const std::vector<Vec2>& pts, const FlightModel& m) { return 
 Result<SortiePlan> splitIntoSorties(const std::vector<LocalWaypoint>& survey, const Vec2& home,
                                     const SafePathFinder& finder, const FlightModel& model,
                                     const SortieOptions& opt, const std::string& aircraft) {
-    const std::string who = "Aircraft \"" + aircraft + "\"";
+    const std::string who = aircraft.empty() ? std::string("The aircraft") : aircraft;
     if (!(opt.enduranceMin > 0) || !std::isfinite(opt.enduranceMin))
         return makeError(ErrorCode::InvalidInput, who + " has an endurance that is not positive.");
     if (!(opt.reserveFraction >= 0 && opt.reserveFraction < 1))

@@ -284,3 +284,50 @@ TEST(SortieExport, DjiAircraftGetTheKmzByDefaultOneFilePerSortie) {
     }
     EXPECT_FALSE(QFileInfo::exists(QDir(guiDir).filePath(m30 + QStringLiteral(".kmz"))));
 }
+
+// Export names as the command line makes them: one '_' where a name has spaces and signs
+// ("DJI Mavic 3 Enterprise #1" -> "DJI_Mavic_3_Enterprise_1", never "…Enterprise__1"), and a second
+// aircraft whose name reads the same in a file name gets files of its own.
+TEST(SortieExport, ExportNamesHaveNoDoubleUnderscoreAndMatchTheCli) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    mission::Mission m = pf::test::shortBatteryDemo();
+    m.aircraft[0].name = "DJI Mavic 3 Enterprise #1";
+    m.aircraft[1].name = "DJI Mavic 3 Enterprise 1";
+    const QString missionPath = dir.filePath(QStringLiteral("names.json"));
+    auto w = openAndPlan(m, missionPath);
+    const QString guiDir = dir.filePath(QStringLiteral("gui"));
+    ExportDialog dialog(w->document(), w->planController(), guiDir);
+    dialog.show();
+    for (const auto& info : io::waypointFormats()) { // .plan and .kml, as the command line below
+        auto* box = dialog.findChild<QCheckBox*>(
+            QStringLiteral("ExportFormat_%1").arg(QString::fromLatin1(info.name)));
+        ASSERT_NE(box, nullptr) << info.name;
+        box->setChecked(info.format == io::WaypointFormat::QgcPlan ||
+                        info.format == io::WaypointFormat::Kml);
+    }
+    const QStringList written = dialog.runExport();
+    ASSERT_FALSE(written.isEmpty());
+    const auto gui = filesIn(guiDir);
+    for (const auto& [name, bytes] : gui)
+        EXPECT_FALSE(name.contains(QStringLiteral("__"))) << name.toStdString();
+    EXPECT_TRUE(gui.count(QStringLiteral("mission-DJI_Mavic_3_Enterprise_1-sortie1.plan")));
+    EXPECT_TRUE(gui.count(QStringLiteral("mission-DJI_Mavic_3_Enterprise_1-sortie2.plan")));
+    EXPECT_TRUE(gui.count(QStringLiteral("mission-DJI_Mavic_3_Enterprise_1_2.plan")));
+
+    EXPECT_TRUE(gui.count(QStringLiteral("mission-DJI_Mavic_3_Enterprise_1_2.kml")));
+
+    // The command line writes the same names for the same formats.
+    const QString cliDir = dir.filePath(QStringLiteral("cli"));
+    const std::string cmd = std::string("'") + PF_CLI_PATH + "' plan '" +
+                            missionPath.toStdString() + "' --format plan,kml --out '" +
+                            cliDir.toStdString() + "' >/dev/null 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    std::vector<QString> guiNames, cliNames;
+    for (const auto& f : gui)
+        guiNames.push_back(f.first);
+    for (const auto& f :
+         filesIn(cliDir, {QStringLiteral("plan.geojson"), QStringLiteral("metrics.json")}))
+        cliNames.push_back(f.first);
+    EXPECT_EQ(guiNames, cliNames);
+}

@@ -41,6 +41,26 @@ MosaicDialog* MosaicController::dialog() {
     return m_dialog;
 }
 
+MosaicPanel* MosaicController::createPanel() {
+    if (m_panel)
+        return m_panel;
+    m_panel = new MosaicPanel(m_layer, m_window);
+    m_window->addDockWidget(Qt::RightDockWidgetArea, m_panel);
+    // A tab beside the other docks of that side (Aircraft, Mission, History), with their height.
+    QDockWidget* neighbour = nullptr;
+    for (auto* d : m_window->findChildren<QDockWidget*>())
+        if (d != m_panel && m_window->dockWidgetArea(d) == Qt::RightDockWidgetArea &&
+            !d->isFloating())
+            neighbour = d;
+    if (neighbour)
+        m_window->tabifyDockWidget(neighbour, m_panel);
+    m_panel->hide();
+    connect(m_panel, &MosaicPanel::zoomRequested, this, &MosaicController::zoomToMosaic);
+    connect(m_panel, &MosaicPanel::removeRequested, this, &MosaicController::removeMosaic);
+    connect(m_panel, &MosaicPanel::reportRequested, this, &MosaicController::showDialog);
+    return m_panel;
+}
+
 void MosaicController::showDialog() {
     MosaicDialog* d = dialog();
     d->show();
@@ -51,22 +71,7 @@ void MosaicController::showDialog() {
 bool MosaicController::showMosaic(const mosaic::MosaicReport& report, QString* error) {
     if (!m_layer->show(report, error))
         return false;
-    if (!m_panel) {
-        m_panel = new MosaicPanel(m_layer, m_window);
-        m_window->addDockWidget(Qt::RightDockWidgetArea, m_panel);
-        // A tab beside the other docks of that side (Aircraft, Mission, History), with their
-        // height.
-        QDockWidget* neighbour = nullptr;
-        for (auto* d : m_window->findChildren<QDockWidget*>())
-            if (d != m_panel && m_window->dockWidgetArea(d) == Qt::RightDockWidgetArea &&
-                !d->isFloating())
-                neighbour = d;
-        if (neighbour)
-            m_window->tabifyDockWidget(neighbour, m_panel);
-        connect(m_panel, &MosaicPanel::zoomRequested, this, &MosaicController::zoomToMosaic);
-        connect(m_panel, &MosaicPanel::removeRequested, this, &MosaicController::removeMosaic);
-        connect(m_panel, &MosaicPanel::reportRequested, this, &MosaicController::showDialog);
-    }
+    createPanel();
     m_panel->refresh();
     m_panel->show();
     m_panel->raise();

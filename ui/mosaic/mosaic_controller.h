@@ -30,7 +30,9 @@ public:
     void showDialog();
     MosaicDialog* dialog();
     MosaicLayer* layer() const { return m_layer; }
-    // The Mosaic dock; null until a mosaic has been shown.
+    // The Mosaic dock: made hidden, a tab beside the docks already on the right (call once they are
+    // there), so that View > Mosaic reaches it; shown with a mosaic. Null before.
+    MosaicPanel* createPanel();
     MosaicPanel* panel() const { return m_panel; }
 
     // Puts a finished mosaic on the map over the mission and zooms to it.

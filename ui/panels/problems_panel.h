@@ -2,6 +2,8 @@
 // coverage check and every route check problem, each with the map object it is about.
 #pragma once
 
+#include "core/mission/route_check.h"
+
 #include <QListWidget>
 
 namespace pf::ui {
@@ -20,6 +22,8 @@ public:
     enum class Severity { Error, Warning, Info };
     // The items' severities, in list order (for tests).
     Severity severityOf(int row) const;
+    // The waypoints an item is about (selected on the map when it is clicked); empty for others.
+    QList<int> waypointsOf(int row) const;
     void refresh();
 
 signals:
@@ -32,6 +36,9 @@ signals:
 
 private:
     QListWidgetItem* add(const QString& text, const QString& source, Severity severity);
+    void addPlanItems();
+    void addRouteItems();
+    void addOutsideItem(int route, const QString& name, const mission::OutsideGroup& group);
 
     MissionDocument* m_doc;
     MissionLayer* m_shapes;

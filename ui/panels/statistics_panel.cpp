@@ -1,6 +1,7 @@
 #include "ui/panels/statistics_panel.h"
 
 #include "core/geo/local_frame.h"
+#include "core/mission/plan_messages.h"
 #include "core/mission/planner_kinds.h"
 #include "ui/commands/set_planner_options_command.h"
 #include "ui/mission_document.h"
@@ -58,6 +59,36 @@ QTableWidget* makeTable(const QStringList& headers) {
     return t;
 }
 
+// An aircraft's Cover %: the share of its part of the area the independent check saw covered (by
+// the photos of every aircraft: along the borders they share photos), marked "≤" when small patches
+// that the plan does not list could not be given to an aircraft.
+QTableWidgetItem* coverCell(const mission::MissionPlan& plan, std::size_t k) {
+    const auto& ap = plan.aircraft[k];
+    const auto cover = mission::aircraftCoverage(plan, k);
+    if (!cover) {
+        auto* item = cell(kDash);
+        item->setToolTip(StatisticsPanel::tr("No coverage check of %1's part")
+                             .arg(QString::fromStdString(ap.aircraft)));
+        return item;
+    }
+    const double unattributed = mission::unattributedUncoveredM2(plan);
+    const bool bound = unattributed >= 0.5;
+    auto* item = cell((bound ? QStringLiteral("≤ ") : QString()) +
+                      QString::fromStdString(mission::coveragePercentText(
+                          *cover, ap.uncoveredAreaM2 + (bound ? 1 : 0))));
+    QString tip = StatisticsPanel::tr(
+                      "Share of %1's part of the area (%2 m² without the no-fly zones) seen by the "
+                      "photos of every aircraft: %3 m² seen by none")
+                      .arg(QString::fromStdString(ap.aircraft))
+                      .arg(ap.admissibleAreaM2, 0, 'f', 0)
+                      .arg(ap.uncoveredAreaM2, 0, 'f', ap.uncoveredAreaM2 < 10 ? 1 : 0);
+    if (bound)
+        tip += StatisticsPanel::tr(", and some of %1 m² in small patches not given to an aircraft")
+                   .arg(unattributed, 0, 'f', 0);
+    item->setToolTip(tip);
+    return item;
+}
+
 // One line below the comparison for a planner shown as the yardstick only (the tooltip of its
 // button says more).
 QString yardstickNote(mission::PlannerKind kind, const std::vector<PlannerComparisonRow>& rows,
@@ -94,18 +125,19 @@ StatisticsPanel::StatisticsPanel(MissionDocument* doc, PlanController* planner, 
                          tr("Sorties"), tr("Cover %"), tr("Plan ms")});
     m_compare = makeTable({tr("Planner"), tr("Photos"), tr("km"), tr("Time"), tr("Turns"),
                            tr("Cover %"), tr("No-fly"), tr("Plan ms"), QString()});
-    const QStringList tips = {QString(),
-                              tr("Photos taken"),
-                              tr("Distance flown, home to home"),
-                              tr("Flight time (min:s), transit and every sortie included; in total the "
-                                 "longest aircraft's, as they fly at the same time"),
-                              tr("Turns"),
-                              tr("Sorties: batteries needed"),
-                              tr("Cells of its part photographed; in total the share of the area seen by "
-                                 "the real footprints of all photos (the independent coverage check)"),
-                              tr("Time to plan this aircraft's own part (its grid, path and photos); the "
-                                 "total adds them up. Sharing the area between the aircraft comes on top "
-                                 "(see below the table)")};
+    const QStringList tips = {
+        QString(),
+        tr("Photos taken"),
+        tr("Distance flown, home to home"),
+        tr("Flight time (min:s), transit and every sortie included; in total the "
+           "longest aircraft's, as they fly at the same time"),
+        tr("Turns"),
+        tr("Sorties: batteries needed"),
+        tr("Share of its part of the area seen by the real footprints of the photos; in "
+           "total of the whole area (the independent coverage check)"),
+        tr("Time to plan this aircraft's own part (its grid, path and photos); the "
+           "total adds them up. Sharing the area between the aircraft comes on top "
+           "(see below the table)")};
     for (int c = 1; c < tips.size(); ++c)
         m_stats->horizontalHeaderItem(c)->setToolTip(tips[c]);
     m_compare->horizontalHeaderItem(CNoFly)->setToolTip(
@@ -210,7 +242,8 @@ void StatisticsPanel::refreshStatistics() {
     const auto& mission = m_doc->mission();
     int batteriesTotal = 0, photosTotal = 0, turnsTotal = 0;
     double distanceTotal = 0.0, longestS = 0.0, planMsTotal = 0.0;
-    for (const auto& ap : plan->aircraft) {
+    for (std::size_t k = 0; k < plan->aircraft.size(); ++k) {
+        const auto& ap = plan->aircraft[k];
         const int r = m_stats->rowCount();
         m_stats->insertRow(r);
         QColor colour(Qt::gray);
@@ -291,16 +324,7 @@ void StatisticsPanel::refreshStatistics() {
         m_stats->setItem(r, Time, cell(minutes(shownTimeS)));
         m_stats->setItem(r, Turns, cell(QString::number(turns)));
         m_stats->setItem(r, Sorties, cell(QString::number(batteries)));
-        // Per aircraft: the share of its grid's cells it visits (grid planners); the sweep plans on
-        // the exact polygon, without cells: a dash (the total is the independent check).
-        if (ap.metrics.visitable > 0) {
-            m_stats->setItem(r, Cover, cell(QString::number(100.0 * ap.metrics.cells / ap.metrics.visitable, 'f', 1)));
-            m_stats->item(r, Cover)->setToolTip(tr("Share of this aircraft's grid cells its path visits"));
-        } else {
-            m_stats->setItem(r, Cover, cell(kDash));
-            m_stats->item(r, Cover)->setToolTip(tr("Planned without a grid (%1): see the total, the independent check")
-                                                    .arg(QString::fromUtf8(mission::plannerKindInfo(ap.planner).label)));
-        }
+        m_stats->setItem(r, Cover, coverCell(*plan, k));
         m_stats->setItem(r, PlanMs, cell(QString::number(ap.metrics.planningMs, 'f', 0)));
     }
     const auto& t = plan->totals;
@@ -313,13 +337,18 @@ void StatisticsPanel::refreshStatistics() {
                        : t.visitable > 0       ? 100.0 * t.cells / t.visitable
                                                : 0.0;
     const bool anything = photosTotal > 0 || distanceTotal > 0;
+    // Never "100.0" beside ground that no photo sees.
+    const QString covText = plan->coverageRatio > 0
+                                ? QString::fromStdString(mission::coveragePercentText(
+                                      plan->coverageRatio, plan->uncoveredAreaM2))
+                                : QString::number(cov, 'f', 1);
     const QStringList values = {tr("Total"),
                                 anything ? QString::number(photosTotal) : kDash,
                                 anything ? QString::number(distanceTotal / 1000.0, 'f', 2) : kDash,
                                 anything ? minutes(longestS) : kDash,
                                 anything ? QString::number(turnsTotal) : kDash,
                                 anything ? QString::number(batteriesTotal) : kDash,
-                                anything ? QString::number(cov, 'f', 1) : kDash,
+                                anything ? covText : kDash,
                                 QString::number(planMsTotal, 'f', 0)};
     for (int c = 0; c < values.size(); ++c) {
         auto* item = cell(values[c], c == 0 ? Qt::AlignLeft | Qt::AlignVCenter

@@ -85,9 +85,10 @@ TEST(CliValidate, NoFlyZoneOutsideIsOnlyAWarning) {
 }
 
 TEST(CliValidate, CellBudgetSaysWhatWouldFit) {
-    expectBadInput("validate " + data("bad/too_many_cells.json"),
-                   "aircraft \"Test copter\": the area is too large for the cell budget: at 40.0 m (cell size 34.56 m) "
-                   "its grid would need ");
+    expectBadInput(
+        "validate " + data("bad/too_many_cells.json"),
+        "Test copter: the area is too large for the cell budget: at 40.0 m (cell size 34.56 m) "
+        "its grid would need ");
     const CliRun r = cli("validate " + data("bad/too_many_cells.json"));
     EXPECT_TRUE(has(r.err, "more than the budget of 20; an altitude of at least ")) << r.err;
     // The flag overrides the file's budget.
@@ -117,7 +118,7 @@ TEST(CliValidate, FlagErrorsNameTheFlag) {
 
 TEST(CliValidate, AltitudeAboveTheAircraftsMaximum) {
     expectBadInput("validate " + data("cli/good_mission.json") + " --altitude 500",
-                   "aircraft \"Test copter\": the flight altitude of 500.0 m is above its maximum of 120.0 m");
+                   "Test copter: the flight altitude of 500.0 m is above its maximum of 120.0 m");
 }
 
 TEST(CliValidate, CatalogAircraftAndCamera) {

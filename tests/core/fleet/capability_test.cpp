@@ -54,13 +54,14 @@ TEST(Capability, SharesSumToOneAndFollowTheRate) {
 TEST(Capability, BadFiguresNameTheAircraft) {
     auto e = capabilityShares({make("Falcon", 20, 0, 90)}, 100.0);
     ASSERT_FALSE(e.ok());
-    EXPECT_EQ(e.error().message, "Aircraft \"Falcon\" has a cruise speed that is not positive.");
+    EXPECT_EQ(e.error().message, "Falcon has a cruise speed that is not positive.");
     auto f = capabilityShares({make("Kite", 0, 5, 90)}, 100.0);
     ASSERT_FALSE(f.ok());
-    EXPECT_EQ(f.error().message, "Aircraft \"Kite\" has no usable camera footprint (check altitude and overlap).");
+    EXPECT_EQ(f.error().message,
+              "Kite has no usable camera footprint (check altitude and overlap).");
     auto t = capabilityShares({make("Hex", 10, 5, 0)}, 100.0);
     ASSERT_FALSE(t.ok());
-    EXPECT_EQ(t.error().message, "Aircraft \"Hex\" has a turn rate that is not positive.");
+    EXPECT_EQ(t.error().message, "Hex has a turn rate that is not positive.");
     auto none = capabilityShares({}, 100.0);
     ASSERT_FALSE(none.ok());
     EXPECT_EQ(none.error().message, "No aircraft to share the area between.");

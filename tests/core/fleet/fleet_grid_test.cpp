@@ -166,10 +166,10 @@ TEST(FleetOnGrid, AircraftGridErrorsNameTheAircraft) {
     bad.cellSize = -1;
     auto grids = buildAircraftGrids({{site.area}}, site.noFly, {bad}, {"Falcon 8 #1"});
     ASSERT_FALSE(grids.ok());
-    EXPECT_EQ(grids.error().message.rfind("Aircraft \"Falcon 8 #1\": ", 0), 0u) << grids.error().message;
+    EXPECT_EQ(grids.error().message.rfind("Falcon 8 #1: ", 0), 0u) << grids.error().message;
     auto empty = buildAircraftGrids({{}}, site.noFly, {grid::GridOptions{}}, {"Phantom"});
     ASSERT_FALSE(empty.ok());
-    EXPECT_EQ(empty.error().message, "Aircraft \"Phantom\" received no part of the area.");
+    EXPECT_EQ(empty.error().message, "Phantom received no part of the area.");
 }
 
 // Beyond the paper: balancing on the times the real stride planner gives (the facade's planRegion as

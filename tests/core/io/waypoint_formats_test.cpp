@@ -90,13 +90,33 @@ TEST(WaypointFormats, ExportAllWritesOneFilePerAircraftPlusCombined) {
     auto kml = exportAll(ctx, WaypointFormat::Kml, dir, "mission");
     ASSERT_TRUE(kml.ok()) << kml.error().message;
     ASSERT_EQ(kml->size(), 3u);
-    EXPECT_EQ((*kml)[0], dir + "/mission-Falcon_8__1.kml");
+    EXPECT_EQ((*kml)[0], dir + "/mission-Falcon_8_1.kml");
     EXPECT_EQ((*kml)[2], dir + "/mission.kml");
     auto plan = exportAll(ctx, WaypointFormat::QgcPlan, dir, "mission");
     ASSERT_TRUE(plan.ok());
     EXPECT_EQ(plan->size(), 2u); // no combined .plan
     for (const auto& p : *kml)
         EXPECT_TRUE(std::filesystem::exists(p)) << p;
+}
+
+// File names carry no run of '_' and none at either end; two aircraft whose names read alike in a
+// file name never share a file.
+TEST(WaypointFormats, FileNamesCollapseUnsafeCharactersAndStayApart) {
+    EXPECT_EQ(fileNameSafe("DJI Mavic 3 Enterprise #1"), "DJI_Mavic_3_Enterprise_1");
+    EXPECT_EQ(fileNameSafe("  #Falcon 8 (spare) "), "Falcon_8_spare");
+    EXPECT_EQ(fileNameSafe("a__b"), "a_b");
+    EXPECT_EQ(fileNameSafe("Drohne Süd"), "Drohne_S_d");
+    EXPECT_EQ(fileNameSafe("Дрон"), "aircraft");
+    std::mt19937 rng(3);
+    std::vector<route::Route> rs;
+    for (const char* name : {"Falcon 8 #1", "Falcon 8 1", "Phantom", "Falcon_8 1"})
+        rs.push_back(test::randomRoute(rng, name));
+    const ExportContext ctx = makeExportContext(test::demoMission(), rs);
+    EXPECT_EQ(routeFileStem(ctx, 0), "Falcon_8_1");
+    EXPECT_EQ(routeFileStem(ctx, 1), "Falcon_8_1_2");
+    EXPECT_EQ(routeFileStem(ctx, 2), "Phantom");
+    EXPECT_EQ(routeFileStem(ctx, 3), "Falcon_8_1_3");
+    EXPECT_EQ(routeFileName(ctx, 1, WaypointFormat::QgcPlan), "Falcon_8_1_2.plan");
 }
 
 TEST(WaypointFormats, FormatNamesAndExtensions) {

@@ -109,7 +109,7 @@ TEST(AircraftKindValidation, MissionReportNamesThePlane) {
     m.aircraft.back().plane.minTurnRadiusM = 10.0;
     const auto e = errors(m);
     ASSERT_EQ(e.size(), 1u);
-    EXPECT_EQ(e[0], "aircraft \"Wing\" is a fixed-wing aircraft: this version plans routes for "
+    EXPECT_EQ(e[0], "Wing is a fixed-wing aircraft: this version plans routes for "
                     "multirotors only, "
                     "which stop and turn on the spot at every lane end; a plane cannot, and would "
                     "overshoot every "
@@ -118,17 +118,14 @@ TEST(AircraftKindValidation, MissionReportNamesThePlane) {
     for (const auto& p : validateMission(m).problems)
         steep =
             steep || (p.severity == geo::Severity::Warning &&
-                      p.message.find(
-                          "aircraft \"Wing\": a turn radius of 10 m at 15.0 m/s needs a bank of 66 "
-                          "degrees") != std::string::npos);
+                      p.message.find("Wing: a turn radius of 10 m at 15.0 m/s needs a bank of 66 "
+                                     "degrees") != std::string::npos);
     EXPECT_TRUE(steep);
     m.aircraft.back().kind = fleet::AircraftKind::Vtol;
     m.aircraft.back().plane.sinkRateMps = 0.0;
     const auto v = errors(m);
-    EXPECT_TRUE(
-        hasMessage(v, "aircraft \"Wing\": the sink rate must be greater than 0 m/s (got 0 m/s)"));
-    EXPECT_TRUE(
-        hasMessage(v, "aircraft \"Wing\" is a VTOL aircraft (it flies its survey as a plane)"));
+    EXPECT_TRUE(hasMessage(v, "Wing: the sink rate must be greater than 0 m/s (got 0 m/s)"));
+    EXPECT_TRUE(hasMessage(v, "Wing is a VTOL aircraft (it flies its survey as a plane)"));
 }
 
 // A plane never gets a multirotor's route: planning fails with the message naming it, alone or
@@ -142,14 +139,12 @@ TEST(AircraftKindPlanning, PlaneIsRefusedByName) {
     m.aircraft.push_back(plane(m.aircraft[0], "Wing", fleet::AircraftKind::FixedWing));
     auto refused = planMission(m);
     ASSERT_FALSE(refused);
-    EXPECT_NE(refused.error().message.find("aircraft \"Wing\" is a fixed-wing aircraft"),
-              std::string::npos)
+    EXPECT_NE(refused.error().message.find("Wing is a fixed-wing aircraft"), std::string::npos)
         << refused.error().message;
     Mission alone = demo();
     alone.aircraft[0] = plane(alone.aircraft[0], "Trinity", fleet::AircraftKind::Vtol);
     auto vtol = planMission(alone);
     ASSERT_FALSE(vtol);
-    EXPECT_NE(vtol.error().message.find("aircraft \"Trinity\" is a VTOL aircraft"),
-              std::string::npos)
+    EXPECT_NE(vtol.error().message.find("Trinity is a VTOL aircraft"), std::string::npos)
         << vtol.error().message;
 }

@@ -209,10 +209,15 @@ TEST(PlanMission, ShortEnduranceGivesSorties) {
                   static_cast<std::size_t>(a.sorties[i].lastWaypoint - a.sorties[i].firstWaypoint + 1));
     }
     EXPECT_EQ(photos, a.metrics.photos);
-    bool warned = false;
+    // The batteries a flight needs are worth knowing but ask for nothing: a note, not a warning.
+    bool noted = false, warned = false;
+    for (const auto& n : plan->notes)
+        noted = noted || n.find(a.aircraft + ": the flight needs " +
+                                std::to_string(a.sorties.size()) + " batteries") == 0;
     for (const auto& w : plan->warnings)
         warned = warned || w.find("batteries") != std::string::npos;
-    EXPECT_TRUE(warned);
+    EXPECT_TRUE(noted);
+    EXPECT_FALSE(warned);
     EXPECT_GE(plan->coverageRatio, 0.995);
     EXPECT_EQ(plan->noFlyViolations, 0);
 
@@ -241,7 +246,8 @@ TEST(PlanMission, ShortEnduranceGivesSorties) {
     EXPECT_TRUE(found);
 }
 
-// Two aircraft at the same altitude: a warning naming both and their altitudes.
+// Two aircraft close in altitude flying together from one home, each over its own part of the area:
+// a note naming both and their altitudes as given. From two homes: a warning.
 TEST(PlanMission, CloseAltitudesWarn) {
     Mission m = demoMission();
     AircraftConfig b = m.aircraft.front();
@@ -251,10 +257,30 @@ TEST(PlanMission, CloseAltitudesWarn) {
     auto plan = planMission(m);
     ASSERT_TRUE(plan.ok()) << plan.error().message;
     EXPECT_EQ(plan->altitudeConflicts, 1);
-    bool named = false;
-    for (const auto& w : plan->warnings)
-        named = named || (w.find("Falcon 1") != std::string::npos && w.find("Falcon 2") != std::string::npos);
-    EXPECT_TRUE(named);
+    auto names = [](const std::vector<std::string>& lines) {
+        int n = 0;
+        for (const auto& w : lines)
+            n += w.find("Falcon 1") != std::string::npos && w.find("Falcon 2") != std::string::npos;
+        return n;
+    };
+    EXPECT_EQ(names(plan->warnings), 0);
+    ASSERT_EQ(names(plan->notes), 1);
+    for (const auto& n : plan->notes) {
+        if (!names({n}))
+            continue;
+        EXPECT_EQ(n, "Falcon 1 and Falcon 2 take off from the same home and fly at the same time "
+                     "only 5 m apart in "
+                     "altitude (50 m and 55 m), each over its own part of the area: launch them "
+                     "one after the "
+                     "other, or keep 10 m between their altitudes.");
+    }
+
+    // Falcon 2 from a home of its own, 300 m away: their transit may cross, a warning.
+    m.aircraft[1].home = geo::LonLat{m.home->lon + 0.004, m.home->lat};
+    auto apart = planMission(m);
+    ASSERT_TRUE(apart.ok()) << apart.error().message;
+    EXPECT_EQ(names(apart->notes), 0);
+    EXPECT_EQ(names(apart->warnings), 1);
 }
 
 // Keeping waypoints inside the area moves the photos that lay outside it without losing coverage.
@@ -280,14 +306,14 @@ TEST(PlanMission, BadInputs) {
     plan = planMission(m);
     ASSERT_FALSE(plan.ok());
     EXPECT_EQ(plan.error().message,
-              "aircraft \"Falcon 1\": neither a flight altitude nor a ground sample distance is set");
+              "Falcon 1: neither a flight altitude nor a ground sample distance is set");
 
     m = demoMission();
     m.options.maxCells = 10;
     plan = planMission(m);
     ASSERT_FALSE(plan.ok());
     EXPECT_EQ(plan.error().code, ErrorCode::TooLarge);
-    EXPECT_EQ(plan.error().message.rfind("aircraft \"Falcon 1\": ", 0), 0u);
+    EXPECT_EQ(plan.error().message.rfind("Falcon 1: ", 0), 0u);
 }
 
 TEST(PlanMission, AngleCandidatesIncludeLongestEdge) {

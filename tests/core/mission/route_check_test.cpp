@@ -105,12 +105,15 @@ TEST(RouteCheck, AltitudesAboveTheMaximumOrBelowTheMinimumSafeAltitudeAreErrors)
 }
 
 TEST(RouteCheck, WaypointsOutsideTheAreaAreANoteWithTheFarthest) {
-    Site s;
+    Site s; // the aircraft's camera gives no footprint: why they are outside is not known
     const auto c = s.check(s.route({{-80, -80}, {-118, -80}, {80, -80}, {80, -107}}));
     EXPECT_TRUE(c.ok());
     EXPECT_EQ(c.outsideArea, 2);
-    EXPECT_EQ(c.farthestOutside, 1);
-    EXPECT_NEAR(c.farthestOutsideM, 18.0, 0.05);
+    ASSERT_EQ(c.outside.size(), 1u);
+    EXPECT_EQ(c.outside[0].reason, OutsideReason::Unknown);
+    EXPECT_EQ(c.outside[0].waypoints, (std::vector<int>{1, 3}));
+    EXPECT_EQ(c.outside[0].farthest, 1);
+    EXPECT_NEAR(c.outside[0].farthestM, 18.0, 0.05);
 }
 
 // A lane ends on the boundary: 2 cm beyond it (rounding) is inside, 20 cm is outside.
@@ -118,8 +121,58 @@ TEST(RouteCheck, AWaypointOnTheBoundaryIsInside) {
     Site s;
     const auto c = s.check(s.route({{-80, -80}, {-100.02, -80}, {-100.2, -60}, {-80, -60}}));
     EXPECT_EQ(c.outsideArea, 1);
-    EXPECT_EQ(c.farthestOutside, 2);
-    EXPECT_NEAR(c.farthestOutsideM, 0.2, 0.01);
+    ASSERT_EQ(c.outside.size(), 1u);
+    EXPECT_EQ(c.outside[0].waypoints, (std::vector<int>{2}));
+    EXPECT_NEAR(c.outside[0].farthestM, 0.2, 0.01);
+}
+
+// Each reason is true of the waypoints listed under it: a photo whose footprint (40 x 30 m at 40 m,
+// its long side across the track) still reaches the area covers the boundary, one that sees none of
+// it is listed apart, and so are the transit waypoints, whose legs take no photo.
+TEST(RouteCheck, WaypointsOutsideTheAreaAreGroupedByWhatTheirPhotosSee) {
+    Site s;
+    s.m.aircraft[0].camera.sensorWidthMm = 40.0;
+    s.m.aircraft[0].camera.sensorHeightMm = 30.0;
+    s.m.aircraft[0].camera.focalLengthMm = 40.0;
+    s.m.aircraft[0].camera.imageWidthPx = 4000;
+    s.m.aircraft[0].camera.imageHeightPx = 3000;
+    s.m.home = s.frame.toGeo(geo::Vec2{-130, -100});
+    auto r = s.route({{-80, -80},  // inside
+                      {-109, -80}, // 9 m out, within half the short side: sees the area
+                      {119, 0},  // 19 m east, flying north: its 40 m across the track reach back in
+                      {119, 40}, // 19 m east, flying east: 15 m of its footprint reach back, not 19
+                      {-80, 130}, // 30 m north: beyond the footprint's corners
+                      {-130, -100},
+                      {-100, 125}});
+    r.waypoints[3].headingDeg = 90.0;
+    r.waypoints[5].kind = route::WaypointKind::Transit; // home between two sorties
+    const auto c = s.check(r);
+    EXPECT_EQ(c.outsideArea, 6);
+    const auto* covers = c.outsideGroup(OutsideReason::CoversBoundary);
+    const auto* nothing = c.outsideGroup(OutsideReason::SeesNothing);
+    const auto* transit = c.outsideGroup(OutsideReason::Transit);
+    ASSERT_TRUE(covers && nothing && transit);
+    EXPECT_EQ(c.outsideGroup(OutsideReason::Unknown), nullptr);
+    EXPECT_EQ(covers->waypoints, (std::vector<int>{1, 2}));
+    EXPECT_EQ(covers->farthest, 2);
+    EXPECT_NEAR(covers->farthestM, 19.0, 0.05);
+    EXPECT_EQ(nothing->waypoints, (std::vector<int>{3, 4, 6}));
+    EXPECT_NEAR(nothing->farthestM, 30.0, 0.05);
+    EXPECT_EQ(transit->waypoints, (std::vector<int>{5}));
+    EXPECT_TRUE(transit->atHomeOnly);
+    EXPECT_NEAR(transit->farthestM, 30.0, 0.05);
+    // A transit waypoint elsewhere (a detour): no longer "at home only".
+    r.waypoints[6].kind = route::WaypointKind::Transit;
+    const auto d = s.check(r);
+    ASSERT_NE(d.outsideGroup(OutsideReason::Transit), nullptr);
+    EXPECT_EQ(d.outsideGroup(OutsideReason::Transit)->waypoints, (std::vector<int>{5, 6}));
+    EXPECT_FALSE(d.outsideGroup(OutsideReason::Transit)->atHomeOnly);
+    // Lower, the footprint shrinks: at 20 m (20 x 15 m) the one 19 m east sees nothing any more.
+    for (auto& w : r.waypoints)
+        w.altitudeM = 20.0;
+    const auto low = s.check(r);
+    ASSERT_NE(low.outsideGroup(OutsideReason::CoversBoundary), nullptr);
+    EXPECT_EQ(low.outsideGroup(OutsideReason::CoversBoundary)->waypoints, (std::vector<int>{1}));
 }
 
 TEST(RouteCheck, RouteErrorsLabelsEveryRoute) {

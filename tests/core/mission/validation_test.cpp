@@ -121,20 +121,24 @@ TEST(MissionValidation, AltitudeOutOfRange) {
     Mission m = demo();
     m.aircraft[0].altitudeM = 0.0;
     // 0 m says why it cannot be flown and what the lowest altitude is.
-    EXPECT_EQ(theError(m), "aircraft \"Test copter\": the flight altitude must be greater than 0 m (got 0 m): the "
-                           "altitude is measured above the take-off point, so 0 m is on the ground; the lowest "
-                           "allowed is 2 m");
+    EXPECT_EQ(theError(m),
+              "Test copter: the flight altitude must be greater than 0 m (got 0 m): the "
+              "altitude is measured above the take-off point, so 0 m is on the ground; the lowest "
+              "allowed is 2 m");
     m.aircraft[0].altitudeM = 150.0;
-    EXPECT_EQ(theError(m), "aircraft \"Test copter\": the flight altitude of 150.0 m is above its maximum of 120.0 m");
+    EXPECT_EQ(theError(m),
+              "Test copter: the flight altitude of 150.0 m is above its maximum of 120.0 m");
     m.aircraft[0].altitudeM.reset();
-    EXPECT_EQ(theError(m), "aircraft \"Test copter\": neither a flight altitude nor a ground sample distance is set");
+    EXPECT_EQ(theError(m),
+              "Test copter: neither a flight altitude nor a ground sample distance is set");
 }
 
 TEST(MissionValidation, GsdMustBePositiveAndGivesTheAltitude) {
     Mission m = demo();
     m.aircraft[0].altitudeM.reset();
     m.aircraft[0].gsdCm = -1.0;
-    EXPECT_EQ(theError(m), "aircraft \"Test copter\": the ground sample distance must be greater than 0 cm/px (got -1)");
+    EXPECT_EQ(theError(m),
+              "Test copter: the ground sample distance must be greater than 0 cm/px (got -1)");
     m.aircraft[0].gsdCm = 2.0;
     const auto r = validateMission(m);
     EXPECT_FALSE(r.hasErrors()) << r.errorSummary();
@@ -146,10 +150,12 @@ TEST(MissionValidation, GsdMustBePositiveAndGivesTheAltitude) {
 TEST(MissionValidation, OverlapOutsideItsRange) {
     Mission m = demo();
     m.aircraft[0].overlap.front = 1.0;
-    EXPECT_EQ(theError(m), "aircraft \"Test copter\": the front overlap must lie in [0, 1), e.g. 0.7 for 70 % (got 1)");
+    EXPECT_EQ(theError(m),
+              "Test copter: the front overlap must lie in [0, 1), e.g. 0.7 for 70 % (got 1)");
     m.aircraft[0].overlap.front = 0.7;
     m.aircraft[0].overlap.side = -0.1;
-    EXPECT_EQ(theError(m), "aircraft \"Test copter\": the side overlap must lie in [0, 1), e.g. 0.7 for 70 % (got -0.1)");
+    EXPECT_EQ(theError(m),
+              "Test copter: the side overlap must lie in [0, 1), e.g. 0.7 for 70 % (got -0.1)");
 }
 
 TEST(MissionValidation, AreaTooLargeForTheCellBudgetSaysWhatWouldFit) {
@@ -157,7 +163,9 @@ TEST(MissionValidation, AreaTooLargeForTheCellBudgetSaysWhatWouldFit) {
     m.options.maxCells = 20;
     m.options.gridAngleDeg = 0.0;
     const std::string e = theError(m);
-    EXPECT_EQ(e.rfind("aircraft \"Test copter\": the area is too large for the cell budget: at 50.0 m (cell size ", 0), 0u)
+    EXPECT_EQ(
+        e.rfind("Test copter: the area is too large for the cell budget: at 50.0 m (cell size ", 0),
+        0u)
         << e;
     EXPECT_NE(e.find("cells, more than the budget of 20; an altitude of at least "), std::string::npos) << e;
     // The altitude it proposes really fits.
@@ -186,7 +194,7 @@ TEST(MissionValidation, OptionsHomeAndAircraft) {
     EXPECT_EQ(theError(m), "the mission has no aircraft: add at least one");
     m = demo();
     m.aircraft[0].camera.hfovDeg = 0;
-    EXPECT_EQ(theError(m).rfind("aircraft \"Test copter\": ", 0), 0u);
+    EXPECT_EQ(theError(m).rfind("Test copter: ", 0), 0u);
 }
 
 TEST(MissionValidation, GridOptionsFollowTheAircraft) {
@@ -210,11 +218,15 @@ TEST(MissionValidation, AltitudeLimitsAreErrorsWithTheReason) {
     EXPECT_TRUE(altitudeErrors(m, a, 5.0).empty()) << altitudeErrors(m, a, 5.0).front();
     auto low = altitudeErrors(m, a, 1.0);
     ASSERT_EQ(low.size(), 1u);
-    EXPECT_EQ(low[0], "aircraft \"Test copter\": the flight altitude of 1.0 m is below the minimum safe altitude of 2.0 m");
+    EXPECT_EQ(
+        low[0],
+        "Test copter: the flight altitude of 1.0 m is below the minimum safe altitude of 2.0 m");
     auto small = altitudeErrors(m, a, 3.0);
     ASSERT_EQ(small.size(), 1u);
-    EXPECT_EQ(small[0], "aircraft \"Test copter\": at 3.0 m a photo covers only 3.5 x 2.5 m, below the smallest "
-                        "footprint of 3 m (planning and flying would take far too long): fly at 3.7 m or higher")
+    EXPECT_EQ(
+        small[0],
+        "Test copter: at 3.0 m a photo covers only 3.5 x 2.5 m, below the smallest "
+        "footprint of 3 m (planning and flying would take far too long): fly at 3.7 m or higher")
         << small[0];
     EXPECT_TRUE(altitudeErrors(m, a, 3.7).empty());
     a.camera.vfovDeg = 30.0; // narrower: 5 m is too low for it
@@ -223,7 +235,8 @@ TEST(MissionValidation, AltitudeLimitsAreErrorsWithTheReason) {
     a.camera.vfovDeg = 45.0;
     auto high = altitudeErrors(m, a, 5000.0);
     ASSERT_EQ(high.size(), 1u);
-    EXPECT_EQ(high[0], "aircraft \"Test copter\": the flight altitude of 5000.0 m is above its maximum of 120.0 m");
+    EXPECT_EQ(high[0],
+              "Test copter: the flight altitude of 5000.0 m is above its maximum of 120.0 m");
     auto zero = altitudeErrors(m, a, 0.0);
     ASSERT_EQ(zero.size(), 1u);
     EXPECT_NE(zero[0].find("so 0 m is on the ground"), std::string::npos);

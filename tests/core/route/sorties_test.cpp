@@ -119,21 +119,24 @@ TEST(Sorties, UnreachableWaypointIsAnError) {
     auto plan = splitIntoSorties(photoLine(1000, 1000), Vec2(0, 0), SafePathFinder(), noStops(10, 90),
                                  SortieOptions{1.8, 0.25}, "Falcon 8 #1");
     ASSERT_FALSE(plan.ok());
-    EXPECT_EQ(plan.error().message,
-              "Aircraft \"Falcon 8 #1\" cannot fly to waypoint 1 (1000 m from home) and back within its endurance of "
-              "1.8 min less the 25 % reserve (81 s available, 202 s needed): take off closer or use an aircraft with "
-              "more endurance.");
+    EXPECT_EQ(
+        plan.error().message,
+        "Falcon 8 #1 cannot fly to waypoint 1 (1000 m from home) and back within its endurance of "
+        "1.8 min less the 25 % reserve (81 s available, 202 s needed): take off closer or use an "
+        "aircraft with "
+        "more endurance.");
 }
 
 TEST(Sorties, BadSettingsAreRejectedWithAMessage) {
     const auto survey = photoLine(0, 10);
     auto e = splitIntoSorties(survey, Vec2(0, 0), SafePathFinder(), FlightModel{}, SortieOptions{0, 0.2}, "K");
     ASSERT_FALSE(e.ok());
-    EXPECT_EQ(e.error().message, "Aircraft \"K\" has an endurance that is not positive.");
+    EXPECT_EQ(e.error().message, "K has an endurance that is not positive.");
     auto r = splitIntoSorties(survey, Vec2(0, 0), SafePathFinder(), FlightModel{}, SortieOptions{10, 1.0}, "K");
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.error().message, "The battery reserve must be a fraction from 0 up to (not including) 1.");
     auto s = splitIntoSorties(survey, Vec2(0, 0), SafePathFinder(), FlightModel{0, 90}, SortieOptions{}, "K");
     ASSERT_FALSE(s.ok());
-    EXPECT_EQ(s.error().message, "Aircraft \"K\" needs a positive speed, turn rate and acceleration to estimate flight times.");
+    EXPECT_EQ(s.error().message,
+              "K needs a positive speed, turn rate and acceleration to estimate flight times.");
 }
