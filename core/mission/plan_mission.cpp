@@ -1,5 +1,6 @@
 #include "core/mission/plan_mission.h"
 
+#include "core/fleet/aircraft.h"
 #include "core/fleet/altitude.h"
 #include "core/fleet/area_split.h"
 #include "core/fleet/photo_dedup.h"
@@ -103,16 +104,19 @@ Result<MissionPlan> planMissionWith(const Mission& m) {
         return one;
     }
     // The split estimates times at one fixed angle (a full angle search per estimate would cost 37
-    // times as much): the mission's, or the best for the aircraft with the coarsest grid (the cheapest
-    // search) over the whole area.
-    // With the automatic choice, the split is searched with stride's times (the split needs hundreds
-    // of estimates; three planners each would triple them; stride's split gave the demo a shorter
-    // makespan than raster's, 7.0 against 7.0 min for 0.59 against 0.82 s) and each aircraft's region
-    // is then planned with the soonest of sweep, stride and raster (planRegion): no aircraft flies
-    // longer than stride would make it fly there.
+    // times as much): the mission's, or the best for the aircraft with the coarsest grid (the
+    // cheapest search) over the whole area. With the automatic choice, the split is searched with
+    // stride's times (the split needs hundreds of estimates; three planners each would triple them;
+    // stride's split gave the demo a shorter makespan than raster's, 7.0 against 7.0 min for 0.59
+    // against 0.82 s) and each aircraft's region is then planned with the soonest of sweep, stride
+    // and raster (planRegion): no aircraft flies longer than stride would make it fly there. A
+    // fleet with a plane estimates with the sweep, the planner that plans for planes.
+    const bool anyPlane =
+        std::any_of(m.aircraft.begin(), m.aircraft.end(),
+                    [](const AircraftConfig& a) { return fleet::fliesAsPlane(a.kind); });
     PlannerOptions estimateOpt = opt;
     if (opt.planner == PlannerKind::Auto)
-        estimateOpt.planner = PlannerKind::Stride;
+        estimateOpt.planner = anyPlane ? PlannerKind::Sweep : PlannerKind::Stride;
     double estimateAngle = 0.0;
     if (opt.gridAngleDeg) {
         estimateAngle = *opt.gridAngleDeg;

@@ -1,5 +1,6 @@
 #include "core/mission/plan_region.h"
 
+#include "core/fleet/aircraft.h"
 #include "core/job_scope.h"
 #include "core/mission/planner_kinds.h"
 #include "core/mission/validation.h"
@@ -8,6 +9,7 @@
 #include "core/plan/planner.h"
 #include "core/plan/sweep/sweep_planner.h"
 #include "core/route/photo_waypoints.h"
+#include "core/route/plane_route.h"
 #include "core/route/safety.h"
 #include "core/route/sorties.h"
 #include "core/route/transit.h"
@@ -51,9 +53,6 @@ struct Aircraft {
 
 Result<Aircraft> prepare(const AircraftConfig& cfg) {
     Aircraft a{cfg, label(cfg), 0.0, {}, 0.0, flightModel(cfg)};
-    // No planner routes a plane yet: it must never get a multirotor's route.
-    if (auto e = planeRoutingError(cfg, a.who); !e.empty())
-        return makeError(ErrorCode::InvalidInput, e);
     auto alt = resolvedAltitude(cfg);
     if (!alt)
         return makeError(alt.error().code, a.who + ": " + alt.error().message);
@@ -294,6 +293,43 @@ Result<AircraftPlan> gridRegion(const geo::MultiPolygon& region, const std::vect
     return p;
 }
 
+// A plane over the sweep's lanes: their order and directions chosen for wide turns, joined by
+// Dubins turns of its radius sampled into Turn waypoints (route::planPlaneRoute).
+AircraftPlan planeSweep(const plan::SweepPlan& sp, const std::vector<geo::Polygon>& noFly,
+                        const Aircraft& a, double radiusM, const PlannerOptions& options,
+                        const std::optional<geo::Vec2>& home,
+                        const std::optional<geo::Vec2>& landing) {
+    const geo::NoFlyField field(noFly, options.safetyMarginM);
+    // Detours round the zones at the margin plus most of a turn radius: turning at their corners on
+    // arcs of that radius keeps the margin.
+    const geo::SafePathFinder detours(
+        geo::NoFlyField(noFly, options.safetyMarginM + 0.9 * radiusM));
+    route::PlaneRouteOptions ro;
+    ro.detours = noFly.empty() ? nullptr : &detours;
+    ro.radiusM = radiusM;
+    ro.runInM = a.cfg.plane.runInM;
+    ro.trackSpacingM = a.fp.acrossM;
+    ro.field = &field;
+    ro.home = home;
+    ro.landing = landing;
+    const route::PlaneRoute r = route::planPlaneRoute(sp.lanes, ro);
+    AircraftPlan p;
+    p.gridAngleDeg = sp.stats.angleDeg;
+    p.anglesTried = sp.stats.directionsPlanned;
+    p.localWaypoints = r.waypoints;
+    route::dropNearDuplicates(p.localWaypoints, &field);
+    p.warnings = sp.warnings;
+    for (const auto& w : r.warnings)
+        p.warnings.push_back(w);
+    if (options.keepInsideArea)
+        p.warnings.push_back(
+            "a plane's turns run up to its turn radius (" +
+            std::to_string(static_cast<int>(std::lround(radiusM))) +
+            " m) past the area's edge: keep-inside holds for its lanes, not its turns");
+    routeMetrics(p, a.model);
+    return p;
+}
+
 Result<AircraftPlan> sweepRegion(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
                                  const Aircraft& a, const PlannerOptions& options, const std::optional<geo::Vec2>& home,
                                  const std::optional<geo::Vec2>& landing) {
@@ -309,12 +345,21 @@ Result<AircraftPlan> sweepRegion(const geo::MultiPolygon& region, const std::vec
     so.landing = landing;
     if (options.gridAngleDeg)
         so.anglesDeg = {*options.gridAngleDeg};
+    const bool plane = fleet::fliesAsPlane(a.cfg.kind);
+    const double radiusM = plane ? fleet::minTurnRadiusM(a.cfg.plane, a.cfg.cruiseSpeedMps) : 0.0;
+    // A plane's lanes end a turn radius further from the zones than the margin: its turn begins at
+    // a lane's last photo and runs up to one radius on past it. The ground in between is
+    // photographed from outside, as the ground in a margin is.
+    if (plane)
+        so.safetyMarginM += radiusM;
     reportProgress(0.0, "lanes");
     auto sp = plan::planSweep(region, noFly, so);
     if (stopRequested())
         return makeError(ErrorCode::Cancelled, "planning cancelled");
     if (!sp)
         return makeError(sp.error().code, a.who + ": " + sp.error().message);
+    if (plane)
+        return planeSweep(*sp, noFly, a, radiusM, options, home, landing);
     AircraftPlan p;
     p.gridAngleDeg = sp->stats.angleDeg;
     p.anglesTried = sp->stats.directionsPlanned;
@@ -462,6 +507,9 @@ Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vect
     if (!a)
         return a.error();
     Result<AircraftPlan> out = makeError(ErrorCode::Internal, "no planner");
+    const bool plane = fleet::fliesAsPlane(aircraft.kind);
+    if (auto e = planeRoutingError(aircraft, options.planner, a->who); !e.empty())
+        return makeError(ErrorCode::InvalidInput, e);
     if (options.planner != PlannerKind::Auto) {
         out = planOne(region, noFly, *a, options.planner, options, frame, home, landing, laneSpacing);
     } else {
@@ -473,6 +521,8 @@ Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vect
         GridCache grids;
         std::optional<Error> firstError;
         for (PlannerKind k : {PlannerKind::Sweep, PlannerKind::Stride, PlannerKind::Raster}) {
+            if (plane && !servesPlanes(plannerKindInfo(k)))
+                continue; // its route turns on the spot
             if (stopRequested())
                 return makeError(ErrorCode::Cancelled, "planning cancelled");
             auto p = planOne(region, noFly, *a, k, options, frame, home, landing, laneSpacing, &grids);
@@ -490,8 +540,12 @@ Result<AircraftPlan> planRegion(const geo::MultiPolygon& region, const std::vect
         }
         if (!out)
             return firstError ? *firstError : out.error();
-        out->plannerChoice = std::string(plannerKindInfo(out->planner).id) + " flies soonest (" + note +
-                             ", home to home in one flight)";
+        out->plannerChoice =
+            plane ? std::string(plannerKindInfo(out->planner).id) + " (" + note +
+                        "; the only planner here that plans for a plane: stride and raster turn "
+                        "on the spot)"
+                  : std::string(plannerKindInfo(out->planner).id) + " flies soonest (" + note +
+                        ", home to home in one flight)";
     }
     if (stopRequested())
         return makeError(ErrorCode::Cancelled, "planning cancelled");

@@ -497,11 +497,12 @@ void AircraftPanel::refreshForm(bool keepError) {
         // A value from a mission file can be out of limits too: say so in red, it will not be planned.
         QStringList errors;
         for (const auto& e : mission::altitudeErrors(m_doc->mission(), a, *alt)) errors << QString::fromStdString(e).toHtmlEscaped();
-        // A plane's figures, and that no planner routes a plane yet, the same way.
+        // A plane's figures, and whether the mission's planner plans for a plane, the same way.
         const std::string who = "aircraft \"" + a.name + "\"";
         for (const auto& e : mission::planeErrors(a, who))
             errors << QString::fromStdString(e).toHtmlEscaped();
-        if (const auto e = mission::planeRoutingError(a, who); !e.empty())
+        if (const auto e = mission::planeRoutingError(a, m_doc->mission().options.planner, who);
+            !e.empty())
             errors << QString::fromStdString(e).toHtmlEscaped();
         text = text.toHtmlEscaped().replace(QLatin1Char('\n'), QStringLiteral("<br>"));
         if (!errors.isEmpty())
