@@ -398,7 +398,9 @@ PlaneRoute planPlaneRoute(const std::vector<plan::Lane>& lanes, const PlaneRoute
             out.unsafeTurns += t.safe ? 0 : 1;
             out.lengthM += t.lengthM();
             for (std::size_t pi = 0; pi < t.pieces.size(); ++pi) {
-                const auto pts = samplePath(t.pieces[pi], s.step());
+                // At radius 0 a piece is a straight leg: its ends are enough.
+                const auto pts = o.radiusM > 0 ? samplePath(t.pieces[pi], s.step())
+                                               : std::vector<Pose>{t.pieces[pi].start, t.pieces[pi].end()};
                 // Each piece's end is the next one's start; the last one's is the run-in point.
                 const std::size_t last = pi + 1 < t.pieces.size() ? pts.size() : pts.size() - 1;
                 for (std::size_t k = 1; k < last; ++k)
