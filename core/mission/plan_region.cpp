@@ -347,11 +347,13 @@ Result<AircraftPlan> sweepRegion(const geo::MultiPolygon& region, const std::vec
         so.anglesDeg = {*options.gridAngleDeg};
     const bool plane = fleet::fliesAsPlane(a.cfg.kind);
     const double radiusM = plane ? fleet::minTurnRadiusM(a.cfg.plane, a.cfg.cruiseSpeedMps) : 0.0;
-    // A plane's lanes end a turn radius further from the zones than the margin: its turn begins at
-    // a lane's last photo and runs up to one radius on past it. The ground in between is
-    // photographed from outside, as the ground in a margin is.
+    // A plane's lanes end up to a turn radius further from the zones than the margin: its turn begins
+    // at a lane's last photo and runs up to one radius on past it. The ground in between is
+    // photographed from outside, as the ground in a margin is, which sees up to half a footprint
+    // ahead: the extra room is at most 0.45 of the real footprint along the track (with a larger
+    // radius the turn goes away from the zone or round it: route::planPlaneRoute).
     if (plane)
-        so.safetyMarginM += radiusM;
+        so.safetyMarginM += std::min(radiusM, 0.45 * a.fp.real.shortSideM);
     reportProgress(0.0, "lanes");
     auto sp = plan::planSweep(region, noFly, so);
     if (stopRequested())

@@ -51,8 +51,11 @@ public:
         for (std::size_t i = 0; i < lanes.size(); ++i)
             if (!lanes[i].photos.empty())
                 m_used.push_back(static_cast<int>(i));
-        m_step = m_o.radiusM > 0 ? std::min(kTurnStepM, m_o.radiusM * kTurnStepDeg * M_PI / 180.0)
-                                 : kTurnStepM;
+        // Never below kMinTurnStepM: a radius of millimetres would otherwise sample every straight at
+        // that step (its turns are corners then, whatever the sampling).
+        m_step = m_o.radiusM > 0
+                     ? std::min(kTurnStepM, std::max(kMinTurnStepM, m_o.radiusM * kTurnStepDeg * M_PI / 180.0))
+                     : kTurnStepM;
         for (int i : m_used)
             for (int r = 0; r < 2; ++r)
                 m_flown[key(i, r)] = makeFlown(lanes[static_cast<std::size_t>(i)], r == 1);

@@ -33,6 +33,7 @@ struct PlaneRouteOptions {
 // step lies within R x 0.4 % of the arc (6 cm at 15 m), and a turn of 180 degrees is 18 waypoints.
 constexpr double kTurnStepDeg = 10.0;
 constexpr double kTurnStepM = 5.0;
+constexpr double kMinTurnStepM = 0.25; // radii under 1.4 m are sampled coarser than 10 degrees
 
 struct PlaneRoute {
     // In flight order: per lane its run-in point (Turn), its photos (Photo); between lanes the
