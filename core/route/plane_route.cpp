@@ -51,11 +51,7 @@ public:
         for (std::size_t i = 0; i < lanes.size(); ++i)
             if (!lanes[i].photos.empty())
                 m_used.push_back(static_cast<int>(i));
-        // Never below kMinTurnStepM: a radius of millimetres would otherwise sample every straight at
-        // that step (its turns are corners then, whatever the sampling).
-        m_step = m_o.radiusM > 0
-                     ? std::min(kTurnStepM, std::max(kMinTurnStepM, m_o.radiusM * kTurnStepDeg * M_PI / 180.0))
-                     : kTurnStepM;
+
         for (int i : m_used)
             for (int r = 0; r < 2; ++r)
                 m_flown[key(i, r)] = makeFlown(lanes[static_cast<std::size_t>(i)], r == 1);
@@ -104,8 +100,6 @@ public:
         const FlownLane& f = flown(lane, rev);
         return (f.first - f.runIn).norm() + (f.last - f.first).norm();
     }
-
-    double step() const { return m_step; }
 
 private:
     static int key(int lane, bool rev) { return 2 * lane + (rev ? 1 : 0); }
@@ -199,7 +193,7 @@ private:
     bool pathIsSafe(const DubinsPath& p) const {
         if (!m_o.field || m_o.field->empty())
             return true;
-        const auto pts = samplePath(p, m_step);
+        const auto pts = turnPoints(p);
         for (std::size_t i = 1; i < pts.size(); ++i)
             if (!m_o.field->segmentIsSafe(pts[i - 1].pos, pts[i].pos))
                 return false;
@@ -211,7 +205,6 @@ private:
     std::vector<int> m_used;
     std::unordered_map<int, FlownLane> m_flown;
     std::unordered_map<long long, double> m_costs;
-    double m_step = kTurnStepM;
 };
 
 struct Candidate {
@@ -361,6 +354,25 @@ void appendLane(PlaneRoute& out, const plan::Lane& lane, const FlownLane& f, boo
 
 } // namespace
 
+std::vector<Pose> turnPoints(const DubinsPath& path) {
+    std::vector<Pose> out{path.start};
+    double at = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        const double len = path.segmentLengthM(i);
+        if (len <= 0.0)
+            continue;
+        if (path.kind(i) != SegmentKind::Straight && path.radiusM > 0) {
+            const double step = std::max(kMinTurnStepM, path.radiusM * kTurnStepDeg * M_PI / 180.0);
+            const int n = static_cast<int>(std::ceil(len / step - 1e-9));
+            for (int k = 1; k < n; ++k)
+                out.push_back(path.poseAt(at + len * k / n));
+        }
+        at += len;
+        out.push_back(path.poseAt(at));
+    }
+    return out;
+}
+
 PlaneRoute planPlaneRoute(const std::vector<plan::Lane>& lanes, const PlaneRouteOptions& o) {
     PlaneRoute out;
     RouteSearch s(lanes, o);
@@ -401,9 +413,7 @@ PlaneRoute planPlaneRoute(const std::vector<plan::Lane>& lanes, const PlaneRoute
             out.unsafeTurns += t.safe ? 0 : 1;
             out.lengthM += t.lengthM();
             for (std::size_t pi = 0; pi < t.pieces.size(); ++pi) {
-                // At radius 0 a piece is a straight leg: its ends are enough.
-                const auto pts = o.radiusM > 0 ? samplePath(t.pieces[pi], s.step())
-                                               : std::vector<Pose>{t.pieces[pi].start, t.pieces[pi].end()};
+                const auto pts = turnPoints(t.pieces[pi]);
                 // Each piece's end is the next one's start; the last one's is the run-in point.
                 const std::size_t last = pi + 1 < t.pieces.size() ? pts.size() : pts.size() - 1;
                 for (std::size_t k = 1; k < last; ++k)

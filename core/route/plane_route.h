@@ -19,7 +19,6 @@ struct PlaneRouteOptions {
     double radiusM = 0.0;       // the minimum turn radius R, >= 0
     double runInM = 0.0;        // straight flight before a lane's first photo, >= 0
     double trackSpacingM = 0.0; // the lane spacing, > 0 (sets the skip patterns tried)
-    // A turn is sampled every kTurnStepDeg of heading, and at most every kTurnStepM metres.
     // The planner's field of the no-fly zones with their margin (none: no zones).
     const geo::NoFlyField* field = nullptr;
     // Shortest safe paths round the zones at a larger margin (the field's plus about a turn
@@ -29,11 +28,17 @@ struct PlaneRouteOptions {
     std::optional<geo::Vec2> home, landing; // where the flight starts and ends (landing: home)
 };
 
-// Turns are sampled every 10 degrees of heading and at most every 5 m: the chord of a 10 degree
-// step lies within R x 0.4 % of the arc (6 cm at 15 m), and a turn of 180 degrees is 18 waypoints.
-constexpr double kTurnStepDeg = 10.0;
-constexpr double kTurnStepM = 5.0;
-constexpr double kMinTurnStepM = 0.25; // radii under 1.4 m are sampled coarser than 10 degrees
+// A turn's arcs are sampled every kTurnStepDeg of heading (never closer than kMinTurnStepM), its
+// straights only at their ends: the chord of a 20 degree step lies within 1.5 % of the radius inside
+// the arc (34 cm at 22 m) and a turn of 180 degrees is 9 waypoints, so that a survey of a few dozen
+// lanes stays within the mission items an autopilot holds (ArduPilot 650 on 16 KB boards, PX4 500 by
+// default). The route checks and flies the sampled polyline itself.
+constexpr double kTurnStepDeg = 20.0;
+constexpr double kMinTurnStepM = 0.25;
+
+// The points a Dubins path is flown through: its start, each arc's points every kTurnStepDeg (at
+// most), each segment's end.
+std::vector<Pose> turnPoints(const DubinsPath& path);
 
 struct PlaneRoute {
     // In flight order: per lane its run-in point (Turn), its photos (Photo); between lanes the
