@@ -104,19 +104,22 @@ Result<MissionPlan> planMissionWith(const Mission& m) {
         return one;
     }
     // The split estimates times at one fixed angle (a full angle search per estimate would cost 37
-    // times as much): the mission's, or the best for the aircraft with the coarsest grid (the
-    // cheapest search) over the whole area. With the automatic choice, the split is searched with
-    // stride's times (the split needs hundreds of estimates; three planners each would triple them;
-    // stride's split gave the demo a shorter makespan than raster's, 7.0 against 7.0 min for 0.59
-    // against 0.82 s) and each aircraft's region is then planned with the soonest of sweep, stride
-    // and raster (planRegion): no aircraft flies longer than stride would make it fly there. A
-    // fleet with a plane estimates with the sweep, the planner that plans for planes.
-    const bool anyPlane =
-        std::any_of(m.aircraft.begin(), m.aircraft.end(),
-                    [](const AircraftConfig& a) { return fleet::fliesAsPlane(a.kind); });
+    // times as much): the mission's, or the best for the aircraft with the coarsest grid (the cheapest
+    // search) over the whole area.
+    // With the automatic choice, the split is searched with stride's times (the split needs hundreds
+    // of estimates; three planners each would triple them; stride's split gave the demo a shorter
+    // makespan than raster's, 7.0 against 7.0 min for 0.59 against 0.82 s) and each aircraft's region
+    // is then planned with the soonest of sweep, stride and raster (planRegion): no aircraft flies
+    // longer than stride would make it fly there.
     PlannerOptions estimateOpt = opt;
     if (opt.planner == PlannerKind::Auto)
-        estimateOpt.planner = anyPlane ? PlannerKind::Sweep : PlannerKind::Stride;
+        estimateOpt.planner = PlannerKind::Stride;
+    // A plane's estimates use the sweep, the planner that plans for planes (stride turns on the spot).
+    const auto estimateFor = [&](std::size_t k, PlannerOptions o) {
+        if (opt.planner == PlannerKind::Auto && fleet::fliesAsPlane(m.aircraft[k].kind))
+            o.planner = PlannerKind::Sweep;
+        return o;
+    };
     double estimateAngle = 0.0;
     if (opt.gridAngleDeg) {
         estimateAngle = *opt.gridAngleDeg;
@@ -125,7 +128,8 @@ Result<MissionPlan> planMissionWith(const Mission& m) {
         for (std::size_t k = 1; k < n; ++k)
             if (sensor::cellSizeFor(footprints[k]) > sensor::cellSizeFor(footprints[coarsest]))
                 coarsest = k;
-        auto whole = planRegion(geo::MultiPolygon{geom->area}, geom->noFly, m.aircraft[coarsest], estimateOpt, frame,
+        auto whole = planRegion(geo::MultiPolygon{geom->area}, geom->noFly, m.aircraft[coarsest],
+                                estimateFor(coarsest, estimateOpt), frame,
                                 homes[coarsest], landing);
         if (!whole)
             return whole.error();
@@ -144,7 +148,8 @@ Result<MissionPlan> planMissionWith(const Mission& m) {
     // the neighbours (photos another aircraft already takes) and the no-fly detours to the correction
     // factors below. An aircraft whose subarea lies far from its home gets less of the area.
     const auto rawEstimate = [&](std::size_t k, const geo::MultiPolygon& sub) -> Result<double> {
-        auto ap = planRegion(sub, geom->noFly, m.aircraft[k], fixed, frame, homes[k], landing, laneSpacing(m, k));
+        auto ap = planRegion(sub, geom->noFly, m.aircraft[k], estimateFor(k, fixed), frame, homes[k], landing,
+                             laneSpacing(m, k));
         if (!ap)
             return ap.error();
         return aloneRouteTimeS(surveyPart(ap->localWaypoints), m.aircraft[k], homes[k], landing);

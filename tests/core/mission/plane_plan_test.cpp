@@ -127,3 +127,37 @@ TEST(PlanePlanning, PlannersThatCannotServeAPlaneSaySo) {
     EXPECT_NE(chosen->aircraft[0].plannerChoice.find("the only planner here that plans for a plane"),
               std::string::npos);
 }
+
+// A fixed-wing beside two multirotors over one area with zones: the area is shared, everything is
+// seen, no route enters a margin, the plane's turns stay within its radius and the multirotors fly
+// their own planners' routes.
+TEST(PlanePlanning, PlaneBesideTwoMultirotors) {
+    plan::AreaGeneratorOptions go;
+    go.count = 1;
+    go.seed = 5;
+    go.minZones = 2;
+    go.maxZones = 2;
+    auto areas = plan::generateAreas(go);
+    ASSERT_TRUE(areas);
+    const AircraftConfig wing = ebeeLike(fleet::AircraftKind::FixedWing, 25.0);
+    Mission m = fromGenerated((*areas)[0], wing);
+    m.options.planner = PlannerKind::Auto;
+    m.options.gridAngleDeg = 0.0; // one angle: the split's hundreds of estimates stay quick
+    for (const char* name : {"Copter 1", "Copter 2"}) {
+        AircraftConfig c = ebeeLike(fleet::AircraftKind::Multirotor, 25.0);
+        c.name = name;
+        c.altitudeM = 70.0;
+        c.cruiseSpeedMps = 8.0;
+        c.enduranceMin = 25.0;
+        m.aircraft.push_back(c);
+    }
+    auto plan = planMission(m);
+    ASSERT_TRUE(plan) << plan.error().message;
+    ASSERT_EQ(plan->aircraft.size(), 3u);
+    EXPECT_GE(plan->coverageRatio, 0.995);
+    EXPECT_EQ(plan->noFlyViolations, 0);
+    EXPECT_EQ(plan->aircraft[0].planner, PlannerKind::Sweep);
+    EXPECT_LE(route::maxCurvature(surveyPolyline(plan->aircraft[0])), 1.0 / 25.0 * 1.001);
+    for (const auto& ap : plan->aircraft)
+        EXPECT_GT(ap.metrics.photos, 0) << ap.aircraft;
+}
