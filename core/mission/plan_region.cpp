@@ -354,6 +354,9 @@ Result<AircraftPlan> sweepRegion(const geo::MultiPolygon& region, const std::vec
     // radius the turn goes away from the zone or round it: route::planPlaneRoute).
     if (plane)
         so.safetyMarginM += std::min(radiusM, 0.45 * a.fp.real.shortSideM);
+    // Nor are the sweep's transitions flown by a plane (its turns are): they need not keep inside.
+    if (plane)
+        so.keepInside = false;
     reportProgress(0.0, "lanes");
     auto sp = plan::planSweep(region, noFly, so);
     if (stopRequested())

@@ -161,3 +161,23 @@ TEST(PlanePlanning, PlaneBesideTwoMultirotors) {
     for (const auto& ap : plan->aircraft)
         EXPECT_GT(ap.metrics.photos, 0) << ap.aircraft;
 }
+
+// Keep-inside cannot pull a plane's turns over the area: they stay arcs of its radius (the plan says
+// so), the photos as without it.
+TEST(PlanePlanning, KeepInsideLeavesThePlanesTurnsFlyable) {
+    plan::AreaGeneratorOptions go;
+    go.count = 1;
+    go.maxZones = 2;
+    auto areas = plan::generateAreas(go);
+    ASSERT_TRUE(areas);
+    Mission m = fromGenerated((*areas)[0], ebeeLike(fleet::AircraftKind::FixedWing, 30.0));
+    m.options.keepInsideArea = true;
+    auto plan = planMission(m);
+    ASSERT_TRUE(plan) << plan.error().message;
+    EXPECT_LE(route::maxCurvature(surveyPolyline(plan->aircraft[0])), 1.0 / 30.0 * 1.001);
+    EXPECT_GE(plan->coverageRatio, 0.995);
+    bool said = false;
+    for (const auto& w : plan->warnings)
+        said = said || w.find("keep-inside holds for its lanes, not its turns") != std::string::npos;
+    EXPECT_TRUE(said);
+}
