@@ -250,6 +250,8 @@ AircraftPanel::AircraftPanel(MissionDocument* doc, io::Catalog catalog, QWidget*
         refreshList();
         refreshForm();
     });
+    // Whether a plane is plannable depends on the mission's planner: the footprint line says so.
+    connect(doc, &MissionDocument::optionsChanged, this, [this] { refreshForm(true); });
     refreshList();
     refreshForm();
 }
