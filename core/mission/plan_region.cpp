@@ -2,6 +2,7 @@
 
 #include "core/fleet/aircraft.h"
 #include "core/job_scope.h"
+#include "core/mission/plane_region.h"
 #include "core/mission/planner_kinds.h"
 #include "core/mission/validation.h"
 #include "core/plan/best_candidate.h"
@@ -9,7 +10,6 @@
 #include "core/plan/planner.h"
 #include "core/plan/sweep/sweep_planner.h"
 #include "core/route/photo_waypoints.h"
-#include "core/route/plane_route.h"
 #include "core/route/safety.h"
 #include "core/route/sorties.h"
 #include "core/route/transit.h"
@@ -293,43 +293,6 @@ Result<AircraftPlan> gridRegion(const geo::MultiPolygon& region, const std::vect
     return p;
 }
 
-// A plane over the sweep's lanes: their order and directions chosen for wide turns, joined by
-// Dubins turns of its radius sampled into Turn waypoints (route::planPlaneRoute).
-AircraftPlan planeSweep(const plan::SweepPlan& sp, const std::vector<geo::Polygon>& noFly,
-                        const Aircraft& a, double radiusM, const PlannerOptions& options,
-                        const std::optional<geo::Vec2>& home,
-                        const std::optional<geo::Vec2>& landing) {
-    const geo::NoFlyField field(noFly, options.safetyMarginM);
-    // Detours round the zones at the margin plus most of a turn radius: turning at their corners on
-    // arcs of that radius keeps the margin.
-    const geo::SafePathFinder detours(
-        geo::NoFlyField(noFly, options.safetyMarginM + 0.9 * radiusM));
-    route::PlaneRouteOptions ro;
-    ro.detours = noFly.empty() ? nullptr : &detours;
-    ro.radiusM = radiusM;
-    ro.runInM = a.cfg.plane.runInM;
-    ro.trackSpacingM = a.fp.acrossM;
-    ro.field = &field;
-    ro.home = home;
-    ro.landing = landing;
-    const route::PlaneRoute r = route::planPlaneRoute(sp.lanes, ro);
-    AircraftPlan p;
-    p.gridAngleDeg = sp.stats.angleDeg;
-    p.anglesTried = sp.stats.directionsPlanned;
-    p.localWaypoints = r.waypoints;
-    route::dropNearDuplicates(p.localWaypoints, &field);
-    p.warnings = sp.warnings;
-    for (const auto& w : r.warnings)
-        p.warnings.push_back(w);
-    if (options.keepInsideArea)
-        p.warnings.push_back(
-            "a plane's turns run up to its turn radius (" +
-            std::to_string(static_cast<int>(std::lround(radiusM))) +
-            " m) past the area's edge: keep-inside holds for its lanes, not its turns");
-    routeMetrics(p, a.model);
-    return p;
-}
-
 Result<AircraftPlan> sweepRegion(const geo::MultiPolygon& region, const std::vector<geo::Polygon>& noFly,
                                  const Aircraft& a, const PlannerOptions& options, const std::optional<geo::Vec2>& home,
                                  const std::optional<geo::Vec2>& landing) {
@@ -347,24 +310,23 @@ Result<AircraftPlan> sweepRegion(const geo::MultiPolygon& region, const std::vec
         so.anglesDeg = {*options.gridAngleDeg};
     const bool plane = fleet::fliesAsPlane(a.cfg.kind);
     const double radiusM = plane ? fleet::minTurnRadiusM(a.cfg.plane, a.cfg.cruiseSpeedMps) : 0.0;
-    // A plane's lanes end up to a turn radius further from the zones than the margin: its turn begins
-    // at a lane's last photo and runs up to one radius on past it. The ground in between is
-    // photographed from outside, as the ground in a margin is, which sees up to half a footprint
-    // ahead: the extra room is at most 0.45 of the real footprint along the track (with a larger
-    // radius the turn goes away from the zone or round it: route::planPlaneRoute).
-    if (plane)
-        so.safetyMarginM += std::min(radiusM, 0.45 * a.fp.real.shortSideM);
-    // Nor are the sweep's transitions flown by a plane (its turns are): they need not keep inside.
-    if (plane)
+    // A plane's lanes end further from the zones (planeLaneRoomM); the sweep's transitions, which a
+    // plane does not fly (its turns replace them), need not keep inside.
+    if (plane) {
+        so.safetyMarginM += planeLaneRoomM(radiusM, a.fp.real.shortSideM);
         so.keepInside = false;
+    }
     reportProgress(0.0, "lanes");
     auto sp = plan::planSweep(region, noFly, so);
     if (stopRequested())
         return makeError(ErrorCode::Cancelled, "planning cancelled");
     if (!sp)
         return makeError(sp.error().code, a.who + ": " + sp.error().message);
-    if (plane)
-        return planeSweep(*sp, noFly, a, radiusM, options, home, landing);
+    if (plane) {
+        AircraftPlan p = planeLanesPlan(*sp, noFly, a.cfg, radiusM, a.fp.acrossM, options, home, landing);
+        routeMetrics(p, a.model);
+        return p;
+    }
     AircraftPlan p;
     p.gridAngleDeg = sp->stats.angleDeg;
     p.anglesTried = sp->stats.directionsPlanned;

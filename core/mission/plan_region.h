@@ -27,6 +27,9 @@ namespace pf::mission {
 // - lawnmower: plan::planLawnmower, the Survey pattern over the region, straight over the zones;
 // - auto: sweep, stride and raster are planned in full and the one whose route flies soonest (from home
 //   over its survey waypoints and back, aloneRouteTimeS) is kept; plannerChoice says which and why.
+// An aircraft flying as a plane (fixed-wing, VTOL) is planned only by the planners that serve planes
+// (planner_kinds.h: the sweep, and auto among them): the sweep's lanes flown with Dubins turns
+// (plane_region.h); another planner is refused with planeRoutingError.
 // With `laneSpacing` (over terrain: terrain_stage.h's laneSpacing), every planner's photos are then
 // spaced per lane (route::spaceLanes, before the automatic choice compares them; the lanes respaced
 // and the photos that saved in AircraftPlan::terrain).

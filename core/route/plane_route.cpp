@@ -47,7 +47,7 @@ Vec2 unitOfCompass(double compassDeg) {
 class RouteSearch {
 public:
     RouteSearch(const std::vector<plan::Lane>& lanes, const PlaneRouteOptions& o)
-        : m_lanes(lanes), m_o(o) {
+        : m_o(o) {
         for (std::size_t i = 0; i < lanes.size(); ++i)
             if (!lanes[i].photos.empty())
                 m_used.push_back(static_cast<int>(i));
@@ -200,7 +200,6 @@ private:
         return true;
     }
 
-    const std::vector<plan::Lane>& m_lanes;
     PlaneRouteOptions m_o;
     std::vector<int> m_used;
     std::unordered_map<int, FlownLane> m_flown;
