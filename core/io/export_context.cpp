@@ -35,6 +35,20 @@ std::string ExportContext::routeLabel(std::size_t i) const {
     return "Route " + std::to_string(i + 1);
 }
 
+fleet::AircraftKind ExportContext::kindFor(std::size_t i) const {
+    const auto* a = aircraftFor(i);
+    return a ? a->kind : fleet::AircraftKind::Multirotor;
+}
+
+std::string planeFormatError(const ExportContext& ctx, std::size_t i, const std::string& format) {
+    const fleet::AircraftKind k = ctx.kindFor(i);
+    if (!fleet::fliesAsPlane(k))
+        return {};
+    return ctx.routeLabel(i) + " is a " + fleet::aircraftKindLabel(k) + " aircraft: " + format +
+           " missions are flown by DJI multirotors only, which stop and turn on the spot; export a "
+           "QGroundControl .plan or a .waypoints file for its ArduPilot or PX4 autopilot instead";
+}
+
 std::optional<sensor::Footprint> ExportContext::footprintFor(std::size_t i) const {
     return i < footprints.size() ? footprints[i] : std::nullopt;
 }

@@ -92,6 +92,8 @@ struct ExportContext {
     // The route's label in files: labels[i] when set, else its aircraft name, or "Route N".
     std::string routeLabel(std::size_t routeIndex) const;
     std::optional<sensor::Footprint> footprintFor(std::size_t routeIndex) const;
+    // The kind of the route's aircraft (a multirotor when the route has no aircraft, e.g. imported).
+    fleet::AircraftKind kindFor(std::size_t routeIndex) const;
 };
 
 // A context for a planned mission: footprints from each aircraft's camera at its altitude (set
@@ -112,5 +114,9 @@ struct ImportedWaypoints {
 
 // A context to write imported waypoints out again (the no-fly zones and home are kept).
 ExportContext contextFromImport(const ImportedWaypoints& imported);
+
+// The refusal of a format that cannot fly a plane (Litchi, DJI WPML: DJI multirotors only), naming
+// the aircraft, its kind and the format; empty when the route's aircraft is a multirotor.
+std::string planeFormatError(const ExportContext& ctx, std::size_t routeIndex, const std::string& format);
 
 } // namespace pf::io

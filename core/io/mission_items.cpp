@@ -1,5 +1,6 @@
 #include "core/io/mission_items.h"
 
+#include "core/fleet/aircraft.h"
 #include "core/geo/geodesic.h"
 #include "core/io/trigger_lanes.h"
 #include "core/io/waypoint_format_util.h"
@@ -99,7 +100,69 @@ plan::FlightTimeModel routeModel(const ExportContext& ctx, std::size_t routeInde
     return m;
 }
 
+// The take-off of the kind (MAVLink mission protocol, MAV_CMD): a multirotor NAV_TAKEOFF to the
+// altitude; a fixed-wing NAV_TAKEOFF with param 1 the pitch (ArduPlane and PX4 climb out at it to
+// the altitude); a VTOL NAV_VTOL_TAKEOFF, climbing vertically and then transitioning, param 2 = 1
+// (VTOL_TRANSITION_HEADING_NEXT_WAYPOINT: what PX4 does whatever param 2 says).
+MissionItem takeoffItem(fleet::AircraftKind kind, double yaw, geo::LonLat home, double altitude, int frame) {
+    switch (kind) {
+    case fleet::AircraftKind::FixedWing:
+        return nav(mav::kNavTakeoff, kNaN, home, altitude, kPlaneTakeoffPitchDeg, frame);
+    case fleet::AircraftKind::Vtol: {
+        MissionItem it = nav(mav::kNavVtolTakeoff, kNaN, home, altitude, 0, frame);
+        it.params[1] = 1;
+        return it;
+    }
+    case fleet::AircraftKind::Multirotor:
+        break;
+    }
+    return nav(mav::kNavTakeoff, yaw, home, altitude, 0, frame);
+}
+
+// The landing direction of a plane: the heading of the route's first lane (the first photo with a
+// photo after it), else of its last waypoint.
+double landingHeadingDeg(const std::vector<route::Waypoint>& wps) {
+    for (std::size_t i = 0; i + 1 < wps.size(); ++i)
+        if (wps[i].kind == route::WaypointKind::Photo && wps[i + 1].kind == route::WaypointKind::Photo)
+            return wps[i].headingDeg;
+    return wps.back().headingDeg;
+}
+
+// A plane's landing sequence. Fixed-wing: DO_LAND_START (its position, optional in the protocol,
+// set to the landing point so that an autopilot choosing the nearest landing sequence finds it),
+// the approach waypoint kApproachDistanceM before the landing point against the landing direction,
+// and NAV_LAND at the point (param 1 abort altitude 0: the autopilot's default). VTOL: NAV_VTOL_LAND
+// at the point (it flies there as a plane, transitions and descends vertically; param 3 approach
+// altitude unset).
+void appendPlaneLanding(std::vector<MissionItem>& items, fleet::AircraftKind kind,
+                        const std::vector<route::Waypoint>& wps, geo::LonLat landing, double routeAltitude,
+                        int frame) {
+    const double heading = landingHeadingDeg(wps);
+    if (kind == fleet::AircraftKind::Vtol) {
+        MissionItem it = nav(mav::kNavVtolLand, heading, landing, 0.0, 0, frame);
+        it.params[2] = kNaN;
+        items.push_back(it);
+        return;
+    }
+    items.push_back({mav::kDoLandStart, mav::kFrameGlobalRelativeAlt, {0, 0, 0, 0, landing.lat, landing.lon, 0}});
+    const geo::LonLat approach = geo::geodesicDirect(landing, heading + 180.0, kApproachDistanceM);
+    items.push_back(nav(mav::kNavWaypoint, heading, approach, std::min(kApproachAltitudeM, routeAltitude), 0, frame));
+    items.push_back(nav(mav::kNavLand, heading, landing, 0.0, 0, frame));
+}
+
 } // namespace
+
+int mavVehicleType(fleet::AircraftKind kind) {
+    switch (kind) {
+    case fleet::AircraftKind::FixedWing:
+        return 1; // MAV_TYPE_FIXED_WING
+    case fleet::AircraftKind::Vtol:
+        return 22; // MAV_TYPE_VTOL_FIXEDROTOR
+    case fleet::AircraftKind::Multirotor:
+        break;
+    }
+    return 2; // MAV_TYPE_QUADROTOR
+}
 
 std::vector<double> cornerAnglesDeg(const std::vector<route::Waypoint>& wps,
                                     const geo::LonLat& home, const geo::LonLat& landing) {
@@ -146,11 +209,15 @@ Result<std::vector<MissionItem>> missionItems(const ExportContext& ctx, std::siz
         return alt.error();
     std::vector<MissionItem> items;
     const route::Waypoint& first = wps.front();
+    const fleet::AircraftKind kind = ctx.kindFor(routeIndex);
+    const bool plane = fleet::fliesAsPlane(kind);
     // The climb at home goes to the first waypoint's altitude (above home, or above sea level; above
     // the terrain: the height over the first waypoint's ground, reached over home's ground).
-    items.push_back(nav(mav::kNavTakeoff, first.headingDeg, home, alt->of(first), 0, alt->frame));
-    // Ground speed (param 1 = 1) to the planned cruise speed, throttle unchanged (-1).
-    items.push_back(action(mav::kDoChangeSpeed, {1, r.cruiseSpeedMps, -1, 0, 0, 0, 0}));
+    items.push_back(takeoffItem(kind, first.headingDeg, home, alt->of(first), alt->frame));
+    // Ground speed (param 1 = 1) to the planned cruise speed, throttle unchanged (-1); a plane's as
+    // airspeed (param 1 = 0), the speed its autopilot holds (ArduPlane AIRSPEED_CRUISE, PX4
+    // FW_AIRSPD_TRIM).
+    items.push_back(action(mav::kDoChangeSpeed, {plane ? 0.0 : 1.0, r.cruiseSpeedMps, -1, 0, 0, 0, 0}));
     if (options.gimbal == GimbalCommand::MountControl)
         // Pitch -90 (down), roll 0, yaw 0; param 7 = MAV_MOUNT_MODE_MAVLINK_TARGETING.
         items.push_back(action(mav::kDoMountControl, {-90, 0, 0, 0, 0, 0, 2}));
@@ -159,7 +226,7 @@ Result<std::vector<MissionItem>> missionItems(const ExportContext& ctx, std::siz
         items.push_back(action(mav::kDoGimbalManagerPitchYaw, {-90, 0, kNaN, kNaN, 0, 0, 0}));
 
     std::vector<TriggerLane> lanes;
-    if (options.trigger == CameraTrigger::Distance)
+    if (options.trigger == CameraTrigger::Distance || plane)
         lanes = findTriggerLanes(wps);
     const plan::FlightTimeModel model = routeModel(ctx, routeIndex);
     const std::vector<double> corners = cornerAnglesDeg(wps, home, landing);
@@ -186,7 +253,9 @@ Result<std::vector<MissionItem>> missionItems(const ExportContext& ctx, std::siz
         if (w.kind == route::WaypointKind::Photo)
             items.push_back(capture(options.capture));
     }
-    if (options.end == MissionEnd::ReturnToLaunch)
+    if (plane)
+        appendPlaneLanding(items, kind, wps, landing, alt->of(wps.back()), alt->frame);
+    else if (options.end == MissionEnd::ReturnToLaunch)
         items.push_back(action(mav::kNavReturnToLaunch, {0, 0, 0, 0, 0, 0, 0}));
     else
         items.push_back(nav(mav::kNavLand, wps.back().headingDeg, landing, 0.0));
@@ -275,6 +344,7 @@ route::Route routeFromItems(const std::vector<MissionItem>& items) {
     std::vector<bool> photo;
     double triggerD = 0;
     std::vector<route::Waypoint> triggered; // waypoints flown with the trigger on
+    bool inLanding = false;
     for (const auto& it : items) {
         const auto& p = it.params;
         if (it.command == mav::kImageStartCapture || it.command == mav::kDoDigicamControl) {
@@ -307,7 +377,9 @@ route::Route routeFromItems(const std::vector<MissionItem>& items) {
             }
             continue;
         }
-        if (it.command != mav::kNavWaypoint)
+        if (it.command == mav::kDoLandStart)
+            inLanding = true; // a plane's landing sequence follows: made again on export
+        if (it.command != mav::kNavWaypoint || inLanding)
             continue; // take-off, gimbal, return and land are made again on export
         route::Waypoint w;
         w.position = {p[5], p[4]};

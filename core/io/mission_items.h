@@ -18,6 +18,9 @@ constexpr int kNavWaypoint = 16;
 constexpr int kNavReturnToLaunch = 20;
 constexpr int kNavLand = 21;
 constexpr int kNavTakeoff = 22;
+constexpr int kNavVtolTakeoff = 84;
+constexpr int kNavVtolLand = 85;
+constexpr int kDoLandStart = 189;
 constexpr int kDoChangeSpeed = 178;
 constexpr int kDoDigicamControl = 203;
 constexpr int kDoMountControl = 205;
@@ -42,6 +45,19 @@ struct MissionItem {
     bool hasPosition() const { return frame != mav::kFrameMission; }
 };
 
+// A plane's take-off pitch (NAV_TAKEOFF param 1: the minimum pitch with an airspeed sensor, the pitch
+// held without one; ArduPlane and PX4 fixed-wing) and its landing approach: a waypoint
+// kApproachDistanceM before the landing point against the landing direction at kApproachAltitudeM
+// (or the route's altitude when lower), a glide slope of 5.7 degrees, inside the 3-6 degrees the
+// autopilots' landing controllers fly (ArduPlane's documentation recommends a shallow approach).
+constexpr double kPlaneTakeoffPitchDeg = 15.0;
+constexpr double kApproachDistanceM = 400.0;
+constexpr double kApproachAltitudeM = 40.0;
+// MAV_TYPE of the .plan's vehicleType: 2 quadrotor (a multirotor), 1 fixed wing, 22 VTOL with
+// separate fixed rotors for hover and cruise (MAV_TYPE_VTOL_FIXEDROTOR, a quadplane such as the
+// DeltaQuad; QGroundControl treats 19-25 as VTOL).
+int mavVehicleType(fleet::AircraftKind kind);
+
 // The route's mission: take-off at home, speed, gimbal straight down, the waypoints (a capture
 // after each photo, or with CameraTrigger::Distance only the lane ends with the trigger distance),
 // and return to launch or land. Without the home item (see homeItem()). Waypoints closer than 0.1 m
@@ -49,7 +65,14 @@ struct MissionItem {
 // route's aircraft counted its corner (plan::isStopCorner on cornerAnglesDeg): a stop holds
 // FlightTimeModel::stopHoldS (param 1), a corner flown through has hold 0 and the corner cut as its
 // acceptance radius (param 2). The last waypoint is always a stop in practice: neither ArduCopter
-// nor PX4 flies through into a return or a landing. Altitudes in options.altitudeFrame (Auto: above
+// nor PX4 flies through into a return or a landing.
+// A plane (fixed-wing, or VTOL in cruise) flies through every waypoint (its turns are waypoints of
+// their own): NAV_TAKEOFF with kPlaneTakeoffPitchDeg for a fixed-wing, NAV_VTOL_TAKEOFF for a VTOL;
+// the speed as airspeed; the camera triggered by distance on each lane whatever options.trigger says
+// (a plane cannot stop for a photo); and its landing whatever options.end says: a fixed-wing
+// DO_LAND_START at the landing point, the approach waypoint and NAV_LAND (the landing direction is
+// the heading of the route's first lane); a VTOL NAV_VTOL_LAND. ArduPlane's RTL with RTL_AUTOLAND
+// jumps to that DO_LAND_START. Altitudes in options.altitudeFrame (Auto: above
 // sea level for a route over a terrain model); errors: above sea level without a home elevation,
 // above terrain for a route not planned over a terrain model.
 Result<std::vector<MissionItem>> missionItems(const ExportContext& ctx, std::size_t routeIndex,
@@ -75,8 +98,8 @@ std::vector<double> cornerAnglesDeg(const std::vector<route::Waypoint>& waypoint
 // A mission read back from a file or a vehicle, items without home, altitudes relative to home:
 // the waypoints, photo where a capture command follows or the camera fires by distance along
 // the lanes (the photos of a distance-triggered lane are put back where the camera fires), speed
-// from DO_CHANGE_SPEED. Other items (take-off, gimbal, return, land) are dropped: they are made
-// again on export.
+// from DO_CHANGE_SPEED. Other items (take-off, gimbal, return, land, and a plane's landing sequence
+// from DO_LAND_START on) are dropped: they are made again on export.
 route::Route routeFromItems(const std::vector<MissionItem>& items);
 
 } // namespace pf::io

@@ -93,7 +93,7 @@ Result<std::string> qgcPlanJson(const ExportContext& ctx, std::size_t routeIndex
     CPLJSONObject mission;
     mission.Add("version", 2);
     mission.Add("firmwareType", static_cast<int>(options.firmware));
-    mission.Add("vehicleType", 2); // MAV_TYPE_QUADROTOR: every catalog aircraft is a multirotor
+    mission.Add("vehicleType", mavVehicleType(ctx.kindFor(routeIndex))); // MAV_TYPE of the aircraft's kind
     mission.Add("cruiseSpeed", r.cruiseSpeedMps);
     mission.Add("hoverSpeed", options.hoverSpeedMps.value_or(r.cruiseSpeedMps));
     mission.Add("plannedHomePosition", numbers({home.params[4], home.params[5], home.params[6]}));

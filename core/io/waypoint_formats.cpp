@@ -157,6 +157,8 @@ Status writeOne(const ExportContext& ctx, std::size_t routeIndex, WaypointFormat
     case WaypointFormat::QgcWpl:
         return writeQgcWpl(ctx, routeIndex, path, options);
     case WaypointFormat::LitchiCsv:
+        if (auto e = planeFormatError(ctx, routeIndex, "Litchi"); !e.empty())
+            return makeError(ErrorCode::InvalidInput, e);
         return writeLitchiCsv(ctx, routeIndex, path);
     case WaypointFormat::Kml:
         return writeKml(ctx, {routeIndex}, path);

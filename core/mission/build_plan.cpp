@@ -1,5 +1,6 @@
 #include "core/mission/build_plan.h"
 
+#include "core/fleet/aircraft.h"
 #include "core/fleet/altitude.h"
 #include "core/fleet/photo_dedup.h"
 #include "core/geo/polygon_ops.h"
@@ -156,7 +157,8 @@ Result<MissionPlan> buildPlan(const Mission& m, const PlannerOptions& opt, const
         const route::SafePathFinder& finder = yardstick ? straightFinder : safeFinder;
         std::vector<route::LocalWaypoint> survey = ap.surveyWaypoints;
         route::SafetyReport rep;
-        if (opt.keepInsideArea && !yardstick) {
+        // A plane's turns cannot be pulled inside (its plan says so): only a multirotor's route is.
+        if (opt.keepInsideArea && !yardstick && !fleet::fliesAsPlane(cfg.kind)) {
             const route::PhotoSides sides{ap.footprint.acrossM, ap.footprint.alongM, ap.footprint.real.longSideM,
                                           ap.footprint.real.shortSideM};
             auto inside = route::keepInsideArea(survey, areaMp, admissible, sides, opt.insideMarginM, finder, &rep);

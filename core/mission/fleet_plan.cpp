@@ -2,6 +2,7 @@
 // plan of the best split.
 #include "core/mission/fleet_plan.h"
 
+#include "core/fleet/aircraft.h"
 #include "core/fleet/area_split.h"
 #include "core/fleet/subarea_polygons.h"
 #include "core/geo/polygon_ops.h"
@@ -95,6 +96,15 @@ struct Quiet {
     JobScope scope{JobScope::current(), JobScope::CancelOnly{}};
 };
 
+// The estimates' planner for aircraft `k`: a plane's estimates use the sweep, the planner that plans
+// for planes (stride turns on the spot), when the mission leaves the choice to the planner.
+PlannerOptions estimateFor(const FleetInput& in, std::size_t k, PlannerOptions o) {
+    if (in.mission.options.planner == PlannerKind::Auto &&
+        fleet::fliesAsPlane(in.mission.aircraft[k].kind))
+        o.planner = PlannerKind::Sweep;
+    return o;
+}
+
 // The split estimates times at one fixed angle (a full angle search per estimate would cost 37
 // times as much): the mission's, or the best for the aircraft with the coarsest grid (the cheapest
 // search) over the whole area.
@@ -110,7 +120,8 @@ Result<double> estimateAngle(const FleetInput& in, const PlannerOptions& estimat
             coarsest = k;
     Quiet quiet;
     auto whole = planRegion(geo::MultiPolygon{in.geom.area}, in.geom.noFly, m.aircraft[coarsest],
-                            estimateOpt, in.homes[coarsest], in.landing);
+                            estimateFor(in, coarsest, estimateOpt), in.homes[coarsest],
+                            in.landing);
     if (!whole)
         return whole.error();
     return whole->gridAngleDeg;
@@ -145,7 +156,8 @@ Result<std::vector<Candidate>> searchSplits(const FleetInput& in, const PlannerO
     const std::size_t n = m.aircraft.size();
     const auto rawEstimate = [&](std::size_t k, const geo::MultiPolygon& sub) -> Result<double> {
         Quiet quiet;
-        auto ap = planRegion(sub, geom.noFly, m.aircraft[k], fixed, in.homes[k], in.landing,
+        auto ap = planRegion(sub, geom.noFly, m.aircraft[k], estimateFor(in, k, fixed), in.homes[k],
+                             in.landing,
                              laneSpacing(m, k));
         if (!ap)
             return ap.error();

@@ -212,6 +212,11 @@ Result<MissionPlan> planCorridorMission(const Mission& m) {
     if (m.aircraft.empty())
         return makeError(ErrorCode::InvalidInput,
                          "the mission has no aircraft: add one to plan a flight");
+    for (std::size_t i = 0; i < m.aircraft.size(); ++i)
+        if (auto e = corridorPlaneError(
+                m, m.aircraft[i], aircraftLabel(m.aircraft[i].name, "aircraft " + std::to_string(i + 1)));
+            !e.empty())
+            return makeError(ErrorCode::InvalidInput, e);
     auto geom = localGeometry(m);
     if (!geom)
         return geom.error();

@@ -1,8 +1,10 @@
 #include "core/mission/plan_region.h"
 
+#include "core/fleet/aircraft.h"
 #include "core/job_scope.h"
 #include "core/mission/aircraft_naming.h"
 #include "core/mission/double_grid.h"
+#include "core/mission/plane_region.h"
 #include "core/mission/planner_kinds.h"
 #include "core/mission/validation.h"
 #include "core/plan/best_candidate.h"
@@ -55,9 +57,6 @@ struct Aircraft {
 
 Result<Aircraft> prepare(const AircraftConfig& cfg) {
     Aircraft a{cfg, label(cfg), 0.0, {}, 0.0, flightModel(cfg)};
-    // No planner routes a plane yet: it must never get a multirotor's route.
-    if (auto e = planeRoutingError(cfg, a.who); !e.empty())
-        return makeError(ErrorCode::InvalidInput, e);
     auto alt = resolvedAltitude(cfg);
     if (!alt)
         return makeError(alt.error().code, a.who + ": " + alt.error().message);
@@ -296,12 +295,25 @@ Result<AircraftPlan> sweepRegion(const geo::MultiPolygon& region, const std::vec
     so.landing = landing;
     if (options.gridAngleDeg)
         so.anglesDeg = {*options.gridAngleDeg};
+    const bool plane = fleet::fliesAsPlane(a.cfg.kind);
+    const double radiusM = plane ? fleet::minTurnRadiusM(a.cfg.plane, a.cfg.cruiseSpeedMps) : 0.0;
+    // A plane's lanes end further from the zones (planeLaneRoomM); the sweep's transitions, which a
+    // plane does not fly (its turns replace them), need not keep inside.
+    if (plane) {
+        so.safetyMarginM += planeLaneRoomM(radiusM, a.fp.real.shortSideM);
+        so.keepInside = false;
+    }
     reportProgress(0.0, "lanes");
     auto sp = plan::planSweep(region, noFly, so);
     if (stopRequested())
         return makeError(ErrorCode::Cancelled, "planning cancelled");
     if (!sp)
         return makeError(sp.error().code, a.who + ": " + sp.error().message);
+    if (plane) {
+        AircraftPlan p = planeLanesPlan(*sp, noFly, a.cfg, radiusM, a.fp.acrossM, options, home, landing);
+        routeMetrics(p, a.model);
+        return p;
+    }
     AircraftPlan p;
     p.gridAngleDeg = sp->stats.angleDeg;
     p.anglesTried = sp->stats.directionsPlanned;
@@ -469,6 +481,9 @@ Result<AircraftPlan> planRegion(const geo::MultiPolygon& region,
     if (!a)
         return a.error();
     Result<AircraftPlan> out = makeError(ErrorCode::Internal, "no planner");
+    const bool plane = fleet::fliesAsPlane(aircraft.kind);
+    if (auto e = planeRoutingError(aircraft, options.planner, a->who); !e.empty())
+        return makeError(ErrorCode::InvalidInput, e);
     if (options.planner != PlannerKind::Auto) {
         out = planOne(region, noFly, *a, options.planner, options, home, landing, laneSpacing);
     } else {
@@ -483,6 +498,8 @@ Result<AircraftPlan> planRegion(const geo::MultiPolygon& region,
                                                PlannerKind::Raster};
         for (std::size_t i = 0; i < std::size(kCandidates); ++i) {
             const PlannerKind k = kCandidates[i];
+            if (plane && !servesPlanes(plannerKindInfo(k)))
+                continue; // its route turns on the spot
             if (stopRequested())
                 return makeError(ErrorCode::Cancelled, "planning cancelled");
             const char* id = plannerKindInfo(k).id;
@@ -506,8 +523,12 @@ Result<AircraftPlan> planRegion(const geo::MultiPolygon& region,
         }
         if (!out)
             return firstError ? *firstError : out.error();
-        out->plannerChoice = std::string(plannerKindInfo(out->planner).id) + " flies soonest (" + note +
-                             ", home to home in one flight)";
+        out->plannerChoice =
+            plane ? std::string(plannerKindInfo(out->planner).id) + " (" + note +
+                        "; the only planner here that plans for a plane: stride and raster turn "
+                        "on the spot)"
+                  : std::string(plannerKindInfo(out->planner).id) + " flies soonest (" + note +
+                        ", home to home in one flight)";
     }
     if (stopRequested())
         return makeError(ErrorCode::Cancelled, "planning cancelled");

@@ -31,6 +31,9 @@ namespace pf::mission {
 //   home over its survey waypoints and back, aloneRouteTimeS) is kept; plannerChoice says which and
 //   why;
 // - with options.doubleGrid, planDoubleGrid (core/mission/double_grid.h): two passes at 90 degrees.
+// An aircraft flying as a plane (fixed-wing, VTOL) is planned only by the planners that serve planes
+// (planner_kinds.h: the sweep, and auto among them): the sweep's lanes flown with Dubins turns
+// (plane_region.h); another planner is refused with planeRoutingError.
 // With `laneSpacing` (over terrain: terrain_stage.h's laneSpacing), every planner's photos are then
 // spaced per lane (route::spaceLanes, before the automatic choice compares them; the lanes respaced
 // and the photos that saved in AircraftPlan::terrain).

@@ -22,6 +22,9 @@ struct PlannerKindInfo {
     // ground station's Survey flies): a yardstick, not offered as the planner of a mission whose
     // zones it crosses.
     bool avoidsNoFly = true;
+    // Why it cannot plan for a plane (fixed-wing, or VTOL in cruise), completing "cannot plan for a
+    // plane: ..."; nullptr when it can (its lanes are then joined by turns of the plane's radius).
+    const char* notForPlanes = nullptr;
 };
 
 // Every planner kind, in the order lists show them.
@@ -30,6 +33,12 @@ const PlannerKindInfo& plannerKindInfo(PlannerKind kind);
 std::optional<PlannerKind> plannerKindFromId(const std::string& id);
 // "auto, sweep, stride, raster, wavefront or lawnmower", for messages that list what is accepted.
 std::string plannerKindIdList();
+// Whether the kind plans for a plane (Auto does: it chooses among those that do).
+inline bool servesPlanes(const PlannerKindInfo& k) {
+    return k.notForPlanes == nullptr;
+}
+// "auto or sweep": the kinds that plan for a plane, for messages.
+std::string planePlannerIdList();
 
 // The same table seen from the grid planners (plan::PlannerKind): their row, their name ("stride") on
 // the command line of `photoflight-cli eval` and in its reports, and the list "stride, raster or wavefront".

@@ -3,6 +3,7 @@
 #include "core/geo/polygon_ops.h"
 #include "core/mission/aircraft_naming.h"
 #include "core/mission/corridor.h"
+#include "core/mission/planner_kinds.h"
 
 #include <cmath>
 #include <cstdio>
@@ -167,16 +168,26 @@ std::vector<std::string> planeErrors(const AircraftConfig& a, const std::string&
     return out;
 }
 
-std::string planeRoutingError(const AircraftConfig& a, const std::string& who) {
+std::string planeRoutingError(const AircraftConfig& a, PlannerKind planner,
+                              const std::string& who) {
     if (!fleet::fliesAsPlane(a.kind))
+        return {};
+    const PlannerKindInfo& k = plannerKindInfo(planner);
+    if (servesPlanes(k))
         return {};
     const std::string kind = a.kind == fleet::AircraftKind::Vtol
                                  ? "a VTOL aircraft (it flies its survey as a plane)"
                                  : "a fixed-wing aircraft";
-    return who + " is " + kind +
-           ": this version plans routes for multirotors only, which stop and turn on the spot at "
-           "every lane end; "
-           "a plane cannot, and would overshoot every lane. Choose a multirotor for this mission";
+    return who + " is " + kind + ": the " + k.id + " planner cannot plan for a plane (" +
+           k.notForPlanes + "); choose " + planePlannerIdList();
+}
+
+std::string corridorPlaneError(const Mission& m, const AircraftConfig& a, const std::string& who) {
+    if (!fleet::fliesAsPlane(a.kind) || !plansCorridorLanes(m))
+        return {};
+    return who + " flies as a plane: lanes along a corridor are planned for multirotors only (each "
+                 "lane end turns on the spot, which a plane cannot fly); choose the sweep planner "
+                 "to plan the corridor's ground as an area with the plane's turns";
 }
 
 std::vector<std::string> altitudeErrors(const Mission& m, const AircraftConfig& a, double altitudeM) {
@@ -372,8 +383,10 @@ ValidationReport validateMission(const Mission& m) {
             error(out, std::move(e));
             ok = false;
         }
-        if (auto e = planeRoutingError(a, who); !e.empty())
+        if (auto e = planeRoutingError(a, m.options.planner, who); !e.empty())
             error(out, std::move(e));
+        else if (auto c = corridorPlaneError(m, a, who); !c.empty())
+            error(out, std::move(c));
         if (fleet::fliesAsPlane(a.kind) && a.plane.minTurnRadiusM && *a.plane.minTurnRadiusM > 0 &&
             fleet::bankAngleDeg(a.plane, a.cruiseSpeedMps) > kSteepBankDeg)
             warning(

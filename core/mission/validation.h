@@ -83,11 +83,18 @@ std::string pocketWarning(const geo::MultiPolygon& pockets);
 // names `who`, the value and the limit. Empty for a multirotor.
 std::vector<std::string> planeErrors(const AircraftConfig& a, const std::string& who);
 
-// The routes the planners make stop and turn on the spot at every lane end: only a multirotor can
-// fly them. The error for an aircraft that flies its survey as a plane (fixed-wing or VTOL), naming
-// it; empty for a multirotor. validateMission reports it and planning refuses such an aircraft with
-// it, so that a plane never gets a multirotor's route.
-std::string planeRoutingError(const AircraftConfig& a, const std::string& who);
+// The grid planners' routes (and the lawnmower yardstick's) turn on the spot at every cell or lane
+// end: only a multirotor can fly them. The error for an aircraft that flies its survey as a plane
+// (fixed-wing or VTOL) given such a planner, naming it and the planners that do plan for planes;
+// empty for a multirotor or a planner that serves planes (sweep, auto). validateMission reports it
+// and planning refuses with it, so that a plane never gets a multirotor's route.
+std::string planeRoutingError(const AircraftConfig& a, PlannerKind planner, const std::string& who);
+
+// Lanes along a corridor (plansCorridorLanes) turn on the spot at each lane end as well: the error
+// for an aircraft that flies as a plane in such a mission, naming it and the way that does plan it
+// (the sweep over the corridor's ground); empty otherwise. validateMission reports it and the
+// corridor planning refuses with it.
+std::string corridorPlaneError(const Mission& m, const AircraftConfig& a, const std::string& who);
 
 // The flight altitude of an aircraft: its altitude, or the one giving its GSD. Errors name the aircraft.
 Result<double> resolvedAltitude(const AircraftConfig& a);

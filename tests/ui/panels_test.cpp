@@ -115,7 +115,7 @@ TEST(AircraftPanel, CatalogAircraftAndCameraChoiceAndRemove) {
 
 // A catalog plane: its kind and figures shown (the plane's rows only for a plane), radius and bank
 // driving each other through the speed, every edit undoable, and the footprint saying why it is not
-// plannable. By hand at 16 m/s: bank 50 gives 16^2 / (9.80665 tan 50) = 21.9 m, bank 40 31.1 m; a
+// plannable with a grid planner. By hand at 16 m/s: bank 50 gives 16^2 / (9.80665 tan 50) = 21.9 m, bank 40 31.1 m; a
 // 50 m radius needs atan(256 / (9.80665 x 50)) = 27.6 degrees.
 TEST(AircraftPanel, PlaneKindAndFiguresAreUndoable) {
     auto w = test::makeWindow();
@@ -130,7 +130,14 @@ TEST(AircraftPanel, PlaneKindAndFiguresAreUndoable) {
     EXPECT_TRUE(panel->runInBox()->isVisibleTo(panel));
     EXPECT_NEAR(panel->turnRadiusBox()->value(), 21.9, 0.05);
     EXPECT_NEAR(panel->bankBox()->value(), 50.0, 0.5);
-    EXPECT_TRUE(panel->footprintLabel()->text().contains(QStringLiteral("VTOL aircraft")))
+    // The automatic choice plans for a plane; a grid planner cannot, and the footprint says so.
+    EXPECT_FALSE(panel->footprintLabel()->text().contains(QStringLiteral("Not plannable")))
+        << panel->footprintLabel()->text().toStdString();
+    mission::PlannerOptions stride = doc->mission().options;
+    stride.planner = mission::PlannerKind::Stride;
+    doc->setOptions(stride);
+    EXPECT_TRUE(panel->footprintLabel()->text().contains(
+        QStringLiteral("VTOL aircraft (it flies its survey as a plane): the stride planner cannot plan for a plane")))
         << panel->footprintLabel()->text().toStdString();
     const int start = stack->count();
 

@@ -98,6 +98,8 @@ AircraftPanel::AircraftPanel(MissionDocument* doc, io::Catalog catalog, QWidget*
         refreshList();
         refreshForm();
     });
+    // Whether a plane is plannable depends on the mission's planner: the footprint line says so.
+    connect(doc, &MissionDocument::optionsChanged, this, [this] { refreshForm(true); });
     refreshList();
     refreshForm();
 }
@@ -351,7 +353,8 @@ bool AircraftPanel::acceptAltitude(double value, bool isGsd) {
     }
     if (why.isEmpty()) {
         // The dock shows one aircraft: its name in front of each reason would only repeat the form.
-        const QString who = QStringLiteral("aircraft \"%1\": ").arg(QString::fromStdString(a.name));
+        const QString who =
+            QString::fromStdString(mission::aircraftLabel(a.name)) + QStringLiteral(": ");
         for (const auto& e : mission::altitudeErrors(m_doc->mission(), a, alt)) {
             QString line = QString::fromStdString(e);
             if (line.startsWith(who)) line = line.mid(who.size());
@@ -536,11 +539,14 @@ void AircraftPanel::refreshForm(bool keepError) {
         // A value from a mission file can be out of limits too: say so in red, it will not be planned.
         QStringList errors;
         for (const auto& e : mission::altitudeErrors(m_doc->mission(), a, *alt)) errors << QString::fromStdString(e).toHtmlEscaped();
-        // A plane's figures, and that no planner routes a plane yet, the same way.
-        const std::string who = "aircraft \"" + a.name + "\"";
+        // A plane's figures, and whether the mission's planner plans for a plane, the same way.
+        const std::string who = mission::aircraftLabel(a.name);
         for (const auto& e : mission::planeErrors(a, who))
             errors << QString::fromStdString(e).toHtmlEscaped();
-        if (const auto e = mission::planeRoutingError(a, who); !e.empty())
+        if (const auto e = mission::planeRoutingError(a, m_doc->mission().options.planner, who);
+            !e.empty())
+            errors << QString::fromStdString(e).toHtmlEscaped();
+        if (const auto e = mission::corridorPlaneError(m_doc->mission(), a, who); !e.empty())
             errors << QString::fromStdString(e).toHtmlEscaped();
         text = text.toHtmlEscaped().replace(QLatin1Char('\n'), QStringLiteral("<br>"));
         if (!errors.isEmpty())

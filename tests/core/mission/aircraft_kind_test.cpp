@@ -1,5 +1,5 @@
 // Planes in a mission: their figures validated with messages that name the aircraft and the value,
-// and no multirotor route for them: planning refuses them by name until a planner routes planes.
+// and no multirotor route for them: a planner whose route turns on the spot refuses them by name.
 #include "core/mission/plan_mission.h"
 #include "core/mission/validation.h"
 
@@ -99,21 +99,21 @@ TEST(AircraftKindValidation, NonsenseFiguresAreRefusedWithClearMessages) {
     EXPECT_TRUE(planeErrors(a, who).empty());
 }
 
-// validateMission reports the figures and that a plane cannot be planned yet, naming the aircraft;
-// a radius asking for a steep bank is a warning (15 m/s on 10 m needs atan(225 / 98.07) = 66
+// validateMission reports the figures and a planner that cannot plan for a plane, naming the
+// aircraft; a radius asking for a steep bank is a warning (15 m/s on 10 m needs atan(225 / 98.07) = 66
 // degrees).
 TEST(AircraftKindValidation, MissionReportNamesThePlane) {
     Mission m = demo();
     EXPECT_TRUE(errors(m).empty());
     m.aircraft.push_back(plane(m.aircraft[0], "Wing", fleet::AircraftKind::FixedWing));
     m.aircraft.back().plane.minTurnRadiusM = 10.0;
+    EXPECT_TRUE(errors(m).empty()); // the automatic choice plans for planes
+    m.options.planner = PlannerKind::Raster;
     const auto e = errors(m);
     ASSERT_EQ(e.size(), 1u);
-    EXPECT_EQ(e[0], "Wing is a fixed-wing aircraft: this version plans routes for "
-                    "multirotors only, "
-                    "which stop and turn on the spot at every lane end; a plane cannot, and would "
-                    "overshoot every "
-                    "lane. Choose a multirotor for this mission");
+    EXPECT_EQ(e[0], "Wing is a fixed-wing aircraft: the raster planner cannot plan for "
+                    "a plane (a grid planner's path steps from cell to cell and turns on the spot, "
+                    "which a plane cannot fly); choose auto or sweep");
     bool steep = false;
     for (const auto& p : validateMission(m).problems)
         steep =
@@ -125,11 +125,12 @@ TEST(AircraftKindValidation, MissionReportNamesThePlane) {
     m.aircraft.back().plane.sinkRateMps = 0.0;
     const auto v = errors(m);
     EXPECT_TRUE(hasMessage(v, "Wing: the sink rate must be greater than 0 m/s (got 0 m/s)"));
-    EXPECT_TRUE(hasMessage(v, "Wing is a VTOL aircraft (it flies its survey as a plane)"));
+    EXPECT_TRUE(hasMessage(v, "Wing is a VTOL aircraft (it flies its survey as a "
+                              "plane): the raster planner cannot plan for a plane"));
 }
 
-// A plane never gets a multirotor's route: planning fails with the message naming it, alone or
-// beside a multirotor; the multirotor alone still plans.
+// A plane never gets a multirotor's route: a grid planner fails with the message naming it, alone
+// or beside a multirotor; the multirotor alone still plans, and the lawnmower refuses a VTOL too.
 TEST(AircraftKindPlanning, PlaneIsRefusedByName) {
     Mission m = demo();
     m.options.planner = PlannerKind::Stride;
@@ -139,12 +140,17 @@ TEST(AircraftKindPlanning, PlaneIsRefusedByName) {
     m.aircraft.push_back(plane(m.aircraft[0], "Wing", fleet::AircraftKind::FixedWing));
     auto refused = planMission(m);
     ASSERT_FALSE(refused);
-    EXPECT_NE(refused.error().message.find("Wing is a fixed-wing aircraft"), std::string::npos)
+    EXPECT_NE(refused.error().message.find("Wing is a fixed-wing aircraft: the stride "
+                                           "planner cannot plan for a plane"),
+              std::string::npos)
         << refused.error().message;
     Mission alone = demo();
+    alone.options.planner = PlannerKind::Lawnmower;
     alone.aircraft[0] = plane(alone.aircraft[0], "Trinity", fleet::AircraftKind::Vtol);
     auto vtol = planMission(alone);
     ASSERT_FALSE(vtol);
-    EXPECT_NE(vtol.error().message.find("Trinity is a VTOL aircraft"), std::string::npos)
+    EXPECT_NE(vtol.error().message.find("Trinity is a VTOL aircraft (it flies its survey "
+                                        "as a plane): the lawnmower planner cannot plan for a plane"),
+              std::string::npos)
         << vtol.error().message;
 }

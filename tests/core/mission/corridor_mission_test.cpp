@@ -170,6 +170,35 @@ TEST(CorridorMission, OtherPlannersPlanTheGroundAsAnArea) {
     EXPECT_EQ(p->plannerChoice.find("corridor"), std::string::npos);
 }
 
+// A plane cannot fly lanes along a corridor (each lane end turns on the spot): validation and
+// planning refuse it by name and point at the sweep, which then plans the ground with its turns.
+TEST(CorridorMission, PlaneIsRefusedLanesAndGetsTheSweep) {
+    Mission m = corridorMission({Vec2(0, 0), Vec2(1500, 0), Vec2(2500, 600)}, 120.0);
+    AircraftConfig& wing = m.aircraft.front();
+    wing.name = "Wing";
+    wing.kind = fleet::AircraftKind::FixedWing;
+    wing.cruiseSpeedMps = 13.0;
+    wing.plane.minTurnRadiusM = 40.0;
+    wing.plane.runInM = 30.0;
+    auto refused = planMission(m);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.error().message.rfind("Wing flies as a plane: lanes along a corridor are "
+                                            "planned for multirotors only",
+                                            0),
+              0u)
+        << refused.error().message;
+    bool reported = false;
+    for (const auto& p : validateMission(m).problems)
+        reported = reported || (p.severity == geo::Severity::Error &&
+                                p.message.find("choose the sweep planner") != std::string::npos);
+    EXPECT_TRUE(reported);
+    m.options.planner = PlannerKind::Sweep;
+    auto swept = planMission(m);
+    ASSERT_TRUE(swept.ok()) << swept.error().message;
+    EXPECT_EQ(swept->aircraft.front().planner, PlannerKind::Sweep);
+    EXPECT_GE(swept->coverageRatio, 0.995);
+}
+
 } // namespace
 } // namespace pf::mission
 

@@ -1,0 +1,155 @@
+// A plane's MAVLink mission item by item, against the mission protocol's commands: the take-off of
+// its kind, the camera triggered by distance on and off around each lane, every turn waypoint flown
+// through, the landing of its kind (DO_LAND_START, approach and NAV_LAND; NAV_VTOL_LAND); the .plan
+// names the vehicle type; Litchi refuses a plane by name; the read-back gives the route again.
+#include "core/geo/geodesic.h"
+#include "core/geo/local_frame.h"
+#include "core/io/mission_items.h"
+#include "core/io/qgc_plan.h"
+#include "core/io/waypoint_formats.h"
+#include "tests/core/io/formats_test_util.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+using namespace pf;
+using namespace pf::io;
+
+namespace {
+
+const geo::LonLat kOrigin{8.3290, 49.0115};
+
+// Two lanes of 5 photos 20 m apart (east, then west 40 m north), each after a run-in point, joined
+// by a half circle of radius 20 m sampled every 30 degrees (turn waypoints).
+route::Route planeRoute() {
+    const auto frame = *geo::LocalFrame::create(kOrigin);
+    route::Route r;
+    r.aircraft = "Wing";
+    r.cruiseSpeedMps = 15;
+    const auto add = [&](double x, double y, double heading, route::WaypointKind k) {
+        r.waypoints.emplace_back(frame.toGeo(geo::Vec2(x, y)), 100.0, heading, k);
+    };
+    add(-40, 0, 90, route::WaypointKind::Turn); // run-in
+    for (int x = 0; x <= 80; x += 20)
+        add(x, 0, 90, route::WaypointKind::Photo);
+    for (int a = 30; a < 180; a += 30) // the turn: centre (80, 20), radius 20, to the left
+        add(80 + 20 * std::sin(a * M_PI / 180), 20 - 20 * std::cos(a * M_PI / 180), 90 - a, route::WaypointKind::Turn);
+    add(120, 40, 270, route::WaypointKind::Turn); // run-in of lane 2 (its first photo at x = 80)
+    for (int x = 80; x >= 0; x -= 20)
+        add(x, 40, 270, route::WaypointKind::Photo);
+    return r;
+}
+
+ExportContext contextFor(fleet::AircraftKind kind) {
+    mission::Mission m = test::demoMission();
+    m.home = geo::LonLat{8.3290, 49.0110};
+    mission::AircraftConfig a;
+    a.name = "Wing";
+    a.kind = kind;
+    a.cruiseSpeedMps = 15;
+    a.plane.minTurnRadiusM = 20;
+    m.aircraft = {a};
+    return makeExportContext(m, {planeRoute()});
+}
+
+std::vector<int> commands(const std::vector<MissionItem>& items) {
+    std::vector<int> out;
+    for (const auto& it : items)
+        out.push_back(it.command);
+    return out;
+}
+
+} // namespace
+
+// Fixed-wing, item by item: NAV_TAKEOFF with the pitch; DO_CHANGE_SPEED as airspeed; the gimbal
+// down; per lane its run-in waypoint, its first photo, the trigger on (20 m, a photo now), its last
+// photo, the trigger off (a last photo); the turn waypoints between, flown through (no hold, the
+// autopilot's own acceptance radius); then DO_LAND_START, the approach 400 m before the landing
+// point against the first lane's heading (east) at 40 m, and NAV_LAND at home. No capture command:
+// the camera fires by distance even with the per-photo trigger option.
+TEST(PlaneExport, FixedWingItemsByTheProtocol) {
+    const ExportContext ctx = contextFor(fleet::AircraftKind::FixedWing);
+    auto items = missionItems(ctx, 0);
+    ASSERT_TRUE(items) << items.error().message;
+    const int W = mav::kNavWaypoint, T = mav::kDoSetCamTriggDist;
+    const std::vector<int> expected{mav::kNavTakeoff, mav::kDoChangeSpeed, mav::kDoMountControl,
+                                    W, W, T, W, T,          // lane 1: run-in, first, on, last, off
+                                    W, W, W, W, W,          // the turn (30 to 150 degrees)
+                                    W, W, T, W, T,          // lane 2
+                                    mav::kDoLandStart, W, mav::kNavLand};
+    ASSERT_EQ(commands(*items), expected);
+    const auto& v = *items;
+    EXPECT_EQ(v[0].params[0], kPlaneTakeoffPitchDeg);
+    EXPECT_EQ(v[0].params[6], 100.0);
+    EXPECT_EQ(v[1].params[0], 0.0); // airspeed
+    EXPECT_EQ(v[1].params[1], 15.0);
+    EXPECT_NEAR(v[5].params[0], 20.0, 1e-6);
+    EXPECT_EQ(v[5].params[2], 1.0);
+    EXPECT_EQ(v[7].params[0], 0.0);
+    for (const auto& it : v)
+        if (it.command == W) {
+            EXPECT_EQ(it.params[0], 0.0); // no hold: a plane flies through
+            EXPECT_EQ(it.params[1], 0.0); // the autopilot's own acceptance radius
+        }
+    const geo::LonLat home = *ctx.homeFor(0);
+    EXPECT_NEAR(v[18].params[4], home.lat, 1e-9);
+    const geo::LonLat approach{v[19].params[5], v[19].params[4]};
+    EXPECT_NEAR(geo::geodesicDistance(home, approach), kApproachDistanceM, 0.5);
+    EXPECT_NEAR(geo::initialBearingDeg(approach, home), 90.0, 0.5); // lands heading east
+    EXPECT_EQ(v[19].params[6], kApproachAltitudeM);
+    EXPECT_EQ(v[20].params[6], 0.0);
+    EXPECT_NEAR(v[20].params[4], home.lat, 1e-9);
+
+    // Read back: the route's waypoints again (photos along the triggered lanes), no landing approach.
+    const route::Route back = routeFromItems(v);
+    const route::Route& r = ctx.routes[0];
+    ASSERT_EQ(back.waypoints.size(), r.waypoints.size());
+    for (std::size_t i = 0; i < r.waypoints.size(); ++i) {
+        EXPECT_EQ(back.waypoints[i].kind == route::WaypointKind::Photo, r.waypoints[i].kind == route::WaypointKind::Photo)
+            << i;
+        EXPECT_LT(geo::geodesicDistance(back.waypoints[i].position, r.waypoints[i].position), 0.01) << i;
+    }
+}
+
+// VTOL: NAV_VTOL_TAKEOFF (the transition towards the next waypoint) and NAV_VTOL_LAND at home; the
+// lanes and turns as a fixed-wing's. The .plan says the vehicle type: 22 (VTOL with fixed rotors)
+// here, 1 for a fixed-wing, 2 for a multirotor.
+TEST(PlaneExport, VtolItemsAndPlanVehicleType) {
+    const ExportContext ctx = contextFor(fleet::AircraftKind::Vtol);
+    auto items = missionItems(ctx, 0);
+    ASSERT_TRUE(items) << items.error().message;
+    const auto c = commands(*items);
+    ASSERT_GE(c.size(), 3u);
+    EXPECT_EQ(c.front(), mav::kNavVtolTakeoff);
+    EXPECT_EQ((*items)[0].params[1], 1.0);
+    EXPECT_EQ(c.back(), mav::kNavVtolLand);
+    EXPECT_EQ(std::count(c.begin(), c.end(), mav::kDoSetCamTriggDist), 4);
+    EXPECT_EQ(std::count(c.begin(), c.end(), mav::kDoLandStart), 0);
+    EXPECT_EQ(std::count(c.begin(), c.end(), mav::kImageStartCapture), 0);
+    EXPECT_NEAR(items->back().params[4], ctx.homeFor(0)->lat, 1e-9);
+
+    for (auto [kind, type] : {std::pair{fleet::AircraftKind::Vtol, 22}, std::pair{fleet::AircraftKind::FixedWing, 1},
+                              std::pair{fleet::AircraftKind::Multirotor, 2}}) {
+        auto json = qgcPlanJson(contextFor(kind), 0, {});
+        ASSERT_TRUE(json) << json.error().message;
+        EXPECT_NE(json->find("\"vehicleType\":" + std::to_string(type)), std::string::npos) << type;
+    }
+}
+
+// Litchi flies DJI multirotors: a plane's route is refused with its name, kind and what to export
+// instead, and no file is written.
+TEST(PlaneExport, LitchiRefusesAPlane) {
+    const ExportContext ctx = contextFor(fleet::AircraftKind::FixedWing);
+    const auto dir = std::filesystem::temp_directory_path() / "pf_plane_litchi";
+    std::filesystem::create_directories(dir);
+    const std::string path = (dir / "wing.csv").string();
+    std::filesystem::remove(path);
+    auto r = exportRouteFiles(ctx, 0, WaypointFormat::LitchiCsv, path);
+    ASSERT_FALSE(r);
+    EXPECT_EQ(r.error().message, "Wing is a fixed-wing aircraft: Litchi missions are flown by DJI multirotors only, "
+                                 "which stop and turn on the spot; export a QGroundControl .plan or a .waypoints "
+                                 "file for its ArduPilot or PX4 autopilot instead");
+    EXPECT_FALSE(std::filesystem::exists(path));
+}
