@@ -11,6 +11,7 @@
 #include "core/mission/plan_mission.h"
 #include "core/mission/planner_kinds.h"
 #include "core/mission/route_check.h"
+#include "core/mission/simplify_input.h"
 #include "core/mission/validation.h"
 
 #include <algorithm>
@@ -214,9 +215,12 @@ int runPlan(const std::vector<std::string>& argv) {
         if (std::find(printed.begin(), printed.end(), w) == printed.end())
             std::cerr << "photoflight-cli: warning: " << w << '\n';
 
-    // The check every exported route passes (as in the desktop application): a route with an error is
-    // refused unless the user insists.
-    const auto routeProblems = mission::planRouteErrors(m, *plan);
+    // The check every exported route passes (as in the desktop application): a route with an error
+    // is refused unless the user insists. Against the polygons planned (simplify_input.h: a traced
+    // boundary simplified; they hold the given ones, so a route clear of them is clear of the given
+    // zones).
+    const mission::Mission planned = mission::simplifyInput(m, true).mission;
+    const auto routeProblems = mission::planRouteErrors(planned, *plan);
     for (const auto& p : routeProblems)
         std::cerr << "photoflight-cli: " << (args->has("force") ? "warning: " : "error: ") << p << '\n';
     if (!routeProblems.empty() && !args->has("force"))
