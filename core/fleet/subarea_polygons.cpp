@@ -70,7 +70,7 @@ int labelComponents(CellBox& box) {
 // corner (x, y) of the padded box (corners (w+1) x (h+1)). A corner starts at most two.
 constexpr int kDx[4] = {1, 0, -1, 0}, kDy[4] = {0, 1, 0, -1};
 struct BoundaryEdges {
-    int cw = 0; // corners per row
+    int cw = 0;                          // corners per row
     std::vector<std::array<int, 2>> out; // per corner, the directions of the edges leaving it
     std::size_t count = 0;
 };
@@ -160,7 +160,8 @@ private:
         return m_box.at(x + lx[d], y + ly[d]);
     }
     geo::Vec2 corner(int x, int y) const {
-        return m_origin + (x - 1 + m_box.c0) * m_cellSize * m_u + (y - 1 + m_box.r0) * m_cellSize * m_v;
+        return m_origin + (x - 1 + m_box.c0) * m_cellSize * m_u +
+               (y - 1 + m_box.r0) * m_cellSize * m_v;
     }
 
     const CellBox& m_box;

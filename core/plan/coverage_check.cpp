@@ -168,7 +168,8 @@ Status markPhotos(const Raster& ras, const std::vector<PhotoFootprint>& photos,
         if ((k & 0x3FF) == 0 && stopRequested())
             return cancelledCheck();
         if ((k & 0x3FFF) == 0)
-            reportProgress(static_cast<double>(k) / static_cast<double>(photos.size()), "coverage check");
+            reportProgress(static_cast<double>(k) / static_cast<double>(photos.size()),
+                           "coverage check");
         const geo::Ring ring = outlines ? (*outlines)[k] : footprintRing(photos[k]);
         scanRings(ras, {&ring}, [&](int j, int i0, int i1) {
             markCovered(px.data() + ras.index(i0, j), i1 - i0);
