@@ -8,6 +8,8 @@
 #include <fstream>
 #include <random>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace {
 
@@ -15,7 +17,9 @@ using namespace pf::cli::test;
 
 // A GeoJSON area file: a field of about 1.4 km across traced every 2 cm with tracing noise
 // (`spikes` = 0), or a star of `spikes` teeth 5 m deep that no simplification can thin.
-std::string writeArea(const std::string& name, int vertices, int spikes = 0) {
+// `swapAt` > 0: vertices swapAt and swapAt + 3 (numbered from 1) trade places, a crossing 2 cm
+// long.
+std::string writeArea(const std::string& name, int vertices, int spikes = 0, int swapAt = 0) {
     const std::string path = testing::TempDir() + name;
     std::ofstream out(path);
     out << "{\"type\":\"FeatureCollection\",\"features\":[{\"type\":\"Feature\",\"properties\":{},"
@@ -26,7 +30,7 @@ std::string writeArea(const std::string& name, int vertices, int spikes = 0) {
     const double lat0 = 49.0, lon0 = 8.33;
     const int n = spikes > 0 ? 2 * spikes : vertices;
     char buf[64];
-    std::string first;
+    std::vector<std::string> pts;
     for (int i = 0; i < n; ++i) {
         const double t = 2.0 * M_PI * i / n;
         double r;
@@ -39,11 +43,13 @@ std::string writeArea(const std::string& name, int vertices, int spikes = 0) {
         const double lat = lat0 + r * std::sin(t) / 111'200.0;
         const double lon = lon0 + r * std::cos(t) / (111'320.0 * std::cos(lat0 * M_PI / 180.0));
         std::snprintf(buf, sizeof buf, "[%.9f,%.9f]", lon, lat);
-        out << (i ? "," : "") << buf;
-        if (i == 0)
-            first = buf;
+        pts.push_back(buf);
     }
-    out << "," << first << "]]}}]}\n"; // the ring closed
+    if (swapAt > 0)
+        std::swap(pts[static_cast<std::size_t>(swapAt - 1)], pts[static_cast<std::size_t>(swapAt + 2)]);
+    for (const auto& p : pts)
+        out << (&p == &pts.front() ? "" : ",") << p;
+    out << "," << pts.front() << "]]}}]}\n"; // the ring closed
     return path;
 }
 
@@ -74,4 +80,16 @@ TEST(CliLargeArea, TooManyVerticesAfterSimplifyingAreRefusedWithTheLimit) {
             << r.err;
     }
     std::remove(area.c_str());
+}
+
+// A crossing in a traced boundary is named as in a small polygon, without searching every pair of
+// its 200,000 edges.
+TEST(CliLargeArea, CrossingInATracedBoundaryIsNamed) {
+    const std::string area = writeArea("pf_traced_crossing.geojson", 200'000, 0, 150'000);
+    const CliRun r = cli("validate '" + area + "' --altitude 100");
+    std::remove(area.c_str());
+    EXPECT_EQ(r.code, 2) << r.out << r.err;
+    EXPECT_TRUE(has(r.err, "photoflight-cli: error: the area intersects itself: edges 150000-150001 and "
+                           "150002-150003 cross near "))
+        << r.err;
 }
