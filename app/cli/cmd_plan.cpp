@@ -12,6 +12,7 @@
 #include "core/mission/plan_mission.h"
 #include "core/mission/planner_kinds.h"
 #include "core/mission/route_check.h"
+#include "core/mission/simplify_input.h"
 #include "core/mission/validation.h"
 
 #include <algorithm>
@@ -274,9 +275,12 @@ int runPlan(const std::vector<std::string>& argv) {
     for (const auto& n : plan->notes)
         std::cerr << "photoflight-cli: note: " << n << '\n';
 
-    // The check every exported route passes (as in the desktop application): a route with an error is
-    // refused unless the user insists.
-    auto routeProblems = mission::planRouteErrors(m, *plan);
+    // The check every exported route passes (as in the desktop application): a route with an error
+    // is refused unless the user insists. Against the polygons planned (simplify_input.h: a traced
+    // boundary simplified; they hold the given ones, so a route clear of them is clear of the given
+    // zones).
+    const mission::Mission planned = mission::simplifyInput(m, true).mission;
+    auto routeProblems = mission::planRouteErrors(planned, *plan);
     // The files' aircraft: a .kmz only for DJI Enterprise aircraft, no Litchi or MAVLink file for them,
     // unless --force (then the .kmz of another aircraft is left out, the others written with a warning).
     std::size_t kmzLeftOut = 0;

@@ -14,11 +14,19 @@
 
 namespace pf::fleet {
 
-geo::MultiPolygon cellsUnion(const grid::Grid& g, const std::vector<int>& cells) {
-    if (cells.empty())
-        return {};
-    // Work in the cells' bounding box (grid units: a cell (c, r) spans [c, c+1] x [r, r+1]), with a
-    // border of empty cells so that every lookup stays inside.
+namespace {
+
+// The cells in their bounding box (grid units: a cell (c, r) spans [c, c+1] x [r, r+1]), with a
+// border of empty cells so that every lookup stays inside. -2 marks a cell not in the set, else
+// its 4-connected component (-1 before labelling).
+struct CellBox {
+    int c0 = 0, r0 = 0, w = 0, h = 0; // first column and row; cells of the padded box
+    std::vector<int> label;
+    int& at(int x, int y) { return label[static_cast<std::size_t>(y) * w + x]; }
+    int at(int x, int y) const { return label[static_cast<std::size_t>(y) * w + x]; }
+};
+
+CellBox boxOf(const grid::Grid& g, const std::vector<int>& cells) {
     int c0 = g.cols(), c1 = -1, r0 = g.rows(), r1 = -1;
     for (int i : cells) {
         c0 = std::min(c0, i % g.cols());
@@ -26,72 +34,96 @@ geo::MultiPolygon cellsUnion(const grid::Grid& g, const std::vector<int>& cells)
         r0 = std::min(r0, i / g.cols());
         r1 = std::max(r1, i / g.cols());
     }
-    const int w = c1 - c0 + 3, h = r1 - r0 + 3; // cells of the padded box
-    std::vector<int> label(static_cast<std::size_t>(w) * h, -2); // -2 not in the set, else its component
-    const auto at = [&](int x, int y) -> int& { return label[static_cast<std::size_t>(y) * w + x]; };
+    CellBox box{c0, r0, c1 - c0 + 3, r1 - r0 + 3, {}};
+    box.label.assign(static_cast<std::size_t>(box.w) * box.h, -2);
     for (int i : cells)
-        at(i % g.cols() - c0 + 1, i / g.cols() - r0 + 1) = -1;
-    // 4-connected components: cells that only touch at a corner are separate polygons.
+        box.at(i % g.cols() - c0 + 1, i / g.cols() - r0 + 1) = -1;
+    return box;
+}
+
+// Labels the 4-connected components (cells that only touch at a corner are separate polygons);
+// returns how many.
+int labelComponents(CellBox& box) {
     int components = 0;
     std::vector<std::pair<int, int>> stack;
-    for (int y = 1; y + 1 < h; ++y)
-        for (int x = 1; x + 1 < w; ++x) {
-            if (at(x, y) != -1)
+    for (int y = 1; y + 1 < box.h; ++y)
+        for (int x = 1; x + 1 < box.w; ++x) {
+            if (box.at(x, y) != -1)
                 continue;
-            at(x, y) = components;
+            box.at(x, y) = components;
             stack.push_back({x, y});
             while (!stack.empty()) {
                 const auto [cx, cy] = stack.back();
                 stack.pop_back();
                 for (const auto& [nx, ny] : {std::pair{cx + 1, cy}, {cx - 1, cy}, {cx, cy + 1}, {cx, cy - 1}})
-                    if (at(nx, ny) == -1) {
-                        at(nx, ny) = components;
+                    if (box.at(nx, ny) == -1) {
+                        box.at(nx, ny) = components;
                         stack.push_back({nx, ny});
                     }
             }
             ++components;
         }
-    // Directed boundary edges with the set on their left: 0 east, 1 north, 2 west, 3 south, from
-    // corner (x, y) of the padded box (corners (w+1) x (h+1)). A corner starts at most two.
-    constexpr int dx[4] = {1, 0, -1, 0}, dy[4] = {0, 1, 0, -1};
-    const int cw = w + 1;
-    std::vector<std::array<int, 2>> out(static_cast<std::size_t>(cw) * (h + 1), {-1, -1}); // directions
+    return components;
+}
+
+// Directed boundary edges with the set on their left: 0 east, 1 north, 2 west, 3 south, from
+// corner (x, y) of the padded box (corners (w+1) x (h+1)). A corner starts at most two.
+constexpr int kDx[4] = {1, 0, -1, 0}, kDy[4] = {0, 1, 0, -1};
+struct BoundaryEdges {
+    int cw = 0;                          // corners per row
+    std::vector<std::array<int, 2>> out; // per corner, the directions of the edges leaving it
+    std::size_t count = 0;
+};
+
+BoundaryEdges boundaryEdges(const CellBox& box) {
+    BoundaryEdges e;
+    e.cw = box.w + 1;
+    e.out.assign(static_cast<std::size_t>(e.cw) * (box.h + 1), {-1, -1});
     const auto addEdge = [&](int x, int y, int d) {
-        auto& o = out[static_cast<std::size_t>(y) * cw + x];
+        auto& o = e.out[static_cast<std::size_t>(y) * e.cw + x];
         (o[0] < 0 ? o[0] : o[1]) = d;
+        ++e.count;
     };
-    std::size_t edges = 0;
-    for (int y = 1; y + 1 < h; ++y)
-        for (int x = 1; x + 1 < w; ++x) {
-            if (at(x, y) < 0)
+    for (int y = 1; y + 1 < box.h; ++y)
+        for (int x = 1; x + 1 < box.w; ++x) {
+            if (box.at(x, y) < 0)
                 continue;
-            if (at(x, y - 1) < 0)
-                addEdge(x, y, 0), ++edges;
-            if (at(x + 1, y) < 0)
-                addEdge(x + 1, y, 1), ++edges;
-            if (at(x, y + 1) < 0)
-                addEdge(x + 1, y + 1, 2), ++edges;
-            if (at(x - 1, y) < 0)
-                addEdge(x, y + 1, 3), ++edges;
+            if (box.at(x, y - 1) < 0)
+                addEdge(x, y, 0);
+            if (box.at(x + 1, y) < 0)
+                addEdge(x + 1, y, 1);
+            if (box.at(x, y + 1) < 0)
+                addEdge(x + 1, y + 1, 2);
+            if (box.at(x - 1, y) < 0)
+                addEdge(x, y + 1, 3);
         }
-    // The cell on the left of edge d from corner (x, y).
-    const auto leftCell = [&](int x, int y, int d) {
-        constexpr int lx[4] = {0, -1, -1, 0}, ly[4] = {0, 0, -1, -1};
-        return at(x + lx[d], y + ly[d]);
-    };
-    const double a = g.angleDeg() * M_PI / 180.0;
-    const geo::Vec2 u(std::cos(a), std::sin(a)), v(-std::sin(a), std::cos(a));
-    const auto corner = [&](int x, int y) -> geo::Vec2 {
-        return g.origin() + (x - 1 + c0) * g.cellSize() * u + (y - 1 + r0) * g.cellSize() * v;
-    };
-    std::vector<geo::Polygon> shells(static_cast<std::size_t>(components));
-    std::vector<int> shellRings(static_cast<std::size_t>(components), 0);
-    std::vector<std::pair<int, geo::Ring>> holes; // component, ring
+    return e;
+}
+
+using CornerLoop = std::vector<std::array<int, 2>>;
+
+// The rings of the closed loops traced, by component: a counter-clockwise loop is its component's
+// shell, a clockwise one a hole in it.
+class RingCollector {
+public:
+    RingCollector(const grid::Grid& g, const CellBox& box, int components)
+        : m_box(box), m_shells(static_cast<std::size_t>(components)),
+          m_shellRings(static_cast<std::size_t>(components), 0) {
+        const double a = g.angleDeg() * M_PI / 180.0;
+        m_u = geo::Vec2(std::cos(a), std::sin(a));
+        m_v = geo::Vec2(-std::sin(a), std::cos(a));
+        m_origin = g.origin();
+        m_cellSize = g.cellSize();
+    }
+
     // One simple closed loop of corners (each corner once) into a ring: only the corners where the
     // boundary turns, its orientation telling a shell (counter-clockwise) from a hole.
-    const auto emit = [&](const std::vector<std::array<int, 2>>& loop) {
+    void add(const CornerLoop& loop) {
         const std::size_t n = loop.size();
-        const int d = loop[1][0] > loop[0][0] ? 0 : loop[1][1] > loop[0][1] ? 1 : loop[1][0] < loop[0][0] ? 2 : 3;
+        const int d = loop[1][0] > loop[0][0]   ? 0
+                      : loop[1][1] > loop[0][1] ? 1
+                      : loop[1][0] < loop[0][0] ? 2
+                                                : 3;
         const int comp = leftCell(loop[0][0], loop[0][1], d);
         geo::Ring ring;
         long long twiceArea = 0;
@@ -105,18 +137,50 @@ geo::MultiPolygon cellsUnion(const grid::Grid& g, const std::vector<int>& cells)
                 ring.push_back(corner(q[0], q[1]));
         }
         if (twiceArea > 0) {
-            shells[static_cast<std::size_t>(comp)].outer = std::move(ring);
-            ++shellRings[static_cast<std::size_t>(comp)];
+            m_shells[static_cast<std::size_t>(comp)].outer = std::move(ring);
+            ++m_shellRings[static_cast<std::size_t>(comp)];
         } else {
-            holes.emplace_back(comp, std::move(ring));
+            m_holes.emplace_back(comp, std::move(ring));
         }
-    };
+    }
+
+    // The polygons, or nothing when a component did not get exactly one shell (not expected).
+    geo::MultiPolygon polygons() {
+        if (std::any_of(m_shellRings.begin(), m_shellRings.end(), [](int n) { return n != 1; }))
+            return {};
+        for (auto& [comp, ring] : m_holes)
+            m_shells[static_cast<std::size_t>(comp)].holes.push_back(std::move(ring));
+        return std::move(m_shells);
+    }
+
+private:
+    // The cell on the left of edge d from corner (x, y).
+    int leftCell(int x, int y, int d) const {
+        constexpr int lx[4] = {0, -1, -1, 0}, ly[4] = {0, 0, -1, -1};
+        return m_box.at(x + lx[d], y + ly[d]);
+    }
+    geo::Vec2 corner(int x, int y) const {
+        return m_origin + (x - 1 + m_box.c0) * m_cellSize * m_u +
+               (y - 1 + m_box.r0) * m_cellSize * m_v;
+    }
+
+    const CellBox& m_box;
+    geo::Vec2 m_u, m_v, m_origin;
+    double m_cellSize = 0.0;
+    std::vector<geo::Polygon> m_shells;
+    std::vector<int> m_shellRings;
+    std::vector<std::pair<int, geo::Ring>> m_holes; // component, ring
+};
+
+// Traces every boundary edge into closed loops handed to `rings`; false if a boundary stays open or
+// an edge unused (not expected).
+bool traceLoops(BoundaryEdges& e, int w, int h, RingCollector& rings) {
     std::size_t used = 0;
-    std::vector<int> onPath(out.size(), -1); // position of a corner on the path being traced
-    std::vector<std::array<int, 2>> path;
-    for (int sy = 0; sy <= h && used < edges; ++sy)
-        for (int sx = 0; sx <= w && used < edges; ++sx) {
-            if (out[static_cast<std::size_t>(sy) * cw + sx][0] < 0)
+    std::vector<int> onPath(e.out.size(), -1); // position of a corner on the path being traced
+    CornerLoop path;
+    for (int sy = 0; sy <= h && used < e.count; ++sy)
+        for (int sx = 0; sx <= w && used < e.count; ++sx) {
+            if (e.out[static_cast<std::size_t>(sy) * e.cw + sx][0] < 0)
                 continue;
             // Trace one closed boundary from here. Where two cells of the set touch diagonally, it
             // turns left, round the cell it came along, so that cells touching at a corner only are
@@ -126,17 +190,17 @@ geo::MultiPolygon cellsUnion(const grid::Grid& g, const std::vector<int>& cells)
             int x = sx, y = sy, prev = -1;
             path.clear();
             while (true) {
-                const std::size_t id = static_cast<std::size_t>(y) * cw + x;
+                const std::size_t id = static_cast<std::size_t>(y) * e.cw + x;
                 if (onPath[id] >= 0) {
                     // Back at a corner of the path: what lies after it is a closed loop.
                     const auto from = path.begin() + onPath[id];
-                    std::vector<std::array<int, 2>> loop(from, path.end());
+                    CornerLoop loop(from, path.end());
                     for (const auto& p : loop)
-                        onPath[static_cast<std::size_t>(p[1]) * cw + p[0]] = -1;
+                        onPath[static_cast<std::size_t>(p[1]) * e.cw + p[0]] = -1;
                     path.erase(from, path.end());
-                    emit(loop);
+                    rings.add(loop);
                 }
-                auto& o = out[id];
+                auto& o = e.out[id];
                 if (o[0] < 0)
                     break; // every edge from here is used: the boundary is closed
                 int take = o[0];
@@ -153,18 +217,28 @@ geo::MultiPolygon cellsUnion(const grid::Grid& g, const std::vector<int>& cells)
                 ++used;
                 onPath[id] = static_cast<int>(path.size());
                 path.push_back({x, y});
-                x += dx[take];
-                y += dy[take];
+                x += kDx[take];
+                y += kDy[take];
                 prev = take;
             }
             if (!path.empty())
-                return {}; // an open end: not expected; the caller falls back to a polygon union
+                return false;
         }
-    if (used != edges || std::any_of(shellRings.begin(), shellRings.end(), [](int n) { return n != 1; }))
+    return used == e.count;
+}
+
+} // namespace
+
+geo::MultiPolygon cellsUnion(const grid::Grid& g, const std::vector<int>& cells) {
+    if (cells.empty())
+        return {};
+    CellBox box = boxOf(g, cells);
+    const int components = labelComponents(box);
+    BoundaryEdges edges = boundaryEdges(box);
+    RingCollector rings(g, box, components);
+    if (!traceLoops(edges, box.w, box.h, rings))
         return {}; // not expected; the caller falls back to a polygon union
-    for (auto& [comp, ring] : holes)
-        shells[static_cast<std::size_t>(comp)].holes.push_back(std::move(ring));
-    return shells;
+    return rings.polygons(); // empty if not as expected: the caller falls back likewise
 }
 
 geo::MultiPolygon cellsPolygon(const grid::Grid& g, const std::vector<int>& cells, const geo::MultiPolygon& clipTo) {

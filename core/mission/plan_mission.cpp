@@ -10,6 +10,7 @@
 #include "core/mission/plan_region.h"
 #include "core/mission/planner_kinds.h"
 #include "core/mission/route_check.h"
+#include "core/mission/simplify_input.h"
 #include "core/mission/terrain_stage.h"
 #include "core/mission/validation.h"
 #include "core/sensor/camera.h"
@@ -97,11 +98,20 @@ void warnOfZonesCrossed(const Mission& m, MissionPlan& plan) {
 
 } // namespace
 
-Result<MissionPlan> planMission(const Mission& m, Progress* progress) {
+Result<MissionPlan> planMission(const Mission& given, Progress* progress) {
+    // A traced boundary of many thousand vertices is planned simplified (simplify_input.h), and the
+    // plan says so.
+    const InputSimplification simple = simplifyInput(given);
+    if (!simple.error.empty())
+        return makeError(ErrorCode::TooLarge, simple.error);
+    const Mission& m = simple.mission;
     // The estimate refuses what cannot fit before anything large is allocated; should it be wrong,
     // running out of memory is still a refusal with advice, not an internal error.
     try {
-        return planMissionChecked(m, progress);
+        auto plan = planMissionChecked(m, progress);
+        if (plan && !simple.note.empty())
+            plan->warnings.insert(plan->warnings.begin(), simple.note);
+        return plan;
     } catch (const std::bad_alloc&) {
         const MemoryEstimate e = estimatePlanMemory(m);
         return makeError(ErrorCode::TooLarge,

@@ -4,6 +4,7 @@
 #include "core/mission/aircraft_naming.h"
 #include "core/mission/corridor.h"
 #include "core/mission/planner_kinds.h"
+#include "core/mission/simplify_input.h"
 
 #include <cmath>
 #include <cstdio>
@@ -273,19 +274,31 @@ Result<grid::GridOptions> gridOptionsFor(const Mission& m, std::size_t aircraftI
     return opt;
 }
 
-ValidationReport validateMission(const Mission& m) {
+ValidationReport validateMission(const Mission& given) {
     ValidationReport r;
     auto& out = r.problems;
 
-    // Geometry: the area (or the corridor), then each no-fly zone, each as a polygon of its own.
-    const auto areaProblems = areaProblemsOf(m);
+    // Geometry: the area (or the corridor), then each no-fly zone, each as a polygon of its own, as
+    // given (vertex numbers as the user knows them).
+    const auto areaProblems = areaProblemsOf(given);
     out.insert(out.end(), areaProblems.begin(), areaProblems.end());
     bool zonesOk = true;
-    for (std::size_t i = 0; i < m.noFlyZones.size(); ++i) {
-        const auto zp = geo::validatePolygon(m.noFlyZones[i].polygon, zoneName(m.noFlyZones[i], i));
+    for (std::size_t i = 0; i < given.noFlyZones.size(); ++i) {
+        const auto zp =
+            geo::validatePolygon(given.noFlyZones[i].polygon, zoneName(given.noFlyZones[i], i));
         zonesOk = zonesOk && !geo::hasError(zp);
         out.insert(out.end(), zp.begin(), zp.end());
     }
+    // The rest on the mission as planMission plans it: a traced boundary simplified
+    // (simplify_input.h).
+    const bool shapesOk = !geo::hasError(out);
+    const InputSimplification simple =
+        shapesOk ? simplifyInput(given, true) : InputSimplification{};
+    if (!simple.note.empty())
+        warning(out, simple.note);
+    if (!simple.error.empty())
+        error(out, simple.error);
+    const Mission& m = shapesOk ? simple.mission : given;
 
     std::optional<LocalGeometry> geom;
     geo::MultiPolygon admissible;
@@ -452,7 +465,7 @@ ValidationReport validateMission(const Mission& m) {
             f.rows = size.rows;
             if (!budget.empty()) {
                 error(out, budget);
-            } else if (zonesOk) {
+            } else if (zonesOk && simple.error.empty()) {
                 grid::GridOptions gopt{f.cellSizeM, f.gridAngleDeg, std::max(0.0, o.safetyMarginM), o.maxCells};
                 auto g = grid::Grid::build(geom->area, geom->noFly, gopt);
                 if (!g) {

@@ -163,11 +163,13 @@ Status fillAdmissible(const Raster& ras, const geo::MultiPolygon& admissible,
 Status markPhotos(const Raster& ras, const std::vector<PhotoFootprint>& photos,
                   const std::vector<geo::Ring>* outlines, std::vector<std::uint8_t>& px) {
     for (std::size_t k = 0; k < photos.size(); ++k) {
-        if ((k & 0x3FFF) == 0) {
-            if (stopRequested())
-                return cancelledCheck();
-            reportProgress(static_cast<double>(k) / static_cast<double>(photos.size()), "coverage check");
-        }
+        // A cancel is looked at every 1,024 photos (16,384 took up to 0.3 s on a loaded machine
+        // with footprints of 3 m: the fleet cancel benchmark), the progress moved every 16,384.
+        if ((k & 0x3FF) == 0 && stopRequested())
+            return cancelledCheck();
+        if ((k & 0x3FFF) == 0)
+            reportProgress(static_cast<double>(k) / static_cast<double>(photos.size()),
+                           "coverage check");
         const geo::Ring ring = outlines ? (*outlines)[k] : footprintRing(photos[k]);
         scanRings(ras, {&ring}, [&](int j, int i0, int i1) {
             markCovered(px.data() + ras.index(i0, j), i1 - i0);

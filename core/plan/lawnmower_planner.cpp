@@ -1,6 +1,7 @@
 #include "core/plan/lawnmower_planner.h"
 
 #include "core/geo/polygon_ops.h"
+#include "core/job_scope.h"
 #include "core/plan/coverage_check.h"
 
 #include <algorithm>
@@ -226,6 +227,10 @@ std::vector<Candidate> candidatesBySpeed(const std::vector<const geo::Ring*>& ri
     perAngle.assign(angles.size(), {});
     std::vector<Candidate> candidates;
     for (std::size_t ai = 0; ai < angles.size(); ++ai) {
+        // Every angle's flight times take up to 0.3 s on a large area with a small footprint: a
+        // cancel stops the search (planLawnmower then says so).
+        if (stopRequested())
+            break;
         perAngle[ai] = transectsAt(rings, angles[ai], o.trackSpacingM);
         const auto& ts = perAngle[ai];
         if (ts.empty())
@@ -298,6 +303,8 @@ Result<LawnmowerPlan> planLawnmower(const geo::MultiPolygon& area, const Lawnmow
     const std::vector<double> angles = transectAngles(rings, o);
     std::vector<std::vector<Transect>> perAngle;
     const std::vector<Candidate> candidates = candidatesBySpeed(rings, angles, o, perAngle);
+    if (stopRequested())
+        return makeError(ErrorCode::Cancelled, "lawnmower: planning cancelled");
     if (candidates.empty())
         return makeError(ErrorCode::InvalidGeometry, "lawnmower: no transect crosses the area");
     std::size_t chosen = 0;
