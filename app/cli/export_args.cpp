@@ -5,7 +5,7 @@
 namespace pf::cli {
 
 std::vector<OptionSpec> exportOptionSpecs() {
-    return {{"firmware"}, {"end"}, {"capture"}, {"gimbal"}, {"trigger"}, {"hover-speed"}, {"home-elevation"}, {"altitude-frame"}};
+    return {{"firmware"}, {"end"}, {"capture"}, {"gimbal"}, {"trigger"}, {"hover-speed"}, {"home-elevation"}, {"altitude-frame"}, {"landing-heading"}};
 }
 
 namespace {
@@ -66,6 +66,15 @@ Result<io::ExportOptions> exportOptionsFromArgs(const Args& args) {
             return makeError(ErrorCode::InvalidInput,
                              "--home-elevation: expected metres above sea level between -9000 and 9000");
         opt.homeElevationM = **elevation;
+    }
+    auto heading = args.number("landing-heading");
+    if (!heading)
+        return heading.error();
+    if (*heading) {
+        if (!(**heading >= 0 && **heading < 360))
+            return makeError(ErrorCode::InvalidInput,
+                             "--landing-heading: expected degrees from north, from 0 to less than 360");
+        opt.landingHeadingDeg = **heading;
     }
     if (auto f = args.value("altitude-frame")) {
         if (*f == "relative")

@@ -1,5 +1,6 @@
 // The options that shape MAVLink missions and waypoint files, shared by plan, convert and upload:
-// --firmware, --end, --capture, --gimbal, --trigger, --hover-speed, --home-elevation, --altitude-frame.
+// --firmware, --end, --capture, --gimbal, --trigger, --hover-speed, --home-elevation, --altitude-frame,
+// --landing-heading.
 #pragma once
 
 #include "app/cli/args.h"
@@ -26,7 +27,10 @@
     "  --altitude-frame F    altitudes of .plan, .waypoints and upload: auto (amsl over a terrain model,\n" \
     "                        else relative), relative (to home, frame 3), amsl (above sea level, frame 0,\n" \
     "                        QGroundControl AltitudeMode 2), terrain (above the ground, frame 10\n" \
-    "                        GLOBAL_TERRAIN_ALT, AltitudeMode 4: the vehicle follows its terrain data)\n"
+    "                        GLOBAL_TERRAIN_ALT, AltitudeMode 4: the vehicle follows its terrain data)\n" \
+    "  --landing-heading DEG a plane's landing direction, degrees from north: into the wind (where it\n" \
+    "                        blows from). Default: the first lane's heading, turned in 15-degree steps\n" \
+    "                        until the 400 m approach keeps the no-fly margins\n"
 
 namespace pf::cli {
 

@@ -59,6 +59,10 @@ struct ExportOptions {
     // .waypoints home line (both AMSL); 0 when unknown (a connected vehicle replaces it with its own).
     std::optional<double> homeElevationM;
     AltitudeFrame altitudeFrame = AltitudeFrame::Auto;
+    // The direction a plane lands towards, degrees from north (into the wind: the direction the wind
+    // blows from); unset: the heading of its first lane, turned where the approach would enter a
+    // no-fly margin (planeLandingHeadingDeg).
+    std::optional<double> landingHeadingDeg;
     // Write a file the route's aircraft cannot fly (Litchi's CSV for a DJI Enterprise model, ...):
     // the user insisted (--force, "Export anyway").
     bool forceAircraft = false;

@@ -2,6 +2,8 @@
 
 #include "core/fleet/aircraft.h"
 #include "core/geo/geodesic.h"
+#include "core/geo/local_frame.h"
+#include "core/geo/no_fly_field.h"
 #include "core/io/trigger_lanes.h"
 #include "core/io/waypoint_format_util.h"
 #include "core/plan/flight_time.h"
@@ -119,13 +121,33 @@ MissionItem takeoffItem(fleet::AircraftKind kind, double yaw, geo::LonLat home, 
     return nav(mav::kNavTakeoff, yaw, home, altitude, 0, frame);
 }
 
-// The landing direction of a plane: the heading of the route's first lane (the first photo with a
-// photo after it), else of its last waypoint.
-double landingHeadingDeg(const std::vector<route::Waypoint>& wps) {
+// The heading of the route's first lane (the first photo with a photo after it), else of its last
+// waypoint: a plane's default landing direction.
+double firstLaneHeadingDeg(const std::vector<route::Waypoint>& wps) {
     for (std::size_t i = 0; i + 1 < wps.size(); ++i)
         if (wps[i].kind == route::WaypointKind::Photo && wps[i + 1].kind == route::WaypointKind::Photo)
             return wps[i].headingDeg;
     return wps.back().headingDeg;
+}
+
+// Whether a fixed-wing's way down towards `heading` keeps every no-fly zone's safety margin: the
+// leg from the last waypoint to the approach waypoint and the final approach from there to the
+// landing point (the checks' threshold, as the route check measures).
+bool approachKeepsMargins(const mission::Mission& m, const geo::LonLat& last, const geo::LonLat& landing,
+                          double heading) {
+    if (m.noFlyZones.empty())
+        return true;
+    auto frame = geo::LocalFrame::create(landing);
+    if (!frame)
+        return true; // a landing point the frame cannot hold is refused elsewhere
+    std::vector<geo::Polygon> zones;
+    for (const auto& z : m.noFlyZones)
+        zones.push_back(frame->toLocal(z.polygon));
+    const auto field = geo::NoFlyField::forCheck(std::move(zones), m.options.safetyMarginM);
+    const geo::LonLat approach = geo::geodesicDirect(landing, heading + 180.0, kApproachDistanceM);
+    const geo::Vec2 a = frame->toLocal(approach);
+    return field.segmentIsSafe(frame->toLocal(last), a) &&
+           field.segmentIsSafe(a, frame->toLocal(landing));
 }
 
 // A plane's landing sequence. Fixed-wing: DO_LAND_START (its position, optional in the protocol,
@@ -134,10 +156,8 @@ double landingHeadingDeg(const std::vector<route::Waypoint>& wps) {
 // and NAV_LAND at the point (param 1 abort altitude 0: the autopilot's default). VTOL: NAV_VTOL_LAND
 // at the point (it flies there as a plane, transitions and descends vertically; param 3 approach
 // altitude unset).
-void appendPlaneLanding(std::vector<MissionItem>& items, fleet::AircraftKind kind,
-                        const std::vector<route::Waypoint>& wps, geo::LonLat landing, double routeAltitude,
-                        int frame) {
-    const double heading = landingHeadingDeg(wps);
+void appendPlaneLanding(std::vector<MissionItem>& items, fleet::AircraftKind kind, double heading,
+                        geo::LonLat landing, double routeAltitude, int frame) {
     if (kind == fleet::AircraftKind::Vtol) {
         MissionItem it = nav(mav::kNavVtolLand, heading, landing, 0.0, 0, frame);
         it.params[2] = kNaN;
@@ -151,6 +171,40 @@ void appendPlaneLanding(std::vector<MissionItem>& items, fleet::AircraftKind kin
 }
 
 } // namespace
+
+Result<double> planeLandingHeadingDeg(const ExportContext& ctx, std::size_t routeIndex,
+                                      const ExportOptions& options) {
+    const route::Route& r = ctx.routes[routeIndex];
+    const double lane = firstLaneHeadingDeg(r.waypoints);
+    if (ctx.kindFor(routeIndex) == fleet::AircraftKind::Vtol)
+        return options.landingHeadingDeg.value_or(lane); // it descends vertically: no approach
+    const geo::LonLat home = ctx.homeFor(routeIndex).value_or(r.waypoints.front().position);
+    const geo::LonLat landing = ctx.landingFor(routeIndex).value_or(home);
+    const geo::LonLat last = r.waypoints.back().position;
+    const auto name = [](double h) { return std::to_string(static_cast<int>(std::lround(h))); };
+    if (options.landingHeadingDeg) {
+        if (approachKeepsMargins(ctx.mission, last, landing, *options.landingHeadingDeg))
+            return *options.landingHeadingDeg;
+        return makeError(ErrorCode::InvalidInput,
+                         ctx.routeLabel(routeIndex) + ": the landing approach towards " +
+                             name(*options.landingHeadingDeg) + " degrees (from " +
+                             name(kApproachDistanceM) +
+                             " m before the landing point) comes within a no-fly zone's safety "
+                             "margin: choose another landing heading or landing point");
+    }
+    // The first lane's heading, else the nearest heading in steps of kStep either way that keeps
+    // the margins.
+    constexpr double kStep = 15.0;
+    for (int k = 0; k * kStep <= 180.0; ++k)
+        for (double h : {lane + k * kStep, lane - k * kStep})
+            if (approachKeepsMargins(ctx.mission, last, landing, std::fmod(h + 360.0, 360.0)))
+                return std::fmod(h + 360.0, 360.0);
+    return makeError(ErrorCode::InvalidInput,
+                     ctx.routeLabel(routeIndex) +
+                         ": no landing approach of " + name(kApproachDistanceM) +
+                         " m keeps the no-fly zones' safety margins from any direction: move the "
+                         "landing point away from the zones");
+}
 
 int mavVehicleType(fleet::AircraftKind kind) {
     switch (kind) {
@@ -253,8 +307,12 @@ Result<std::vector<MissionItem>> missionItems(const ExportContext& ctx, std::siz
         if (w.kind == route::WaypointKind::Photo)
             items.push_back(capture(options.capture));
     }
-    if (plane)
-        appendPlaneLanding(items, kind, wps, landing, alt->of(wps.back()), alt->frame);
+    if (plane) {
+        auto heading = planeLandingHeadingDeg(ctx, routeIndex, options);
+        if (!heading)
+            return heading.error();
+        appendPlaneLanding(items, kind, *heading, landing, alt->of(wps.back()), alt->frame);
+    }
     else if (options.end == MissionEnd::ReturnToLaunch)
         items.push_back(action(mav::kNavReturnToLaunch, {0, 0, 0, 0, 0, 0, 0}));
     else

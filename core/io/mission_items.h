@@ -58,6 +58,15 @@ constexpr double kApproachAltitudeM = 40.0;
 // DeltaQuad; QGroundControl treats 19-25 as VTOL).
 int mavVehicleType(fleet::AircraftKind kind);
 
+// The direction a plane of route `routeIndex` lands towards (degrees from north): the user's
+// (options.landingHeadingDeg: into the wind, the direction the wind blows from), else the heading of
+// the route's first lane, else the nearest heading to it in 15-degree steps. A fixed-wing's approach
+// (the leg from the last waypoint to the approach waypoint kApproachDistanceM out, and from there to
+// the landing point) must keep every no-fly zone's safety margin: an error names the route when the
+// user's heading does not, or no heading does. A VTOL descends vertically: its heading is not checked.
+Result<double> planeLandingHeadingDeg(const ExportContext& ctx, std::size_t routeIndex,
+                                      const ExportOptions& options = {});
+
 // The route's mission: take-off at home, speed, gimbal straight down, the waypoints (a capture
 // after each photo, or with CameraTrigger::Distance only the lane ends with the trigger distance),
 // and return to launch or land. Without the home item (see homeItem()). Waypoints closer than 0.1 m
@@ -70,8 +79,8 @@ int mavVehicleType(fleet::AircraftKind kind);
 // their own): NAV_TAKEOFF with kPlaneTakeoffPitchDeg for a fixed-wing, NAV_VTOL_TAKEOFF for a VTOL;
 // the speed as airspeed; the camera triggered by distance on each lane whatever options.trigger says
 // (a plane cannot stop for a photo); and its landing whatever options.end says: a fixed-wing
-// DO_LAND_START at the landing point, the approach waypoint and NAV_LAND (the landing direction is
-// the heading of the route's first lane); a VTOL NAV_VTOL_LAND. ArduPlane's RTL with RTL_AUTOLAND
+// DO_LAND_START at the landing point, the approach waypoint and NAV_LAND (towards
+// planeLandingHeadingDeg); a VTOL NAV_VTOL_LAND. ArduPlane's RTL with RTL_AUTOLAND
 // jumps to that DO_LAND_START. Altitudes in options.altitudeFrame (Auto: above
 // sea level for a route over a terrain model); errors: above sea level without a home elevation,
 // above terrain for a route not planned over a terrain model.

@@ -78,6 +78,7 @@ private:
     QComboBox* m_gimbal;
     QComboBox* m_trigger;
     QDoubleSpinBox* m_homeElevation;
+    QDoubleSpinBox* m_landingHeading; // a plane's; the minimum: unset
     QPlainTextEdit* m_report;
     QPointer<QDialog> m_result;
 };

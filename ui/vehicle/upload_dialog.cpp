@@ -10,6 +10,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHeaderView>
@@ -176,7 +177,7 @@ void UploadDialog::addVehicleRow(int row, const route::Route& route, const io::E
 }
 
 // The mission options: gimbal command, photo trigger, what follows the last waypoint (as last
-// used).
+// used), a plane's landing heading.
 QGroupBox* UploadDialog::buildOptions() {
     QSettings settings;
     m_gimbal = new QComboBox;
@@ -201,7 +202,18 @@ QGroupBox* UploadDialog::buildOptions() {
     form->addRow(tr("Camera:"), m_gimbal);
     form->addRow(tr("Photos:"), m_trigger);
     form->addRow(tr("After the last waypoint:"), m_end);
-
+    // A plane's landing direction: the wind changes from flight to flight, so it is not remembered.
+    m_landingHeading = new QDoubleSpinBox;
+    m_landingHeading->setObjectName(QStringLiteral("UploadLandingHeading"));
+    m_landingHeading->setRange(-1, 359);
+    m_landingHeading->setDecimals(0);
+    m_landingHeading->setSuffix(tr("°"));
+    m_landingHeading->setSpecialValueText(tr("along the first lane"));
+    m_landingHeading->setValue(-1);
+    m_landingHeading->setToolTip(
+        tr("The direction a fixed-wing or VTOL aircraft lands towards, degrees from north: into the "
+           "wind, towards where it blows from."));
+    form->addRow(tr("Plane landing heading:"), m_landingHeading);
     return options;
 }
 
@@ -278,6 +290,8 @@ io::ExportOptions UploadDialog::exportOptions() const {
     o.gimbal = io::GimbalCommand(m_gimbal->currentData().toInt());
     o.trigger = io::CameraTrigger(m_trigger->currentData().toInt());
     o.end = io::MissionEnd(m_end->currentData().toInt());
+    if (m_landingHeading->value() > m_landingHeading->minimum())
+        o.landingHeadingDeg = m_landingHeading->value();
     return o;
 }
 

@@ -12,6 +12,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QDoubleSpinBox;
 class QDialogButtonBox;
 class QGroupBox;
 class QLabel;
@@ -78,6 +79,7 @@ private:
     QComboBox* m_gimbal;
     QComboBox* m_trigger;
     QComboBox* m_end;
+    QDoubleSpinBox* m_landingHeading; // a plane's; the minimum: unset
     QLabel* m_status;
     QPushButton* m_upload;
     QPushButton* m_cancel;

@@ -31,6 +31,24 @@ TEST(CliPlane, CatalogPlanePlansAndWritesItsFiles) {
     EXPECT_TRUE(has(wpl.substr(wpl.rfind('\n', wpl.size() - 2)), "\t21\t"));
 }
 
+// --landing-heading sets the fixed-wing's landing direction (NAV_LAND's yaw, param 4); a value
+// outside 0 to 360 degrees is refused by name.
+TEST(CliPlane, LandingHeadingIsWrittenAndChecked) {
+    const auto dir = std::filesystem::path(testing::TempDir()) / "pf_cli_plane_landing";
+    std::filesystem::remove_all(dir);
+    const std::string base = "plan " + area() +
+                             " --aircraft 'senseFly eBee X' --gsd 2.5 --home 8.3240,49.0226 --quiet "
+                             "--format waypoints --out '" +
+                             dir.string() + "'";
+    const CliRun r = cli(base + " --landing-heading 270");
+    ASSERT_EQ(r.code, 0) << r.out << r.err;
+    const std::string wpl = slurp((dir / "mission-senseFly_eBee_X.waypoints").string());
+    EXPECT_TRUE(has(wpl.substr(wpl.rfind('\n', wpl.size() - 2)), "\t21\t0\t0\t0\t270\t"))
+        << wpl.substr(wpl.rfind('\n', wpl.size() - 2));
+    expectBadInput(base + " --landing-heading 400",
+                   "--landing-heading: expected degrees from north, from 0 to less than 360");
+}
+
 TEST(CliPlane, LitchiAndGridPlannersRefuseAPlane) {
     const auto dir = std::filesystem::path(testing::TempDir()) / "pf_cli_plane_refused";
     expectBadInput("plan " + area() + " --aircraft 'DeltaQuad Pro' --gsd 1.2 --format csv --out '" + dir.string() + "'",

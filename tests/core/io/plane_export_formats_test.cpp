@@ -153,3 +153,68 @@ TEST(PlaneExport, LitchiRefusesAPlane) {
                                  "file for its ArduPilot or PX4 autopilot instead");
     EXPECT_FALSE(std::filesystem::exists(path));
 }
+
+namespace {
+
+// The fixed-wing's approach waypoint (the waypoint before NAV_LAND) and the NAV_LAND item.
+std::pair<geo::LonLat, MissionItem> approachAndLand(const std::vector<MissionItem>& v) {
+    return {geo::LonLat{v[v.size() - 2].params[5], v[v.size() - 2].params[4]}, v.back()};
+}
+
+// A square zone of side `side` m centred `east` m east and `north` m north of `at`.
+mission::NoFlyZone squareZone(const geo::LonLat& at, double east, double north, double side) {
+    const auto frame = *geo::LocalFrame::create(at);
+    const double h = side / 2;
+    mission::NoFlyZone z;
+    z.name = "Tower";
+    z.polygon.outer = frame.toGeo(std::vector<geo::Vec2>{{east - h, north - h}, {east + h, north - h},
+                                                          {east + h, north + h}, {east - h, north + h}});
+    return z;
+}
+
+} // namespace
+
+// The landing direction: the user's (into the wind) when given; without it the first lane's
+// heading, turned in 15-degree steps until the approach keeps the no-fly margins; a heading given
+// whose approach enters a margin is refused with the route's name, and nothing is written for it.
+TEST(PlaneExport, LandingHeadingIsTheUsersOrKeepsTheMargins) {
+    ExportContext ctx = contextFor(fleet::AircraftKind::FixedWing);
+    const geo::LonLat home = *ctx.homeFor(0);
+    ExportOptions o;
+    o.landingHeadingDeg = 200.0;
+    auto given = missionItems(ctx, 0, o);
+    ASSERT_TRUE(given) << given.error().message;
+    auto [approach, land] = approachAndLand(*given);
+    EXPECT_NEAR(geo::initialBearingDeg(approach, home), 200.0, 0.5);
+    EXPECT_NEAR(geo::geodesicDistance(home, approach), kApproachDistanceM, 0.5);
+    EXPECT_EQ(land.params[3], 200.0); // NAV_LAND yaw
+
+    // A zone 200 m west of home, on the default approach (from the west, heading east).
+    ctx.mission.noFlyZones = {squareZone(home, -200, 0, 60)};
+    ctx.mission.options.safetyMarginM = 10;
+    auto turned = missionItems(ctx, 0);
+    ASSERT_TRUE(turned) << turned.error().message;
+    const auto [a2, l2] = approachAndLand(*turned);
+    const double h = geo::initialBearingDeg(a2, home);
+    EXPECT_GT(std::abs(std::remainder(h - 90.0, 360.0)), 7.0) << h; // not straight from the west
+    auto chosen = planeLandingHeadingDeg(ctx, 0);
+    ASSERT_TRUE(chosen);
+    EXPECT_NEAR(std::remainder(*chosen - h, 360.0), 0.0, 0.5);
+    EXPECT_EQ(std::fmod(std::abs(*chosen - 90.0), 15.0), 0.0); // a 15-degree step from the lane
+    // The approach keeps the margin: sampled every metre, 10 m from the zone or more.
+    const auto frame = *geo::LocalFrame::create(home);
+    const geo::Vec2 p = frame.toLocal(a2);
+    for (int i = 0; i <= 400; ++i) {
+        const geo::Vec2 q = p * (1.0 - i / 400.0);
+        const double dx = std::max(std::abs(q.x() + 200) - 30, 0.0), dy = std::max(std::abs(q.y()) - 30, 0.0);
+        EXPECT_GE(std::hypot(dx, dy), 10.0 - 0.1) << i;
+    }
+
+    o.landingHeadingDeg = 90.0; // from the west, over the zone
+    auto refused = missionItems(ctx, 0, o);
+    ASSERT_FALSE(refused);
+    EXPECT_NE(refused.error().message.find("the landing approach towards 90 degrees (from 400 m before the "
+                                           "landing point) comes within a no-fly zone's safety margin"),
+              std::string::npos)
+        << refused.error().message;
+}
