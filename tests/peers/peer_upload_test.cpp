@@ -1,6 +1,7 @@
 // photoflight-cli upload against an independent simulated autopilot (sim_vehicle.mjs, node-mavlink)
 // on loopback: a full upload and read-back equal to the .waypoints export, a lost request recovered,
-// a refusal reported with its reason, no vehicle as a clear timeout, two vehicles in parallel.
+// a refusal reported with its reason, no vehicle as a clear timeout, two vehicles in parallel, a
+// plane's mission with its landing.
 #include "tests/peers/peer_process.h"
 
 #include <cpl_json.h>
@@ -292,4 +293,54 @@ TEST(PeerUpload, OneBatterysFlightAtATime) {
     EXPECT_EQ(tooMany.code, 2);
     EXPECT_NE(tooMany.output.find("--sortie 99: Falcon 8 flies 2 sortie(s)"), std::string::npos)
         << tooMany.output;
+}
+
+// A fixed-wing's mission over MAVLink to a vehicle whose heartbeat says fixed wing: the take-off
+// with its pitch, the camera by distance, DO_LAND_START and NAV_LAND towards the heading given, read
+// back identical.
+TEST(PeerUpload, APlanesMissionWithItsLanding) {
+    const std::string dir = scratch("plane");
+    CPLJSONDocument doc;
+    ASSERT_TRUE(doc.Load(kDemo));
+    CPLJSONObject root = doc.GetRoot();
+    root.Set("version", 5);
+    CPLJSONObject wing = root.GetArray("aircraft")[0];
+    wing.Set("name", "Wing");
+    wing.Add("kind", "fixed_wing");
+    wing.Set("altitude_m", 80.0);
+    wing.Set("cruise_speed_mps", 13.0);
+    wing.Set("endurance_min", 90.0);
+    CPLJSONObject plane;
+    plane.Add("bank_deg", 45.0);
+    plane.Add("climb_rate_mps", 5.0);
+    plane.Add("sink_rate_mps", 5.0);
+    plane.Add("run_in_m", 50.0);
+    wing.Add("plane", plane);
+    CPLJSONArray fleet;
+    fleet.Add(wing);
+    root.Delete("aircraft");
+    root.Add("aircraft", fleet);
+    const std::string mission = dir + "/wing.json";
+    ASSERT_TRUE(doc.Save(mission));
+
+    Peer vehicle({"--udp", "0", "--seconds", "60", "--report", dir + "/vehicle.json", "--vehicle-type", "1"});
+    ASSERT_GT(vehicle.port(), 0) << "the simulated vehicle did not start";
+    const CliRun r = cli("upload " + quoted(mission) + " --to udp:127.0.0.1:" + std::to_string(vehicle.port()) +
+                         " --landing-heading 250");
+    ASSERT_EQ(r.code, 0) << r.output;
+    EXPECT_NE(r.output.find("found fixed wing, ArduPilot"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("uploaded and read back identical"), std::string::npos) << r.output;
+    const CPLJSONArray items = report(dir + "/vehicle.json").GetArray("mission");
+    ASSERT_GT(items.Size(), 5);
+    std::vector<int> commands;
+    for (int k = 0; k < items.Size(); ++k)
+        commands.push_back(items[k].GetInteger("command"));
+    EXPECT_EQ(commands[1], 22); // NAV_TAKEOFF after ArduPilot's home item
+    EXPECT_NEAR(items[1].GetArray("params")[0].ToDouble(), 15.0, 1e-6); // its pitch
+    EXPECT_GE(std::count(commands.begin(), commands.end(), 206), 2);   // DO_SET_CAM_TRIGG_DIST
+    EXPECT_EQ(std::count(commands.begin(), commands.end(), 2000), 0);  // no capture per photo
+    ASSERT_GE(commands.size(), 3u);
+    EXPECT_EQ(commands[commands.size() - 3], 189); // DO_LAND_START
+    EXPECT_EQ(commands.back(), 21);                // NAV_LAND
+    EXPECT_NEAR(items[items.Size() - 1].GetArray("params")[3].ToDouble(), 250.0, 1e-3);
 }

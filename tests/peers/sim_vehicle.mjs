@@ -9,7 +9,7 @@
 //   node sim_vehicle.mjs [--udp PORT | --udp-out HOST:PORT | --tcp PORT] [--sysid N]
 //        [--autopilot ardupilot|px4] [--home LAT,LON] [--drop-request SEQ] [--nack SEQ:CODE]
 //        [--nack-type mission|fence|rally] [--old-requests] [--silent] [--seconds N]
-//        [--report FILE] [--vehicle-timeout MS] [--delay MS]
+//        [--report FILE] [--vehicle-timeout MS] [--delay MS] [--vehicle-type N]
 //
 // --udp 0 / --tcp 0 pick a free port. Once listening it prints "READY <port>" on stdout.
 // --drop-request SEQ  the first request for mission item SEQ is never sent (a lost message)
@@ -18,6 +18,7 @@
 // --report FILE       the plans held, as JSON, rewritten after every accepted upload
 // --vehicle-timeout MS  how long the vehicle waits for an item before it asks again (3000)
 // --delay MS          every message leaves the vehicle MS later (a slow link)
+// --vehicle-type N    the heartbeat's MAV_TYPE (2 quadrotor, the default; 1 fixed wing; 22 VTOL)
 //
 // Quirks of node-mavlink 2.3.0 worked around here: its MAVLink 1 serializer writes the MAVLink 2
 // extension fields (so only MAVLink 2 is sent); an all-zero MAVLink 2 payload is cut to 0 bytes where
@@ -35,7 +36,7 @@ const REGISTRY = { ...minimal.REGISTRY, ...common.REGISTRY };
 const TYPES = { 0: 'mission', 1: 'fence', 2: 'rally' };
 
 function parseArgs(argv) {
-  const o = { sysid: 1, autopilot: 'ardupilot', seconds: 60, nackType: 0, vehicleTimeout: 3000 };
+  const o = { sysid: 1, autopilot: 'ardupilot', seconds: 60, nackType: 0, vehicleTimeout: 3000, vehicleType: 2 };
   for (let i = 0; i < argv.length; ++i) {
     const a = argv[i];
     const next = () => {
@@ -58,6 +59,7 @@ function parseArgs(argv) {
       case '--report': o.report = next(); break;
       case '--vehicle-timeout': o.vehicleTimeout = Number(next()); break;
       case '--delay': o.delay = Number(next()); break;
+      case '--vehicle-type': o.vehicleType = Number(next()); break;
       default: throw new Error(`unknown option ${a}`);
     }
   }
@@ -280,7 +282,7 @@ bytesIn.pipe(new MavLinkPacketSplitter()).pipe(new MavLinkPacketParser()).on('da
 
 function heartbeat() {
   const hb = new minimal.Heartbeat();
-  hb.type = 2; // MAV_TYPE_QUADROTOR
+  hb.type = opt.vehicleType; // MAV_TYPE: 2 quadrotor unless told
   hb.autopilot = opt.autopilot === 'px4' ? 12 : 3;
   hb.baseMode = 0;
   hb.customMode = 0;
