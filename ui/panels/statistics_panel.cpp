@@ -1,5 +1,6 @@
 #include "ui/panels/statistics_panel.h"
 
+#include "core/fleet/aircraft.h"
 #include "core/geo/local_frame.h"
 #include "core/mission/plan_messages.h"
 #include "core/mission/planner_kinds.h"
@@ -33,6 +34,33 @@ int flownTurns(const mission::PlanTotals& t) { return t.flightTurns > 0 ? t.flig
 QString minutes(double seconds) {
     const int s = int(std::lround(seconds));
     return QStringLiteral("%1:%2").arg(s / 60).arg(s % 60, 2, 10, QLatin1Char('0'));
+}
+
+// A plane's turns in words: the length and time flown on its turn arcs and run-ins (the legs that
+// begin or end at a turn waypoint, at the cruise speed: the one flight-time model of a plane), its
+// turn radius, and how it lands. Empty for a multirotor.
+QString planeTurnsTip(const route::Route& r, const mission::AircraftConfig& a,
+                      const geo::LocalFrame& frame) {
+    if (!fleet::fliesAsPlane(a.kind) || a.cruiseSpeedMps <= 0)
+        return {};
+    double turnM = 0.0;
+    for (std::size_t i = 0; i + 1 < r.waypoints.size(); ++i)
+        if (r.waypoints[i].kind == route::WaypointKind::Turn ||
+            r.waypoints[i + 1].kind == route::WaypointKind::Turn)
+            turnM += (frame.toLocal(r.waypoints[i + 1].position) - frame.toLocal(r.waypoints[i].position)).norm();
+    const double radiusM = fleet::minTurnRadiusM(a.plane, a.cruiseSpeedMps);
+    const QString landing =
+        a.kind == fleet::AircraftKind::Vtol
+            ? QObject::tr("it lands vertically (NAV_VTOL_LAND) at the landing point")
+            : QObject::tr("it lands along a 400 m approach into the landing heading set on export "
+                          "(else along the first lane), kept out of the no-fly margins");
+    return QObject::tr("Turn arcs and run-ins: %1 km, %2 min at %3 m/s (arcs of at least %4 m "
+                       "radius; no photo in a turn). After the survey %5.")
+        .arg(turnM / 1000.0, 0, 'f', 2)
+        .arg(minutes(turnM / a.cruiseSpeedMps))
+        .arg(a.cruiseSpeedMps, 0, 'f', 1)
+        .arg(radiusM, 0, 'f', 0)
+        .arg(landing);
 }
 
 QTableWidgetItem* cell(const QString& text,
@@ -323,6 +351,12 @@ void StatisticsPanel::refreshStatistics() {
         m_stats->setItem(r, Km, cell(QString::number(shownDistanceM / 1000.0, 'f', 2)));
         m_stats->setItem(r, Time, cell(minutes(shownTimeS)));
         m_stats->setItem(r, Turns, cell(QString::number(turns)));
+        if (config && plan->frame)
+            if (const QString tip = planeTurnsTip(flown ? *flown : ap.route, *config, *plan->frame);
+                !tip.isEmpty()) {
+                m_stats->item(r, Turns)->setToolTip(tip);
+                m_stats->item(r, Time)->setToolTip(tip);
+            }
         m_stats->setItem(r, Sorties, cell(QString::number(batteries)));
         m_stats->setItem(r, Cover, coverCell(*plan, k));
         m_stats->setItem(r, PlanMs, cell(QString::number(ap.metrics.planningMs, 'f', 0)));
