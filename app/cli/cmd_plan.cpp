@@ -221,9 +221,8 @@ std::vector<std::string> aircraftProblems(const mission::Mission& m, const missi
     return out;
 }
 
-} // namespace
-
-int runPlan(const std::vector<std::string>& argv) {
+// plan's options: the mission's, the outputs', and those of the waypoint files.
+std::vector<OptionSpec> planOptionSpecs() {
     auto specs = missionOptionSpecs();
     specs.push_back({"out"});
     specs.push_back({"format"});
@@ -233,161 +232,240 @@ int runPlan(const std::vector<std::string>& argv) {
     specs.push_back({"progress", false});
     for (auto& s : exportOptionSpecs())
         specs.push_back(s);
-    auto args = Args::parse(argv, specs);
-    if (!args)
-        return reportError(args.error());
-    auto exportOptions = exportOptionsFromArgs(*args);
-    if (!exportOptions)
-        return reportError(exportOptions.error());
+    return specs;
+}
+
+// The waypoint formats of --format (which needs --out to write them into); none without it.
+Result<std::vector<io::WaypointFormat>> formatsFromArgs(const Args& args) {
     std::vector<io::WaypointFormat> formats;
-    if (const auto f = args->value("format")) {
+    if (const auto f = args.value("format")) {
         auto list = io::formatListFromString(*f);
         if (!list)
-            return reportError(makeError(list.error().code, "--format: " + list.error().message));
-        if (!args->has("out"))
-            return reportError(makeError(ErrorCode::InvalidInput, "--format: needs --out DIR to write the files into"));
+            return makeError(list.error().code, "--format: " + list.error().message);
+        if (!args.has("out"))
+            return makeError(ErrorCode::InvalidInput,
+                             "--format: needs --out DIR to write the files into");
         formats = *list;
     }
-    auto input = missionFromArgs(*args);
-    if (!input)
-        return reportError(input.error());
-    const mission::Mission& m = input->mission;
-    for (const auto& note : input->notes)
+    return formats;
+}
+
+// The notes on the input: the defaults applied, the hand-edited routes a fresh plan leaves out.
+void printInputNotes(const MissionInput& input) {
+    const mission::Mission& m = input.mission;
+    for (const auto& note : input.notes)
         std::cerr << "photoflight-cli: note: " << note << '\n';
     if (!m.editedRoutes.empty())
-        std::cerr << "photoflight-cli: note: the mission file holds " << m.editedRoutes.size() << " hand-edited route"
+        std::cerr << "photoflight-cli: note: the mission file holds " << m.editedRoutes.size()
+                  << " hand-edited route"
                   << (m.editedRoutes.size() == 1 ? "; it is" : "s; they are")
-                  << " not used: this is a fresh plan (the desktop application keeps and exports them)\n";
+                  << " not used: this is a fresh plan (the desktop application keeps and exports "
+                     "them)\n";
+}
 
-    std::vector<std::string> printed;
-    if (!printValidationProblems(mission::validateMission(m), &printed))
-        return kExitBadInput;
-    PlanProgressPrinter printer(!args->has("quiet") && ::isatty(STDERR_FILENO) != 0, args->has("progress"));
+// The mission planned, its progress on stderr as asked (--quiet, --progress).
+Result<mission::MissionPlan> planWithProgress(const mission::Mission& m, const Args& args) {
+    PlanProgressPrinter printer(!args.has("quiet") && ::isatty(STDERR_FILENO) != 0,
+                                args.has("progress"));
     Progress progress([&](double f, const std::string& stage) { printer(f, stage); });
     auto plan = mission::planMission(m, &progress);
     printer.clear();
-    if (!plan)
-        return reportError(plan.error());
-    // The planner re-checks the grid and may repeat a validation warning: say each thing once.
-    for (const auto& w : plan->warnings)
+    return plan;
+}
+
+// The plan's warnings and notes on stderr. The planner re-checks the grid and may repeat a
+// validation warning (`printed`): each thing is said once.
+void printPlanMessages(const mission::MissionPlan& plan, const std::vector<std::string>& printed) {
+    for (const auto& w : plan.warnings)
         if (std::find(printed.begin(), printed.end(), w) == printed.end())
             std::cerr << "photoflight-cli: warning: " << w << '\n';
-    for (const auto& n : plan->notes)
+    for (const auto& n : plan.notes)
         std::cerr << "photoflight-cli: note: " << n << '\n';
+}
 
-    // The check every exported route passes (as in the desktop application): a route with an error
-    // is refused unless the user insists. Against the polygons planned (simplify_input.h: a traced
-    // boundary simplified; they hold the given ones, so a route clear of them is clear of the given
-    // zones).
+// The check every exported route passes (as in the desktop application), with the files'
+// aircraft: each problem on stderr, and kExitOk when the files may be written (none, or --force).
+int checkRoutesForFiles(const mission::Mission& m, const mission::MissionPlan& plan,
+                        const std::vector<io::WaypointFormat>& formats, bool force) {
+    // A route with an error is refused unless the user insists. Against the polygons planned
+    // (simplify_input.h: a traced boundary simplified; they hold the given ones, so a route clear
+    // of them is clear of the given zones).
     const mission::Mission planned = mission::simplifyInput(m, true).mission;
-    auto routeProblems = mission::planRouteErrors(planned, *plan);
-    // The files' aircraft: a .kmz only for DJI Enterprise aircraft, no Litchi or MAVLink file for them,
-    // unless --force (then the .kmz of another aircraft is left out, the others written with a warning).
+    auto routeProblems = mission::planRouteErrors(planned, plan);
+    // The files' aircraft: a .kmz only for DJI Enterprise aircraft, no Litchi or MAVLink file for
+    // them, unless --force (then the .kmz of another aircraft is left out, the others written with
+    // a warning).
     std::size_t kmzLeftOut = 0;
-    for (auto& p : aircraftProblems(m, *plan, formats, kmzLeftOut))
+    for (auto& p : aircraftProblems(m, plan, formats, kmzLeftOut))
         routeProblems.push_back(std::move(p));
-    exportOptions->forceAircraft = args->has("force");
     for (const auto& p : routeProblems)
-        std::cerr << "photoflight-cli: " << (args->has("force") ? "warning: " : "error: ") << p << '\n';
-    if (!routeProblems.empty() && !args->has("force")) {
-        const bool onlyKmz = kmzLeftOut == routeProblems.size();
-        return reportError(
-            std::to_string(routeProblems.size()) + " problem(s) in the planned routes (listed above): nothing written; " +
-            (onlyKmz ? "--force writes the other files, but no .kmz for an aircraft that is not a DJI Enterprise model "
-                       "(choose a DJI aircraft for it)"
-             : kmzLeftOut > 0 ? "--force writes them anyway, except the .kmz of an aircraft that is not a DJI "
-                                "Enterprise model (no DJI type to name in it)"
-                              : "--force writes them anyway"));
-    }
+        std::cerr << "photoflight-cli: " << (force ? "warning: " : "error: ") << p << '\n';
+    if (routeProblems.empty() || force)
+        return kExitOk;
+    const bool onlyKmz = kmzLeftOut == routeProblems.size();
+    return reportError(
+        std::to_string(routeProblems.size()) +
+        " problem(s) in the planned routes (listed above): nothing written; " +
+        (onlyKmz ? "--force writes the other files, but no .kmz for an aircraft that is not a DJI "
+                   "Enterprise model (choose a DJI aircraft for it)"
+         : kmzLeftOut > 0 ? "--force writes them anyway, except the .kmz of an aircraft that is "
+                            "not a DJI Enterprise model (no DJI type to name in it)"
+                          : "--force writes them anyway"));
+}
 
+// The waypoint files of `formats` in `dir`, as the desktop application's export writes them
+// (core/io/mission_export.h); their notes and warnings on stderr.
+int writeWaypointFiles(const mission::Mission& m, const mission::MissionPlan& plan,
+                       const std::vector<io::WaypointFormat>& formats,
+                       const std::filesystem::path& dir, const io::ExportOptions& options,
+                       std::vector<std::string>& written) {
+    std::vector<route::Route> routes;
+    for (const auto& a : plan.aircraft)
+        routes.push_back(a.route);
+    io::MissionExportRequest request;
+    request.formats = formats;
+    request.folder = dir.string();
+    request.options = options;
+    auto files = io::exportMission(m, routes, request);
+    if (!files)
+        return reportError(files.error());
+    for (const auto& n : files->notes)
+        std::cerr << "photoflight-cli: note: " << n << '\n';
+    for (const auto& w : files->warnings)
+        std::cerr << "photoflight-cli: warning: " << w << '\n';
+    written.insert(written.end(), files->files.begin(), files->files.end());
+    return kExitOk;
+}
+
+// plan.geojson, metrics.json and the waypoint files into `out` (created if missing), each file
+// written listed in `written`.
+int writePlanFiles(const std::string& out, const Args& args, const mission::Mission& m,
+                   const mission::MissionPlan& plan, const std::vector<io::WaypointFormat>& formats,
+                   const io::ExportOptions& options, std::vector<std::string>& written) {
+    std::error_code ec;
+    std::filesystem::create_directories(out, ec);
+    if (ec)
+        return reportError(makeError(ErrorCode::IoError, "cannot create the output directory " +
+                                                             out + ": " + ec.message()));
+    const std::filesystem::path dir(out);
+    mission::PlanGeoJsonOptions gj;
+    gj.footprints = args.has("footprints");
+    if (auto st = mission::writePlanGeoJsonFile(plan, (dir / "plan.geojson").string(), gj); !st)
+        return reportError(st.error());
     const char* planner = mission::plannerKindInfo(m.options.planner).id;
-    std::vector<std::string> written;
-    if (const auto out = args->value("out")) {
-        std::error_code ec;
-        std::filesystem::create_directories(*out, ec);
-        if (ec)
-            return reportError(makeError(ErrorCode::IoError, "cannot create the output directory " + *out + ": " +
-                                                                 ec.message()));
-        const std::filesystem::path dir(*out);
-        mission::PlanGeoJsonOptions gj;
-        gj.footprints = args->has("footprints");
-        if (auto st = mission::writePlanGeoJsonFile(*plan, (dir / "plan.geojson").string(), gj); !st)
-            return reportError(st.error());
-        if (int rc = writeFile(dir / "metrics.json", io::planMetricsJson(*plan, planner)); rc != kExitOk)
-            return rc;
-        written.push_back((dir / "plan.geojson").string());
-        written.push_back((dir / "metrics.json").string());
-        if (!formats.empty()) {
-            // The desktop application's export writes the same files (core/io/mission_export.h).
-            std::vector<route::Route> routes;
-            for (const auto& a : plan->aircraft)
-                routes.push_back(a.route);
-            io::MissionExportRequest request;
-            request.formats = formats;
-            request.folder = dir.string();
-            request.options = *exportOptions;
-            auto files = io::exportMission(m, routes, request);
-            if (!files)
-                return reportError(files.error());
-            for (const auto& n : files->notes)
-                std::cerr << "photoflight-cli: note: " << n << '\n';
-            for (const auto& w : files->warnings)
-                std::cerr << "photoflight-cli: warning: " << w << '\n';
-            written.insert(written.end(), files->files.begin(), files->files.end());
-        }
-    }
+    if (int rc = writeFile(dir / "metrics.json", io::planMetricsJson(plan, planner)); rc != kExitOk)
+        return rc;
+    written.push_back((dir / "plan.geojson").string());
+    written.push_back((dir / "metrics.json").string());
+    if (formats.empty())
+        return kExitOk;
+    return writeWaypointFiles(m, plan, formats, dir, options, written);
+}
 
+// The table on stdout: a line per aircraft, then the totals.
+void printPlanTable(const mission::MissionPlan& plan) {
     char line[512];
-    std::snprintf(line, sizeof line, "%-20s %-9s %6s %6s %6s %6s %6s %9s %8s %7s %6s %5s\n", "aircraft", "planner",
-                  "alt_m", "angle", "cell_m", "photos", "saved", "dist_m", "time_min", "sorties", "turns", "jumps");
+    std::snprintf(line, sizeof line, "%-20s %-9s %6s %6s %6s %6s %6s %9s %8s %7s %6s %5s\n",
+                  "aircraft", "planner", "alt_m", "angle", "cell_m", "photos", "saved", "dist_m",
+                  "time_min", "sorties", "turns", "jumps");
     std::cout << line;
-    for (const auto& a : plan->aircraft) {
+    for (const auto& a : plan.aircraft) {
         const auto& mt = a.metrics;
-        std::snprintf(line, sizeof line, "%-20.20s %-9s %6.1f %6.1f %6.1f %6d %6d %9.0f %8.1f %7d %6d %5d\n",
-                      a.aircraft.c_str(), mission::plannerKindInfo(a.planner).id, a.altitudeM, a.gridAngleDeg, a.cellSizeM, mt.photos, a.photosSaved,
-                      a.flightDistanceM, a.timeS / 60.0, static_cast<int>(a.sorties.size()), a.flight.turns, mt.jumps);
+        std::snprintf(line, sizeof line,
+                      "%-20.20s %-9s %6.1f %6.1f %6.1f %6d %6d %9.0f %8.1f %7d %6d %5d\n",
+                      a.aircraft.c_str(), mission::plannerKindInfo(a.planner).id, a.altitudeM,
+                      a.gridAngleDeg, a.cellSizeM, mt.photos, a.photosSaved, a.flightDistanceM,
+                      a.timeS / 60.0, static_cast<int>(a.sorties.size()), a.flight.turns, mt.jumps);
         std::cout << line;
     }
-    const auto& t = plan->totals;
+    const auto& t = plan.totals;
     double dist = 0.0;
     int sorties = 0;
-    for (const auto& a : plan->aircraft) {
+    for (const auto& a : plan.aircraft) {
         dist += a.flightDistanceM;
         sorties += static_cast<int>(a.sorties.size());
     }
-    std::snprintf(line, sizeof line, "%-20s %-9s %6s %6s %6s %6d %6d %9.0f %8.1f %7d %6d %5d\n", "total", "", "", "",
-                  "", t.photos, plan->photosSaved, dist, plan->makespanS / 60.0, sorties, t.flightTurns, t.jumps);
+    std::snprintf(line, sizeof line, "%-20s %-9s %6s %6s %6s %6d %6d %9.0f %8.1f %7d %6d %5d\n",
+                  "total", "", "", "", "", t.photos, plan.photosSaved, dist, plan.makespanS / 60.0,
+                  sorties, t.flightTurns, t.jumps);
     std::cout << line;
+}
+
+// The plan's figures on stdout after the table: coverage, makespan, a double grid's passes, the
+// planner chosen, and each terrain-following aircraft's heights.
+void printPlanSummary(const mission::MissionPlan& plan) {
+    char line[512];
     // The covered share never reads 100 while ground is left unseen (the same figure as in the
     // desktop application's statistics).
     std::snprintf(
         line, sizeof line,
         "coverage %s %% (uncovered %.0f m²), makespan %.1f min (ideal %.1f min, x%.3f), no-fly "
         "violations %d\n",
-        mission::coveragePercentText(plan->coverageRatio, plan->uncoveredAreaM2).c_str(),
-        plan->uncoveredAreaM2, plan->makespanS / 60.0, plan->idealS / 60.0,
-        plan->idealS > 0 ? plan->makespanS / plan->idealS : 1.0, plan->noFlyViolations);
+        mission::coveragePercentText(plan.coverageRatio, plan.uncoveredAreaM2).c_str(),
+        plan.uncoveredAreaM2, plan.makespanS / 60.0, plan.idealS / 60.0,
+        plan.idealS > 0 ? plan.makespanS / plan.idealS : 1.0, plan.noFlyViolations);
     std::cout << line;
-    if (plan->passCoverage.size() == 2) { // a double grid: every point seen by each pass
+    if (plan.passCoverage.size() == 2) { // a double grid: every point seen by each pass
         std::snprintf(line, sizeof line, "coverage per pass of the double grid: %.2f %%, %.2f %%\n",
-                      100.0 * plan->passCoverage[0], 100.0 * plan->passCoverage[1]);
+                      100.0 * plan.passCoverage[0], 100.0 * plan.passCoverage[1]);
         std::cout << line;
     }
-    if (!plan->plannerChoice.empty())
-        std::cout << "planner: " << plan->plannerChoice << '\n';
-    for (const auto& a : plan->aircraft) {
+    if (!plan.plannerChoice.empty())
+        std::cout << "planner: " << plan.plannerChoice << '\n';
+    for (const auto& a : plan.aircraft) {
         if (!a.terrain.active)
             continue;
         const auto& t = a.terrain;
         std::snprintf(line, sizeof line,
-                      "terrain: %s %.1f m above the ground (lanes for %.1f m, photo spacing per lane: %d photo(s) "
-                      "fewer on %d lane(s)), take-off ground %.1f m, lowest clearance %.1f m, %d waypoint(s) "
-                      "inserted, GSD %.2f cm/px (edges down to %.2f)\n",
-                      a.aircraft.c_str(), t.heightAboveGroundM, t.planningHeightM, t.photosSavedPerLane,
-                      t.lanesRespaced, t.homeGroundM, t.lowestClearanceM, t.waypointsInserted, t.gsdCm,
-                      t.coarsestGsdCm);
+                      "terrain: %s %.1f m above the ground (lanes for %.1f m, photo spacing per "
+                      "lane: %d photo(s) fewer on %d lane(s)), take-off ground %.1f m, lowest "
+                      "clearance %.1f m, %d waypoint(s) inserted, GSD %.2f cm/px (edges down to "
+                      "%.2f)\n",
+                      a.aircraft.c_str(), t.heightAboveGroundM, t.planningHeightM,
+                      t.photosSavedPerLane, t.lanesRespaced, t.homeGroundM, t.lowestClearanceM,
+                      t.waypointsInserted, t.gsdCm, t.coarsestGsdCm);
         std::cout << line;
     }
+}
+
+} // namespace
+
+int runPlan(const std::vector<std::string>& argv) {
+    auto args = Args::parse(argv, planOptionSpecs());
+    if (!args)
+        return reportError(args.error());
+    auto exportOptions = exportOptionsFromArgs(*args);
+    if (!exportOptions)
+        return reportError(exportOptions.error());
+    auto formats = formatsFromArgs(*args);
+    if (!formats)
+        return reportError(formats.error());
+    auto input = missionFromArgs(*args);
+    if (!input)
+        return reportError(input.error());
+    const mission::Mission& m = input->mission;
+    printInputNotes(*input);
+
+    std::vector<std::string> printed;
+    if (!printValidationProblems(mission::validateMission(m), &printed))
+        return kExitBadInput;
+    auto plan = planWithProgress(m, *args);
+    if (!plan)
+        return reportError(plan.error());
+    printPlanMessages(*plan, printed);
+
+    const bool force = args->has("force");
+    if (int rc = checkRoutesForFiles(m, *plan, *formats, force); rc != kExitOk)
+        return rc;
+    exportOptions->forceAircraft = force;
+    std::vector<std::string> written;
+    if (const auto out = args->value("out"))
+        if (int rc = writePlanFiles(*out, *args, m, *plan, *formats, *exportOptions, written);
+            rc != kExitOk)
+            return rc;
+
+    printPlanTable(*plan);
+    printPlanSummary(*plan);
     if (!written.empty()) {
         std::cout << "Wrote";
         for (const auto& w : written)

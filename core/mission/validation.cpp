@@ -274,88 +274,109 @@ Result<grid::GridOptions> gridOptionsFor(const Mission& m, std::size_t aircraftI
     return opt;
 }
 
-ValidationReport validateMission(const Mission& given) {
-    ValidationReport r;
-    auto& out = r.problems;
+namespace {
 
-    // Geometry: the area (or the corridor), then each no-fly zone, each as a polygon of its own, as
-    // given (vertex numbers as the user knows them).
-    const auto areaProblems = areaProblemsOf(given);
-    out.insert(out.end(), areaProblems.begin(), areaProblems.end());
+// Which of the given shapes hold an error.
+struct ShapeChecks {
+    std::vector<Problem> areaProblems;
     bool zonesOk = true;
+};
+
+// The given shapes: the area (or the corridor), then each no-fly zone, each as a polygon of its
+// own, as given (vertex numbers as the user knows them).
+ShapeChecks validateShapes(const Mission& given, std::vector<Problem>& out) {
+    ShapeChecks c;
+    c.areaProblems = areaProblemsOf(given);
+    out.insert(out.end(), c.areaProblems.begin(), c.areaProblems.end());
     for (std::size_t i = 0; i < given.noFlyZones.size(); ++i) {
         const auto zp =
             geo::validatePolygon(given.noFlyZones[i].polygon, zoneName(given.noFlyZones[i], i));
-        zonesOk = zonesOk && !geo::hasError(zp);
+        c.zonesOk = c.zonesOk && !geo::hasError(zp);
         out.insert(out.end(), zp.begin(), zp.end());
     }
-    // The rest on the mission as planMission plans it: a traced boundary simplified
-    // (simplify_input.h).
-    const bool shapesOk = !geo::hasError(out);
-    const InputSimplification simple =
-        shapesOk ? simplifyInput(given, true) : InputSimplification{};
-    if (!simple.note.empty())
-        warning(out, simple.note);
-    if (!simple.error.empty())
-        error(out, simple.error);
-    const Mission& m = shapesOk ? simple.mission : given;
+    return c;
+}
 
+// The mission's ground as planned, for the checks that need it: the frame, the area and the zones
+// that touch it (none when the area has no frame), and the ground outside the zones.
+struct PlannedGround {
     std::optional<LocalGeometry> geom;
     geo::MultiPolygon admissible;
-    if (!geo::hasError(areaProblems)) {
-        auto frame = geo::LocalFrame::forArea(geo::cleanPolygon(m.area));
-        if (!frame) {
-            error(out, frame.error().message);
-        } else {
-            geom = LocalGeometry{*frame, frame->toLocal(geo::cleanPolygon(m.area)), {}, {}};
-            r.areaM2 = geo::area(geom->area);
-            for (std::size_t i = 0; i < m.noFlyZones.size(); ++i) {
-                const auto& z = m.noFlyZones[i];
-                if (geo::hasError(geo::validatePolygon(z.polygon, zoneName(z, i))))
-                    continue;
-                geo::Polygon local = frame->toLocal(geo::cleanPolygon(z.polygon));
-                const geo::MultiPolygon common = geo::intersection(geom->area, local);
-                if (geo::area(common) <= 0.0) {
-                    warning(out, zoneName(z, i) + " lies entirely outside the area; it is ignored");
-                    continue;
-                }
-                if (geo::difference(geom->area, geo::MultiPolygon{local}).empty())
-                    error(out, zoneName(z, i) + " covers the whole area: nothing admissible is left to photograph");
-                geom->noFly.push_back(std::move(local));
-                geom->noFlyNames.push_back(z.name);
-            }
-            admissible = geom->noFly.empty()
-                             ? geo::MultiPolygon{geom->area}
-                             : geo::difference(geom->area, geo::MultiPolygon(geom->noFly.begin(), geom->noFly.end()));
-            r.admissibleAreaM2 = geo::area(admissible);
-            if (r.admissibleAreaM2 <= 0.0 && !geo::hasError(out))
-                error(out, "the no-fly zones together cover the whole area: nothing admissible is left to photograph");
-        }
-    }
+};
 
-    // Points and options.
-    auto checkPoint = [&](const std::optional<geo::LonLat>& p, const std::string& what) {
-        if (!p)
-            return;
-        if (!std::isfinite(p->lon) || !std::isfinite(p->lat) || std::abs(p->lon) > 180 || std::abs(p->lat) > 90) {
-            error(out, what + " (" + num("%.6f", p->lon) + ", " + num("%.6f", p->lat) +
-                           ") is out of range: longitude must lie within ±180 and latitude within ±90 degrees");
-            return;
+// Each valid zone in the frame: one outside the area is ignored (a warning), one covering all of
+// it is an error.
+void addZonesInArea(const Mission& m, LocalGeometry& geom, std::vector<Problem>& out) {
+    for (std::size_t i = 0; i < m.noFlyZones.size(); ++i) {
+        const auto& z = m.noFlyZones[i];
+        if (geo::hasError(geo::validatePolygon(z.polygon, zoneName(z, i))))
+            continue;
+        geo::Polygon local = geom.frame.toLocal(geo::cleanPolygon(z.polygon));
+        const geo::MultiPolygon common = geo::intersection(geom.area, local);
+        if (geo::area(common) <= 0.0) {
+            warning(out, zoneName(z, i) + " lies entirely outside the area; it is ignored");
+            continue;
         }
-        if (!geom)
-            return;
-        const geo::Vec2 q = geom->frame.toLocal(*p);
-        for (std::size_t k = 0; k < geom->noFly.size(); ++k)
-            if (geo::contains(geom->noFly[k], q))
-                warning(out, what + " lies inside no-fly zone \"" + geom->noFlyNames[k] + "\"");
-        if ((q - 0.5 * (geo::bounds(geom->area).min + geo::bounds(geom->area).max)).norm() > 20000)
-            warning(out, what + " is more than 20 km from the area");
-    };
-    checkPoint(m.home, "the home point");
-    checkPoint(m.landing, "the landing point");
+        if (geo::difference(geom.area, geo::MultiPolygon{local}).empty())
+            error(out, zoneName(z, i) +
+                           " covers the whole area: nothing admissible is left to photograph");
+        geom.noFly.push_back(std::move(local));
+        geom.noFlyNames.push_back(z.name);
+    }
+}
+
+// The valid area in its frame with the zones in it; the area and the admissible ground measured.
+PlannedGround validateGround(const Mission& m, ValidationReport& r) {
+    auto& out = r.problems;
+    PlannedGround g;
+    auto frame = geo::LocalFrame::forArea(geo::cleanPolygon(m.area));
+    if (!frame) {
+        error(out, frame.error().message);
+        return g;
+    }
+    g.geom = LocalGeometry{*frame, frame->toLocal(geo::cleanPolygon(m.area)), {}, {}};
+    r.areaM2 = geo::area(g.geom->area);
+    addZonesInArea(m, *g.geom, out);
+    g.admissible = g.geom->noFly.empty()
+                       ? geo::MultiPolygon{g.geom->area}
+                       : geo::difference(g.geom->area, geo::MultiPolygon(g.geom->noFly.begin(),
+                                                                         g.geom->noFly.end()));
+    r.admissibleAreaM2 = geo::area(g.admissible);
+    if (r.admissibleAreaM2 <= 0.0 && !geo::hasError(out))
+        error(out, "the no-fly zones together cover the whole area: nothing admissible is left "
+                   "to photograph");
+    return g;
+}
+
+// A point of the mission (home, landing): a real position, and (with the area's frame) warnings
+// when it lies in a zone or far from the area.
+void validatePoint(const std::optional<geo::LonLat>& p, const std::string& what,
+                   const std::optional<LocalGeometry>& geom, std::vector<Problem>& out) {
+    if (!p)
+        return;
+    if (!std::isfinite(p->lon) || !std::isfinite(p->lat) || std::abs(p->lon) > 180 ||
+        std::abs(p->lat) > 90) {
+        error(out, what + " (" + num("%.6f", p->lon) + ", " + num("%.6f", p->lat) +
+                       ") is out of range: longitude must lie within ±180 and latitude within ±90 "
+                       "degrees");
+        return;
+    }
+    if (!geom)
+        return;
+    const geo::Vec2 q = geom->frame.toLocal(*p);
+    for (std::size_t k = 0; k < geom->noFly.size(); ++k)
+        if (geo::contains(geom->noFly[k], q))
+            warning(out, what + " lies inside no-fly zone \"" + geom->noFlyNames[k] + "\"");
+    if ((q - 0.5 * (geo::bounds(geom->area).min + geo::bounds(geom->area).max)).norm() > 20000)
+        warning(out, what + " is more than 20 km from the area");
+}
+
+// The planner options, and the fleet as a whole: at least one aircraft, each with its own name.
+void validateOptions(const Mission& m, std::vector<Problem>& out) {
     const auto& o = m.options;
     if (!std::isfinite(o.safetyMarginM) || o.safetyMarginM < 0)
-        error(out, "the safety margin must be zero or a positive number of metres (got " + num("%g", o.safetyMarginM) + ")");
+        error(out, "the safety margin must be zero or a positive number of metres (got " +
+                       num("%g", o.safetyMarginM) + ")");
     if (o.gridAngleDeg && !std::isfinite(*o.gridAngleDeg))
         error(out, "the grid angle must be a finite number of degrees");
     if (o.maxCells == 0)
@@ -371,125 +392,194 @@ ValidationReport validateMission(const Mission& given) {
             if (m.aircraft[i].name == m.aircraft[k].name) {
                 error(out, "aircraft " + std::to_string(i + 1) + " has the same name as aircraft " +
                                std::to_string(k + 1) + " (\"" + m.aircraft[i].name +
-                               "\"): give each aircraft its own name, as it names its route and its files");
+                               "\"): give each aircraft its own name, as it names its route and "
+                               "its files");
                 break;
             }
+}
 
-    // Aircraft: settings, footprint, cell size and the grid each would get.
-    for (std::size_t i = 0; i < m.aircraft.size(); ++i) {
-        const auto& a = m.aircraft[i];
-        const std::string who = aircraftName(a, i);
-        AircraftFigures f;
-        f.name = a.name;
-        bool ok = true;
-        if (auto s = sensor::validate(a.camera); !s) {
-            error(out, who + ": " + s.error().message);
-            ok = false;
-        }
-        for (auto [v, side] : {std::pair{a.overlap.front, "front"}, std::pair{a.overlap.side, "side"}})
-            if (!std::isfinite(v) || v < 0.0 || v >= 1.0) {
-                error(out, who + ": the " + std::string(side) + " overlap must lie in [0, 1), e.g. 0.7 for 70 % (got " +
-                               num("%g", v) + ")");
-                ok = false;
-            }
-        for (auto& e : planeErrors(a, who)) {
-            error(out, std::move(e));
-            ok = false;
-        }
-        if (auto e = planeRoutingError(a, m.options.planner, who); !e.empty())
-            error(out, std::move(e));
-        else if (auto c = corridorPlaneError(m, a, who); !c.empty())
-            error(out, std::move(c));
-        if (fleet::fliesAsPlane(a.kind) && a.plane.minTurnRadiusM && *a.plane.minTurnRadiusM > 0 &&
-            fleet::bankAngleDeg(a.plane, a.cruiseSpeedMps) > kSteepBankDeg)
-            warning(
-                out,
-                who + ": a turn radius of " + num("%.0f", *a.plane.minTurnRadiusM) + " m at " +
-                    num("%.1f", a.cruiseSpeedMps) + " m/s needs a bank of " +
-                    num("%.0f", fleet::bankAngleDeg(a.plane, a.cruiseSpeedMps)) +
-                    " degrees; survey planes bank 45-60 degrees at most: check the turn radius");
-        // The flight-time model divides by these: a zero or negative figure would give nonsense times.
-        for (auto [v, what, unit] : {std::tuple{a.cruiseSpeedMps, "cruise speed", "m/s"},
-                                     std::tuple{a.turnRateDegS, "turn rate", "deg/s"},
-                                     std::tuple{a.accelerationMps2, "acceleration", "m/s2"}})
-            if (!std::isfinite(v) || v <= 0.0) {
-                error(out, who + ": the " + std::string(what) + " must be greater than 0 " + unit + " (got " +
-                               num("%g", v) + ")");
-                ok = false;
-            }
-        if (a.altitudeM) {
-            f.altitudeM = *a.altitudeM;
-        } else if (a.gsdCm) {
-            if (!std::isfinite(*a.gsdCm) || *a.gsdCm <= 0) {
-                error(out, who + ": the ground sample distance must be greater than 0 cm/px (got " + num("%g", *a.gsdCm) + ")");
-                ok = false;
-            } else if (ok) {
-                auto alt = sensor::altitudeForGsd(a.camera, *a.gsdCm);
-                if (alt)
-                    f.altitudeM = *alt;
-            }
-        } else {
-            error(out, who + ": neither a flight altitude nor a ground sample distance is set");
-            ok = false;
-        }
-        if ((a.altitudeM || a.gsdCm) && ok) {
-            for (auto& e : altitudeLimitErrors(who, a, f.altitudeM, !a.altitudeM)) {
-                error(out, std::move(e));
-                ok = false;
-            }
-        }
-        if (ok) {
-            auto eff = sensor::effectiveFootprint(a.camera, f.altitudeM, a.overlap);
-            auto gsd = sensor::gsdCmAt(a.camera, f.altitudeM);
-            if (!eff) {
-                error(out, who + ": " + eff.error().message);
-                ok = false;
-            } else {
-                f.effective = *eff;
-                f.footprint = eff->real;
-                f.cellSizeM = sensor::cellSizeFor(*eff);
-                f.gsdCm = gsd ? *gsd : 0.0;
-                if (eff->alongM > eff->acrossM)
-                    warning(out, who + ": the photo spacing along the track (" + num("%.1f", eff->alongM) +
-                                     " m) exceeds the track spacing (" + num("%.1f", eff->acrossM) +
-                                     " m): raise the front overlap or lower the side overlap");
-            }
-        }
-        f.gridAngleDeg = o.gridAngleDeg.value_or(0.0);
-        if (ok && geom && r.admissibleAreaM2 > 0 && o.maxCells > 0 &&
-            std::isfinite(f.gridAngleDeg) && !plansCorridorLanes(m)) {
-            grid::Grid::Size size;
-            const std::string budget = cellBudgetError(who, a, f.altitudeM, f.cellSizeM, admissible, f.gridAngleDeg,
-                                                       o.maxCells, &size);
-            f.cols = size.cols;
-            f.rows = size.rows;
-            if (!budget.empty()) {
-                error(out, budget);
-            } else if (zonesOk && simple.error.empty()) {
-                grid::GridOptions gopt{f.cellSizeM, f.gridAngleDeg, std::max(0.0, o.safetyMarginM), o.maxCells};
-                auto g = grid::Grid::build(geom->area, geom->noFly, gopt);
-                if (!g) {
-                    error(out, who + ": " + g.error().message);
-                } else {
-                    f.gridBuilt = true;
-                    f.cellsToVisit = g->visitCount();
-                    for (int c = 0; c < g->cellCount(); ++c) {
-                        f.shiftedCells += g->state(c) == grid::CellState::Shifted;
-                        f.unflyableCells += g->state(c) == grid::CellState::Unflyable;
-                    }
-                    if (f.unflyableCells > 0)
-                        warning(out, who + ": " + std::to_string(f.unflyableCells) +
-                                         " cell(s) of the area lie wholly within the safety margin of a no-fly "
-                                         "zone: they are not flown over, and their ground is photographed from "
-                                         "the neighbouring cells (the plan's coverage check reports any part left "
-                                         "unseen)");
-                    if (!g->pockets().empty())
-                        warning(out, pocketWarning(g->pockets()));
-                }
-            }
-        }
-        r.aircraft.push_back(f);
+// An aircraft's own settings: camera, overlaps, a plane's figures and planner, speeds. False when
+// one of them leaves its figures unknown (a planner unfit for it does not).
+bool validateSettings(const Mission& m, const AircraftConfig& a, const std::string& who,
+                      std::vector<Problem>& out) {
+    bool ok = true;
+    if (auto s = sensor::validate(a.camera); !s) {
+        error(out, who + ": " + s.error().message);
+        ok = false;
     }
+    for (auto [v, side] : {std::pair{a.overlap.front, "front"}, std::pair{a.overlap.side, "side"}})
+        if (!std::isfinite(v) || v < 0.0 || v >= 1.0) {
+            error(out, who + ": the " + std::string(side) +
+                           " overlap must lie in [0, 1), e.g. 0.7 for 70 % (got " + num("%g", v) +
+                           ")");
+            ok = false;
+        }
+    for (auto& e : planeErrors(a, who)) {
+        error(out, std::move(e));
+        ok = false;
+    }
+    if (auto e = planeRoutingError(a, m.options.planner, who); !e.empty())
+        error(out, std::move(e));
+    else if (auto c = corridorPlaneError(m, a, who); !c.empty())
+        error(out, std::move(c));
+    if (fleet::fliesAsPlane(a.kind) && a.plane.minTurnRadiusM && *a.plane.minTurnRadiusM > 0 &&
+        fleet::bankAngleDeg(a.plane, a.cruiseSpeedMps) > kSteepBankDeg)
+        warning(out, who + ": a turn radius of " + num("%.0f", *a.plane.minTurnRadiusM) + " m at " +
+                         num("%.1f", a.cruiseSpeedMps) + " m/s needs a bank of " +
+                         num("%.0f", fleet::bankAngleDeg(a.plane, a.cruiseSpeedMps)) +
+                         " degrees; survey planes bank 45-60 degrees at most: check the turn "
+                         "radius");
+    // The flight-time model divides by these: a zero or negative figure would give nonsense times.
+    for (auto [v, what, unit] : {std::tuple{a.cruiseSpeedMps, "cruise speed", "m/s"},
+                                 std::tuple{a.turnRateDegS, "turn rate", "deg/s"},
+                                 std::tuple{a.accelerationMps2, "acceleration", "m/s2"}})
+        if (!std::isfinite(v) || v <= 0.0) {
+            error(out, who + ": the " + std::string(what) + " must be greater than 0 " + unit +
+                           " (got " + num("%g", v) + ")");
+            ok = false;
+        }
+    return ok;
+}
+
+// The flight altitude, given or derived from the GSD (with settings `ok`), within its limits.
+// False when it is missing or unusable (or the settings were).
+bool resolveFlightAltitude(const AircraftConfig& a, const std::string& who, bool ok,
+                           AircraftFigures& f, std::vector<Problem>& out) {
+    if (a.altitudeM) {
+        f.altitudeM = *a.altitudeM;
+    } else if (a.gsdCm) {
+        if (!std::isfinite(*a.gsdCm) || *a.gsdCm <= 0) {
+            error(out, who + ": the ground sample distance must be greater than 0 cm/px (got " +
+                           num("%g", *a.gsdCm) + ")");
+            ok = false;
+        } else if (ok) {
+            auto alt = sensor::altitudeForGsd(a.camera, *a.gsdCm);
+            if (alt)
+                f.altitudeM = *alt;
+        }
+    } else {
+        error(out, who + ": neither a flight altitude nor a ground sample distance is set");
+        ok = false;
+    }
+    if ((a.altitudeM || a.gsdCm) && ok) {
+        for (auto& e : altitudeLimitErrors(who, a, f.altitudeM, !a.altitudeM)) {
+            error(out, std::move(e));
+            ok = false;
+        }
+    }
+    return ok;
+}
+
+// The photo at that altitude: its footprints, the cell size and the GSD; false when the camera
+// gives none.
+bool addFootprint(const AircraftConfig& a, const std::string& who, AircraftFigures& f,
+                  std::vector<Problem>& out) {
+    auto eff = sensor::effectiveFootprint(a.camera, f.altitudeM, a.overlap);
+    auto gsd = sensor::gsdCmAt(a.camera, f.altitudeM);
+    if (!eff) {
+        error(out, who + ": " + eff.error().message);
+        return false;
+    }
+    f.effective = *eff;
+    f.footprint = eff->real;
+    f.cellSizeM = sensor::cellSizeFor(*eff);
+    f.gsdCm = gsd ? *gsd : 0.0;
+    if (eff->alongM > eff->acrossM)
+        warning(out, who + ": the photo spacing along the track (" + num("%.1f", eff->alongM) +
+                         " m) exceeds the track spacing (" + num("%.1f", eff->acrossM) +
+                         " m): raise the front overlap or lower the side overlap");
+    return true;
+}
+
+// The grid the aircraft would get: its extent against the cell budget, then (when `build`: the
+// shapes are sound) the grid itself, its cells counted and its unflyable cells and pockets named.
+void addGrid(const Mission& m, const AircraftConfig& a, const std::string& who,
+             const PlannedGround& ground, bool build, AircraftFigures& f,
+             std::vector<Problem>& out) {
+    const auto& o = m.options;
+    grid::Grid::Size size;
+    const std::string budget = cellBudgetError(who, a, f.altitudeM, f.cellSizeM, ground.admissible,
+                                               f.gridAngleDeg, o.maxCells, &size);
+    f.cols = size.cols;
+    f.rows = size.rows;
+    if (!budget.empty()) {
+        error(out, budget);
+        return;
+    }
+    if (!build)
+        return;
+    grid::GridOptions gopt{f.cellSizeM, f.gridAngleDeg, std::max(0.0, o.safetyMarginM), o.maxCells};
+    auto g = grid::Grid::build(ground.geom->area, ground.geom->noFly, gopt);
+    if (!g) {
+        error(out, who + ": " + g.error().message);
+        return;
+    }
+    f.gridBuilt = true;
+    f.cellsToVisit = g->visitCount();
+    for (int c = 0; c < g->cellCount(); ++c) {
+        f.shiftedCells += g->state(c) == grid::CellState::Shifted;
+        f.unflyableCells += g->state(c) == grid::CellState::Unflyable;
+    }
+    if (f.unflyableCells > 0)
+        warning(out, who + ": " + std::to_string(f.unflyableCells) +
+                         " cell(s) of the area lie wholly within the safety margin of a no-fly "
+                         "zone: they are not flown over, and their ground is photographed from "
+                         "the neighbouring cells (the plan's coverage check reports any part left "
+                         "unseen)");
+    if (!g->pockets().empty())
+        warning(out, pocketWarning(g->pockets()));
+}
+
+// Aircraft i: its settings, footprint, cell size and the grid it would get (built when
+// `buildGrid`).
+AircraftFigures validateAircraft(const Mission& m, std::size_t i, const PlannedGround& ground,
+                                 double admissibleAreaM2, bool buildGrid,
+                                 std::vector<Problem>& out) {
+    const auto& a = m.aircraft[i];
+    const auto& o = m.options;
+    const std::string who = aircraftName(a, i);
+    AircraftFigures f;
+    f.name = a.name;
+    bool ok = validateSettings(m, a, who, out);
+    ok = resolveFlightAltitude(a, who, ok, f, out);
+    if (ok)
+        ok = addFootprint(a, who, f, out);
+    f.gridAngleDeg = o.gridAngleDeg.value_or(0.0);
+    if (ok && ground.geom && admissibleAreaM2 > 0 && o.maxCells > 0 &&
+        std::isfinite(f.gridAngleDeg) && !plansCorridorLanes(m))
+        addGrid(m, a, who, ground, buildGrid, f, out);
+    return f;
+}
+
+} // namespace
+
+ValidationReport validateMission(const Mission& given) {
+    ValidationReport r;
+    auto& out = r.problems;
+
+    const ShapeChecks shapes = validateShapes(given, out);
+    // The rest on the mission as planMission plans it: a traced boundary simplified
+    // (simplify_input.h).
+    const bool shapesOk = !geo::hasError(out);
+    const InputSimplification simple =
+        shapesOk ? simplifyInput(given, true) : InputSimplification{};
+    if (!simple.note.empty())
+        warning(out, simple.note);
+    if (!simple.error.empty())
+        error(out, simple.error);
+    const Mission& m = shapesOk ? simple.mission : given;
+
+    PlannedGround ground;
+    if (!geo::hasError(shapes.areaProblems))
+        ground = validateGround(m, r);
+
+    validatePoint(m.home, "the home point", ground.geom, out);
+    validatePoint(m.landing, "the landing point", ground.geom, out);
+    validateOptions(m, out);
+
+    const bool buildGrids = shapes.zonesOk && simple.error.empty();
+    for (std::size_t i = 0; i < m.aircraft.size(); ++i)
+        r.aircraft.push_back(validateAircraft(m, i, ground, r.admissibleAreaM2, buildGrids, out));
     return r;
 }
 
