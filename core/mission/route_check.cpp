@@ -1,5 +1,6 @@
 #include "core/mission/route_check.h"
 
+#include "core/fleet/aircraft.h"
 #include "core/geo/local_frame.h"
 #include "core/geo/no_fly_field.h"
 #include "core/geo/polygon_ops.h"
@@ -85,7 +86,7 @@ std::vector<OutsideGroup> outsideGroups(const route::Route& route, const RouteLi
     constexpr double kAtHomeM = 1.0;
     const bool hasHome = limits.home.has_value();
     const geo::Vec2 home = hasHome ? frame.toLocal(*limits.home) : geo::Vec2(0, 0);
-    std::vector<OutsideGroup> groups(4);
+    std::vector<OutsideGroup> groups(5);
     for (std::size_t g = 0; g < groups.size(); ++g) {
         groups[g].reason = OutsideReason(g);
         groups[g].atHomeOnly = groups[g].reason == OutsideReason::Transit;
@@ -98,13 +99,15 @@ std::vector<OutsideGroup> outsideGroups(const route::Route& route, const RouteLi
         if (d <= kOnBoundaryM)
             continue;
         const bool transit = route.waypoints[i].kind == route::WaypointKind::Transit;
+        const bool planeTurn = limits.plane && route.waypoints[i].kind == route::WaypointKind::Turn;
         std::optional<bool> sees;
-        if (!transit && limits.camera)
+        if (!transit && !planeTurn && limits.camera)
             sees = photoSeesArea(route, i, local[i], d, *limits.camera, area, prepared);
-        const OutsideReason reason = transit ? OutsideReason::Transit
-                                     : !sees ? OutsideReason::Unknown
-                                     : *sees ? OutsideReason::CoversBoundary
-                                             : OutsideReason::SeesNothing;
+        const OutsideReason reason = transit     ? OutsideReason::Transit
+                                     : planeTurn ? OutsideReason::PlaneTurn
+                                     : !sees     ? OutsideReason::Unknown
+                                     : *sees     ? OutsideReason::CoversBoundary
+                                                 : OutsideReason::SeesNothing;
         OutsideGroup& g = groups[std::size_t(reason)];
         g.waypoints.push_back(int(i));
         if (transit && !(hasHome && (local[i] - home).norm() <= kAtHomeM))
@@ -274,6 +277,7 @@ RouteLimits routeLimits(const Mission& m, const route::Route& route) {
         if (a.name == route.aircraft) {
             l.maxAltitudeM = a.maxAltitudeM;
             l.camera = a.camera;
+            l.plane = fleet::fliesAsPlane(a.kind);
             if (!l.home)
                 l.home = a.home;
         }

@@ -29,6 +29,7 @@ struct RouteLimits {
     std::optional<sensor::Camera> camera;
     std::optional<geo::LonLat> home;     // take-off: the leg to the first waypoint is checked
     std::optional<geo::LonLat> landing;  // the leg from the last waypoint; home when unset
+    bool plane = false; // the aircraft flies as a plane: its turn waypoints are arcs, no photo
 };
 
 // Why waypoints lie outside the area: each group of RouteCheck::outside has one reason, true of
@@ -39,6 +40,8 @@ enum class OutsideReason {
     SeesNothing,    // photo and turn waypoints whose photo sees none of the area
     Unknown,        // photo and turn waypoints of an aircraft whose camera is not known
     Transit, // transit waypoints (no photo): to and from home, around zones, home between sorties
+    PlaneTurn, // a plane's turn waypoints (the arcs between lanes and the run-ins, no photo): it
+               // turns beyond the lane ends on arcs of at least its turn radius
 };
 
 // The waypoints outside the area for one reason.

@@ -175,6 +175,12 @@ void ProblemsPanel::addOutsideItem(int route, const QString& name, const mission
     case OutsideReason::Unknown:
         text = tr("%1: %n waypoint(s) outside the area (up to %2 m).", nullptr, n).arg(name, far);
         break;
+    case OutsideReason::PlaneTurn:
+        text = tr("%1: %n turn waypoint(s) outside the area (up to %2 m): the plane turns beyond the "
+                  "lane ends on arcs of at least its turn radius, without photos.",
+                  nullptr, n)
+                   .arg(name, far);
+        break;
     case OutsideReason::Transit:
         text = g.atHomeOnly ? tr("%1: %n transit waypoint(s) at home, %2 m outside the area: the "
                                  "flight comes back there "

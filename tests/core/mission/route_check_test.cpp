@@ -175,6 +175,32 @@ TEST(RouteCheck, WaypointsOutsideTheAreaAreGroupedByWhatTheirPhotosSee) {
     EXPECT_EQ(low.outsideGroup(OutsideReason::CoversBoundary)->waypoints, (std::vector<int>{1}));
 }
 
+// A plane's turn waypoints outside the area are its arcs beyond the lane ends: a reason of their
+// own, never "photos that see nothing" (it takes none there); a multirotor's turn waypoints are
+// judged by what a photo there would see, as before.
+TEST(RouteCheck, APlanesTurnsOutsideTheAreaAreTheirOwnReason) {
+    Site s;
+    s.m.aircraft[0].camera.sensorWidthMm = 40.0;
+    s.m.aircraft[0].camera.sensorHeightMm = 30.0;
+    s.m.aircraft[0].camera.focalLengthMm = 40.0;
+    s.m.aircraft[0].camera.imageWidthPx = 4000;
+    s.m.aircraft[0].camera.imageHeightPx = 3000;
+    auto r = s.route({{-80, -80}, {-80, 130}, {-60, 150}, {-40, 130}, {-40, -80}});
+    for (int i : {1, 2, 3})
+        r.waypoints[std::size_t(i)].kind = route::WaypointKind::Turn;
+    const auto copter = s.check(r);
+    ASSERT_NE(copter.outsideGroup(OutsideReason::SeesNothing), nullptr);
+    EXPECT_EQ(copter.outsideGroup(OutsideReason::PlaneTurn), nullptr);
+    s.m.aircraft[0].kind = fleet::AircraftKind::FixedWing;
+    const auto plane = s.check(r);
+    EXPECT_EQ(plane.outsideGroup(OutsideReason::SeesNothing), nullptr);
+    const auto* turns = plane.outsideGroup(OutsideReason::PlaneTurn);
+    ASSERT_NE(turns, nullptr);
+    EXPECT_EQ(turns->waypoints, (std::vector<int>{1, 2, 3}));
+    EXPECT_EQ(turns->farthest, 2);
+    EXPECT_NEAR(turns->farthestM, 50.0, 0.05);
+}
+
 TEST(RouteCheck, RouteErrorsLabelsEveryRoute) {
     Site s;
     auto a = s.route({{-80, -80}, {0, 0}});
