@@ -2,11 +2,9 @@
 
 #include "core/io/mission_file.h"
 #include "ui/autosave.h"
-#include "ui/commands/set_home_command.h"
 #include "ui/dialogs/export_dialog.h"
 #include "ui/geo_adapter.h"
 #include "ui/ground_station.h"
-#include "ui/help/help_menu.h"
 #include "ui/map/base_maps.h"
 #include "ui/map/hillshade_layer.h"
 #include "ui/map/map_view.h"
@@ -34,22 +32,17 @@
 #include "ui/tools/pan_tool.h"
 #include "ui/tools/select_tool.h"
 #include "ui/tools/waypoint_tool.h"
-#include "ui/vehicle/upload_dialog.h"
 #include "ui/window_shortcut_guard.h"
 
 #include <QAction>
-#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QEventLoop>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QGraphicsScene>
-#include <QInputDialog>
 #include <QLabel>
-#include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QScrollArea>
@@ -167,178 +160,6 @@ AbstractTool* MainWindow::tool(ToolId id) const { return m_tools.at(id); }
 void MainWindow::setTool(ToolId id) {
     m_view->setTool(m_tools.at(id));
     if (auto it = m_toolActions.find(id); it != m_toolActions.end()) it->second->setChecked(true);
-}
-
-void MainWindow::buildActions() {
-    auto icon = [](const char* name) { return QIcon(QStringLiteral(":/icons/%1.svg").arg(QLatin1String(name))); };
-    auto* undo = m_doc->undoStack()->createUndoAction(this, tr("&Undo"));
-    undo->setShortcut(QKeySequence::Undo);
-    undo->setIcon(icon("undo"));
-    auto* redo = m_doc->undoStack()->createRedoAction(this, tr("&Redo"));
-    redo->setShortcut(QKeySequence::Redo);
-    redo->setIcon(icon("redo"));
-
-    // File
-    QMenu* file = menuBar()->addMenu(tr("&File"));
-    auto* newAct = file->addAction(icon("new"), tr("&New mission"), m_files, &MissionFiles::askNewMission);
-    newAct->setShortcut(QKeySequence::New);
-    auto* openAct = file->addAction(icon("open"), tr("&Open mission…"), m_files, &MissionFiles::askOpenMission);
-    openAct->setShortcut(QKeySequence::Open);
-    m_recentMenu = file->addMenu(tr("Open &recent"));
-    connect(m_recentMenu, &QMenu::aboutToShow, this, [this] { m_files->fillRecentMenu(m_recentMenu); });
-    file->addAction(tr("Open &demo mission"), m_files, &MissionFiles::askOpenDemoMission);
-    file->addSeparator();
-    auto* saveAct = file->addAction(icon("save"), tr("&Save"), m_files, &MissionFiles::save);
-    saveAct->setShortcut(QKeySequence::Save);
-    file->addAction(tr("Save &as…"), m_files, &MissionFiles::saveAs)->setShortcut(QKeySequence::SaveAs);
-    file->addSeparator();
-    auto* importAct = file->addAction(icon("import"), tr("&Import area or no-fly zones…"), m_files,
-                                      &MissionFiles::askImportAreas);
-    importAct->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
-    m_afterImport = file->addSeparator(); // Export waypoints goes before it (buildPlanning)
-    // Mosaic (issue 19): the dialog, the map layer and the dock live in ui/mosaic/.
-    m_mosaic = new MosaicController(this, m_view, m_scene, m_planner, &m_catalog);
-    file->addAction(icon("map"), tr("Build &mosaic from photos…"), m_mosaic, &MosaicController::showDialog);
-    // Terrain following (issue 18): the DEM, follow or off, the clearance, the profile dock (ui/terrain/).
-    m_terrain = new TerrainController(this, m_doc, m_planner, m_interactive);
-    connect(m_view, &MapView::demDropped, m_terrain, &TerrainController::useDem);
-    file->addMenu(m_terrain->menu());
-    file->addSeparator();
-    auto* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
-    quit->setShortcut(QKeySequence::Quit);
-
-    // Edit
-    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-    edit->addAction(undo);
-    edit->addAction(redo);
-    edit->addSeparator();
-    auto* del = edit->addAction(icon("remove"), tr("&Delete selected vertex or shape"), this, [this] {
-        if (m_view->tool() == m_tools.at(ToolId::Waypoints))
-            static_cast<WaypointTool*>(m_tools.at(ToolId::Waypoints))->deleteSelection();
-        else
-            static_cast<SelectTool*>(m_tools.at(ToolId::Select))->deleteSelection();
-    });
-    del->setShortcut(QKeySequence::Delete);
-    del->setShortcutContext(Qt::WidgetWithChildrenShortcut); // the map only: spin boxes keep Delete
-    m_view->addAction(del);
-    edit->addAction(tr("Clear &home point"), this, [this] {
-        if (m_doc->mission().home) m_doc->undoStack()->push(new SetHomeCommand(m_doc, std::nullopt));
-    });
-
-    // Tools
-    QMenu* toolsMenu = menuBar()->addMenu(tr("&Tools"));
-    auto* toolGroup = new QActionGroup(this);
-    const ToolId order[] = {ToolId::Pan,       ToolId::Select,     ToolId::DrawArea,
-                            ToolId::DrawNoFly, ToolId::DrawCircle, ToolId::DrawCorridor,
-                            ToolId::Home,      ToolId::Waypoints};
-    for (ToolId id : order) {
-        AbstractTool* t = m_tools.at(id);
-        auto* a = toolsMenu->addAction(t->icon(), t->name());
-        a->setCheckable(true);
-        a->setShortcut(t->shortcut());
-        a->setToolTip(QStringLiteral("%1 (%2)").arg(t->name(), t->shortcut().toString(QKeySequence::NativeText)));
-        a->setStatusTip(t->hint());
-        toolGroup->addAction(a);
-        connect(a, &QAction::triggered, this, [this, id] { setTool(id); });
-        m_toolActions[id] = a;
-    }
-
-    // View
-    m_viewMenu = menuBar()->addMenu(tr("&View"));
-    auto* zin = m_viewMenu->addAction(icon("zoom_in"), tr("Zoom &in"), this, [this] { m_view->zoomBy(1.5); });
-    zin->setShortcut(QKeySequence::ZoomIn);
-    auto* zout = m_viewMenu->addAction(icon("zoom_out"), tr("Zoom &out"), this, [this] { m_view->zoomBy(1 / 1.5); });
-    zout->setShortcut(QKeySequence::ZoomOut);
-    auto* zfit = m_viewMenu->addAction(icon("zoom_fit"), tr("Zoom to &mission"), this, &MainWindow::zoomToMission);
-    zfit->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_0));
-    auto* grat = m_viewMenu->addAction(tr("&Graticule"));
-    grat->setCheckable(true);
-    grat->setChecked(true);
-    connect(grat, &QAction::toggled, m_view, &MapView::setGraticuleVisible);
-    QMenu* baseMenu = m_viewMenu->addMenu(icon("map"), tr("&Base map"));
-    m_baseMapGroup = new QActionGroup(this);
-    auto addBase = [&](const QString& id, const QString& text) {
-        auto* a = baseMenu->addAction(text);
-        a->setCheckable(true);
-        m_baseMapGroup->addAction(a);
-        m_baseMapActions[id] = a;
-        connect(a, &QAction::triggered, this, [this, id] {
-            QString error;
-            if (!setBaseMap(id, &error)) showError(tr("Base map"), error);
-        });
-    };
-    addBase(QStringLiteral("demo"), tr("Demo map (synthetic, offline)"));
-    addBase(QStringLiteral("osm"), tr("OpenStreetMap (online, cached)"));
-    addBase(QStringLiteral("none"), tr("No base map"));
-    baseMenu->addSeparator();
-    baseMenu->addAction(tr("Open map file (GeoTIFF, MBTiles, VRT)…"), this, [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Open map"), QString(),
-                                                          tr("Maps (*.tif *.tiff *.mbtiles *.vrt *.jp2);;All files (*)"));
-        QString error;
-        if (!path.isEmpty() && !setBaseMap(path, &error)) showError(tr("Base map"), error);
-    });
-    m_viewMenu->addSeparator();
-
-    // Ground station
-    QMenu* gs = menuBar()->addMenu(tr("&Ground station"));
-    gs->addAction(tr("Replay NMEA &log…"), this, [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("NMEA log"), QString(), tr("NMEA (*.nmea *.log *.txt);;All files (*)"));
-        QString error;
-        if (!path.isEmpty() && !m_ground->openNmeaFile(path, &error)) showError(tr("Ground station"), error);
-    });
-    gs->addAction(tr("Read GNSS &receiver…"), this, [this] {
-        bool ok = false;
-        const QString dev = QInputDialog::getText(this, tr("GNSS receiver"), tr("NMEA device (e.g. /dev/ttyACM0):"),
-                                                  QLineEdit::Normal, QStringLiteral("/dev/ttyACM0"), &ok);
-        QString error;
-        if (ok && !dev.isEmpty() && !m_ground->openNmeaDevice(dev, &error)) showError(tr("Ground station"), error);
-    });
-    auto* centreMe = gs->addAction(icon("locate"), tr("&Centre on me"), this, [this] {
-        if (auto p = m_ground->position())
-            m_view->centreOn(*p);
-        else
-            statusBar()->showMessage(tr("No ground-station position yet: replay an NMEA log or connect a receiver."), 5000);
-    });
-    centreMe->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
-    gs->addAction(tr("&Stop"), m_ground, &GroundStation::stop);
-    // Vehicles: the mission upload over MAVLink (ui/vehicle).
-    gs->addSeparator();
-    auto* uploadAct = gs->addAction(icon("export"), tr("Connect and &Upload…"), this, [this] {
-        if (m_doc->routes().empty()) {
-            showError(tr("Connect and Upload"), tr("Nothing to upload yet: plan the mission first (F5)."));
-            return;
-        }
-        UploadDialog dialog(m_doc, this, &m_sortiesSent);
-        dialog.exec();
-    });
-    uploadAct->setObjectName(QStringLiteral("ConnectAndUploadAction"));
-
-    // Help: the user guide, the keyboard shortcuts, What's this and About (ui/help/).
-    addHelpMenu(this);
-
-    // Tool bars
-    QToolBar* main = addToolBar(tr("Main"));
-    main->setObjectName(QStringLiteral("MainToolBar"));
-    main->setIconSize(QSize(22, 22));
-    main->addAction(newAct);
-    main->addAction(openAct);
-    main->addAction(saveAct);
-    main->addAction(importAct);
-    main->addSeparator();
-    main->addAction(undo);
-    main->addAction(redo);
-    QToolBar* tools = addToolBar(tr("Tools"));
-    tools->setObjectName(QStringLiteral("ToolsToolBar"));
-    tools->setIconSize(QSize(22, 22));
-    for (ToolId id : order) tools->addAction(m_toolActions[id]);
-    tools->addAction(del);
-    QToolBar* view = addToolBar(tr("View"));
-    view->setObjectName(QStringLiteral("ViewToolBar"));
-    view->setIconSize(QSize(22, 22));
-    view->addAction(zin);
-    view->addAction(zout);
-    view->addAction(zfit);
-    view->addAction(centreMe);
 }
 
 void MainWindow::buildDocks() {

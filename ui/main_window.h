@@ -98,7 +98,17 @@ protected:
     void closeEvent(QCloseEvent* e) override;
 
 private:
+    // The menus and tool bars (main_window_actions.cpp): a builder per menu, in menu bar order.
+    struct BarActions;
     void buildActions();
+    void buildUndoRedoActions(BarActions& bar);
+    void buildFileMenu(BarActions& bar);
+    void buildEditMenu(BarActions& bar);
+    void buildToolsMenu();
+    void buildViewMenu(BarActions& bar);
+    void buildBaseMapMenu();
+    void buildGroundStationMenu(BarActions& bar);
+    void buildToolBars(const BarActions& bar);
     void buildDocks();
     // A dock (object name `name`) holding `widget`, added to `area`.
     QDockWidget* addDock(const QString& title, const QString& name, QWidget* widget, Qt::DockWidgetArea area);

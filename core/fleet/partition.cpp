@@ -37,165 +37,250 @@ std::vector<int> largestRemainder(const std::vector<double>& w, int total) {
     return t;
 }
 
-// Grows one subarea per aircraft in `fleet` over the connected piece `piece`, then places the
-// leftovers and redistributes to `targets` (indexed by aircraft).
-void partitionPiece(const grid::Grid& g, const std::vector<int>& piece, const std::vector<int>& fleet,
-                    const std::vector<int>& targets, CellAssignment& as) {
-    std::vector<std::uint8_t> inPiece(static_cast<std::size_t>(g.cellCount()), 0);
-    for (int c : piece)
-        inPiece[static_cast<std::size_t>(c)] = 1;
-    auto isFree = [&](int c) { return inPiece[static_cast<std::size_t>(c)] && as.owner(c) < 0; };
+// The connected piece being partitioned: its cells, which cells belong to it, and the assignment
+// its subareas are grown in.
+struct PieceState {
+    PieceState(const grid::Grid& grid, const std::vector<int>& pieceCells,
+               CellAssignment& assignment)
+        : g(grid), cells(pieceCells), inPiece(static_cast<std::size_t>(grid.cellCount()), 0),
+          as(assignment) {
+        for (int c : cells)
+            inPiece[static_cast<std::size_t>(c)] = 1;
+    }
+    bool contains(int c) const { return inPiece[static_cast<std::size_t>(c)] != 0; }
+    bool isFree(int c) const { return contains(c) && as.owner(c) < 0; }
 
-    // Sweep start: the far end of a double BFS sweep over the piece.
-    auto farthest = [&](const std::vector<int>& dist) {
-        int best = -1;
-        for (int c : piece)
-            if (dist[static_cast<std::size_t>(c)] >= 0 &&
-                (best < 0 || dist[static_cast<std::size_t>(c)] > dist[static_cast<std::size_t>(best)]))
-                best = c;
-        return best;
+    const grid::Grid& g;
+    const std::vector<int>& cells;
+    std::vector<std::uint8_t> inPiece;
+    CellAssignment& as;
+};
+
+// The piece's cell furthest by `dist` (ties: the first in the piece); -1 if none is reached.
+int farthestCell(const PieceState& piece, const std::vector<int>& dist) {
+    int best = -1;
+    for (int c : piece.cells)
+        if (dist[static_cast<std::size_t>(c)] >= 0 &&
+            (best < 0 || dist[static_cast<std::size_t>(c)] > dist[static_cast<std::size_t>(best)]))
+            best = c;
+    return best;
+}
+
+// Move counts over the piece from the sweep's start, the far end of a double BFS sweep: the
+// subareas are seeded and grown in this order.
+std::vector<int> sweepDistances(const PieceState& piece) {
+    const auto isFree = [&](int c) { return piece.isFree(c); };
+    const int sweepStart =
+        farthestCell(piece, moveDistances(piece.g, {piece.cells.front()}, isFree));
+    return moveDistances(piece.g, {sweepStart}, [&](int c) { return piece.contains(c); });
+}
+
+// The free cell nearest the sweep's start (ties: lowest index); -1 when none is left.
+int seedCell(const PieceState& piece, const std::vector<int>& fromStart) {
+    int seed = -1;
+    for (int c : piece.cells)
+        if (piece.isFree(c) && (seed < 0 || fromStart[static_cast<std::size_t>(c)] <
+                                                fromStart[static_cast<std::size_t>(seed)]))
+            seed = c;
+    return seed;
+}
+
+// Sides of c that are walls to the growth: no move that way, or no free cell behind it.
+int walls(const PieceState& piece, int c) {
+    int w = 0;
+    for (int d = 0; d < 4; ++d)
+        if (!piece.g.canMove(c, grid::kDirs[d]) ||
+            !piece.isFree(piece.g.neighbour(c, grid::kDirs[d])))
+            ++w;
+    return w;
+}
+
+// Grows aircraft k's subarea from a seed to `target` cells, the most enclosed free cell first.
+// False when no free cell is left to seed it.
+bool growSubarea(PieceState& piece, int k, int target, const std::vector<int>& fromStart) {
+    const grid::Grid& g = piece.g;
+    const int seed = seedCell(piece, fromStart);
+    if (seed < 0)
+        return false;
+    // Priority: most neighbours in the subarea, most walls, nearest the sweep start, lowest index.
+    using Key = std::tuple<int, int, int, int>;
+    std::priority_queue<Key> frontier;
+    auto push = [&](int c) {
+        frontier.emplace(piece.as.neighboursIn(c, k), walls(piece, c),
+                         -fromStart[static_cast<std::size_t>(c)], -c);
     };
-    const int sweepStart = farthest(moveDistances(g, {piece.front()}, isFree));
-    const auto fromStart = moveDistances(g, {sweepStart}, [&](int c) { return inPiece[static_cast<std::size_t>(c)] != 0; });
-
-    for (int k : fleet) {
-        const int target = targets[static_cast<std::size_t>(k)];
-        // Seed: the free cell nearest the sweep's start (ties: lowest index).
-        int seed = -1;
-        for (int c : piece)
-            if (isFree(c) && (seed < 0 || fromStart[static_cast<std::size_t>(c)] < fromStart[static_cast<std::size_t>(seed)]))
-                seed = c;
-        if (seed < 0)
-            break;
-        // Priority: most neighbours in the subarea, most walls, nearest the sweep start, lowest index.
-        using Key = std::tuple<int, int, int, int>;
-        std::priority_queue<Key> frontier;
-        auto walls = [&](int c) {
-            int w = 0;
-            for (int d = 0; d < 4; ++d)
-                if (!g.canMove(c, grid::kDirs[d]) || !isFree(g.neighbour(c, grid::kDirs[d])))
-                    ++w;
-            return w;
-        };
-        auto push = [&](int c) {
-            frontier.emplace(as.neighboursIn(c, k), walls(c), -fromStart[static_cast<std::size_t>(c)], -c);
-        };
-        as.assign(seed, k);
-        int grown = 1;
-        for (int d = 0; d < 4; ++d)
-            if (g.canMove(seed, grid::kDirs[d]) && isFree(g.neighbour(seed, grid::kDirs[d])))
-                push(g.neighbour(seed, grid::kDirs[d]));
-        while (grown < target && !frontier.empty()) {
-            const auto [nIn, nWalls, negDist, negC] = frontier.top();
-            frontier.pop();
-            const int c = -negC;
-            if (!isFree(c) || nIn != as.neighboursIn(c, k) || nWalls != walls(c))
-                continue; // stale entry: a fresher one is queued
-            as.assign(c, k);
-            ++grown;
-            for (int d = 0; d < 4; ++d) {
-                if (!g.canMove(c, grid::kDirs[d]))
-                    continue;
-                const int n = g.neighbour(c, grid::kDirs[d]);
-                if (isFree(n))
-                    push(n); // its counts changed: queue it afresh (walls count direct neighbours only)
-            }
+    piece.as.assign(seed, k);
+    int grown = 1;
+    for (int d = 0; d < 4; ++d)
+        if (g.canMove(seed, grid::kDirs[d]) && piece.isFree(g.neighbour(seed, grid::kDirs[d])))
+            push(g.neighbour(seed, grid::kDirs[d]));
+    while (grown < target && !frontier.empty()) {
+        const auto [nIn, nWalls, negDist, negC] = frontier.top();
+        frontier.pop();
+        const int c = -negC;
+        if (!piece.isFree(c) || nIn != piece.as.neighboursIn(c, k) || nWalls != walls(piece, c))
+            continue; // stale entry: a fresher one is queued
+        piece.as.assign(c, k);
+        ++grown;
+        for (int d = 0; d < 4; ++d) {
+            if (!g.canMove(c, grid::kDirs[d]))
+                continue;
+            const int n = g.neighbour(c, grid::kDirs[d]);
+            if (piece.isFree(n))
+                push(n); // its counts changed: queue it afresh (walls count direct neighbours only)
         }
     }
+    return true;
+}
 
-    // Leftovers (paper fig. 9): each free piece joins the adjacent subarea furthest below target.
-    for (int c : piece) {
-        if (!isFree(c))
+// The subarea a free piece `left` joins: the adjacent one furthest below its target (ties: the
+// most shared edges).
+int leftoverOwner(const PieceState& piece, const std::vector<int>& left,
+                  const std::vector<int>& fleet, const std::vector<int>& targets) {
+    const grid::Grid& g = piece.g;
+    int bestK = -1;
+    double bestDeficit = -std::numeric_limits<double>::infinity();
+    int bestShared = -1;
+    std::vector<int> shared(static_cast<std::size_t>(piece.as.aircraft()), 0);
+    for (int x : left)
+        for (int d = 0; d < 4; ++d)
+            if (g.canMove(x, grid::kDirs[d])) {
+                const int o = piece.as.owner(g.neighbour(x, grid::kDirs[d]));
+                if (o >= 0)
+                    ++shared[static_cast<std::size_t>(o)];
+            }
+    for (int k : fleet) {
+        if (shared[static_cast<std::size_t>(k)] == 0)
             continue;
-        const auto dist = moveDistances(g, {c}, isFree);
+        const double deficit = targets[static_cast<std::size_t>(k)] - piece.as.size(k);
+        if (deficit > bestDeficit ||
+            (deficit == bestDeficit && shared[static_cast<std::size_t>(k)] > bestShared)) {
+            bestK = k;
+            bestDeficit = deficit;
+            bestShared = shared[static_cast<std::size_t>(k)];
+        }
+    }
+    if (bestK < 0)
+        bestK = fleet.front(); // nothing grown here (cannot happen with a non-empty fleet)
+    return bestK;
+}
+
+// Leftovers (paper fig. 9): each free piece joins the adjacent subarea furthest below target.
+void placeLeftovers(PieceState& piece, const std::vector<int>& fleet,
+                    const std::vector<int>& targets) {
+    for (int c : piece.cells) {
+        if (!piece.isFree(c))
+            continue;
+        const auto dist = moveDistances(piece.g, {c}, [&](int x) { return piece.isFree(x); });
         std::vector<int> left;
-        for (int x : piece)
+        for (int x : piece.cells)
             if (dist[static_cast<std::size_t>(x)] >= 0)
                 left.push_back(x);
-        int bestK = -1;
-        double bestDeficit = -std::numeric_limits<double>::infinity();
-        int bestShared = -1;
-        std::vector<int> shared(static_cast<std::size_t>(as.aircraft()), 0);
+        const int k = leftoverOwner(piece, left, fleet, targets);
         for (int x : left)
-            for (int d = 0; d < 4; ++d)
-                if (g.canMove(x, grid::kDirs[d])) {
-                    const int o = as.owner(g.neighbour(x, grid::kDirs[d]));
-                    if (o >= 0)
-                        ++shared[static_cast<std::size_t>(o)];
-                }
-        for (int k : fleet) {
-            if (shared[static_cast<std::size_t>(k)] == 0)
-                continue;
-            const double deficit = targets[static_cast<std::size_t>(k)] - as.size(k);
-            if (deficit > bestDeficit || (deficit == bestDeficit && shared[static_cast<std::size_t>(k)] > bestShared)) {
-                bestK = k;
-                bestDeficit = deficit;
-                bestShared = shared[static_cast<std::size_t>(k)];
-            }
-        }
-        if (bestK < 0)
-            bestK = fleet.front(); // nothing grown here (cannot happen with a non-empty fleet)
-        for (int x : left)
-            as.assign(x, bestK);
+            piece.as.assign(x, k);
     }
+}
 
-    // Redistribution to the targets (paper fig. 9), along chains of adjacent subareas.
+// The subarea furthest over its target and not blocked; -1 when none is.
+int mostOverTarget(const CellAssignment& as, const std::vector<int>& fleet,
+                   const std::vector<int>& targets, const std::set<std::pair<int, int>>& blocked) {
+    int over = -1;
+    for (int k : fleet)
+        if (as.size(k) > targets[static_cast<std::size_t>(k)] &&
+            (over < 0 || as.size(k) - targets[static_cast<std::size_t>(k)] >
+                             as.size(over) - targets[static_cast<std::size_t>(over)]) &&
+            !blocked.count({k, -1}))
+            over = k;
+    return over;
+}
+
+// BFS over subareas from `over` to the nearest one below target, avoiding blocked edges: that
+// subarea (-1 if none) and, in `prev`, the chain back to `over`.
+int nearestUnderTarget(const CellAssignment& as, const std::vector<int>& fleet,
+                       const std::vector<int>& targets,
+                       const std::set<std::pair<int, int>>& blocked, int over,
+                       std::vector<int>& prev) {
+    const auto adj = as.adjacency();
+    prev.assign(static_cast<std::size_t>(as.aircraft()), -2);
+    std::deque<int> q{over};
+    prev[static_cast<std::size_t>(over)] = -1;
+    int under = -1;
+    while (!q.empty() && under < 0) {
+        const int a = q.front();
+        q.pop_front();
+        for (int b : fleet) {
+            if (prev[static_cast<std::size_t>(b)] != -2 ||
+                adj[static_cast<std::size_t>(a)][static_cast<std::size_t>(b)] == 0 ||
+                blocked.count({a, b}))
+                continue;
+            prev[static_cast<std::size_t>(b)] = a;
+            if (as.size(b) < targets[static_cast<std::size_t>(b)]) {
+                under = b;
+                break;
+            }
+            q.push_back(b);
+        }
+    }
+    return under;
+}
+
+// Moves cells along each edge of the chain from `over` to `under`, from the receiving end
+// backwards, so that the subareas in between end up with as many cells as before. Counts the cells
+// moved in `moves`; false (the edge blocked) if an edge moved none.
+bool moveAlongChain(CellAssignment& as, const std::vector<int>& targets, int over, int under,
+                    const std::vector<int>& prev, std::set<std::pair<int, int>>& blocked,
+                    int& moves) {
+    int amount = std::min(as.size(over) - targets[static_cast<std::size_t>(over)],
+                          targets[static_cast<std::size_t>(under)] - as.size(under));
+    bool stuck = false;
+    for (int b = under; prev[static_cast<std::size_t>(b)] >= 0 && !stuck;
+         b = prev[static_cast<std::size_t>(b)]) {
+        const int a = prev[static_cast<std::size_t>(b)];
+        const int done = static_cast<int>(as.transfer(a, b, amount).size());
+        moves += done;
+        if (done == 0) {
+            blocked.insert({a, b});
+            stuck = true;
+        }
+        amount = done;
+    }
+    return !stuck;
+}
+
+// Redistribution to the targets (paper fig. 9), along chains of adjacent subareas.
+void redistribute(CellAssignment& as, int pieceSize, const std::vector<int>& fleet,
+                  const std::vector<int>& targets) {
     std::set<std::pair<int, int>> blocked;
-    const int maxMoves = 4 * static_cast<int>(piece.size()) + 16;
+    const int maxMoves = 4 * pieceSize + 16;
     for (int moves = 0, rounds = 0; moves < maxMoves && rounds < maxMoves && !stopRequested();
          ++rounds) {
-        int over = -1;
-        for (int k : fleet)
-            if (as.size(k) > targets[static_cast<std::size_t>(k)] &&
-                (over < 0 || as.size(k) - targets[static_cast<std::size_t>(k)] >
-                                 as.size(over) - targets[static_cast<std::size_t>(over)]) &&
-                !blocked.count({k, -1}))
-                over = k;
+        const int over = mostOverTarget(as, fleet, targets, blocked);
         if (over < 0)
             break;
-        const auto adj = as.adjacency();
-        // BFS over subareas from `over` to the nearest one below target, avoiding blocked edges.
-        std::vector<int> prev(static_cast<std::size_t>(as.aircraft()), -2);
-        std::deque<int> q{over};
-        prev[static_cast<std::size_t>(over)] = -1;
-        int under = -1;
-        while (!q.empty() && under < 0) {
-            const int a = q.front();
-            q.pop_front();
-            for (int b : fleet) {
-                if (prev[static_cast<std::size_t>(b)] != -2 || adj[static_cast<std::size_t>(a)][static_cast<std::size_t>(b)] == 0 ||
-                    blocked.count({a, b}))
-                    continue;
-                prev[static_cast<std::size_t>(b)] = a;
-                if (as.size(b) < targets[static_cast<std::size_t>(b)]) {
-                    under = b;
-                    break;
-                }
-                q.push_back(b);
-            }
-        }
+        std::vector<int> prev;
+        const int under = nearestUnderTarget(as, fleet, targets, blocked, over, prev);
         if (under < 0) {
             blocked.insert({over, -1});
             continue;
         }
-        // Move cells along each edge of the chain, from the receiving end backwards, so that the
-        // subareas in between end up with as many cells as before.
-        int amount = std::min(as.size(over) - targets[static_cast<std::size_t>(over)],
-                              targets[static_cast<std::size_t>(under)] - as.size(under));
-        bool stuck = false;
-        for (int b = under; prev[static_cast<std::size_t>(b)] >= 0 && !stuck; b = prev[static_cast<std::size_t>(b)]) {
-            const int a = prev[static_cast<std::size_t>(b)];
-            const int done = static_cast<int>(as.transfer(a, b, amount).size());
-            moves += done;
-            if (done == 0) {
-                blocked.insert({a, b});
-                stuck = true;
-            }
-            amount = done;
-        }
-        if (!stuck)
+        if (moveAlongChain(as, targets, over, under, prev, blocked, moves))
             blocked.clear();
     }
+}
+
+// Grows one subarea per aircraft in `fleet` over the connected piece `piece`, then places the
+// leftovers and redistributes to `targets` (indexed by aircraft).
+void partitionPiece(const grid::Grid& g, const std::vector<int>& piece,
+                    const std::vector<int>& fleet, const std::vector<int>& targets,
+                    CellAssignment& as) {
+    PieceState state(g, piece, as);
+    const auto fromStart = sweepDistances(state);
+    for (int k : fleet)
+        if (!growSubarea(state, k, targets[static_cast<std::size_t>(k)], fromStart))
+            break;
+    placeLeftovers(state, fleet, targets);
+    redistribute(as, static_cast<int>(piece.size()), fleet, targets);
 }
 
 } // namespace
