@@ -83,8 +83,11 @@ void FlightTimeAccumulator::add(const geo::Vec2& p, double altitudeM) {
         const double cross = m_prevDir.x() * dir.y() - m_prevDir.y() * dir.x();
         const double theta = std::atan2(std::fabs(cross), m_prevDir.dot(dir)) * 180.0 / M_PI;
         m_t.turnAngleDeg += theta;
-        if (theta > kTurnThresholdDeg)
+        // A plane's arc is sampled as many vertices turning one after the other: one turn.
+        const bool turning = theta > kTurnThresholdDeg;
+        if (turning && !(m_model.fixedWing() && m_turning))
             ++m_t.turns;
+        m_turning = turning;
         if (isStopCorner(theta, m_model)) {
             ++m_t.stops;
             m_t.turnS += m_model.turnRateDegS > 0 ? theta / m_model.turnRateDegS : 0.0;

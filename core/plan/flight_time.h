@@ -90,7 +90,8 @@ struct FlightTime {
     double stopS = 0.0;        // stops x (V / a + hold) + V / a for a flight with at least one leg
     double lengthM = 0.0;      // S
     double turnAngleDeg = 0.0; // all heading changes
-    int turns = 0;             // heading changes above kTurnThresholdDeg
+    int turns = 0; // heading changes above kTurnThresholdDeg (a fixed-wing: each run of them, one
+                   // arc sampled as many vertices, counts once)
     int stops = 0;             // stop corners (isStopCorner)
 };
 
@@ -135,6 +136,7 @@ private:
     geo::Vec2 m_last{0, 0};
     double m_lastZ = 0.0;
     geo::Vec2 m_prevDir{0, 0}; // unit direction of the last non-empty leg, zero before it
+    bool m_turning = false;    // the last vertex turned by more than kTurnThresholdDeg
 };
 
 } // namespace pf::plan

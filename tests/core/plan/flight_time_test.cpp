@@ -151,6 +151,20 @@ TEST(FlightTime, FixedWingByHand) {
                 std::hypot(100.0, 50.0) / 10.0 + 5.0, 1e-9);
 }
 
+// A plane's U-turn is one arc sampled as many vertices: one turn, two with a straight between two
+// arcs; a multirotor flying the same polyline turns at each vertex.
+TEST(FlightTime, APlanesArcIsOneTurn) {
+    std::vector<Vec2> p{Vec2(0, 0), Vec2(100, 0)};
+    for (int a = 20; a <= 180; a += 20) // a half circle of radius 20 m, to the left
+        p.emplace_back(100 + 20 * std::sin(a * M_PI / 180), 20 - 20 * std::cos(a * M_PI / 180));
+    p.emplace_back(50, 40); // the lane back: its photo waypoints are straight ahead
+    p.emplace_back(0, 40);
+    EXPECT_EQ(flightTime(p, plane(15, 5, 5)).turns, 1);
+    EXPECT_EQ(flightTime(p, model(10, 60, 2)).turns, 10);
+    p.emplace_back(-20, 60); // a second corner at the lane's end
+    EXPECT_EQ(flightTime(p, plane(15, 5, 5)).turns, 2);
+}
+
 // The accumulator and the polyline function agree.
 TEST(FlightTime, AccumulatorMatchesPolyline) {
     const std::vector<Vec2> p{Vec2(0, 0), Vec2(50, 0), Vec2(50, 30), Vec2(0, 30), Vec2(0, 60), Vec2(80, 75)};
