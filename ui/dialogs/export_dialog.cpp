@@ -1,6 +1,7 @@
 #include "ui/dialogs/export_dialog.h"
 
 #include "core/mission/route_check.h"
+#include "ui/dialogs/landing_heading_box.h"
 #include "ui/mission_document.h"
 #include "ui/planning/plan_controller.h"
 
@@ -109,17 +110,7 @@ ExportDialog::ExportDialog(MissionDocument* doc, PlanController* planner, const 
     form->addRow(tr("Gimbal (.plan, .waypoints):"), m_gimbal);
     form->addRow(tr("Photos (.plan, .waypoints):"), m_trigger);
     form->addRow(tr("Home elevation above sea level:"), m_homeElevation);
-    m_landingHeading = new QDoubleSpinBox;
-    m_landingHeading->setObjectName(QStringLiteral("ExportLandingHeading"));
-    m_landingHeading->setRange(-1, 359);
-    m_landingHeading->setDecimals(0);
-    m_landingHeading->setSuffix(tr("°"));
-    m_landingHeading->setSpecialValueText(tr("along the first lane"));
-    m_landingHeading->setValue(-1);
-    m_landingHeading->setToolTip(
-        tr("The direction a fixed-wing or VTOL aircraft lands towards, degrees from north: into the "
-           "wind, towards where it blows from. Along the first lane: turned in 15° steps until the "
-           "400 m approach keeps the no-fly margins."));
+    m_landingHeading = makeLandingHeadingBox(QStringLiteral("ExportLandingHeading"));
     form->addRow(tr("Plane landing heading:"), m_landingHeading);
 
     m_report = new QPlainTextEdit;
@@ -175,8 +166,7 @@ ExportRequest ExportDialog::request() const {
     r.options.trigger = io::CameraTrigger(m_trigger->currentData().toInt());
     if (m_homeElevation->value() > m_homeElevation->minimum())
         r.options.homeElevationM = m_homeElevation->value();
-    if (m_landingHeading->value() > m_landingHeading->minimum())
-        r.options.landingHeadingDeg = m_landingHeading->value();
+    r.options.landingHeadingDeg = landingHeadingOf(m_landingHeading);
     return r;
 }
 

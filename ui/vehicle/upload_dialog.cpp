@@ -3,6 +3,7 @@
 #include "core/io/export_context.h"
 #include "core/io/mission_export.h"
 #include "core/mavlink/connection_spec.h"
+#include "ui/dialogs/landing_heading_box.h"
 #include "ui/mission_document.h"
 #include "ui/vehicle/upload_manager.h"
 #include "ui/vehicle/vehicle_upload.h"
@@ -203,16 +204,7 @@ QGroupBox* UploadDialog::buildOptions() {
     form->addRow(tr("Photos:"), m_trigger);
     form->addRow(tr("After the last waypoint:"), m_end);
     // A plane's landing direction: the wind changes from flight to flight, so it is not remembered.
-    m_landingHeading = new QDoubleSpinBox;
-    m_landingHeading->setObjectName(QStringLiteral("UploadLandingHeading"));
-    m_landingHeading->setRange(-1, 359);
-    m_landingHeading->setDecimals(0);
-    m_landingHeading->setSuffix(tr("°"));
-    m_landingHeading->setSpecialValueText(tr("along the first lane"));
-    m_landingHeading->setValue(-1);
-    m_landingHeading->setToolTip(
-        tr("The direction a fixed-wing or VTOL aircraft lands towards, degrees from north: into the "
-           "wind, towards where it blows from."));
+    m_landingHeading = makeLandingHeadingBox(QStringLiteral("UploadLandingHeading"));
     form->addRow(tr("Plane landing heading:"), m_landingHeading);
     return options;
 }
@@ -290,8 +282,7 @@ io::ExportOptions UploadDialog::exportOptions() const {
     o.gimbal = io::GimbalCommand(m_gimbal->currentData().toInt());
     o.trigger = io::CameraTrigger(m_trigger->currentData().toInt());
     o.end = io::MissionEnd(m_end->currentData().toInt());
-    if (m_landingHeading->value() > m_landingHeading->minimum())
-        o.landingHeadingDeg = m_landingHeading->value();
+    o.landingHeadingDeg = landingHeadingOf(m_landingHeading);
     return o;
 }
 

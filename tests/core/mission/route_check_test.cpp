@@ -33,6 +33,15 @@ struct Site {
         return r;
     }
     RouteCheck check(const route::Route& r) const { return checkRoute(r, routeLimits(m, r)); }
+    // A camera of 40 x 30 mm behind 40 mm: at 40 m a footprint of 40 x 30 m.
+    void giveCamera() {
+        sensor::Camera& c = m.aircraft[0].camera;
+        c.sensorWidthMm = 40.0;
+        c.sensorHeightMm = 30.0;
+        c.focalLengthMm = 40.0;
+        c.imageWidthPx = 4000;
+        c.imageHeightPx = 3000;
+    }
 };
 
 } // namespace
@@ -131,11 +140,7 @@ TEST(RouteCheck, AWaypointOnTheBoundaryIsInside) {
 // it is listed apart, and so are the transit waypoints, whose legs take no photo.
 TEST(RouteCheck, WaypointsOutsideTheAreaAreGroupedByWhatTheirPhotosSee) {
     Site s;
-    s.m.aircraft[0].camera.sensorWidthMm = 40.0;
-    s.m.aircraft[0].camera.sensorHeightMm = 30.0;
-    s.m.aircraft[0].camera.focalLengthMm = 40.0;
-    s.m.aircraft[0].camera.imageWidthPx = 4000;
-    s.m.aircraft[0].camera.imageHeightPx = 3000;
+    s.giveCamera();
     s.m.home = s.frame.toGeo(geo::Vec2{-130, -100});
     auto r = s.route({{-80, -80},  // inside
                       {-109, -80}, // 9 m out, within half the short side: sees the area
@@ -180,11 +185,7 @@ TEST(RouteCheck, WaypointsOutsideTheAreaAreGroupedByWhatTheirPhotosSee) {
 // judged by what a photo there would see, as before.
 TEST(RouteCheck, APlanesTurnsOutsideTheAreaAreTheirOwnReason) {
     Site s;
-    s.m.aircraft[0].camera.sensorWidthMm = 40.0;
-    s.m.aircraft[0].camera.sensorHeightMm = 30.0;
-    s.m.aircraft[0].camera.focalLengthMm = 40.0;
-    s.m.aircraft[0].camera.imageWidthPx = 4000;
-    s.m.aircraft[0].camera.imageHeightPx = 3000;
+    s.giveCamera();
     auto r = s.route({{-80, -80}, {-80, 130}, {-60, 150}, {-40, 130}, {-40, -80}});
     for (int i : {1, 2, 3})
         r.waypoints[std::size_t(i)].kind = route::WaypointKind::Turn;
