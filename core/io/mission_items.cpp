@@ -206,6 +206,22 @@ Result<double> planeLandingHeadingDeg(const ExportContext& ctx, std::size_t rout
                          "landing point away from the zones");
 }
 
+Result<std::vector<geo::LonLat>> planeLandingLeg(const ExportContext& ctx, std::size_t routeIndex,
+                                                 const ExportOptions& options) {
+    const fleet::AircraftKind kind = ctx.kindFor(routeIndex);
+    const route::Route& r = ctx.routes[routeIndex];
+    if (!fleet::fliesAsPlane(kind) || r.waypoints.empty())
+        return std::vector<geo::LonLat>{};
+    const geo::LonLat landing =
+        ctx.landingFor(routeIndex).value_or(ctx.homeFor(routeIndex).value_or(r.waypoints.front().position));
+    if (kind == fleet::AircraftKind::Vtol)
+        return std::vector<geo::LonLat>{landing};
+    auto heading = planeLandingHeadingDeg(ctx, routeIndex, options);
+    if (!heading)
+        return heading.error();
+    return std::vector<geo::LonLat>{geo::geodesicDirect(landing, *heading + 180.0, kApproachDistanceM), landing};
+}
+
 int mavVehicleType(fleet::AircraftKind kind) {
     switch (kind) {
     case fleet::AircraftKind::FixedWing:

@@ -66,6 +66,11 @@ int mavVehicleType(fleet::AircraftKind kind);
 // user's heading does not, or no heading does. A VTOL descends vertically: its heading is not checked.
 Result<double> planeLandingHeadingDeg(const ExportContext& ctx, std::size_t routeIndex,
                                       const ExportOptions& options = {});
+// Where a plane of route `routeIndex` flies after its last waypoint, as its mission items fly it: a
+// fixed-wing the approach waypoint and the landing point, a VTOL the landing point; empty for a
+// multirotor (it returns home or lands as options.end says). Errors: planeLandingHeadingDeg's.
+Result<std::vector<geo::LonLat>> planeLandingLeg(const ExportContext& ctx, std::size_t routeIndex,
+                                                 const ExportOptions& options = {});
 
 // The route's mission: take-off at home, speed, gimbal straight down, the waypoints (a capture
 // after each photo, or with CameraTrigger::Distance only the lane ends with the trigger distance),

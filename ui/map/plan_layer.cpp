@@ -1,6 +1,7 @@
 #include "ui/map/plan_layer.h"
 
 #include "core/geo/local_frame.h"
+#include "core/io/mission_items.h"
 #include "core/mission/aircraft_naming.h"
 #include "core/mission/route_check.h"
 #include "core/route/route_sorties.h"
@@ -76,6 +77,7 @@ void RouteItem::setData(Data d) {
     QPolygonF all(m_d.points);
     if (m_d.home)
         all << *m_d.home;
+    all << m_d.landingLeg;
     m_bounds = all.boundingRect();
 }
 
@@ -114,7 +116,14 @@ void RouteItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*) {
         dash.setCosmetic(true);
         p->setPen(dash);
         p->drawLine(*m_d.home, pts.first());
-        p->drawLine(pts.last(), *m_d.home);
+        if (m_d.landingLeg.isEmpty())
+            p->drawLine(pts.last(), *m_d.home);
+    }
+    if (!m_d.landingLeg.isEmpty() && !pts.isEmpty()) {
+        QPen dash(c, 1.6, Qt::DashLine);
+        dash.setCosmetic(true);
+        p->setPen(dash);
+        p->drawPolyline(QPolygonF(QVector<QPointF>{pts.last()} + m_d.landingLeg));
     }
     // A light halo under the path keeps it readable on any base map.
     QPen halo(QColor(255, 255, 255, 170), 4.6, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin);
@@ -370,6 +379,15 @@ void PlanLayer::rebuildRoutes() {
         std::optional<geo::LonLat> home = pr.route.home ? pr.route.home : m.home;
         if (home)
             d.home = toScene(*home);
+        // A plane lands as its vehicle files make it land (the export's default heading).
+        if (auto leg = io::planeLandingLeg(io::makeExportContext(m, {pr.route}), 0); leg) {
+            for (const auto& q : *leg)
+                d.landingLeg << toScene(q);
+        } else {
+            m_problems << tr("%1, landing: %2")
+                              .arg(QString::fromStdString(pr.route.aircraft),
+                                   QString::fromStdString(leg.error().message));
+        }
         for (const auto& w : pr.route.waypoints) {
             d.points << toScene(w.position);
             d.photo << (w.kind == route::WaypointKind::Photo);

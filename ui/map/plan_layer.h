@@ -34,6 +34,8 @@ public:
         QVector<bool> photo;     // per point: a photo waypoint
         QVector<bool> transit;   // per point: a transit waypoint
         std::optional<QPointF> home;
+        // A plane's way down after the last point (its approach, its landing); empty: back home.
+        QVector<QPointF> landingLeg;
         QVector<bool> badPoint; // per point
         QVector<bool> badLeg;   // per leg i -> i + 1
         QVector<int>

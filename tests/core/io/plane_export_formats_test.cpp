@@ -219,3 +219,23 @@ TEST(PlaneExport, LandingHeadingIsTheUsersOrKeepsTheMargins) {
               std::string::npos)
         << refused.error().message;
 }
+
+// The way down that the map draws is the one the mission items fly: a fixed-wing's approach
+// waypoint and landing point, a VTOL's landing point, nothing for a multirotor.
+TEST(PlaneExport, LandingLegIsWhatTheItemsFly) {
+    const ExportContext wing = contextFor(fleet::AircraftKind::FixedWing);
+    auto leg = planeLandingLeg(wing, 0);
+    ASSERT_TRUE(leg) << leg.error().message;
+    ASSERT_EQ(leg->size(), 2u);
+    auto items = missionItems(wing, 0);
+    ASSERT_TRUE(items);
+    const auto [approach, land] = approachAndLand(*items);
+    EXPECT_LT(geo::geodesicDistance((*leg)[0], approach), 0.01);
+    EXPECT_LT(geo::geodesicDistance((*leg)[1], geo::LonLat{land.params[5], land.params[4]}), 0.01);
+    auto vtol = planeLandingLeg(contextFor(fleet::AircraftKind::Vtol), 0);
+    ASSERT_TRUE(vtol);
+    EXPECT_EQ(vtol->size(), 1u);
+    auto copter = planeLandingLeg(contextFor(fleet::AircraftKind::Multirotor), 0);
+    ASSERT_TRUE(copter);
+    EXPECT_TRUE(copter->empty());
+}

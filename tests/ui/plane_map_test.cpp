@@ -1,0 +1,71 @@
+// A plane on the map and in the statistics, as the operator meets it: its landing drawn the way its
+// vehicle files fly it (the approach, then the landing point), its Turns counted once per arc and
+// explained in a tooltip. Offscreen, through the real widgets.
+#include "core/geo/geodesic.h"
+#include "core/io/mission_items.h"
+#include "ui/commands/edit_aircraft_command.h"
+#include "ui/map/plan_layer.h"
+#include "ui/mission_document.h"
+#include "ui/panels/aircraft_panel.h"
+#include "ui/panels/statistics_panel.h"
+#include "ui/planning/plan_controller.h"
+#include "ui_test_util.h"
+
+#include <QTableWidget>
+#include <QUndoStack>
+
+#include <gtest/gtest.h>
+
+using namespace pf;
+using namespace pf::ui;
+
+TEST(PlaneOnTheMap, LandingApproachIsDrawnAndTurnsAreExplained) {
+    auto w = test::makeWindow();
+    w->planController()->setAutoPlan(false);
+    QString error;
+    ASSERT_TRUE(w->openDemoMission(&error)) << error.toStdString();
+    MissionDocument* doc = w->document();
+    w->aircraftPanel()->setCurrent(1);
+    w->aircraftPanel()->removeCurrent();
+    ASSERT_EQ(doc->mission().aircraft.size(), 1u);
+    auto wing = doc->mission().aircraft[0];
+    wing.kind = fleet::AircraftKind::FixedWing;
+    wing.altitudeM = 80.0;
+    wing.gsdCm.reset();
+    wing.cruiseSpeedMps = 13.0;
+    wing.plane.maxBankDeg = 45.0;
+    doc->undoStack()->push(new EditAircraftCommand(doc, 0, wing, QStringLiteral("kind")));
+    w->planNow();
+    ASSERT_TRUE(w->planController()->waitForIdle(120000));
+
+    // The way down: the approach waypoint 400 m out, then the landing point (home here).
+    ASSERT_EQ(w->planLayer()->routeItems().size(), 1u);
+    const auto& d = w->planLayer()->routeItems()[0]->data();
+    ASSERT_EQ(d.landingLeg.size(), 2);
+    ASSERT_TRUE(d.home.has_value());
+    EXPECT_NEAR(test::metresBetween(fromScene(d.landingLeg[1]), fromScene(*d.home)), 0.0, 0.5);
+    EXPECT_NEAR(test::metresBetween(fromScene(d.landingLeg[0]), fromScene(d.landingLeg[1])),
+                io::kApproachDistanceM, 1.0);
+
+    // Turns: one per arc (far fewer than the arcs' sampled vertices), with the tooltip saying why.
+    const QTableWidget* stats = w->statisticsPanel()->statistics();
+    const int turns = stats->item(0, StatisticsPanel::Turns)->text().toInt();
+    int turnWaypoints = 0;
+    for (const auto& r : doc->routes())
+        for (const auto& p : r.route.waypoints)
+            turnWaypoints += p.kind == route::WaypointKind::Turn ? 1 : 0;
+    EXPECT_GT(turns, 0);
+    EXPECT_LT(turns * 2, turnWaypoints);
+    EXPECT_TRUE(stats->item(0, StatisticsPanel::Turns)->toolTip().contains(QStringLiteral("Turn arcs and run-ins")))
+        << stats->item(0, StatisticsPanel::Turns)->toolTip().toStdString();
+
+    // Back to a multirotor: no approach, the flight returns home.
+    wing.kind = fleet::AircraftKind::Multirotor;
+    doc->undoStack()->push(new EditAircraftCommand(doc, 0, wing, QStringLiteral("kind")));
+    w->planNow();
+    ASSERT_TRUE(w->planController()->waitForIdle(120000));
+    EXPECT_TRUE(w->planLayer()->routeItems()[0]->data().landingLeg.isEmpty());
+    EXPECT_TRUE(w->statisticsPanel()->statistics()->item(0, StatisticsPanel::Turns)->toolTip().isEmpty() ||
+                !w->statisticsPanel()->statistics()->item(0, StatisticsPanel::Turns)->toolTip().contains(
+                    QStringLiteral("Turn arcs")));
+}
