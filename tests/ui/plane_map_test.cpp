@@ -3,6 +3,7 @@
 // explained in a tooltip. Offscreen, through the real widgets.
 #include "core/geo/geodesic.h"
 #include "core/io/mission_items.h"
+#include "core/mission/planner_kinds.h"
 #include "ui/commands/edit_aircraft_command.h"
 #include "ui/map/plan_layer.h"
 #include "ui/mission_document.h"
@@ -11,6 +12,7 @@
 #include "ui/planning/plan_controller.h"
 #include "ui_test_util.h"
 
+#include <QPushButton>
 #include <QTableWidget>
 #include <QUndoStack>
 
@@ -58,6 +60,23 @@ TEST(PlaneOnTheMap, LandingApproachIsDrawnAndTurnsAreExplained) {
     EXPECT_LT(turns * 2, turnWaypoints);
     EXPECT_TRUE(stats->item(0, StatisticsPanel::Turns)->toolTip().contains(QStringLiteral("Turn arcs and run-ins")))
         << stats->item(0, StatisticsPanel::Turns)->toolTip().toStdString();
+
+    // Compare planners: the sweep plans the plane; a grid planner says why it cannot, across the
+    // figure columns, and is not offered.
+    w->planController()->compare();
+    ASSERT_TRUE(w->planController()->waitForIdle(180000));
+    StatisticsPanel* panel = w->statisticsPanel();
+    EXPECT_TRUE(panel->useButton(mission::PlannerKind::Sweep)->isEnabled());
+    QPushButton* stride = panel->useButton(mission::PlannerKind::Stride);
+    EXPECT_FALSE(stride->isEnabled());
+    EXPECT_TRUE(stride->toolTip().contains(QStringLiteral("cannot plan for a plane"))) << stride->toolTip().toStdString();
+    const QTableWidget* cmp = panel->comparison();
+    int strideRow = -1;
+    for (int r = 0; r < cmp->rowCount(); ++r)
+        if (cmp->item(r, StatisticsPanel::Planner)->text() == QStringLiteral("Stride"))
+            strideRow = r;
+    ASSERT_GE(strideRow, 0);
+    EXPECT_EQ(cmp->columnSpan(strideRow, StatisticsPanel::CPhotos), StatisticsPanel::CUse - StatisticsPanel::CPhotos);
 
     // Back to a multirotor: no approach, the flight returns home.
     wing.kind = fleet::AircraftKind::Multirotor;

@@ -490,12 +490,23 @@ void StatisticsPanel::refreshComparison() {
         if (!row || !row->ok) {
             const QString text = row ? row->error : m_planner->isComparing() ? tr("…") : QString();
             auto* msg = cell(text, Qt::AlignLeft | Qt::AlignVCenter);
-            msg->setToolTip(text);
+            msg->setToolTip(QStringLiteral("<p>%1</p>").arg(text.toHtmlEscaped())); // wrapped
+            // Across the figure columns, elided, without widening them: a long refusal ("… cannot
+            // plan for a plane …") would push the figures of the other rows out of sight.
+            msg->setData(Qt::SizeHintRole, QSize(36, 22));
             m_compare->setItem(r, CPhotos, msg);
             for (int c = CKm; c < CUse; ++c)
                 m_compare->setItem(r, c, cell(QString()));
+            if (m_compare->columnSpan(r, CPhotos) != CUse - CPhotos)
+                m_compare->setSpan(r, CPhotos, 1, CUse - CPhotos);
+            if (row && !inUse) { // a planner that could not plan this mission is not offered
+                use->setEnabled(false);
+                use->setToolTip(QStringLiteral("<p>%1</p>").arg(text.toHtmlEscaped()));
+            }
             continue;
         }
+        if (m_compare->columnSpan(r, CPhotos) != 1)
+            m_compare->setSpan(r, CPhotos, 1, 1);
         const auto& t = row->totals;
         const QStringList values = {QString::number(t.photos),
                                     QString::number(t.pathLengthM / 1000.0, 'f', 2),
