@@ -34,7 +34,7 @@ fi
 
 cleanup() { DEBIAN_FRONTEND=noninteractive $SUDO apt-get remove -y photoflight >/dev/null || true; }
 trap cleanup EXIT
-DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y "./$deb"
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y "$(realpath "$deb")" # apt needs a path, absolute or ./
 
 out=$(mktemp -d)
 fail() { echo "check-deb: FAILED: $*" >&2; exit 1; }
