@@ -9,6 +9,7 @@
 #include "core/io/waypoint_formats.h"
 #include "core/mission/route_check.h"
 
+#include <algorithm>
 #include <iostream>
 
 namespace pf::cli {
@@ -69,13 +70,21 @@ Status addCatalogAircraft(io::ExportContext& ctx, const std::optional<std::strin
     for (std::size_t i = 0; i < ctx.routes.size(); ++i) {
         auto& r = ctx.routes[i];
         const fleet::AircraftSpec* spec = chosen ? chosen : cat->findAircraft(r.aircraft);
-        if (!spec || ctx.aircraftFor(i))
+        if (!spec)
             continue;
-        if (r.aircraft.empty())
-            r.aircraft = spec->name;
+        // The file may have named the kind only (a plane's .plan): the catalog's aircraft replaces it.
+        const auto given = std::find_if(ctx.mission.aircraft.begin(), ctx.mission.aircraft.end(),
+                                        [&](const mission::AircraftConfig& a) { return a.name == r.aircraft; });
+        if (given != ctx.mission.aircraft.end() && given->camera.imageWidthPx > 0)
+            continue; // a whole aircraft already
         mission::AircraftConfig a = mission::aircraftFromCatalog(*spec, cat->findCamera(spec->defaultCamera));
+        if (r.aircraft.empty() && given == ctx.mission.aircraft.end())
+            r.aircraft = spec->name;
         a.name = r.aircraft;
-        ctx.mission.aircraft.push_back(a);
+        if (given != ctx.mission.aircraft.end())
+            *given = a;
+        else
+            ctx.mission.aircraft.push_back(a);
     }
     return {};
 }

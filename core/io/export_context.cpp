@@ -115,6 +115,15 @@ ExportContext contextFromImport(const ImportedWaypoints& imported) {
     for (auto& r : ctx.routes)
         if (!r.home)
             r.home = imported.home;
+    for (std::size_t i = 0; i < ctx.routes.size() && i < imported.kinds.size(); ++i) {
+        if (!imported.kinds[i] || !fleet::fliesAsPlane(*imported.kinds[i]) || ctx.aircraftFor(i))
+            continue;
+        mission::AircraftConfig a;
+        a.name = ctx.routes[i].aircraft;
+        a.kind = *imported.kinds[i];
+        a.cruiseSpeedMps = ctx.routes[i].cruiseSpeedMps;
+        ctx.mission.aircraft.push_back(a);
+    }
     return ctx;
 }
 

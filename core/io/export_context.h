@@ -2,6 +2,7 @@
 // footprints), and what the importers give back for editing.
 #pragma once
 
+#include "core/fleet/aircraft.h"
 #include "core/geo/types.h"
 #include "core/mission/mission.h"
 #include "core/result.h"
@@ -114,9 +115,14 @@ struct ImportedWaypoints {
     std::vector<route::Route> routes;           // in file order, waypoints in flight order
     std::vector<mission::NoFlyZone> noFlyZones; // a .plan's exclusion polygons
     std::optional<geo::LonLat> home;            // planned home / take-off point if the file has one
+    // Per route, the kind of aircraft the file was written for when it says (a .plan's vehicleType,
+    // a plane's take-off and landing items); may be shorter than routes.
+    std::vector<std::optional<fleet::AircraftKind>> kinds;
 };
 
-// A context to write imported waypoints out again (the no-fly zones and home are kept).
+// A context to write imported waypoints out again (the no-fly zones and home are kept). A route the
+// file says a plane flies gets an aircraft of that kind (named as the route, at its speed), so that
+// it is written again with a plane's take-off and landing and refused by Litchi and .kmz.
 ExportContext contextFromImport(const ImportedWaypoints& imported);
 
 // The refusal of a format that cannot fly a plane (Litchi, DJI WPML: DJI multirotors only), naming

@@ -412,6 +412,17 @@ void expandTriggered(std::vector<route::Waypoint>& out, std::vector<bool>& photo
 
 } // namespace
 
+std::optional<fleet::AircraftKind> kindFromItems(const std::vector<MissionItem>& items) {
+    std::optional<fleet::AircraftKind> kind;
+    for (const auto& it : items) {
+        if (it.command == mav::kNavVtolTakeoff || it.command == mav::kNavVtolLand)
+            return fleet::AircraftKind::Vtol;
+        if (it.command == mav::kDoLandStart)
+            kind = fleet::AircraftKind::FixedWing;
+    }
+    return kind;
+}
+
 route::Route routeFromItems(const std::vector<MissionItem>& items) {
     route::Route r;
     std::vector<route::Waypoint> wps;

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace pf::io {
@@ -115,5 +116,8 @@ std::vector<double> cornerAnglesDeg(const std::vector<route::Waypoint>& waypoint
 // from DO_CHANGE_SPEED. Other items (take-off, gimbal, return, land, and a plane's landing sequence
 // from DO_LAND_START on) are dropped: they are made again on export.
 route::Route routeFromItems(const std::vector<MissionItem>& items);
+// The kind of aircraft a mission read back was written for, from the items only a plane's mission
+// holds: NAV_VTOL_TAKEOFF or NAV_VTOL_LAND a VTOL, DO_LAND_START a fixed-wing; nothing otherwise.
+std::optional<fleet::AircraftKind> kindFromItems(const std::vector<MissionItem>& items);
 
 } // namespace pf::io

@@ -11,6 +11,17 @@ namespace pf::io {
 
 namespace {
 
+// The kind of aircraft a .plan was written for: its vehicleType (MAV_TYPE: 1 fixed wing, 19 to 25
+// VTOL as QGroundControl reads them), else what its items say (kindFromItems).
+std::optional<fleet::AircraftKind> planKind(const CPLJSONObject& mission, const std::vector<MissionItem>& items) {
+    const int type = mission.GetInteger("vehicleType", 0);
+    if (type == 1)
+        return fleet::AircraftKind::FixedWing;
+    if (type >= 19 && type <= 25)
+        return fleet::AircraftKind::Vtol;
+    return kindFromItems(items);
+}
+
 using detail::parseJson;
 
 CPLJSONArray numbers(std::initializer_list<double> values) {
@@ -290,6 +301,7 @@ public:
         }
         route::Route r = routeFromItems(parsed);
         r.home = out.home;
+        out.kinds.push_back(planKind(*mission, parsed));
         if (!speedItem)
             r.cruiseSpeedMps = mission->GetDouble("cruiseSpeed", r.cruiseSpeedMps);
         out.routes.push_back(std::move(r));

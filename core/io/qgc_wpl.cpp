@@ -153,6 +153,7 @@ Result<ImportedWaypoints> parseQgcWpl(const std::string& text, const std::string
     route::Route r = routeFromItems(items);
     r.home = out.home;
     out.routes.push_back(std::move(r));
+    out.kinds.push_back(kindFromItems(items));
     return out;
 }
 

@@ -49,6 +49,30 @@ TEST(CliPlane, LandingHeadingIsWrittenAndChecked) {
                    "--landing-heading: expected degrees from north, from 0 to less than 360");
 }
 
+// A plane's file read back stays a plane's: converted to the other MAVLink format it keeps the
+// vehicle type, the take-off and the landing sequence, and Litchi still refuses it.
+TEST(CliPlane, ConvertKeepsAPlanesKind) {
+    const auto dir = std::filesystem::path(testing::TempDir()) / "pf_cli_plane_convert";
+    std::filesystem::remove_all(dir);
+    const CliRun r = cli("plan " + area() + " --aircraft 'senseFly eBee X' --gsd 2.5 --home 8.3240,49.0226 --quiet " +
+                         "--format waypoints,plan --out '" + dir.string() + "'");
+    ASSERT_EQ(r.code, 0) << r.out << r.err;
+    const std::string wpl = (dir / "mission-senseFly_eBee_X.waypoints").string();
+    const std::string plan = (dir / "back.plan").string();
+    const CliRun c = cli("convert '" + wpl + "' '" + plan + "'");
+    ASSERT_EQ(c.code, 0) << c.out << c.err;
+    const std::string json = slurp(plan);
+    EXPECT_TRUE(has(json, "\"vehicleType\":1")) << json.substr(0, 400);
+    const std::string again = (dir / "again.waypoints").string();
+    const CliRun d = cli("convert '" + plan + "' '" + again + "'");
+    ASSERT_EQ(d.code, 0) << d.out << d.err;
+    const std::string back = slurp(again);
+    EXPECT_TRUE(has(back, "\n1\t0\t3\t22\t15\t")) << back.substr(0, 300); // NAV_TAKEOFF, pitch 15
+    EXPECT_TRUE(has(back, "\t189\t"));                                     // DO_LAND_START
+    expectBadInput("convert '" + plan + "' '" + (dir / "wing.csv").string() + "'",
+                   "is a fixed-wing aircraft: Litchi missions are flown by DJI multirotors only");
+}
+
 TEST(CliPlane, LitchiAndGridPlannersRefuseAPlane) {
     const auto dir = std::filesystem::path(testing::TempDir()) / "pf_cli_plane_refused";
     expectBadInput("plan " + area() + " --aircraft 'DeltaQuad Pro' --gsd 1.2 --format csv --out '" + dir.string() + "'",
