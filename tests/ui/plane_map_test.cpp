@@ -5,6 +5,7 @@
 #include "core/io/mission_items.h"
 #include "core/mission/planner_kinds.h"
 #include "ui/commands/edit_aircraft_command.h"
+#include "ui/dialogs/export_dialog.h"
 #include "ui/map/plan_layer.h"
 #include "ui/mission_document.h"
 #include "ui/panels/aircraft_panel.h"
@@ -12,6 +13,9 @@
 #include "ui/planning/plan_controller.h"
 #include "ui_test_util.h"
 
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QLabel>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QUndoStack>
@@ -77,6 +81,17 @@ TEST(PlaneOnTheMap, LandingApproachIsDrawnAndTurnsAreExplained) {
             strideRow = r;
     ASSERT_GE(strideRow, 0);
     EXPECT_EQ(cmp->columnSpan(strideRow, StatisticsPanel::CPhotos), StatisticsPanel::CUse - StatisticsPanel::CPhotos);
+
+    // The Export dialog: the heading typed is the one exported; the note says what a plane ignores.
+    ExportDialog dialog(doc, w->planController(), QDir::tempPath());
+    auto* heading = dialog.findChild<QDoubleSpinBox*>(QStringLiteral("ExportLandingHeading"));
+    ASSERT_NE(heading, nullptr);
+    EXPECT_FALSE(dialog.request().options.landingHeadingDeg.has_value()); // along the first lane
+    heading->setValue(250);
+    EXPECT_EQ(dialog.request().options.landingHeadingDeg, 250.0);
+    auto* note = dialog.findChild<QLabel*>(QStringLiteral("PlaneOptionsNote"));
+    ASSERT_NE(note, nullptr);
+    EXPECT_TRUE(note->text().contains(QStringLiteral("photos by distance along each lane")));
 
     // Back to a multirotor: no approach, the flight returns home.
     wing.kind = fleet::AircraftKind::Multirotor;

@@ -112,6 +112,7 @@ ExportDialog::ExportDialog(MissionDocument* doc, PlanController* planner, const 
     form->addRow(tr("Home elevation above sea level:"), m_homeElevation);
     m_landingHeading = makeLandingHeadingBox(QStringLiteral("ExportLandingHeading"));
     form->addRow(tr("Plane landing heading:"), m_landingHeading);
+    form->addRow(QString(), makePlaneOptionsNote());
 
     m_report = new QPlainTextEdit;
     m_report->setReadOnly(true);

@@ -2,6 +2,7 @@
 
 #include <QCoreApplication>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QString>
 
 namespace pf::ui {
@@ -19,6 +20,19 @@ QDoubleSpinBox* makeLandingHeadingBox(const QString& objectName) {
                        "north: into the wind, towards where it blows from. Along the first lane: "
                        "turned in 15° steps until the 400 m approach keeps the no-fly margins."));
     return box;
+}
+
+QLabel* makePlaneOptionsNote() {
+    auto* note = new QLabel(QCoreApplication::translate(
+        "LandingHeading",
+        "Planes (fixed-wing, VTOL): photos by distance along each lane, and their own landing."));
+    note->setToolTip(QCoreApplication::translate(
+        "LandingHeading", "A plane cannot stop for a photo or hover home: its mission triggers the "
+                          "camera by distance on each lane and ends with its landing sequence, "
+                          "whatever the photo and end options above say."));
+    note->setObjectName(QStringLiteral("PlaneOptionsNote"));
+    note->setEnabled(false); // greyed: a remark, not a setting
+    return note;
 }
 
 std::optional<double> landingHeadingOf(const QDoubleSpinBox* box) {

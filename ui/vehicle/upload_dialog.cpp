@@ -206,6 +206,7 @@ QGroupBox* UploadDialog::buildOptions() {
     // A plane's landing direction: the wind changes from flight to flight, so it is not remembered.
     m_landingHeading = makeLandingHeadingBox(QStringLiteral("UploadLandingHeading"));
     form->addRow(tr("Plane landing heading:"), m_landingHeading);
+    form->addRow(QString(), makePlaneOptionsNote());
     return options;
 }
 
