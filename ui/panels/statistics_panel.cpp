@@ -268,8 +268,7 @@ void StatisticsPanel::refreshStatistics() {
     if (!plan)
         return;
     const auto& mission = m_doc->mission();
-    int batteriesTotal = 0, photosTotal = 0, turnsTotal = 0;
-    double distanceTotal = 0.0, longestS = 0.0, planMsTotal = 0.0;
+    StatTotals total;
     for (std::size_t k = 0; k < plan->aircraft.size(); ++k) {
         const auto& ap = plan->aircraft[k];
         const int r = m_stats->rowCount();
@@ -338,15 +337,15 @@ void StatisticsPanel::refreshStatistics() {
             shownTimeS = std::max(0.0, timeS + (length - distanceM) / speed);
             shownDistanceM = length;
         }
-        batteriesTotal += batteries;
-        photosTotal += photos;
+        total.batteries += batteries;
+        total.photos += photos;
         // The flown route's turns (what the aircraft stops for), as the CLI shows them; the cell
         // path's count only where no route was made.
         const int turns = ap.flight.lengthM > 0 ? ap.flight.turns : ap.metrics.turns;
-        turnsTotal += turns;
-        distanceTotal += shownDistanceM;
-        longestS = std::max(longestS, shownTimeS);
-        planMsTotal += ap.metrics.planningMs;
+        total.turns += turns;
+        total.distanceM += shownDistanceM;
+        total.longestS = std::max(total.longestS, shownTimeS);
+        total.planMs += ap.metrics.planningMs;
         m_stats->setItem(r, Photos, cell(QString::number(photos)));
         m_stats->setItem(r, Km, cell(QString::number(shownDistanceM / 1000.0, 'f', 2)));
         m_stats->setItem(r, Time, cell(minutes(shownTimeS)));
@@ -361,29 +360,33 @@ void StatisticsPanel::refreshStatistics() {
         m_stats->setItem(r, Cover, coverCell(*plan, k));
         m_stats->setItem(r, PlanMs, cell(QString::number(ap.metrics.planningMs, 'f', 0)));
     }
-    const auto& t = plan->totals;
+    addTotalRow(*plan, total);
+}
+
+void StatisticsPanel::addTotalRow(const mission::MissionPlan& plan, const StatTotals& total) {
+    const auto& t = plan.totals;
     const int r = m_stats->rowCount();
     m_stats->insertRow(r);
     QFont bold = m_stats->font();
     bold.setBold(true);
     // Coverage in total: the core's independent check of the real footprints when it ran.
-    const double cov = plan->coverageRatio > 0 ? 100.0 * plan->coverageRatio
+    const double cov = plan.coverageRatio > 0 ? 100.0 * plan.coverageRatio
                        : t.visitable > 0       ? 100.0 * t.cells / t.visitable
                                                : 0.0;
-    const bool anything = photosTotal > 0 || distanceTotal > 0;
+    const bool anything = total.photos > 0 || total.distanceM > 0;
     // Never "100.0" beside ground that no photo sees.
-    const QString covText = plan->coverageRatio > 0
+    const QString covText = plan.coverageRatio > 0
                                 ? QString::fromStdString(mission::coveragePercentText(
-                                      plan->coverageRatio, plan->uncoveredAreaM2))
+                                      plan.coverageRatio, plan.uncoveredAreaM2))
                                 : QString::number(cov, 'f', 1);
     const QStringList values = {tr("Total"),
-                                anything ? QString::number(photosTotal) : kDash,
-                                anything ? QString::number(distanceTotal / 1000.0, 'f', 2) : kDash,
-                                anything ? minutes(longestS) : kDash,
-                                anything ? QString::number(turnsTotal) : kDash,
-                                anything ? QString::number(batteriesTotal) : kDash,
+                                anything ? QString::number(total.photos) : kDash,
+                                anything ? QString::number(total.distanceM / 1000.0, 'f', 2) : kDash,
+                                anything ? minutes(total.longestS) : kDash,
+                                anything ? QString::number(total.turns) : kDash,
+                                anything ? QString::number(total.batteries) : kDash,
                                 anything ? covText : kDash,
-                                QString::number(planMsTotal, 'f', 0)};
+                                QString::number(total.planMs, 'f', 0)};
     for (int c = 0; c < values.size(); ++c) {
         auto* item = cell(values[c], c == 0 ? Qt::AlignLeft | Qt::AlignVCenter
                                             : Qt::AlignRight | Qt::AlignVCenter);
@@ -393,9 +396,9 @@ void StatisticsPanel::refreshStatistics() {
     m_stats->item(r, Time)->setToolTip(tr("The longest aircraft's flight: they fly at the same time"));
     m_stats->item(r, Cover)->setToolTip(tr("Share of the area seen by the real footprints of all photos"));
     const double wallS = m_planner->lastWallMs() / 1000.0;
-    const double ownS = planMsTotal / 1000.0;
+    const double ownS = total.planMs / 1000.0;
     m_planTime->setText(
-        plan->aircraft.size() > 1
+        plan.aircraft.size() > 1
             ? tr("Planned in %1 s: %2 s for the aircraft's own parts (Plan ms), %3 s to share the area "
                  "between them and check the coverage.")
                   .arg(wallS, 0, 'f', 2)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/mission/mission.h"
+#include "core/mission/mission_plan.h"
 
 #include <QWidget>
 
@@ -40,7 +41,14 @@ public:
     enum CompareColumn { Planner, CPhotos, CKm, CTime, CTurns, CCover, CNoFly, CPlanMs, CUse, CompareColumns };
 
 private:
+    // The Plan page's figures summed over the aircraft rows, for the Total row.
+    struct StatTotals {
+        int batteries = 0, photos = 0, turns = 0;
+        double distanceM = 0.0, longestS = 0.0, planMs = 0.0;
+    };
     void refreshStatistics();
+    // The Total row and the planning-time line under the table.
+    void addTotalRow(const mission::MissionPlan& plan, const StatTotals& totals);
     void refreshState();
     void refreshComparison();
 
