@@ -130,25 +130,39 @@ double firstLaneHeadingDeg(const std::vector<route::Waypoint>& wps) {
     return wps.back().headingDeg;
 }
 
-// Whether a fixed-wing's way down towards `heading` keeps every no-fly zone's safety margin: the
+// Whether a fixed-wing's way down towards a heading keeps every no-fly zone's safety margin: the
 // leg from the last waypoint to the approach waypoint and the final approach from there to the
-// landing point (the checks' threshold, as the route check measures).
-bool approachKeepsMargins(const mission::Mission& m, const geo::LonLat& last, const geo::LonLat& landing,
-                          double heading) {
-    if (m.noFlyZones.empty())
-        return true;
-    auto frame = geo::LocalFrame::create(landing);
-    if (!frame)
-        return true; // a landing point the frame cannot hold is refused elsewhere
-    std::vector<geo::Polygon> zones;
-    for (const auto& z : m.noFlyZones)
-        zones.push_back(frame->toLocal(z.polygon));
-    const auto field = geo::NoFlyField::forCheck(std::move(zones), m.options.safetyMarginM);
-    const geo::LonLat approach = geo::geodesicDirect(landing, heading + 180.0, kApproachDistanceM);
-    const geo::Vec2 a = frame->toLocal(approach);
-    return field.segmentIsSafe(frame->toLocal(last), a) &&
-           field.segmentIsSafe(a, frame->toLocal(landing));
-}
+// landing point (the checks' threshold, as the route check measures). The zones are put in a frame
+// at the landing point once; each heading tried only measures its two legs.
+class ApproachCheck {
+public:
+    ApproachCheck(const mission::Mission& m, const geo::LonLat& last, const geo::LonLat& landing)
+        : m_landing(landing) {
+        auto frame = geo::LocalFrame::create(landing);
+        if (m.noFlyZones.empty() || !frame)
+            return; // no zone; or a landing point the frame cannot hold, refused elsewhere
+        std::vector<geo::Polygon> zones;
+        for (const auto& z : m.noFlyZones)
+            zones.push_back(frame->toLocal(z.polygon));
+        m_field.emplace(geo::NoFlyField::forCheck(std::move(zones), m.options.safetyMarginM));
+        m_last = frame->toLocal(last);
+        m_end = frame->toLocal(landing);
+        m_frame.emplace(std::move(*frame));
+    }
+    bool keepsMargins(double heading) const {
+        if (!m_field)
+            return true;
+        const geo::Vec2 a = m_frame->toLocal(geo::geodesicDirect(m_landing, heading + 180.0, kApproachDistanceM));
+        return m_field->segmentIsSafe(m_last, a) && m_field->segmentIsSafe(a, m_end);
+    }
+
+private:
+    geo::LonLat m_landing;
+    std::optional<geo::LocalFrame> m_frame;
+    std::optional<geo::NoFlyField> m_field;
+    geo::Vec2 m_last{0, 0}; // the last waypoint, local
+    geo::Vec2 m_end{0, 0};  // the landing point, local
+};
 
 // A plane's landing sequence. Fixed-wing: DO_LAND_START (its position, optional in the protocol,
 // set to the landing point so that an autopilot choosing the nearest landing sequence finds it),
@@ -180,10 +194,10 @@ Result<double> planeLandingHeadingDeg(const ExportContext& ctx, std::size_t rout
         return options.landingHeadingDeg.value_or(lane); // it descends vertically: no approach
     const geo::LonLat home = ctx.homeFor(routeIndex).value_or(r.waypoints.front().position);
     const geo::LonLat landing = ctx.landingFor(routeIndex).value_or(home);
-    const geo::LonLat last = r.waypoints.back().position;
+    const ApproachCheck check(ctx.mission, r.waypoints.back().position, landing);
     const auto name = [](double h) { return std::to_string(static_cast<int>(std::lround(h))); };
     if (options.landingHeadingDeg) {
-        if (approachKeepsMargins(ctx.mission, last, landing, *options.landingHeadingDeg))
+        if (check.keepsMargins(*options.landingHeadingDeg))
             return *options.landingHeadingDeg;
         return makeError(ErrorCode::InvalidInput,
                          ctx.routeLabel(routeIndex) + ": the landing approach towards " +
@@ -197,7 +211,7 @@ Result<double> planeLandingHeadingDeg(const ExportContext& ctx, std::size_t rout
     constexpr double kStep = 15.0;
     for (int k = 0; k * kStep <= 180.0; ++k)
         for (double h : {lane + k * kStep, lane - k * kStep})
-            if (approachKeepsMargins(ctx.mission, last, landing, std::fmod(h + 360.0, 360.0)))
+            if (check.keepsMargins(std::fmod(h + 360.0, 360.0)))
                 return std::fmod(h + 360.0, 360.0);
     return makeError(ErrorCode::InvalidInput,
                      ctx.routeLabel(routeIndex) +

@@ -1,5 +1,6 @@
 #include "ui/map/plan_layer.h"
 
+#include "core/fleet/aircraft.h"
 #include "core/geo/local_frame.h"
 #include "core/io/mission_items.h"
 #include "core/mission/aircraft_naming.h"
@@ -380,13 +381,17 @@ void PlanLayer::rebuildRoutes() {
         if (home)
             d.home = toScene(*home);
         // A plane lands as its vehicle files make it land (the export's default heading).
-        if (auto leg = io::planeLandingLeg(io::makeExportContext(m, {pr.route}), 0); leg) {
-            for (const auto& q : *leg)
+        const bool plane = std::any_of(m.aircraft.begin(), m.aircraft.end(), [&](const auto& a) {
+            return a.name == pr.route.aircraft && fleet::fliesAsPlane(a.kind);
+        });
+        if (plane) {
+            auto leg = io::planeLandingLeg(io::makeExportContext(m, {pr.route}), 0);
+            for (const auto& q : leg ? *leg : std::vector<geo::LonLat>{})
                 d.landingLeg << toScene(q);
-        } else {
-            m_problems << tr("%1, landing: %2")
-                              .arg(QString::fromStdString(pr.route.aircraft),
-                                   QString::fromStdString(leg.error().message));
+            if (!leg)
+                m_problems << tr("%1, landing: %2")
+                                  .arg(QString::fromStdString(pr.route.aircraft),
+                                       QString::fromStdString(leg.error().message));
         }
         for (const auto& w : pr.route.waypoints) {
             d.points << toScene(w.position);
