@@ -30,7 +30,8 @@ std::vector<OptionSpec> missionOptionSpecs() {
             {"safety-margin"}, {"max-cells"},
             {"dem"},           {"terrain"},
             {"min-clearance"}, {"corridor"},
-            {"width"},         {"double-grid", false}};
+            {"width"},         {"double-grid", false},
+            {"camera-tilt"}};
 }
 
 namespace {
@@ -310,8 +311,8 @@ Status overlapFromFlags(const Args& args, mission::Mission& m) {
     return {};
 }
 
-// Planner options and points: --planner, --grid-angle, --double-grid, --home, --safety-margin,
-// --max-cells.
+// Planner options and points: --planner, --grid-angle, --double-grid, --camera-tilt, --home,
+// --safety-margin, --max-cells.
 Status plannerFromFlags(const Args& args, mission::Mission& m) {
     if (auto p = args.value("planner")) {
         if (auto k = mission::plannerKindFromId(*p))
@@ -331,6 +332,12 @@ Status plannerFromFlags(const Args& args, mission::Mission& m) {
     }
     if (args.has("double-grid"))
         m.options.doubleGrid = true;
+    auto tilt = numberIn(args, "camera-tilt", 0, false, sensor::kMaxCameraTiltDeg, false,
+                         "between 0 (straight down) and 45 degrees forward");
+    if (!tilt)
+        return tilt.error();
+    if (tilt->has_value())
+        m.options.cameraTiltDeg = **tilt;
     if (auto h = args.value("home")) {
         auto p = parseLonLat(*h, "--home");
         if (!p)

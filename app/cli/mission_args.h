@@ -56,6 +56,8 @@
     "  --width M                    the corridor's full width in metres (lanes along its line)\n" \
     "  --double-grid                a second pass with lanes at 90° to the first (two views of every\n" \
     "                               point, for 3D models; ignored for a corridor)\n" \
+    "  --camera-tilt DEG            oblique photos: every camera tilted DEG (0-45) forward from straight\n" \
+    "                               down along the lanes (with --double-grid: four views, for 3D models)\n" \
     "  --camera NAME                a camera of the catalog, for every aircraft (see: photoflight-cli catalog)\n" \
     "  --hfov DEG --vfov DEG        a camera given by its fields of view across the long and the short side\n" \
     "  --altitude M                 flight altitude in metres, for every aircraft\n" \

@@ -40,6 +40,10 @@ fleet::AircraftKind ExportContext::kindFor(std::size_t i) const {
     return a ? a->kind : fleet::AircraftKind::Multirotor;
 }
 
+double ExportContext::gimbalPitchDeg(std::size_t i) const {
+    return fleet::fliesAsPlane(kindFor(i)) ? -90.0 : -90.0 + mission.options.cameraTiltDeg;
+}
+
 std::string planeFormatError(const ExportContext& ctx, std::size_t i, const std::string& format) {
     const fleet::AircraftKind k = ctx.kindFor(i);
     if (!fleet::fliesAsPlane(k))
@@ -71,7 +75,9 @@ ExportContext makeExportContext(const mission::Mission& mission, std::vector<rou
                         break;
                     }
             if (alt)
-                if (auto f = sensor::footprintAt(a->camera, *alt); f.ok())
+                // As the mission points the camera: an oblique photo's footprint lies ahead.
+                if (auto f = sensor::footprintAt(mission::pointedCamera(*a, ctx.mission.options), *alt);
+                    f.ok())
                     fp = *f;
         }
         ctx.footprints.push_back(fp);
@@ -111,6 +117,7 @@ ExportContext contextFromImport(const ImportedWaypoints& imported) {
     ExportContext ctx;
     ctx.mission.noFlyZones = imported.noFlyZones;
     ctx.mission.home = imported.home;
+    ctx.mission.options.cameraTiltDeg = imported.cameraTiltDeg.value_or(0.0);
     ctx.routes = imported.routes;
     for (auto& r : ctx.routes)
         if (!r.home)

@@ -99,6 +99,10 @@ struct ExportContext {
     std::optional<sensor::Footprint> footprintFor(std::size_t routeIndex) const;
     // The kind of the route's aircraft (a multirotor when the route has no aircraft, e.g. imported).
     fleet::AircraftKind kindFor(std::size_t routeIndex) const;
+    // The gimbal pitch the route's photos are taken at, in degrees (negative down, as MAVLink's
+    // gimbal commands and DJI's WPML count it): -90 straight down, -90 + the mission's camera tilt
+    // for oblique photos (PlannerOptions::cameraTiltDeg; a plane's camera always looks down).
+    double gimbalPitchDeg(std::size_t routeIndex) const;
 };
 
 // A context for a planned mission: footprints from each aircraft's camera at its altitude (set
@@ -118,9 +122,11 @@ struct ImportedWaypoints {
     // Per route, the kind of aircraft the file was written for when it says (a .plan's vehicleType,
     // a plane's take-off and landing items); may be shorter than routes.
     std::vector<std::optional<fleet::AircraftKind>> kinds;
+    // The camera tilt the file's gimbal command sets (a mission of oblique photos), when it says.
+    std::optional<double> cameraTiltDeg;
 };
 
-// A context to write imported waypoints out again (the no-fly zones and home are kept). A route the
+// A context to write imported waypoints out again (the no-fly zones, home and camera tilt are kept). A route the
 // file says a plane flies gets an aircraft of that kind (named as the route, at its speed), so that
 // it is written again with a plane's take-off and landing and refused by Litchi and .kmz.
 ExportContext contextFromImport(const ImportedWaypoints& imported);

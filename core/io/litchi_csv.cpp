@@ -60,6 +60,7 @@ Result<std::string> litchiCsvText(const ExportContext& ctx, std::size_t routeInd
     const geo::LonLat home = ctx.homeFor(routeIndex).value_or(r.waypoints.front().position);
     const std::vector<double> corners =
         cornerAnglesDeg(r.waypoints, home, ctx.landingFor(routeIndex).value_or(home));
+    const double pitch = ctx.gimbalPitchDeg(routeIndex);
     std::string out = litchiCsvHeader() + "\n";
     for (std::size_t i = 0; i < r.waypoints.size(); ++i) {
         const auto& w = r.waypoints[i];
@@ -69,7 +70,9 @@ Result<std::string> litchiCsvText(const ExportContext& ctx, std::size_t routeInd
                formatNumber(w.altitudeM, 4) + ',' +
                formatNumber(detail::normaliseHeading(w.headingDeg), 4) + ',' +
                formatNumber(curve, 3);
-        out += ",0,2,-90"; // rotation direction, gimbal mode interpolate, pitch straight down
+        // Rotation direction, gimbal mode interpolate, the pitch (-90 straight down; oblique photos:
+        // -90 + the tilt).
+        out += ",0,2," + formatNumber(pitch, 2);
         std::vector<std::pair<int, double>> actions;
         if (stop)
             actions.emplace_back(kStay, model.stopHoldS * 1000.0);

@@ -217,6 +217,8 @@ int requiredVersion(const mission::Mission& m) {
     }
     if (m.corridor || m.options.doubleGrid)
         v = std::max(v, 5);
+    if (m.options.cameraTiltDeg != 0.0)
+        v = std::max(v, 7);
     for (const auto& r : m.editedRoutes) {
         if (r.homeElevationM)
             v = std::max(v, 4);
@@ -303,6 +305,8 @@ std::string missionToJson(const mission::Mission& m) {
     planner.Add("max_cells", static_cast<GInt64>(m.options.maxCells));
     if (m.options.doubleGrid)
         planner.Add("double_grid", true);
+    if (m.options.cameraTiltDeg != 0.0)
+        planner.Add("camera_tilt_deg", jsonNumber(m.options.cameraTiltDeg));
     root.Add("planner", planner);
     if (!m.terrain.isDefault()) {
         CPLJSONObject t;

@@ -302,12 +302,16 @@ Result<std::vector<MissionItem>> missionItems(const ExportContext& ctx, std::siz
     // airspeed (param 1 = 0), the speed its autopilot holds (ArduPlane AIRSPEED_CRUISE, PX4
     // FW_AIRSPD_TRIM).
     items.push_back(action(mav::kDoChangeSpeed, {plane ? 0.0 : 1.0, r.cruiseSpeedMps, -1, 0, 0, 0, 0}));
+    // The pitch: -90 straight down, -90 + the tilt for oblique photos (MAV_CMD_DO_MOUNT_CONTROL param
+    // 1 and MAV_CMD_DO_GIMBAL_MANAGER_PITCHYAW param 1, in degrees, negative down). The camera then
+    // looks ahead along each lane, as the vehicle faces each waypoint's yaw (param 4).
+    const double pitch = ctx.gimbalPitchDeg(routeIndex);
     if (options.gimbal == GimbalCommand::MountControl)
-        // Pitch -90 (down), roll 0, yaw 0; param 7 = MAV_MOUNT_MODE_MAVLINK_TARGETING.
-        items.push_back(action(mav::kDoMountControl, {-90, 0, 0, 0, 0, 0, 2}));
+        // Roll 0, yaw 0 (ahead); param 7 = MAV_MOUNT_MODE_MAVLINK_TARGETING.
+        items.push_back(action(mav::kDoMountControl, {pitch, 0, 0, 0, 0, 0, 2}));
     else if (options.gimbal == GimbalCommand::GimbalManagerPitchYaw)
-        // Pitch -90, yaw 0 (ahead); rates not used; flags 0 (yaw follows the vehicle); primary gimbal.
-        items.push_back(action(mav::kDoGimbalManagerPitchYaw, {-90, 0, kNaN, kNaN, 0, 0, 0}));
+        // Yaw 0 (ahead); rates not used; flags 0 (yaw follows the vehicle); primary gimbal.
+        items.push_back(action(mav::kDoGimbalManagerPitchYaw, {pitch, 0, kNaN, kNaN, 0, 0, 0}));
 
     std::vector<TriggerLane> lanes;
     if (options.trigger == CameraTrigger::Distance || plane)
@@ -425,6 +429,18 @@ void expandTriggered(std::vector<route::Waypoint>& out, std::vector<bool>& photo
 }
 
 } // namespace
+
+std::optional<double> cameraTiltFromItems(const std::vector<MissionItem>& items) {
+    for (const auto& it : items) {
+        if (it.command != mav::kDoMountControl && it.command != mav::kDoGimbalManagerPitchYaw)
+            continue;
+        const double tilt = 90.0 + it.params[0]; // param 1: the pitch, negative down
+        if (std::isfinite(tilt) && tilt >= 0.0 && tilt <= sensor::kMaxCameraTiltDeg)
+            return tilt;
+        return std::nullopt;
+    }
+    return std::nullopt;
+}
 
 std::optional<fleet::AircraftKind> kindFromItems(const std::vector<MissionItem>& items) {
     std::optional<fleet::AircraftKind> kind;

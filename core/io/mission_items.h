@@ -119,5 +119,10 @@ route::Route routeFromItems(const std::vector<MissionItem>& items);
 // The kind of aircraft a mission read back was written for, from the items only a plane's mission
 // holds: NAV_VTOL_TAKEOFF or NAV_VTOL_LAND a VTOL, DO_LAND_START a fixed-wing; nothing otherwise.
 std::optional<fleet::AircraftKind> kindFromItems(const std::vector<MissionItem>& items);
+// The camera tilt a mission read back was written for (PlannerOptions::cameraTiltDeg), from the
+// pitch of its first DO_MOUNT_CONTROL or DO_GIMBAL_MANAGER_PITCHYAW: 90 + the pitch when it tilts the
+// camera forward within [0, sensor::kMaxCameraTiltDeg]; nothing without such an item or another
+// pitch.
+std::optional<double> cameraTiltFromItems(const std::vector<MissionItem>& items);
 
 } // namespace pf::io

@@ -145,10 +145,15 @@ public:
                  "a double grid needs version 5 of the mission file, but the file says "
                  "version " +
                      std::to_string(m_version));
+        opt.cameraTiltDeg = number(o, p, "camera_tilt_deg", 0.0);
+        if (!failed() && member(o, "camera_tilt_deg").IsValid() && m_version < 7)
+            fail("planner.camera_tilt_deg",
+                 "a camera tilt needs version 7 of the mission file, but the file says version " +
+                     std::to_string(m_version));
         checkKeys(o, p,
                   {"planner", "grid_angle_deg", "safety_margin_m", "keep_inside_area",
                    "inside_margin_m", "altitude_separation_m", "battery_reserve", "max_cells",
-                   "double_grid"});
+                   "double_grid", "camera_tilt_deg"});
         return opt;
     }
 

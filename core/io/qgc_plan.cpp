@@ -302,6 +302,7 @@ public:
         route::Route r = routeFromItems(parsed);
         r.home = out.home;
         out.kinds.push_back(planKind(*mission, parsed));
+        out.cameraTiltDeg = cameraTiltFromItems(parsed);
         if (!speedItem)
             r.cruiseSpeedMps = mission->GetDouble("cruiseSpeed", r.cruiseSpeedMps);
         out.routes.push_back(std::move(r));

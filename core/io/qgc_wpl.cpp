@@ -154,6 +154,7 @@ Result<ImportedWaypoints> parseQgcWpl(const std::string& text, const std::string
     r.home = out.home;
     out.routes.push_back(std::move(r));
     out.kinds.push_back(kindFromItems(items));
+    out.cameraTiltDeg = cameraTiltFromItems(items);
     return out;
 }
 

@@ -64,6 +64,7 @@ wpml::MissionSettings settingsFor(const ExportContext& ctx, std::size_t i,
     s.takeOffSecurityHeightM = std::clamp(first, kMinTakeOffSecurityM, kMaxTakeOffSecurityM);
     s.transitionalSpeedMps = w.speedMps;
     s.rthHeightM = std::clamp(w.highestAboveTakeOffM, kMinRthM, kMaxRthM);
+    s.gimbalPitchDeg = ctx.gimbalPitchDeg(i);
     return s;
 }
 

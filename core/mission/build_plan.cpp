@@ -6,6 +6,7 @@
 #include "core/geo/polygon_ops.h"
 #include "core/job_scope.h"
 #include "core/mission/double_grid.h"
+#include "core/mission/oblique.h"
 #include "core/mission/plan_messages.h"
 #include "core/mission/plan_region.h"
 #include "core/mission/planner_kinds.h"
@@ -16,6 +17,7 @@
 #include "core/route/safety.h"
 #include "core/route/sorties.h"
 #include "core/route/transit.h"
+#include "core/sensor/footprint.h"
 
 #include <algorithm>
 #include <chrono>
@@ -164,23 +166,26 @@ struct Flight {
 };
 
 // Step 4's safety: the survey (a copy of the aircraft's) pulled inside the area (multirotors),
-// kept out of the no-fly zones and rid of near duplicates; the aircraft's survey and its safety
-// figures updated.
+// oblique photos moved back to where the aircraft takes them (oblique.h), kept out of the no-fly
+// zones and rid of near duplicates; the aircraft's survey and its safety figures updated.
 Status makeSurveySafe(MissionPlan& plan, AircraftPlan& ap, const AircraftConfig& cfg,
                       const PlannerOptions& opt, const FlightGround& ground,
                       const route::SafePathFinder& finder, bool yardstick, const std::string& who,
                       std::vector<route::LocalWaypoint>& survey) {
     route::SafetyReport rep;
+    const double ahead = ap.footprint.real.aheadM;
     // A plane's turns cannot be pulled inside (its plan says so): only a multirotor's route is.
+    // Oblique photos' centres are kept `ahead` further inside, so that the aircraft is inside.
     if (opt.keepInsideArea && !yardstick && !fleet::fliesAsPlane(cfg.kind)) {
         const route::PhotoSides sides{ap.footprint.acrossM, ap.footprint.alongM,
                                       ap.footprint.real.longSideM, ap.footprint.real.shortSideM};
         auto inside = route::keepInsideArea(survey, ground.area, ground.admissible, sides,
-                                            opt.insideMarginM, finder, &rep);
+                                            opt.insideMarginM + ahead, finder, &rep);
         if (!inside)
             return makeError(inside.error().code, who + ": " + inside.error().message);
         survey = std::move(*inside);
     }
+    moveToAircraft(survey, ahead);
     if (!yardstick) {
         auto safe = route::enforceNoFly(survey, finder, &rep);
         if (!safe)
@@ -330,7 +335,7 @@ Status recordFlight(AircraftPlan& ap, const geo::LocalFrame& frame, const route:
     for (const auto& w : wps)
         if (w.kind == route::WaypointKind::Photo) {
             flown.footprints.push_back(
-                {w.pos, w.headingDeg, ap.footprint.real.longSideM, ap.footprint.real.shortSideM});
+                sensor::photoTakenFrom(w.pos, w.headingDeg, ap.footprint.real));
             flown.passes.push_back(w.pass);
         }
     cutSortieRoutes(ap);

@@ -48,7 +48,13 @@ bool operator==(const PlannerOptions& a, const PlannerOptions& b) {
            a.safetyMarginM == b.safetyMarginM && a.keepInsideArea == b.keepInsideArea &&
            a.insideMarginM == b.insideMarginM && a.altitudeSeparationM == b.altitudeSeparationM &&
            a.batteryReserve == b.batteryReserve && a.maxCells == b.maxCells &&
-           a.doubleGrid == b.doubleGrid;
+           a.doubleGrid == b.doubleGrid && a.cameraTiltDeg == b.cameraTiltDeg;
+}
+
+sensor::Camera pointedCamera(const AircraftConfig& a, const PlannerOptions& options) {
+    sensor::Camera c = a.camera;
+    c.tiltDeg = options.cameraTiltDeg;
+    return c;
 }
 
 bool sameRoute(const route::Route& a, const route::Route& b) {

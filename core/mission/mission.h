@@ -87,8 +87,17 @@ struct PlannerOptions {
     // Double grid (for 3D models): a second pass over the area with lanes at 90 degrees to the
     // first, each pass a complete survey of its own (core/mission/double_grid.h).
     bool doubleGrid = false;
+    // Oblique photos (for 3D models, with the double grid above all): every camera tilted forward by
+    // this many degrees from straight down, along the direction of flight, 0 for nadir photos (at
+    // most sensor::kMaxCameraTiltDeg). The footprint and overlaps are the tilted camera's
+    // (sensor::footprintAt), each photo centred ahead of the aircraft; see docs/corridors.md.
+    double cameraTiltDeg = 0.0;
     friend bool operator==(const PlannerOptions& a, const PlannerOptions& b);
 };
+
+// The aircraft's camera pointed as the mission points it (tilted forward by options.cameraTiltDeg):
+// its sensor::footprintAt is each photo's footprint as planned and checked.
+sensor::Camera pointedCamera(const AircraftConfig& a, const PlannerOptions& options);
 
 // Terrain following (docs/terrain.md): off flies every altitude above the take-off point
 // over a flat world, as always; follow keeps each aircraft's altitude (or the one of its GSD) above
@@ -145,8 +154,8 @@ bool sameRoute(const route::Route& a, const route::Route& b);
 // (terrain following) and the routes' ground heights, 5 the aircraft's "kind" (multirotor,
 // fixed-wing, VTOL) and "plane" figures, a "corridor" and the double grid, 6 the DJI drone and
 // payload types of DJI Enterprise aircraft ("dji_drone_enum", "dji_drone_sub_enum", the camera's
-// "dji_payload_enum"). A file is written with the oldest version that holds what it contains
+// "dji_payload_enum"), 7 the planner's "camera_tilt_deg" (oblique photos). A file is written with the oldest version that holds what it contains
 // (version 1 without any of them), so that older releases keep reading it.
-constexpr int kMissionFileVersion = 6;
+constexpr int kMissionFileVersion = 7;
 
 } // namespace pf::mission

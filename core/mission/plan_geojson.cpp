@@ -171,7 +171,7 @@ bool writePlanGeoJson(const MissionPlan& plan, std::ostream& out, const PlanGeoJ
                 if (lw.kind != route::WaypointKind::Photo)
                     continue;
                 const geo::Ring r = sensor::footprintRing(
-                    {lw.pos, lw.headingDeg, a.footprint.real.longSideM, a.footprint.real.shortSideM});
+                    sensor::photoTakenFrom(lw.pos, lw.headingDeg, a.footprint.real));
                 w.begin("\"kind\":\"footprint\"," + who + ",\"seq\":" + std::to_string(++seq), "Polygon");
                 out << '[';
                 w.ring(plan.frame->toGeo(r));

@@ -5,6 +5,7 @@
 #include "core/mission/corridor.h"
 #include "core/mission/fleet_plan.h"
 #include "core/mission/memory_estimate.h"
+#include "core/mission/oblique.h"
 #include "core/mission/plan_corridor.h"
 #include "core/mission/plan_geojson.h"
 #include "core/mission/plan_region.h"
@@ -99,9 +100,13 @@ void warnOfZonesCrossed(const Mission& m, MissionPlan& plan) {
 } // namespace
 
 Result<MissionPlan> planMission(const Mission& given, Progress* progress) {
+    for (const auto& a : given.aircraft)
+        if (auto e = cameraTiltError(given, a, detail::aircraftLabel(a)); !e.empty())
+            return makeError(ErrorCode::InvalidInput, e);
     // A traced boundary of many thousand vertices is planned simplified (simplify_input.h), and the
-    // plan says so.
-    const InputSimplification simple = simplifyInput(given);
+    // plan says so. Every camera is pointed as the mission says (oblique.h): the footprints
+    // planned, balanced and checked are those of the photos taken.
+    const InputSimplification simple = simplifyInput(withPointedCameras(given));
     if (!simple.error.empty())
         return makeError(ErrorCode::TooLarge, simple.error);
     const Mission& m = simple.mission;

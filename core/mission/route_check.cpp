@@ -63,13 +63,14 @@ std::optional<bool> photoSeesArea(const route::Route& route, std::size_t i, cons
     const auto fp = sensor::footprintAt(cam, h);
     if (!fp)
         return std::nullopt;
-    if (d <= 0.5 * fp->shortSideM)
+    // Around the waypoint for nadir photos; an oblique photo's lies aheadM ahead of it.
+    if (fp->aheadM == 0.0 && d <= 0.5 * std::min(fp->shortSideM, fp->longSideM))
         return true; // the disc the footprint always holds reaches the area
-    if (d > 0.5 * std::hypot(fp->longSideM, fp->shortSideM))
+    if (d > fp->aheadM + 0.5 * std::hypot(fp->longSideM, fp->shortSideM))
         return false; // farther than the footprint's corners
     if (!prepared)
         prepared.emplace(geo::MultiPolygon{area});
-    const sensor::PhotoFootprint f{p, w.headingDeg, fp->longSideM, fp->shortSideM};
+    const sensor::PhotoFootprint f = sensor::photoTakenFrom(p, w.headingDeg, *fp);
     return prepared->intersects(geo::Polygon{sensor::footprintRing(f), {}});
 }
 
@@ -276,7 +277,7 @@ RouteLimits routeLimits(const Mission& m, const route::Route& route) {
     for (const auto& a : m.aircraft)
         if (a.name == route.aircraft) {
             l.maxAltitudeM = a.maxAltitudeM;
-            l.camera = a.camera;
+            l.camera = pointedCamera(a, m.options);
             l.plane = fleet::fliesAsPlane(a.kind);
             if (!l.home)
                 l.home = a.home;

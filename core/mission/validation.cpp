@@ -191,6 +191,21 @@ std::string corridorPlaneError(const Mission& m, const AircraftConfig& a, const 
                  "to plan the corridor's ground as an area with the plane's turns";
 }
 
+std::string cameraTiltError(const Mission& m, const AircraftConfig& a, const std::string& who) {
+    const double tilt = m.options.cameraTiltDeg;
+    if (tilt == 0.0)
+        return {};
+    if (auto s = sensor::checkTilt(a.camera, tilt); !s)
+        return who + ": " + s.error().message;
+    if (fleet::fliesAsPlane(a.kind))
+        return who + " flies as a plane, whose camera looks straight down: a camera tilt (oblique "
+                     "photos) needs a multirotor with a gimbal; set the tilt to 0";
+    if (plansCorridorLanes(m))
+        return "a camera tilt is for area surveys (the double grid above all): the corridor's lanes "
+               "are flown with the camera straight down; set the tilt to 0";
+    return {};
+}
+
 std::vector<std::string> altitudeErrors(const Mission& m, const AircraftConfig& a, double altitudeM) {
     std::string who = aircraftLabel(a.name);
     for (std::size_t i = 0; i < m.aircraft.size(); ++i)
@@ -263,7 +278,7 @@ Result<grid::GridOptions> gridOptionsFor(const Mission& m, std::size_t aircraftI
     auto alt = resolvedAltitude(a);
     if (!alt)
         return makeError(alt.error().code, who + ": " + alt.error().message);
-    auto eff = sensor::effectiveFootprint(a.camera, *alt, a.overlap);
+    auto eff = sensor::effectiveFootprint(pointedCamera(a, m.options), *alt, a.overlap);
     if (!eff)
         return makeError(eff.error().code, who + ": " + eff.error().message);
     grid::GridOptions opt;
@@ -422,6 +437,8 @@ bool validateSettings(const Mission& m, const AircraftConfig& a, const std::stri
         error(out, std::move(e));
     else if (auto c = corridorPlaneError(m, a, who); !c.empty())
         error(out, std::move(c));
+    if (auto t = cameraTiltError(m, a, who); !t.empty())
+        error(out, std::move(t));
     if (fleet::fliesAsPlane(a.kind) && a.plane.minTurnRadiusM && *a.plane.minTurnRadiusM > 0 &&
         fleet::bankAngleDeg(a.plane, a.cruiseSpeedMps) > kSteepBankDeg)
         warning(out, who + ": a turn radius of " + num("%.0f", *a.plane.minTurnRadiusM) + " m at " +
@@ -472,9 +489,11 @@ bool resolveFlightAltitude(const AircraftConfig& a, const std::string& who, bool
 
 // The photo at that altitude: its footprints, the cell size and the GSD; false when the camera
 // gives none.
-bool addFootprint(const AircraftConfig& a, const std::string& who, AircraftFigures& f,
-                  std::vector<Problem>& out) {
-    auto eff = sensor::effectiveFootprint(a.camera, f.altitudeM, a.overlap);
+bool addFootprint(const Mission& m, const AircraftConfig& a, const std::string& who,
+                  AircraftFigures& f, std::vector<Problem>& out) {
+    // The footprint of the camera as the mission points it (tilted: oblique photos); the GSD is
+    // the camera's straight down.
+    auto eff = sensor::effectiveFootprint(pointedCamera(a, m.options), f.altitudeM, a.overlap);
     auto gsd = sensor::gsdCmAt(a.camera, f.altitudeM);
     if (!eff) {
         error(out, who + ": " + eff.error().message);
@@ -543,7 +562,7 @@ AircraftFigures validateAircraft(const Mission& m, std::size_t i, const PlannedG
     bool ok = validateSettings(m, a, who, out);
     ok = resolveFlightAltitude(a, who, ok, f, out);
     if (ok)
-        ok = addFootprint(a, who, f, out);
+        ok = addFootprint(m, a, who, f, out);
     f.gridAngleDeg = o.gridAngleDeg.value_or(0.0);
     if (ok && ground.geom && admissibleAreaM2 > 0 && o.maxCells > 0 &&
         std::isfinite(f.gridAngleDeg) && !plansCorridorLanes(m))

@@ -62,7 +62,8 @@ bool operator==(const Camera& a, const Camera& b) {
     return a.name == b.name && a.sensorWidthMm == b.sensorWidthMm &&
            a.sensorHeightMm == b.sensorHeightMm && a.focalLengthMm == b.focalLengthMm &&
            a.imageWidthPx == b.imageWidthPx && a.imageHeightPx == b.imageHeightPx &&
-           a.hfovDeg == b.hfovDeg && a.vfovDeg == b.vfovDeg && a.djiPayloadEnum == b.djiPayloadEnum;
+           a.hfovDeg == b.hfovDeg && a.vfovDeg == b.vfovDeg && a.djiPayloadEnum == b.djiPayloadEnum &&
+           a.tiltDeg == b.tiltDeg;
 }
 
 Status validate(const Camera& cam) {
@@ -119,12 +120,34 @@ double verticalFovDeg(const Camera& cam) {
     return cam.hasOptics() ? toDeg(2.0 * std::atan(cam.sensorHeightMm / (2.0 * cam.focalLengthMm))) : cam.vfovDeg;
 }
 
+Status checkTilt(const Camera& cam, double tiltDeg) {
+    if (!std::isfinite(tiltDeg) || tiltDeg < 0.0 || tiltDeg > kMaxCameraTiltDeg)
+        return makeError(ErrorCode::InvalidInput,
+                         "camera tilt must be between 0 (straight down) and " + num(kMaxCameraTiltDeg) +
+                             " degrees forward (got " + num(tiltDeg) + ")");
+    const double far = tiltDeg + verticalFovDeg(cam) / 2.0;
+    if (tiltDeg > 0.0 && far > kMaxFarEdgeFromNadirDeg)
+        return invalid(cam, "tilted " + num(tiltDeg) + " degrees, its photos reach " + num(std::round(far)) +
+                                " degrees from straight down, too close to the horizon to map (at most " +
+                                num(kMaxFarEdgeFromNadirDeg) + "): tilt it less");
+    return {};
+}
+
 Result<Footprint> footprintAt(const Camera& cam, double altitudeM) {
     if (auto s = validate(cam); !s)
         return s.error();
     if (auto s = checkAltitude(altitudeM); !s)
         return s.error();
-    return Footprint{altitudeM * longSidePerMetre(cam), altitudeM * shortSidePerMetre(cam)};
+    if (cam.tiltDeg == 0.0)
+        return Footprint{altitudeM * longSidePerMetre(cam), altitudeM * shortSidePerMetre(cam)};
+    if (auto s = checkTilt(cam, cam.tiltDeg); !s)
+        return s.error();
+    // The tilted view (see Footprint): near edge at t - v/2, far edge at t + v/2 from straight down.
+    const double halfV = std::atan(shortSidePerMetre(cam) / 2.0);
+    const double t = toRad(cam.tiltDeg);
+    const double nearM = altitudeM * std::tan(t - halfV), farM = altitudeM * std::tan(t + halfV);
+    const double across = altitudeM * longSidePerMetre(cam) * std::cos(halfV) / std::cos(t - halfV);
+    return Footprint{across, farM - nearM, (nearM + farM) / 2.0};
 }
 
 Result<double> gsdCmAt(const Camera& cam, double altitudeM) {

@@ -14,7 +14,19 @@ geo::Ring footprintRing(const PhotoFootprint& f) {
     return {f.pos - a - c, f.pos - a + c, f.pos + a + c, f.pos + a - c};
 }
 
-geo::GeoRing footprintCorners(geo::LonLat centre, double headingDeg, const Footprint& fp) {
+geo::Vec2 photoCentre(geo::Vec2 position, double headingDeg, const Footprint& fp) {
+    const double h = headingDeg * M_PI / 180.0;
+    return position + fp.aheadM * geo::Vec2(std::sin(h), std::cos(h));
+}
+
+PhotoFootprint photoTakenFrom(geo::Vec2 position, double headingDeg, const Footprint& fp, double scale) {
+    const Footprint scaled{fp.longSideM * scale, fp.shortSideM * scale, fp.aheadM * scale};
+    return {photoCentre(position, headingDeg, scaled), headingDeg, scaled.longSideM, scaled.shortSideM};
+}
+
+geo::GeoRing footprintCorners(geo::LonLat position, double headingDeg, const Footprint& fp) {
+    const geo::LonLat centre =
+        fp.aheadM == 0.0 ? position : geo::geodesicDirect(position, headingDeg, fp.aheadM);
     const double along = fp.shortSideM / 2.0, across = fp.longSideM / 2.0;
     const double dist = std::hypot(along, across);
     const double a = std::atan2(across, along) * 180.0 / M_PI;

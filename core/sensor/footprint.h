@@ -20,9 +20,18 @@ struct PhotoFootprint {
 // behind and to the left of the centre: behind-left, behind-right, ahead-right, ahead-left.
 geo::Ring footprintRing(const PhotoFootprint& f);
 
-// The four ground corners of a photo taken at `centre` with the sensor's long side across the
-// direction of flight `headingDeg`, each a geodesic step from the centre (no local frame needed):
-// ahead-right, behind-right, behind-left, ahead-left.
-geo::GeoRing footprintCorners(geo::LonLat centre, double headingDeg, const Footprint& footprint);
+// Where a photo taken from `position` (local metres) in the direction of flight `headingDeg` is
+// centred on the ground: the footprint's aheadM ahead (a tilted camera), else right below.
+geo::Vec2 photoCentre(geo::Vec2 position, double headingDeg, const Footprint& footprint);
+// The footprint of a photo taken from `position`: centred at photoCentre, its sides (and its distance
+// ahead) scaled by `scale` (a photo taken at another altitude than the footprint's).
+PhotoFootprint photoTakenFrom(geo::Vec2 position, double headingDeg, const Footprint& footprint,
+                              double scale = 1.0);
+
+// The four ground corners of a photo taken from `position` with the sensor's long side across the
+// direction of flight `headingDeg`, each a geodesic step from the photo's centre (footprint.aheadM
+// ahead of the position; no local frame needed): ahead-right, behind-right, behind-left,
+// ahead-left.
+geo::GeoRing footprintCorners(geo::LonLat position, double headingDeg, const Footprint& footprint);
 
 } // namespace pf::sensor

@@ -440,10 +440,9 @@ void PlanLayer::rebuildRoutes() {
                 for (const auto& w : pr.route.waypoints) {
                     if (w.kind != route::WaypointKind::Photo)
                         continue;
-                    const double k = w.altitudeM / ap.altitudeM;
-                    const sensor::PhotoFootprint f{plan->frame->toLocal(w.position), w.headingDeg,
-                                                   ap.footprint.real.longSideM * k,
-                                                   ap.footprint.real.shortSideM * k};
+                    const sensor::PhotoFootprint f =
+                        sensor::photoTakenFrom(plan->frame->toLocal(w.position), w.headingDeg,
+                                               ap.footprint.real, w.altitudeM / ap.altitudeM);
                     QPolygonF q;
                     for (const auto& corner : sensor::footprintRing(f))
                         q << toScene(plan->frame->toGeo(corner));

@@ -526,13 +526,20 @@ void AircraftPanel::refreshForm(bool keepError) {
 
     QString text;
     if (alt) {
-        auto fp = sensor::effectiveFootprint(a.camera, *alt, a.overlap);
+        // The camera as the mission points it: oblique photos see the ground ahead.
+        const double tilt = m_doc->mission().options.cameraTiltDeg;
+        auto fp = sensor::effectiveFootprint(mission::pointedCamera(a, m_doc->mission().options),
+                                             *alt, a.overlap);
         if (fp) {
             text = tr("%1 × %2 m per photo\ntrack spacing %3 m, photo every %4 m")
                        .arg(fp->real.longSideM, 0, 'f', 1)
                        .arg(fp->real.shortSideM, 0, 'f', 1)
                        .arg(fp->acrossM, 0, 'f', 1)
                        .arg(fp->alongM, 0, 'f', 1);
+            if (tilt > 0)
+                text += tr("\ncamera tilted %1°: photos centred %2 m ahead")
+                            .arg(tilt, 0, 'f', 0)
+                            .arg(fp->real.aheadM, 0, 'f', 1);
         } else {
             text = QString::fromStdString(fp.error().message);
         }
@@ -547,6 +554,8 @@ void AircraftPanel::refreshForm(bool keepError) {
             !e.empty())
             errors << QString::fromStdString(e).toHtmlEscaped();
         if (const auto e = mission::corridorPlaneError(m_doc->mission(), a, who); !e.empty())
+            errors << QString::fromStdString(e).toHtmlEscaped();
+        if (const auto e = mission::cameraTiltError(m_doc->mission(), a, who); !e.empty())
             errors << QString::fromStdString(e).toHtmlEscaped();
         text = text.toHtmlEscaped().replace(QLatin1Char('\n'), QStringLiteral("<br>"));
         if (!errors.isEmpty())

@@ -1,6 +1,7 @@
 #include "ui/planning/planning_toolbar.h"
 
 #include "core/mission/planner_kinds.h"
+#include "core/sensor/camera.h"
 #include "ui/commands/set_planner_options_command.h"
 #include "ui/mission_document.h"
 #include "ui/planning/plan_controller.h"
@@ -109,6 +110,7 @@ PlanningToolBar::PlanningToolBar(MissionDocument* doc, PlanController* planner, 
             m_doc, o, angle ? tr("Grid angle %1°").arg(*angle, 0, 'f', 0) : tr("Automatic grid angle")));
     });
     makeSafetyMarginBox();
+    makeCameraTiltBox();
     explainOptions();
     connect(m_doc, &MissionDocument::optionsChanged, this, &PlanningToolBar::syncControls);
     connect(m_doc, &MissionDocument::missionReset, this, &PlanningToolBar::syncControls);
@@ -123,6 +125,7 @@ PlanningToolBar::PlanningToolBar(MissionDocument* doc, PlanController* planner, 
     addWidget(m_marginBox);
     addAction(m_keepInside);
     addAction(m_doubleGrid);
+    addWidget(m_tiltBox);
     addAction(exportRoutes);
     syncControls();
 }
@@ -144,8 +147,9 @@ void PlanningToolBar::syncControls() {
     m_keepInside->setChecked(o.keepInsideArea);
     m_doubleGrid->setChecked(o.doubleGrid);
     m_angleBox->setValue(o.gridAngleDeg ? *o.gridAngleDeg : -1.0);
-    const QSignalBlocker b3(m_marginBox);
+    const QSignalBlocker b3(m_marginBox), b4(m_tiltBox);
     m_marginBox->setValue(o.safetyMarginM);
+    m_tiltBox->setValue(o.cameraTiltDeg);
 }
 
 // The keep-out distance around the no-fly zones, an undoable mission edit like the other options.
@@ -167,6 +171,27 @@ void PlanningToolBar::makeSafetyMarginBox() {
             m_doc->undoStack()->push(
                 new SetPlannerOptionsCommand(m_doc, o, tr("Safety margin %1 m").arg(v, 0, 'f', 1)));
         });
+}
+
+// The cameras' forward tilt for oblique photos, an undoable mission edit; 0 shows "Nadir".
+void PlanningToolBar::makeCameraTiltBox() {
+    m_tiltBox = new QDoubleSpinBox;
+    m_tiltBox->setObjectName(QStringLiteral("CameraTiltBox"));
+    m_tiltBox->setRange(0, sensor::kMaxCameraTiltDeg);
+    m_tiltBox->setDecimals(0);
+    m_tiltBox->setSingleStep(5);
+    m_tiltBox->setPrefix(tr("Tilt "));
+    m_tiltBox->setSuffix(QStringLiteral("°"));
+    m_tiltBox->setSpecialValueText(tr("Nadir photos"));
+    m_tiltBox->setKeyboardTracking(false);
+    connect(m_tiltBox, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+        auto o = m_doc->mission().options;
+        if (o.cameraTiltDeg == v)
+            return;
+        o.cameraTiltDeg = v;
+        m_doc->undoStack()->push(new SetPlannerOptionsCommand(
+            m_doc, o, v == 0 ? tr("Nadir photos") : tr("Camera tilt %1°").arg(v, 0, 'f', 0)));
+    });
 }
 
 // Tool tips say what a control is; "What's this?" (Shift+F1) says what it does to the plan, in the
@@ -203,6 +228,16 @@ void PlanningToolBar::explainOptions() {
         "with straight lanes at 90° to the first, flown after it, so every point is seen from two "
         "directions (for 3D models). The coverage check counts each pass on its own. A corridor "
         "is flown once.</p>"));
+    m_tiltBox->setToolTip(tr("Camera tilt: oblique photos, every camera tilted forward along the "
+                             "lanes from straight down (0: nadir photos)"));
+    m_tiltBox->setWhatsThis(tr(
+        "<p><b>Camera tilt</b> (0 to 45°). Tilts every camera forward from straight down, along "
+        "the direction of flight, for oblique photos of façades and slopes; with <i>Double "
+        "grid</i> every point is seen from four directions (for 3D models). Footprints and "
+        "overlaps are those of the tilted camera: each photo sees the ground ahead of the "
+        "aircraft, so lanes start that far before the ground they photograph, and the route "
+        "check keeps the aircraft, not the photo, out of the no-fly margins. The exports point "
+        "the gimbal at -90° + the tilt. Multirotors only, area surveys only.</p>"));
 }
 
 void PlanningToolBar::planNow() {

@@ -1,7 +1,7 @@
 // PlanningToolBar: the Planning tool bar and the actions the Plan menu shares with it: Plan (asking
 // before edited routes are replaced), Cancel, planning after every edit, the planner, the grid
-// angle (or Auto), Keep inside area and Double grid, each edit of the mission's options one undo
-// step.
+// angle (or Auto), Keep inside area, Double grid and the camera tilt, each edit of the mission's
+// options one undo step.
 #pragma once
 
 #include <QToolBar>
@@ -41,6 +41,8 @@ private:
     void syncControls();
     // The "Safety margin" box (object name "SafetyMarginBox").
     void makeSafetyMarginBox();
+    // The camera tilt box for oblique photos (object name "CameraTiltBox").
+    void makeCameraTiltBox();
     // Tool tips and "What's this?" texts of the planner options.
     void explainOptions();
 
@@ -55,6 +57,7 @@ private:
     QComboBox* m_plannerBox;
     QDoubleSpinBox* m_angleBox;
     QDoubleSpinBox* m_marginBox = nullptr;
+    QDoubleSpinBox* m_tiltBox = nullptr;
 };
 
 } // namespace pf::ui

@@ -25,7 +25,7 @@ struct WaylinePoint {
 };
 
 enum class GroupKind {
-    Gimbal,           // gimbalRotate to pitch -90 on reaching the point
+    Gimbal,           // gimbalRotate to the pitch (MissionSettings) on reaching the point
     Photo,            // takePhoto on reaching the point
     PhotosByDistance, // takePhoto every spacingM metres from `start` to `end` (multipleDistance)
 };
@@ -57,6 +57,9 @@ struct MissionSettings {
     double takeOffSecurityHeightM = 20.0;
     double transitionalSpeedMps = 10.0;
     double rthHeightM = 100.0;
+    // The gimbal's pitch at every point and in the first point's gimbalRotate: -90 straight down,
+    // -90 + the tilt for oblique photos (ExportContext::gimbalPitchDeg).
+    double gimbalPitchDeg = -90.0;
 };
 
 // The highest speed a WPML mission flies: globalTransitionalSpeed is documented as [0, 15] m/s

@@ -102,13 +102,13 @@ void turnParam(CPLXMLNode* parent) {
     add(t, "wpml:waypointTurnMode", "toPointAndStopWithDiscontinuityCurvature");
 }
 
-void gimbalDown(CPLXMLNode* action, const MissionSettings&) {
+void gimbalRotate(CPLXMLNode* action, const MissionSettings& s) {
     add(action, "wpml:actionActuatorFunc", "gimbalRotate");
     CPLXMLNode* p = node(action, "wpml:actionActuatorFuncParam");
     add(p, "wpml:gimbalHeadingYawBase", "north");
     add(p, "wpml:gimbalRotateMode", "absoluteAngle");
     add(p, "wpml:gimbalPitchRotateEnable", "1");
-    add(p, "wpml:gimbalPitchRotateAngle", "-90");
+    add(p, "wpml:gimbalPitchRotateAngle", s.gimbalPitchDeg, 2);
     add(p, "wpml:gimbalRollRotateEnable", "0");
     add(p, "wpml:gimbalRollRotateAngle", "0");
     add(p, "wpml:gimbalYawRotateEnable", "0");
@@ -146,7 +146,7 @@ void actionGroup(CPLXMLNode* placemark, const ActionGroup& g, std::size_t id,
     CPLXMLNode* action = node(a, "wpml:action");
     add(action, "wpml:actionId", "0");
     if (g.kind == GroupKind::Gimbal)
-        gimbalDown(action, s);
+        gimbalRotate(action, s);
     else
         takePhoto(action, s);
 }
@@ -184,7 +184,7 @@ std::string templateKml(const MissionSettings& s, const Wayline& w) {
     add(sys, "wpml:positioningType", "GPS");
     add(folder, "wpml:autoFlightSpeed", w.speedMps, 2);
     add(folder, "wpml:globalHeight", w.points.empty() ? 0.0 : w.points.front().heightM, 4);
-    add(folder, "wpml:gimbalPitchMode", "usePointSetting"); // each point's gimbalPitchAngle (-90)
+    add(folder, "wpml:gimbalPitchMode", "usePointSetting"); // each point's gimbalPitchAngle
     CPLXMLNode* heading = node(folder, "wpml:globalWaypointHeadingParam");
     add(heading, "wpml:waypointHeadingMode", "followWayline");
     add(heading, "wpml:waypointHeadingPathMode", "followBadArc");
@@ -202,7 +202,7 @@ std::string templateKml(const MissionSettings& s, const Wayline& w) {
         headingParam(pm, p);
         add(pm, "wpml:useGlobalTurnParam", "0");
         turnParam(pm);
-        add(pm, "wpml:gimbalPitchAngle", "-90");
+        add(pm, "wpml:gimbalPitchAngle", s.gimbalPitchDeg, 2);
     });
     return serialize(tree);
 }

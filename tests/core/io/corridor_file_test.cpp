@@ -164,3 +164,28 @@ TEST(CorridorMissionFile, DoubleGridNeedsVersion5) {
         "x.json: planner.double_grid: a double grid needs version 5 of the mission file, but the "
         "file says version 4");
 }
+
+// The camera tilt (oblique photos) is a planner option of version 7, written only when set; an
+// older file naming it is refused with the version it needs.
+TEST(CorridorMissionFile, CameraTiltNeedsVersion7) {
+    auto m = parseMissionJson(with(kCorridorMission, "\"width_m\": 80}",
+                                   "\"width_m\": 80},\n  \"planner\": {\"double_grid\": true}"),
+                              "x.json");
+    ASSERT_TRUE(m) << m.error().message;
+    mission::Mission area = *m;
+    mission::applyCorridor(area, std::nullopt);
+    area.area.outer = {{8.0, 49.0}, {8.001, 49.0}, {8.001, 49.001}};
+    area.options.cameraTiltDeg = 30.0;
+    const std::string text = missionToJson(area);
+    EXPECT_NE(text.find("\"camera_tilt_deg\":30"), std::string::npos) << text;
+    EXPECT_NE(text.find("\"version\":7"), std::string::npos);
+    auto back = parseMissionJson(text, "y.json");
+    ASSERT_TRUE(back) << back.error().message;
+    EXPECT_TRUE(*back == area);
+    EXPECT_EQ(back->options.cameraTiltDeg, 30.0);
+    area.options.cameraTiltDeg = 0.0;
+    EXPECT_EQ(missionToJson(area).find("camera_tilt"), std::string::npos);
+    EXPECT_EQ(errorOf(with(text, "\"version\":7", "\"version\":6")),
+              "x.json: planner.camera_tilt_deg: a camera tilt needs version 7 of the mission file, "
+              "but the file says version 6");
+}

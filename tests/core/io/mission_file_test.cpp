@@ -391,7 +391,8 @@ TEST(MissionFileErrors, WrongContainerTypes) {
 TEST(MissionFileErrors, MisspeltFieldsAreNotIgnored) {
     EXPECT_EQ(errorOf(with(kMinimal, "\"planner\": \"stride\"", "\"planner\": \"stride\", \"safety_margin\": 20")),
               "x.json: planner.safety_margin: unknown field (known here: planner, grid_angle_deg, safety_margin_m, "
-              "keep_inside_area, inside_margin_m, altitude_separation_m, battery_reserve, max_cells, double_grid)");
+              "keep_inside_area, inside_margin_m, altitude_separation_m, battery_reserve, max_cells, double_grid, "
+              "camera_tilt_deg)");
     EXPECT_EQ(errorOf(with(kMinimal, "\"altitude_m\": 50.0",
                            "\"altitude_m\": 50.0, \"front_overlpa\": 0.8")),
               "x.json: aircraft[0].front_overlpa: unknown field (known here: name, model, kind, "

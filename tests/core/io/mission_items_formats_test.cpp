@@ -5,11 +5,15 @@
 #include "core/geo/geodesic.h"
 #include "core/geo/local_frame.h"
 #include "core/io/qgc_plan.h"
+#include "core/io/litchi_csv.h"
 #include "core/io/qgc_wpl.h"
 #include "core/io/trigger_lanes.h"
 #include "tests/core/io/formats_test_util.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
 
 using namespace pf;
 using namespace pf::io;
@@ -185,6 +189,70 @@ TEST(MissionItems, GimbalManagerRatesAreNullInPlanAndNaNInWaypoints) {
     EXPECT_EQ(back->routes[0].waypoints.size(), mergeCloseWaypoints(ctx.routes[0].waypoints, 0.1).size());
     // Heights above home are kept although the home line is at 112.5 m above sea level.
     EXPECT_NEAR(back->routes[0].waypoints[0].altitudeM, ctx.routes[0].waypoints[0].altitudeM, 1e-4);
+}
+
+// Oblique photos: the gimbal items pitch the camera to -90 + the tilt in .plan, .waypoints and
+// Litchi; the tilt is read back from the gimbal item and written again on conversion; a plane's
+// camera still looks straight down.
+TEST(MissionItems, ObliquePhotosPitchTheGimbalAndReadBack) {
+    std::mt19937 rng(43);
+    mission::Mission m = test::demoMission();
+    m.options.cameraTiltDeg = 25.0;
+    const ExportContext ctx = makeExportContext(m, {test::randomRoute(rng, "A")});
+    const auto pitchOf = [](const std::vector<MissionItem>& items, int command) {
+        for (const auto& it : items)
+            if (it.command == command)
+                return it.params[0];
+        return std::nan("");
+    };
+    auto items = missionItems(ctx, 0);
+    ASSERT_TRUE(items.ok()) << items.error().message;
+    EXPECT_DOUBLE_EQ(pitchOf(*items, mav::kDoMountControl), -65.0);
+    ExportOptions manager;
+    manager.gimbal = GimbalCommand::GimbalManagerPitchYaw;
+    auto v2 = missionItems(ctx, 0, manager);
+    ASSERT_TRUE(v2.ok());
+    EXPECT_DOUBLE_EQ(pitchOf(*v2, mav::kDoGimbalManagerPitchYaw), -65.0);
+    EXPECT_EQ(cameraTiltFromItems(*v2), 25.0);
+
+    auto plan = qgcPlanJson(ctx, 0, ExportOptions{});
+    ASSERT_TRUE(plan.ok());
+    EXPECT_TRUE(test::qgcPlanViolations(*plan).empty());
+    auto back = parseQgcPlan(*plan, "o.plan");
+    ASSERT_TRUE(back.ok()) << back.error().message;
+    EXPECT_EQ(back->cameraTiltDeg, 25.0);
+    const ExportContext again = contextFromImport(*back);
+    EXPECT_DOUBLE_EQ(again.gimbalPitchDeg(0), -65.0);
+    auto wpl = qgcWplText(again, 0, ExportOptions{});
+    ASSERT_TRUE(wpl.ok());
+    EXPECT_NE(wpl->find("\t205\t-65\t0\t0\t0\t"), std::string::npos) << wpl->substr(0, 400);
+    auto wplBack = parseQgcWpl(*wpl, "o.waypoints");
+    ASSERT_TRUE(wplBack.ok());
+    EXPECT_EQ(wplBack->cameraTiltDeg, 25.0);
+
+    auto csv = litchiCsvText(ctx, 0);
+    ASSERT_TRUE(csv.ok()) << csv.error().message;
+    std::istringstream rows(*csv);
+    std::string row;
+    std::getline(rows, row); // the header
+    int checked = 0;
+    while (std::getline(rows, row)) {
+        std::vector<std::string> cols;
+        std::stringstream cells(row);
+        for (std::string c; std::getline(cells, c, ',');)
+            cols.push_back(c);
+        ASSERT_GT(cols.size(), 7u);
+        EXPECT_EQ(cols[7], "-65") << row; // gimbalpitchangle
+        ++checked;
+    }
+    EXPECT_GT(checked, 5);
+
+    // Nadir: no tilt read back from a pitch of -90.
+    const ExportContext nadir = makeExportContext(test::demoMission(), {ctx.routes[0]});
+    auto down = missionItems(nadir, 0);
+    ASSERT_TRUE(down.ok());
+    EXPECT_DOUBLE_EQ(pitchOf(*down, mav::kDoMountControl), -90.0);
+    EXPECT_EQ(cameraTiltFromItems(*down), 0.0);
 }
 
 TEST(MissionItems, FenceAndRallyItems) {

@@ -158,6 +158,27 @@ TEST(WpmlKmz, DemoMissionRoundTrip) {
     exportCheckAndReadBack(ctx, 0, "pf_wpml_demo.kmz");
 }
 
+// Oblique photos (a double grid with the camera tilted 30 degrees): the gimbal turns to -60 at the
+// first point and every point says -60, and the file passes the documentation's checks and reads
+// back as the plan.
+TEST(WpmlKmz, ObliquePhotosPointTheGimbalForward) {
+    mission::Mission m = withAircraft("demo_mission.json", {{"DJI Matrice 30T", 60.0}});
+    m.options.doubleGrid = true;
+    m.options.cameraTiltDeg = 30.0;
+    auto plan = mission::planMission(m);
+    ASSERT_TRUE(plan.ok()) << plan.error().message;
+    const ExportContext ctx = makeExportContext(m, {plan->aircraft[0].route});
+    EXPECT_DOUBLE_EQ(ctx.gimbalPitchDeg(0), -60.0);
+    exportCheckAndReadBack(ctx, 0, "pf_wpml_oblique.kmz");
+    auto docs = wpmlDocuments(ctx, 0, ExportOptions{});
+    ASSERT_TRUE(docs.ok()) << docs.error().message;
+    EXPECT_NE(docs->templateKml.find("<wpml:gimbalPitchAngle>-60</wpml:gimbalPitchAngle>"),
+              std::string::npos);
+    EXPECT_EQ(docs->templateKml.find("<wpml:gimbalPitchAngle>-90"), std::string::npos);
+    EXPECT_NE(docs->waylinesWpml.find("<wpml:gimbalPitchRotateAngle>-60</wpml:gimbalPitchRotateAngle>"),
+              std::string::npos);
+}
+
 TEST(WpmlKmz, FleetMissionEachAircraftItsOwnFile) {
     const mission::Mission m = withAircraft(
         "demo_mission.json", {{"DJI Matrice 30T", 60.0}, {"DJI Mavic 3 Enterprise", 45.0}});

@@ -1,0 +1,78 @@
+#include "core/mission/oblique.h"
+
+#include "core/route/photo_waypoints.h"
+
+#include <cmath>
+
+namespace pf::mission {
+
+namespace {
+
+geo::Vec2 backwards(double headingDeg, double aheadM) {
+    const double h = headingDeg * M_PI / 180.0;
+    return -aheadM * geo::Vec2(std::sin(h), std::cos(h));
+}
+
+bool sameHeading(double a, double b, double toleranceDeg = 1.0) {
+    return std::abs(std::remainder(a - b, 360.0)) < toleranceDeg;
+}
+
+// Whether the aircraft reaches waypoint i (a photo) along its heading: from a waypoint behind it
+// on its line (within 10 degrees), not across or from ahead.
+bool joinedAlongLane(const std::vector<route::LocalWaypoint>& w, std::size_t i) {
+    if (i == 0)
+        return false;
+    const geo::Vec2 d = w[i].pos - w[i - 1].pos;
+    if (d.norm() < 1e-6)
+        return i > 1 && joinedAlongLane(w, i - 1);
+    return sameHeading(route::headingDeg(d), w[i].headingDeg, 10.0);
+}
+
+// The heading of the photo nearest to waypoint i in the flight, looking forward first: the lane a
+// turn point leads onto, else the one it leaves.
+std::optional<double> neighbouringPhotoHeading(const std::vector<route::LocalWaypoint>& w,
+                                               std::size_t i) {
+    for (std::size_t j = i + 1; j < w.size(); ++j)
+        if (w[j].kind == route::WaypointKind::Photo)
+            return w[j].headingDeg;
+    for (std::size_t j = i; j-- > 0;)
+        if (w[j].kind == route::WaypointKind::Photo)
+            return w[j].headingDeg;
+    return std::nullopt;
+}
+
+} // namespace
+
+Mission withPointedCameras(Mission m) {
+    for (auto& a : m.aircraft)
+        a.camera = pointedCamera(a, m.options);
+    return m;
+}
+
+void moveToAircraft(std::vector<route::LocalWaypoint>& survey, double aheadM) {
+    if (aheadM == 0.0)
+        return;
+    std::vector<geo::Vec2> moved(survey.size());
+    for (std::size_t i = 0; i < survey.size(); ++i) {
+        const route::LocalWaypoint& w = survey[i];
+        bool onLane = w.kind == route::WaypointKind::Photo;
+        if (w.kind == route::WaypointKind::Turn) {
+            const auto lane = neighbouringPhotoHeading(survey, i);
+            onLane = lane && sameHeading(*lane, w.headingDeg);
+        }
+        moved[i] = onLane ? w.pos + backwards(w.headingDeg, aheadM) : w.pos;
+    }
+    std::vector<route::LocalWaypoint> out;
+    out.reserve(survey.size() + survey.size() / 4);
+    for (std::size_t i = 0; i < survey.size(); ++i) {
+        survey[i].pos = moved[i];
+        const route::LocalWaypoint& w = survey[i];
+        if (w.kind == route::WaypointKind::Photo && !joinedAlongLane(survey, i))
+            out.push_back({w.pos + backwards(w.headingDeg, kObliqueLeadInM), w.headingDeg,
+                           route::WaypointKind::Turn, -1, w.pass});
+        out.push_back(w);
+    }
+    survey = std::move(out);
+}
+
+} // namespace pf::mission
