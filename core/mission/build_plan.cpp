@@ -193,8 +193,10 @@ Status makeSurveySafe(MissionPlan& plan, AircraftPlan& ap, const AircraftConfig&
         survey = std::move(*safe);
     }
     // After the no-fly stage nothing repairs a leg: a waypoint is dropped only where the leg that
-    // replaces it keeps the margin.
+    // replaces it keeps the margin; an oblique photo's lead-in is added only where it keeps it.
     route::dropNearDuplicates(survey, yardstick ? nullptr : &finder.field());
+    if (ahead > 0.0)
+        leadOntoLanes(survey, yardstick ? nullptr : &finder.field());
     for (const auto& w : rep.warnings)
         plan.warnings.push_back(who + ": " + w);
     ap.detours = rep.detours;

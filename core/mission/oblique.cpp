@@ -62,14 +62,25 @@ void moveToAircraft(std::vector<route::LocalWaypoint>& survey, double aheadM) {
         }
         moved[i] = onLane ? w.pos + backwards(w.headingDeg, aheadM) : w.pos;
     }
+    for (std::size_t i = 0; i < survey.size(); ++i)
+        survey[i].pos = moved[i];
+}
+
+void leadOntoLanes(std::vector<route::LocalWaypoint>& survey, const geo::NoFlyField* field) {
     std::vector<route::LocalWaypoint> out;
     out.reserve(survey.size() + survey.size() / 4);
     for (std::size_t i = 0; i < survey.size(); ++i) {
-        survey[i].pos = moved[i];
         const route::LocalWaypoint& w = survey[i];
+        // Next to a zone (a detour ends at the photo) a shorter lead-in may still keep the margin.
         if (w.kind == route::WaypointKind::Photo && !joinedAlongLane(survey, i))
-            out.push_back({w.pos + backwards(w.headingDeg, kObliqueLeadInM), w.headingDeg,
-                           route::WaypointKind::Turn, -1, w.pass});
+            for (double length : {kObliqueLeadInM, kObliqueLeadInM / 2, kObliqueLeadInM / 4}) {
+                const geo::Vec2 lead = w.pos + backwards(w.headingDeg, length);
+                if (field && !(field->segmentIsSafe(lead, w.pos) &&
+                               (out.empty() || field->segmentIsSafe(out.back().pos, lead))))
+                    continue;
+                out.push_back({lead, w.headingDeg, route::WaypointKind::Turn, -1, w.pass});
+                break;
+            }
         out.push_back(w);
     }
     survey = std::move(out);

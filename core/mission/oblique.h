@@ -8,6 +8,7 @@
 // ("Oblique photos").
 #pragma once
 
+#include "core/geo/no_fly_field.h"
 #include "core/mission/mission.h"
 #include "core/route/waypoint.h"
 
@@ -26,9 +27,15 @@ constexpr double kObliqueLeadInM = 10.0;
 
 // The photo waypoints of a survey planned for the photos' centres moved back along their heading by
 // aheadM, to where the aircraft takes them; a turn point on a lane's line (facing as the photo next
-// to it in the flight does) moves with its lane; other turn and transit points stay. A lane the
-// aircraft does not already join along its line gets a turn point kObliqueLeadInM before its first
-// photo. Every point lies within aheadM + kObliqueLeadInM of a point planned.
+// to it in the flight does) moves with its lane; other turn and transit points stay. Every point
+// moves by at most aheadM.
 void moveToAircraft(std::vector<route::LocalWaypoint>& survey, double aheadM);
+
+// After the no-fly stage: a turn point kObliqueLeadInM before every photo the aircraft does not
+// already reach along its heading (a lane's first photo, one moved out of a margin), where that
+// point and its two legs keep the zones' margins (`field`; none: anywhere), else a half or a
+// quarter as far; where none keeps them (a detour round a zone ends at the photo) the photo is
+// reached across, its heading (the waypoint's yaw) still the lane's.
+void leadOntoLanes(std::vector<route::LocalWaypoint>& survey, const geo::NoFlyField* field);
 
 } // namespace pf::mission

@@ -157,6 +157,7 @@ void AircraftPanel::createFields() {
     m_altitudeError->setStyleSheet(QStringLiteral("QLabel { color: #b00020; font-weight: bold; }"));
     m_altitudeError->hide();
     m_footprint = new QLabel;
+    m_footprint->setObjectName(QStringLiteral("FootprintLabel"));
     m_footprint->setWordWrap(true);
     m_footprint->setMinimumWidth(120);
     m_camera->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);

@@ -146,6 +146,9 @@ TEST(Oblique, MovesPhotosBackAlongTheirLaneAndLeadsOntoIt) {
                                         {Vec2(30, 20), 180.0, WaypointKind::Photo, -1},
                                         {Vec2(30, 0), 180.0, WaypointKind::Photo, -1}};
     moveToAircraft(w, 25.0);
+    ASSERT_EQ(w.size(), 5u); // moved, nothing added
+    EXPECT_NEAR(w[0].pos.y(), -25.0, 1e-9);
+    leadOntoLanes(w, nullptr);
     // The first lane gets its lead-in (nothing before it), the corner stays, the second lane gets
     // a lead-in too (reached across from the corner).
     ASSERT_EQ(w.size(), 7u);
@@ -163,6 +166,11 @@ TEST(Oblique, MovesPhotosBackAlongTheirLaneAndLeadsOntoIt) {
     moveToAircraft(nadir, 0.0);
     ASSERT_EQ(nadir.size(), 1u);
     EXPECT_EQ(nadir[0].pos, Vec2(0, 0));
+    // A lead-in that would come within a zone's margin is left out.
+    std::vector<route::LocalWaypoint> nearZone{{Vec2(0, 0), 0.0, WaypointKind::Photo, -1}};
+    const geo::NoFlyField field({geo::Polygon{{Vec2(-5, -12), Vec2(5, -12), Vec2(5, -8), Vec2(-5, -8)}, {}}}, 1.0);
+    leadOntoLanes(nearZone, &field);
+    EXPECT_EQ(nearZone.size(), 1u);
 }
 
 TEST(Oblique, RefusesPlanesAndTiltsOutOfRange) {
