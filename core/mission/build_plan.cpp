@@ -185,7 +185,12 @@ Status makeSurveySafe(MissionPlan& plan, AircraftPlan& ap, const AircraftConfig&
             return makeError(inside.error().code, who + ": " + inside.error().message);
         survey = std::move(*inside);
     }
-    moveToAircraft(survey, ahead);
+    if (const int out = moveToAircraft(survey, ahead, yardstick ? nullptr : &finder))
+        rep.warnings.push_back(
+            std::to_string(out) +
+            " oblique photo(s) just past a no-fly zone, looking away from it, would be taken from "
+            "within its margin: taken from the nearest point outside it (the coverage check counts "
+            "them as taken)");
     if (!yardstick) {
         auto safe = route::enforceNoFly(survey, finder, &rep);
         if (!safe)

@@ -49,9 +49,10 @@ Mission withPointedCameras(Mission m) {
     return m;
 }
 
-void moveToAircraft(std::vector<route::LocalWaypoint>& survey, double aheadM) {
+int moveToAircraft(std::vector<route::LocalWaypoint>& survey, double aheadM,
+                   const geo::SafePathFinder* finder) {
     if (aheadM == 0.0)
-        return;
+        return 0;
     std::vector<geo::Vec2> moved(survey.size());
     for (std::size_t i = 0; i < survey.size(); ++i) {
         const route::LocalWaypoint& w = survey[i];
@@ -62,8 +63,16 @@ void moveToAircraft(std::vector<route::LocalWaypoint>& survey, double aheadM) {
         }
         moved[i] = onLane ? w.pos + backwards(w.headingDeg, aheadM) : w.pos;
     }
-    for (std::size_t i = 0; i < survey.size(); ++i)
-        survey[i].pos = moved[i];
+    int outOfMargin = 0;
+    for (std::size_t i = 0; i < survey.size(); ++i) {
+        route::LocalWaypoint& w = survey[i];
+        if (moved[i] != w.pos && finder && !finder->field().pointIsSafe(moved[i])) {
+            moved[i] = finder->nearestSafePoint(moved[i]);
+            outOfMargin += w.kind == route::WaypointKind::Photo;
+        }
+        w.pos = moved[i];
+    }
+    return outOfMargin;
 }
 
 void leadOntoLanes(std::vector<route::LocalWaypoint>& survey, const geo::NoFlyField* field) {

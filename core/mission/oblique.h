@@ -8,7 +8,7 @@
 // ("Oblique photos").
 #pragma once
 
-#include "core/geo/no_fly_field.h"
+#include "core/geo/no_fly_field.h" // NoFlyField, SafePathFinder
 #include "core/mission/mission.h"
 #include "core/route/waypoint.h"
 
@@ -28,8 +28,14 @@ constexpr double kObliqueLeadInM = 10.0;
 // The photo waypoints of a survey planned for the photos' centres moved back along their heading by
 // aheadM, to where the aircraft takes them; a turn point on a lane's line (facing as the photo next
 // to it in the flight does) moves with its lane; other turn and transit points stay. Every point
-// moves by at most aheadM.
-void moveToAircraft(std::vector<route::LocalWaypoint>& survey, double aheadM);
+// moves by at most aheadM. A point that would move into a zone's margin (`finder`; none: no zones)
+// goes to the nearest point outside it instead (a photo just past a zone, looking away from it; the
+// coverage check measures the photos as taken). Of the three ways tried on 8 generated areas with
+// 1-6 zones (double grid, 30 degrees), this one kept the most coverage: lowest pass 0.9972, against
+// 0.9891 moving such a photo back along its lane only as far as the margin allows and 0.9743
+// leaving it out. Returns the number of photos so placed.
+int moveToAircraft(std::vector<route::LocalWaypoint>& survey, double aheadM,
+                   const geo::SafePathFinder* finder = nullptr);
 
 // After the no-fly stage: a turn point kObliqueLeadInM before every photo the aircraft does not
 // already reach along its heading (a lane's first photo, one moved out of a margin), where that

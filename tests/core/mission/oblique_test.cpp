@@ -166,11 +166,23 @@ TEST(Oblique, MovesPhotosBackAlongTheirLaneAndLeadsOntoIt) {
     moveToAircraft(nadir, 0.0);
     ASSERT_EQ(nadir.size(), 1u);
     EXPECT_EQ(nadir[0].pos, Vec2(0, 0));
-    // A lead-in that would come within a zone's margin is left out.
+    // A lead-in that would come within a zone's margin is made shorter, else left out.
     std::vector<route::LocalWaypoint> nearZone{{Vec2(0, 0), 0.0, WaypointKind::Photo, -1}};
     const geo::NoFlyField field({geo::Polygon{{Vec2(-5, -12), Vec2(5, -12), Vec2(5, -8), Vec2(-5, -8)}, {}}}, 1.0);
     leadOntoLanes(nearZone, &field);
-    EXPECT_EQ(nearZone.size(), 1u);
+    ASSERT_EQ(nearZone.size(), 2u);
+    EXPECT_NEAR(nearZone[0].pos.y(), -kObliqueLeadInM / 2, 1e-9);
+    std::vector<route::LocalWaypoint> atZone{{Vec2(0, 0), 0.0, WaypointKind::Photo, -1}};
+    const geo::NoFlyField touching({geo::Polygon{{Vec2(-5, -4), Vec2(5, -4), Vec2(5, -1.5), Vec2(-5, -1.5)}, {}}}, 1.0);
+    leadOntoLanes(atZone, &touching);
+    EXPECT_EQ(atZone.size(), 1u);
+    // A photo moved into a margin is taken from the nearest point outside it.
+    std::vector<route::LocalWaypoint> pastZone{{Vec2(0, 0), 0.0, WaypointKind::Photo, -1}};
+    const geo::SafePathFinder finder(
+        geo::NoFlyField({geo::Polygon{{Vec2(-50, -40), Vec2(50, -40), Vec2(50, -20), Vec2(-50, -20)}, {}}}, 5.0));
+    EXPECT_EQ(moveToAircraft(pastZone, 25.0, &finder), 1);
+    EXPECT_TRUE(finder.field().pointIsSafe(pastZone[0].pos));
+    EXPECT_NEAR(pastZone[0].pos.y(), -15.0, 0.3); // the (slightly inflated) margin's edge, north
 }
 
 TEST(Oblique, RefusesPlanesAndTiltsOutOfRange) {
