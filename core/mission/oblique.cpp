@@ -1,6 +1,8 @@
 #include "core/mission/oblique.h"
 
+#include "core/mission/corridor.h"
 #include "core/route/photo_waypoints.h"
+#include "core/sensor/camera.h"
 
 #include <cmath>
 
@@ -42,6 +44,21 @@ std::optional<double> neighbouringPhotoHeading(const std::vector<route::LocalWay
 }
 
 } // namespace
+
+std::string cameraTiltError(const Mission& m, const AircraftConfig& a, const std::string& who) {
+    const double tilt = m.options.cameraTiltDeg;
+    if (tilt == 0.0)
+        return {};
+    if (auto s = sensor::checkTilt(a.camera, tilt); !s)
+        return who + ": " + s.error().message;
+    if (fleet::fliesAsPlane(a.kind))
+        return who + " flies as a plane, whose camera looks straight down: a camera tilt (oblique "
+                     "photos) needs a multirotor with a gimbal; set the tilt to 0";
+    if (plansCorridorLanes(m))
+        return "a camera tilt is for area surveys (the double grid above all): the corridor's lanes "
+               "are flown with the camera straight down; set the tilt to 0";
+    return {};
+}
 
 Mission withPointedCameras(Mission m) {
     for (auto& a : m.aircraft)

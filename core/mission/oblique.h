@@ -12,9 +12,17 @@
 #include "core/mission/mission.h"
 #include "core/route/waypoint.h"
 
+#include <string>
 #include <vector>
 
 namespace pf::mission {
+
+// What keeps aircraft `a` from taking the mission's oblique photos (PlannerOptions::cameraTiltDeg):
+// a tilt out of range or too close to the horizon for its camera (sensor::checkTilt), a plane
+// (its camera is fixed looking down), lanes along a corridor (the tilt is for area surveys).
+// Empty for nadir photos or when none applies; planning refuses what validation reports
+// (mission/validation.h).
+std::string cameraTiltError(const Mission& m, const AircraftConfig& a, const std::string& who);
 
 // The mission as planned: every aircraft's camera pointed as the options say (pointedCamera).
 Mission withPointedCameras(Mission m);

@@ -3,6 +3,7 @@
 #include "core/geo/polygon_ops.h"
 #include "core/mission/aircraft_naming.h"
 #include "core/mission/corridor.h"
+#include "core/mission/oblique.h"
 #include "core/mission/planner_kinds.h"
 #include "core/mission/simplify_input.h"
 
@@ -189,21 +190,6 @@ std::string corridorPlaneError(const Mission& m, const AircraftConfig& a, const 
     return who + " flies as a plane: lanes along a corridor are planned for multirotors only (each "
                  "lane end turns on the spot, which a plane cannot fly); choose the sweep planner "
                  "to plan the corridor's ground as an area with the plane's turns";
-}
-
-std::string cameraTiltError(const Mission& m, const AircraftConfig& a, const std::string& who) {
-    const double tilt = m.options.cameraTiltDeg;
-    if (tilt == 0.0)
-        return {};
-    if (auto s = sensor::checkTilt(a.camera, tilt); !s)
-        return who + ": " + s.error().message;
-    if (fleet::fliesAsPlane(a.kind))
-        return who + " flies as a plane, whose camera looks straight down: a camera tilt (oblique "
-                     "photos) needs a multirotor with a gimbal; set the tilt to 0";
-    if (plansCorridorLanes(m))
-        return "a camera tilt is for area surveys (the double grid above all): the corridor's lanes "
-               "are flown with the camera straight down; set the tilt to 0";
-    return {};
 }
 
 std::vector<std::string> altitudeErrors(const Mission& m, const AircraftConfig& a, double altitudeM) {

@@ -96,12 +96,6 @@ std::string planeRoutingError(const AircraftConfig& a, PlannerKind planner, cons
 // corridor planning refuses with it.
 std::string corridorPlaneError(const Mission& m, const AircraftConfig& a, const std::string& who);
 
-// What keeps aircraft `a` from taking the mission's oblique photos (PlannerOptions::cameraTiltDeg):
-// a tilt out of range or too close to the horizon for its camera (sensor::checkTilt), a plane
-// (its camera is fixed looking down), lanes along a corridor (the tilt is for area surveys).
-// Empty for nadir photos or when none applies; planning refuses what validation reports.
-std::string cameraTiltError(const Mission& m, const AircraftConfig& a, const std::string& who);
-
 // The flight altitude of an aircraft: its altitude, or the one giving its GSD. Errors name the aircraft.
 Result<double> resolvedAltitude(const AircraftConfig& a);
 

@@ -1,6 +1,7 @@
 #include "ui/panels/aircraft_panel.h"
 
 #include "core/mission/aircraft_naming.h"
+#include "core/mission/oblique.h"
 #include "core/mission/validation.h"
 #include "core/sensor/camera.h"
 #include "ui/commands/add_aircraft_command.h"
