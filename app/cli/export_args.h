@@ -16,7 +16,8 @@
     "  --capture COMMAND     image (MAV_CMD_IMAGE_START_CAPTURE, default) or digicam\n" \
     "                        (MAV_CMD_DO_DIGICAM_CONTROL): the photo command after a photo waypoint\n" \
     "  --gimbal COMMAND      mount (MAV_CMD_DO_MOUNT_CONTROL, default), manager\n" \
-    "                        (MAV_CMD_DO_GIMBAL_MANAGER_PITCHYAW) or none: camera straight down at the start\n" \
+    "                        (MAV_CMD_DO_GIMBAL_MANAGER_PITCHYAW) or none: the camera pointed at the start\n" \
+    "                        (straight down, or tilted forward by the mission's camera tilt)\n" \
     "  --trigger MODE        photo (default: a waypoint and a capture per photo) or distance: lanes of\n" \
     "                        equally spaced photos become their two ends with MAV_CMD_DO_SET_CAM_TRIGG_DIST\n" \
     "                        (.plan, .waypoints and upload)\n" \

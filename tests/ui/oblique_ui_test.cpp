@@ -3,10 +3,13 @@
 // photos along their lanes (but where a detour round a zone ends at one). Offscreen, through the
 // real widgets.
 #include "core/geo/geodesic.h"
+#include "ui/dialogs/export_dialog.h"
 #include "ui/mission_document.h"
 #include "ui/planning/plan_controller.h"
 #include "ui_test_util.h"
 
+#include <QComboBox>
+#include <QDir>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QUndoStack>
@@ -61,6 +64,14 @@ TEST(ObliqueUi, TiltBoxIsAnUndoableOptionAndTheDockSaysWherePhotosLook) {
     }
     EXPECT_LE(across * 100, photos) << across << " of " << photos;
     EXPECT_GT(photos, 100);
+
+    // The Export dialog says where the gimbal command points the camera.
+    {
+        ExportDialog dialog(w->document(), w->planController(), QDir::tempPath());
+        auto* gimbal = dialog.findChild<QComboBox*>(QStringLiteral("ExportGimbal"));
+        ASSERT_NE(gimbal, nullptr);
+        EXPECT_EQ(gimbal->itemText(0), QStringLiteral("Camera tilted 30° forward (pitch -60°): DO_MOUNT_CONTROL"));
+    }
 
     w->document()->undoStack()->undo();
     EXPECT_EQ(w->document()->mission().options.cameraTiltDeg, 0.0);

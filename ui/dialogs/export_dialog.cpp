@@ -1,6 +1,7 @@
 #include "ui/dialogs/export_dialog.h"
 
 #include "core/mission/route_check.h"
+#include "ui/dialogs/gimbal_box.h"
 #include "ui/dialogs/landing_heading_box.h"
 #include "ui/mission_document.h"
 #include "ui/planning/plan_controller.h"
@@ -90,12 +91,7 @@ ExportDialog::ExportDialog(MissionDocument* doc, PlanController* planner, const 
     form->addRow(tr("Firmware (.plan):"), m_firmware);
     form->addRow(tr("After the last waypoint:"), m_end);
     // MAVLink mission options (.plan and .waypoints; the upload offers the same).
-    m_gimbal = new QComboBox;
-    m_gimbal->setObjectName(QStringLiteral("ExportGimbal"));
-    m_gimbal->addItem(tr("Camera straight down: DO_MOUNT_CONTROL"), int(io::GimbalCommand::MountControl));
-    m_gimbal->addItem(tr("Camera straight down: DO_GIMBAL_MANAGER_PITCHYAW"),
-                      int(io::GimbalCommand::GimbalManagerPitchYaw));
-    m_gimbal->addItem(tr("No gimbal command"), int(io::GimbalCommand::None));
+    m_gimbal = makeGimbalBox(QStringLiteral("ExportGimbal"), doc->mission().options.cameraTiltDeg);
     m_trigger = new QComboBox;
     m_trigger->setObjectName(QStringLiteral("ExportTrigger"));
     m_trigger->addItem(tr("A capture command at every photo"), int(io::CameraTrigger::PerPhoto));

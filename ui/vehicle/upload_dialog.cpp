@@ -3,6 +3,7 @@
 #include "core/io/export_context.h"
 #include "core/io/mission_export.h"
 #include "core/mavlink/connection_spec.h"
+#include "ui/dialogs/gimbal_box.h"
 #include "ui/dialogs/landing_heading_box.h"
 #include "ui/mission_document.h"
 #include "ui/vehicle/upload_manager.h"
@@ -181,11 +182,7 @@ void UploadDialog::addVehicleRow(int row, const route::Route& route, const io::E
 // used), a plane's landing heading.
 QGroupBox* UploadDialog::buildOptions() {
     QSettings settings;
-    m_gimbal = new QComboBox;
-    m_gimbal->addItem(tr("Straight down: DO_MOUNT_CONTROL"), int(io::GimbalCommand::MountControl));
-    m_gimbal->addItem(tr("Straight down: DO_GIMBAL_MANAGER_PITCHYAW"),
-                      int(io::GimbalCommand::GimbalManagerPitchYaw));
-    m_gimbal->addItem(tr("No gimbal command"), int(io::GimbalCommand::None));
+    m_gimbal = makeGimbalBox(QStringLiteral("UploadGimbal"), m_doc->mission().options.cameraTiltDeg);
     m_trigger = new QComboBox;
     m_trigger->setObjectName(QStringLiteral("UploadTrigger"));
     m_trigger->addItem(tr("A capture command at every photo"), int(io::CameraTrigger::PerPhoto));
