@@ -113,6 +113,13 @@ Status addTrajectories(ExportContext& ctx, const route::TrajectoryOptions& optio
     return {};
 }
 
+std::optional<double> cameraTiltFromPitch(double pitchDeg) {
+    const double tilt = 90.0 + pitchDeg;
+    if (!std::isfinite(tilt) || tilt < 0.0 || tilt > sensor::kMaxCameraTiltDeg)
+        return std::nullopt;
+    return tilt;
+}
+
 ExportContext contextFromImport(const ImportedWaypoints& imported) {
     ExportContext ctx;
     ctx.mission.noFlyZones = imported.noFlyZones;

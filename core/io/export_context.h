@@ -126,6 +126,11 @@ struct ImportedWaypoints {
     std::optional<double> cameraTiltDeg;
 };
 
+// The camera tilt a file's gimbal pitch stands for (degrees, negative down: -90 straight down is a
+// tilt of 0): 90 + pitch when that lies within [0, sensor::kMaxCameraTiltDeg], else nothing (a
+// pitch this program does not write, kept out of the mission).
+std::optional<double> cameraTiltFromPitch(double pitchDeg);
+
 // A context to write imported waypoints out again (the no-fly zones, home and camera tilt are kept). A route the
 // file says a plane flies gets an aircraft of that kind (named as the route, at its speed), so that
 // it is written again with a plane's take-off and landing and refused by Litchi and .kmz.

@@ -182,6 +182,10 @@ Result<ImportedWaypoints> parseLitchiCsv(const std::string& text, const std::str
                 speedSet = true;
             }
         }
+        // The first row's gimbal pitch: oblique photos keep their tilt when converted.
+        if (r.waypoints.empty() && col.count("gimbalpitchangle"))
+            if (auto pitch = number("gimbalpitchangle"))
+                out.cameraTiltDeg = cameraTiltFromPitch(*pitch);
         route::Waypoint w;
         w.position = {*lon, *lat};
         w.altitudeM = *alt;

@@ -434,10 +434,7 @@ std::optional<double> cameraTiltFromItems(const std::vector<MissionItem>& items)
     for (const auto& it : items) {
         if (it.command != mav::kDoMountControl && it.command != mav::kDoGimbalManagerPitchYaw)
             continue;
-        const double tilt = 90.0 + it.params[0]; // param 1: the pitch, negative down
-        if (std::isfinite(tilt) && tilt >= 0.0 && tilt <= sensor::kMaxCameraTiltDeg)
-            return tilt;
-        return std::nullopt;
+        return cameraTiltFromPitch(it.params[0]); // param 1: the pitch, negative down
     }
     return std::nullopt;
 }

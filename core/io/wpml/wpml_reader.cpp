@@ -55,6 +55,18 @@ struct WpmlXml {
                 out.push_back(c);
         return out;
     }
+    // The first element `wpml:<local>` anywhere below n, depth first.
+    const CPLXMLNode* find(const CPLXMLNode* n, const std::string& local) const {
+        for (const CPLXMLNode* c = n ? n->psChild : nullptr; c; c = c->psNext) {
+            if (c->eType != CXT_Element)
+                continue;
+            if (prefix + ":" + local == c->pszValue)
+                return c;
+            if (const CPLXMLNode* below = find(c, local))
+                return below;
+        }
+        return nullptr;
+    }
     static std::string text(const CPLXMLNode* n) {
         std::string s;
         for (const CPLXMLNode* c = n ? n->psChild : nullptr; c; c = c->psNext)
@@ -391,6 +403,10 @@ Result<ImportedWaypoints> readWpmlKmz(const std::string& path) {
     }
     if (ref)
         out.home = ref->position;
+    // The gimbal's pitch (the first gimbalRotate): oblique photos keep their tilt when converted.
+    if (const CPLXMLNode* pitch = xml->find(xml->document, "gimbalPitchRotateAngle"))
+        if (auto v = detail::parseNumber(WpmlXml::text(pitch)))
+            out.cameraTiltDeg = cameraTiltFromPitch(*v);
     return out;
 }
 

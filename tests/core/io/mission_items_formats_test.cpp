@@ -246,6 +246,9 @@ TEST(MissionItems, ObliquePhotosPitchTheGimbalAndReadBack) {
         ++checked;
     }
     EXPECT_GT(checked, 5);
+    auto csvBack = parseLitchiCsv(*csv, "o.csv");
+    ASSERT_TRUE(csvBack.ok()) << csvBack.error().message;
+    EXPECT_EQ(csvBack->cameraTiltDeg, 25.0);
 
     // Nadir: no tilt read back from a pitch of -90.
     const ExportContext nadir = makeExportContext(test::demoMission(), {ctx.routes[0]});

@@ -177,6 +177,11 @@ TEST(WpmlKmz, ObliquePhotosPointTheGimbalForward) {
     EXPECT_EQ(docs->templateKml.find("<wpml:gimbalPitchAngle>-90"), std::string::npos);
     EXPECT_NE(docs->waylinesWpml.find("<wpml:gimbalPitchRotateAngle>-60</wpml:gimbalPitchRotateAngle>"),
               std::string::npos);
+    // Read back, the tilt is kept: converted to a .plan it pitches the gimbal the same way.
+    auto back = readWpmlKmz(tempPath("pf_wpml_oblique.kmz"));
+    ASSERT_TRUE(back.ok()) << back.error().message;
+    EXPECT_EQ(back->cameraTiltDeg, 30.0);
+    EXPECT_DOUBLE_EQ(contextFromImport(*back).gimbalPitchDeg(0), -60.0);
 }
 
 TEST(WpmlKmz, FleetMissionEachAircraftItsOwnFile) {
