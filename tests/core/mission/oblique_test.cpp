@@ -138,6 +138,30 @@ TEST(Oblique, AircraftKeepsTheMarginWhereThePhotosReachTheZone) {
     EXPECT_GE(p->passCoverage[1], 0.99);
 }
 
+// The sorties are cut from the route the aircraft flies (photos moved back, lead-ins, diagonals):
+// no battery is asked for more than it holds, and the sorties' photos are all the plan's.
+TEST(Oblique, SortiesAreCutFromTheFlightAsFlown) {
+    Mission m = block(420, 300, 30.0);
+    m.options.doubleGrid = true;
+    m.aircraft.front().enduranceMin = 7.0;
+    auto p = planMission(m);
+    ASSERT_TRUE(p.ok()) << p.error().message;
+    const AircraftPlan& a = p->aircraft.front();
+    ASSERT_GT(a.sorties.size(), 2u);
+    const double budgetS = 7.0 * 60.0 * (1.0 - m.options.batteryReserve);
+    int photos = 0;
+    for (const auto& s : a.sorties) {
+        EXPECT_LE(s.timeS, budgetS + 1e-6);
+        photos += s.photos;
+    }
+    EXPECT_EQ(photos, a.metrics.photos);
+    ASSERT_EQ(a.sortieRoutes.size(), a.sorties.size());
+    EXPECT_TRUE(routeErrors(m, a.sortieRoutes).empty());
+    ASSERT_EQ(p->passCoverage.size(), 2u);
+    EXPECT_GE(p->passCoverage[0], 0.995);
+    EXPECT_GE(p->passCoverage[1], 0.995);
+}
+
 TEST(Oblique, MovesPhotosBackAlongTheirLaneAndLeadsOntoIt) {
     using route::WaypointKind;
     std::vector<route::LocalWaypoint> w{{Vec2(0, 0), 0.0, WaypointKind::Photo, -1},
