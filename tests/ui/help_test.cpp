@@ -136,8 +136,8 @@ TEST(Help, TheContentsPageLinksEveryPageAndAPartOfAnotherPageOpens) {
 // The planner options that need words say what they do: a tool tip, and "What's this?" (Shift+F1).
 TEST(Help, PlannerOptionsExplainThemselves) {
     pf::ui::MainWindow w;
-    for (const char* name :
-         {"PlannerBox", "GridAngleBox", "SafetyMarginBox", "FrontOverlapBox", "SideOverlapBox"}) {
+    for (const char* name : {"PlannerBox", "GridAngleBox", "SafetyMarginBox", "CameraTiltBox",
+                             "FrontOverlapBox", "SideOverlapBox"}) {
         auto* widget = w.findChild<QWidget*>(QString::fromLatin1(name));
         ASSERT_NE(widget, nullptr) << name;
         EXPECT_FALSE(widget->toolTip().isEmpty()) << name;
