@@ -122,7 +122,10 @@ int runValidate(const std::vector<std::string>& argv) {
         os << "  altitude        " << fmt("%.1f m", f.altitudeM) << '\n';
         os << "  GSD             " << fmt("%.2f cm/px", f.gsdCm) << '\n';
         os << "  footprint       " << fmt("%.1f", f.footprint.longSideM) << " x "
-           << fmt("%.1f m", f.footprint.shortSideM) << " (long side across the track)\n";
+           << fmt("%.1f m", f.footprint.shortSideM)
+           << (f.footprint.aheadM > 0 ? " (across x along the track, the tilted camera's), centred " +
+                                            fmt("%.1f m", f.footprint.aheadM) + " ahead of the aircraft\n"
+                                      : std::string(" (long side across the track)\n"));
         os << "  effective       " << fmt("%.1f", f.effective.acrossM) << " x " << fmt("%.1f m", f.effective.alongM)
            << " (track spacing x photo spacing, after overlaps)\n";
         os << "  cell size       " << fmt("%.2f m", f.cellSizeM) << '\n';

@@ -35,6 +35,16 @@ TEST(CliOblique, DoubleGridWithTiltedCamerasPlansAndPitchesTheGimbal) {
     EXPECT_EQ(mounts, 1);
 }
 
+// validate gives the tilted footprint and how far ahead of the aircraft it is centred.
+TEST(CliOblique, ValidateShowsTheTiltedFootprint) {
+    const CliRun r = cli("validate " + demo() + " --camera-tilt 30");
+    ASSERT_EQ(r.code, 0) << r.out << r.err;
+    EXPECT_TRUE(has(r.out, "(across x along the track, the tilted camera's), centred ")) << r.out;
+    EXPECT_TRUE(has(r.out, " m ahead of the aircraft")) << r.out;
+    const CliRun nadir = cli("validate " + demo());
+    EXPECT_TRUE(has(nadir.out, "(long side across the track)")) << nadir.out;
+}
+
 TEST(CliOblique, BadTiltsPlanesAndCorridorsAreRefusedByName) {
     expectBadInput("plan " + demo() + " --camera-tilt 60 --quiet",
                    "--camera-tilt: must be between 0 (straight down) and 45 degrees forward");
