@@ -188,9 +188,9 @@ Status makeSurveySafe(MissionPlan& plan, AircraftPlan& ap, const AircraftConfig&
     if (const int out = moveToAircraft(survey, ahead, yardstick ? nullptr : &finder))
         rep.warnings.push_back(
             std::to_string(out) +
-            " oblique photo(s) just past a no-fly zone, looking away from it, would be taken from "
-            "within its margin: taken from the nearest point outside it (the coverage check counts "
-            "them as taken)");
+            " oblique photo(s) just past a no-fly zone, looking away from it, cannot be taken from "
+            "straight behind their ground (the zone or its margin is in the way): taken from the "
+            "nearest point outside the margin (the coverage check counts them as taken)");
     if (!yardstick) {
         auto safe = route::enforceNoFly(survey, finder, &rep);
         if (!safe)

@@ -19,6 +19,24 @@ bool sameHeading(double a, double b, double toleranceDeg = 1.0) {
     return std::abs(std::remainder(a - b, 360.0)) < toleranceDeg;
 }
 
+// Where the aircraft takes the photo planned at w (a safe point the plan reaches) when the straight
+// move back to `to` crosses a zone's margin: `to`, or the nearest point outside the margin to it,
+// when a safe way leads there from w (not into a pocket the margins close off); else as far back
+// along the lane as the margin lets it go straight.
+geo::Vec2 reachablePlace(const geo::SafePathFinder& finder, const route::LocalWaypoint& w,
+                         const geo::Vec2& to) {
+    const geo::Vec2 near = finder.nearestSafePoint(to);
+    if (finder.detour(w.pos, near).ok())
+        return near;
+    double lo = 0.0, hi = (to - w.pos).norm();
+    const geo::Vec2 dir = (to - w.pos) / hi;
+    while (hi - lo > 0.01) {
+        const double mid = 0.5 * (lo + hi);
+        (finder.field().segmentIsSafe(w.pos, w.pos + mid * dir) ? lo : hi) = mid;
+    }
+    return w.pos + lo * dir;
+}
+
 // Whether the aircraft reaches waypoint i (a photo) along its heading: from a waypoint behind it
 // on its line (within 10 degrees), not across or from ahead.
 bool joinedAlongLane(const std::vector<route::LocalWaypoint>& w, std::size_t i) {
@@ -83,8 +101,9 @@ int moveToAircraft(std::vector<route::LocalWaypoint>& survey, double aheadM,
     int outOfMargin = 0;
     for (std::size_t i = 0; i < survey.size(); ++i) {
         route::LocalWaypoint& w = survey[i];
-        if (moved[i] != w.pos && finder && !finder->field().pointIsSafe(moved[i])) {
-            moved[i] = finder->nearestSafePoint(moved[i]);
+        if (moved[i] != w.pos && finder && !finder->field().segmentIsSafe(w.pos, moved[i]) &&
+            finder->field().pointIsSafe(w.pos)) {
+            moved[i] = reachablePlace(*finder, w, moved[i]);
             outOfMargin += w.kind == route::WaypointKind::Photo;
         }
         w.pos = moved[i];

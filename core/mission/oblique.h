@@ -36,9 +36,10 @@ constexpr double kObliqueLeadInM = 10.0;
 // The photo waypoints of a survey planned for the photos' centres moved back along their heading by
 // aheadM, to where the aircraft takes them; a turn point on a lane's line (facing as the photo next
 // to it in the flight does) moves with its lane; other turn and transit points stay. Every point
-// moves by at most aheadM. A point that would move into a zone's margin (`finder`; none: no zones)
-// goes to the nearest point outside it instead (a photo just past a zone, looking away from it; the
-// coverage check measures the photos as taken). Of the three ways tried on 8 generated areas with
+// moves by at most aheadM. A point whose straight move would cross a zone's margin (`finder`; none:
+// no zones) goes to the nearest point outside the margin instead (a photo just past a zone, looking
+// away from it; the coverage check measures the photos as taken), if a safe way leads there (not
+// into a pocket the margins close off), else as far back along its lane as the margin allows. Of the three ways tried on 8 generated areas with
 // 1-6 zones (double grid, 30 degrees), this one kept the most coverage: lowest pass 0.9972, against
 // 0.9891 moving such a photo back along its lane only as far as the margin allows and 0.9743
 // leaving it out. Returns the number of photos so placed.

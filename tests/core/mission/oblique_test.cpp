@@ -207,6 +207,18 @@ TEST(Oblique, MovesPhotosBackAlongTheirLaneAndLeadsOntoIt) {
     EXPECT_EQ(moveToAircraft(pastZone, 25.0, &finder), 1);
     EXPECT_TRUE(finder.field().pointIsSafe(pastZone[0].pos));
     EXPECT_NEAR(pastZone[0].pos.y(), -15.0, 0.3); // the (slightly inflated) margin's edge, north
+    // Moved back over a wall into a pocket the margins close off (four walls 2 m apart, 5 m
+    // margins): the aircraft could not get there, so it stays on the lane's near side.
+    const auto wall = [](double x0, double y0, double x1, double y1) {
+        return geo::Polygon{{Vec2(x0, y0), Vec2(x1, y0), Vec2(x1, y1), Vec2(x0, y1)}, {}};
+    };
+    const geo::SafePathFinder ring(geo::NoFlyField(
+        {wall(-40, -10, 40, -6), wall(-40, 46, 40, 50), wall(-40, -4, -36, 44), wall(36, -4, 40, 44)}, 5.0));
+    std::vector<route::LocalWaypoint> intoPocket{{Vec2(0, -25), 180.0, WaypointKind::Photo, -1}};
+    EXPECT_EQ(moveToAircraft(intoPocket, 45.0, &ring), 1);
+    EXPECT_TRUE(ring.field().pointIsSafe(intoPocket[0].pos));
+    EXPECT_NEAR(intoPocket[0].pos.x(), 0.0, 1e-9);
+    EXPECT_NEAR(intoPocket[0].pos.y(), -15.0, 0.3);
 }
 
 TEST(Oblique, RefusesPlanesAndTiltsOutOfRange) {
