@@ -1,6 +1,8 @@
-// Benchmarks of corridors: a 20 km corridor 100 m wide with bends, planned by the corridor planner
-// alone and as a whole mission (transit, sorties, the coverage check on its ground).
+// Benchmarks of corridors and double grids: a 20 km corridor 100 m wide with bends, planned by the
+// corridor planner alone and as a whole mission (transit, sorties, the coverage check on its
+// ground); the demo as a double grid, nadir and oblique.
 #include "core/geo/local_frame.h"
+#include "core/io/mission_file.h"
 #include "core/mission/corridor.h"
 #include "core/mission/plan_mission.h"
 #include "core/plan/corridor/corridor_planner.h"
@@ -81,5 +83,32 @@ void BM_CorridorMission(benchmark::State& state) {
     state.counters["photos"] = photos;
 }
 BENCHMARK(BM_CorridorMission)->Arg(2)->Arg(20)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// The demo mission as a double grid with the cameras tilted forward by the argument (0: nadir, 30:
+// oblique photos): what the tilt costs the planning (photos moved back, lead-ins, the no-fly stage
+// and the coverage check on the tilted footprints). Counters: photos and makespan.
+void BM_DoubleGridDemoTilt(benchmark::State& state) {
+    auto m = pf::io::readMissionFile(std::string(PF_RESOURCES_DIR) + "/demo/demo_mission.json");
+    if (!m) {
+        state.SkipWithError(m.error().message.c_str());
+        return;
+    }
+    m->options.doubleGrid = true;
+    m->options.cameraTiltDeg = static_cast<double>(state.range(0));
+    int photos = 0;
+    double makespan = 0.0;
+    for (auto _ : state) {
+        auto p = pf::mission::planMission(*m);
+        if (!p) {
+            state.SkipWithError(p.error().message.c_str());
+            return;
+        }
+        photos = p->totals.photos;
+        makespan = p->makespanS;
+    }
+    state.counters["photos"] = photos;
+    state.counters["makespan_s"] = makespan;
+}
+BENCHMARK(BM_DoubleGridDemoTilt)->Arg(0)->Arg(30)->Unit(benchmark::kMillisecond)->Iterations(2);
 
 } // namespace
