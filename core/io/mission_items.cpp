@@ -387,14 +387,26 @@ std::vector<MissionItem> rallyItems(const ExportContext& ctx, std::size_t routeI
 
 namespace {
 
+// The most waypoints a mission read back may become once its distance-triggered lanes are expanded
+// into photos: ten times the largest mission an autopilot's SD card holds (a few 10,000 items),
+// 64 MB of waypoints. A trigger distance of millimetres over kilometres (a damaged or hostile file)
+// is refused by name instead of filling the memory.
+constexpr std::size_t kMaxReadWaypoints = 1'000'000;
+
 // Rebuilds the photos of a distance-triggered stretch: `path` are the waypoints flown with the
 // trigger on (the first takes a photo at once), photos every `d` metres along them, and at the end
 // one more photo when the trigger is switched off with "photo now".
-void expandTriggered(std::vector<route::Waypoint>& out, std::vector<bool>& photo,
-                     const std::vector<route::Waypoint>& path, double d, bool photoAtEnd) {
+Status expandTriggered(std::vector<route::Waypoint>& out, std::vector<bool>& photo,
+                       const std::vector<route::Waypoint>& path, double d, bool photoAtEnd) {
     double total = 0;
     for (std::size_t k = 1; k < path.size(); ++k)
         total += geo::geodesicDistance(path[k - 1].position, path[k].position);
+    if (total / d + static_cast<double>(out.size() + path.size()) > static_cast<double>(kMaxReadWaypoints))
+        return makeError(ErrorCode::TooLarge,
+                         "a camera trigger distance of " + detail::formatNumber(d, 6) + " m over " +
+                             detail::formatNumber(total, 0) + " m of lane would make more than " +
+                             std::to_string(kMaxReadWaypoints) +
+                             " photo waypoints (MAV_CMD_DO_SET_CAM_TRIGG_DIST): not a survey");
     // A photo due within a quarter spacing of the end is the end photo itself.
     const double limit = photoAtEnd ? total - 0.25 * d : total + 0.01;
     constexpr double kAtWaypointM = 0.01;
@@ -426,6 +438,7 @@ void expandTriggered(std::vector<route::Waypoint>& out, std::vector<bool>& photo
         out.push_back(b);
         photo.push_back(here);
     }
+    return {};
 }
 
 } // namespace
@@ -450,7 +463,7 @@ std::optional<fleet::AircraftKind> kindFromItems(const std::vector<MissionItem>&
     return kind;
 }
 
-route::Route routeFromItems(const std::vector<MissionItem>& items) {
+Result<route::Route> routeFromItems(const std::vector<MissionItem>& items) {
     route::Route r;
     std::vector<route::Waypoint> wps;
     std::vector<bool> photo;
@@ -475,7 +488,8 @@ route::Route routeFromItems(const std::vector<MissionItem>& items) {
             const double d = std::isfinite(p[0]) ? p[0] : 0;
             const bool now = p[2] == 1.0;
             if (triggerD > 0 && !triggered.empty()) {
-                expandTriggered(wps, photo, triggered, triggerD, now);
+                if (auto s = expandTriggered(wps, photo, triggered, triggerD, now); !s)
+                    return s.error();
                 triggered.clear();
             } else if (now && !photo.empty()) {
                 photo.back() = true;
@@ -507,7 +521,8 @@ route::Route routeFromItems(const std::vector<MissionItem>& items) {
         photo.push_back(false);
     }
     if (triggerD > 0 && !triggered.empty())
-        expandTriggered(wps, photo, triggered, triggerD, false);
+        if (auto s = expandTriggered(wps, photo, triggered, triggerD, false); !s)
+            return s.error();
     detail::inferNonPhotoKinds(wps, photo);
     r.waypoints = std::move(wps);
     return r;

@@ -114,8 +114,9 @@ std::vector<double> cornerAnglesDeg(const std::vector<route::Waypoint>& waypoint
 // the waypoints, photo where a capture command follows or the camera fires by distance along
 // the lanes (the photos of a distance-triggered lane are put back where the camera fires), speed
 // from DO_CHANGE_SPEED. Other items (take-off, gimbal, return, land, and a plane's landing sequence
-// from DO_LAND_START on) are dropped: they are made again on export.
-route::Route routeFromItems(const std::vector<MissionItem>& items);
+// from DO_LAND_START on) are dropped: they are made again on export. Refused: distance-triggered
+// lanes that would become more than a million photo waypoints.
+Result<route::Route> routeFromItems(const std::vector<MissionItem>& items);
 // The kind of aircraft a mission read back was written for, from the items only a plane's mission
 // holds: NAV_VTOL_TAKEOFF or NAV_VTOL_LAND a VTOL, DO_LAND_START a fixed-wing; nothing otherwise.
 std::optional<fleet::AircraftKind> kindFromItems(const std::vector<MissionItem>& items);

@@ -299,7 +299,10 @@ public:
             }
             parsed.push_back(mi);
         }
-        route::Route r = routeFromItems(parsed);
+        auto read = routeFromItems(parsed);
+        if (!read)
+            return keyError("mission.items", read.error().message);
+        route::Route r = std::move(*read);
         r.home = out.home;
         out.kinds.push_back(planKind(*mission, parsed));
         out.cameraTiltDeg = cameraTiltFromItems(parsed);

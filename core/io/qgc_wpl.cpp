@@ -150,7 +150,10 @@ Result<ImportedWaypoints> parseQgcWpl(const std::string& text, const std::string
         }
         items.push_back(it);
     }
-    route::Route r = routeFromItems(items);
+    auto read = routeFromItems(items);
+    if (!read)
+        return makeError(read.error().code, source + ": " + read.error().message);
+    route::Route r = std::move(*read);
     r.home = out.home;
     out.routes.push_back(std::move(r));
     out.kinds.push_back(kindFromItems(items));

@@ -258,6 +258,26 @@ TEST(MissionItems, ObliquePhotosPitchTheGimbalAndReadBack) {
     EXPECT_EQ(cameraTiltFromItems(*down), 0.0);
 }
 
+// A .plan whose distance trigger would fire every 0.5 m along 11,000 km of lane (found by the
+// fuzzer: it filled 2 GB) is refused by name, as is the same in a .waypoints file.
+TEST(MissionItems, ATriggerThatWouldMakeMillionsOfPhotosIsRefused) {
+    const std::string path = std::string(PF_TEST_DATA_DIR) + "/fuzz/qgc_plan/long_triggered_lane.plan";
+    auto plan = readQgcPlan(path);
+    ASSERT_FALSE(plan.ok());
+    EXPECT_NE(plan.error().message.find("mission.items: a camera trigger distance of 0.5 m over"),
+              std::string::npos)
+        << plan.error().message;
+    std::string wpl = "QGC WPL 110\n0\t1\t0\t16\t0\t0\t0\t0\t0\t0\t0\t1\n";
+    wpl += "1\t0\t3\t16\t0\t0\t0\t0\t0.0\t0.0\t50\t1\n";
+    wpl += "2\t0\t3\t206\t0.01\t0\t1\t0\t0\t0\t0\t1\n";
+    wpl += "3\t0\t3\t16\t0\t0\t0\t0\t0.0\t90.0\t50\t1\n";
+    wpl += "4\t0\t3\t206\t0\t0\t1\t0\t0\t0\t0\t1\n";
+    auto w = parseQgcWpl(wpl, "long.waypoints");
+    ASSERT_FALSE(w.ok());
+    EXPECT_NE(w.error().message.find("long.waypoints: a camera trigger distance of 0.01 m"), std::string::npos)
+        << w.error().message;
+}
+
 TEST(MissionItems, FenceAndRallyItems) {
     std::mt19937 rng(42);
     ExportContext ctx = makeExportContext(test::demoMission(), {test::randomRoute(rng, "A")});

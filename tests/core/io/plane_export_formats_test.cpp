@@ -103,7 +103,9 @@ TEST(PlaneExport, FixedWingItemsByTheProtocol) {
     EXPECT_NEAR(v[20].params[4], home.lat, 1e-9);
 
     // Read back: the route's waypoints again (photos along the triggered lanes), no landing approach.
-    const route::Route back = routeFromItems(v);
+    auto read = routeFromItems(v);
+    ASSERT_TRUE(read.ok()) << read.error().message;
+    const route::Route back = *read;
     const route::Route& r = ctx.routes[0];
     ASSERT_EQ(back.waypoints.size(), r.waypoints.size());
     for (std::size_t i = 0; i < r.waypoints.size(); ++i) {
