@@ -94,6 +94,22 @@ Status writeLitchiCsv(const ExportContext& ctx, std::size_t routeIndex, const st
     return detail::writeTextFile(path, *text);
 }
 
+namespace {
+
+// The header's column names (trimmed, lower case) and their indices.
+template <typename Fields> std::map<std::string, std::size_t> columnsOf(const Fields& header) {
+    std::map<std::string, std::size_t> col;
+    for (std::size_t i = 0; i < header.size(); ++i) {
+        std::string name(detail::trim(header[i]));
+        std::transform(name.begin(), name.end(), name.begin(),
+                       [](unsigned char c) { return std::tolower(c); });
+        col.emplace(name, i);
+    }
+    return col;
+}
+
+} // namespace
+
 Result<ImportedWaypoints> parseLitchiCsv(const std::string& text, const std::string& source) {
     using detail::lineError;
     const auto lines = detail::splitLines(text);
@@ -108,14 +124,8 @@ Result<ImportedWaypoints> parseLitchiCsv(const std::string& text, const std::str
     const char sep = headerLine.find(',') == std::string_view::npos && headerLine.find(';') != std::string_view::npos
                          ? ';'
                          : ',';
-    auto header = detail::splitChar(lines[first], sep);
-    std::map<std::string, std::size_t> col;
-    for (std::size_t i = 0; i < header.size(); ++i) {
-        std::string name(detail::trim(header[i]));
-        std::transform(name.begin(), name.end(), name.begin(),
-                       [](unsigned char c) { return std::tolower(c); });
-        col.emplace(name, i);
-    }
+    const auto header = detail::splitChar(lines[first], sep);
+    const std::map<std::string, std::size_t> col = columnsOf(header);
     for (const char* required : {"latitude", "longitude", "altitude(m)", "heading(deg)"})
         if (!col.count(required))
             return lineError(source, first + 1,

@@ -526,49 +526,54 @@ void AircraftPanel::refreshForm(bool keepError) {
     m_colour->setIcon(swatch(QString::fromStdString(a.colour)));
     m_colour->setText(QString::fromStdString(a.colour));
 
-    QString text;
-    if (alt) {
-        // The camera as the mission points it: oblique photos see the ground ahead.
-        const double tilt = m_doc->mission().options.cameraTiltDeg;
-        auto fp = sensor::effectiveFootprint(mission::pointedCamera(a, m_doc->mission().options),
-                                             *alt, a.overlap);
-        if (fp) {
-            text = tr("%1 × %2 m per photo\ntrack spacing %3 m, photo every %4 m")
-                       .arg(fp->real.longSideM, 0, 'f', 1)
-                       .arg(fp->real.shortSideM, 0, 'f', 1)
-                       .arg(fp->acrossM, 0, 'f', 1)
-                       .arg(fp->alongM, 0, 'f', 1);
-            if (tilt > 0)
-                text += tr("\ncamera tilted %1°: photos centred %2 m ahead")
-                            .arg(tilt, 0, 'f', 0)
-                            .arg(fp->real.aheadM, 0, 'f', 1);
-        } else {
-            text = QString::fromStdString(fp.error().message);
-        }
-        // A value from a mission file can be out of limits too: say so in red, it will not be planned.
-        QStringList errors;
-        for (const auto& e : mission::altitudeErrors(m_doc->mission(), a, *alt)) errors << QString::fromStdString(e).toHtmlEscaped();
-        // A plane's figures, and whether the mission's planner plans for a plane, the same way.
-        const std::string who = mission::aircraftLabel(a.name);
-        for (const auto& e : mission::planeErrors(a, who))
-            errors << QString::fromStdString(e).toHtmlEscaped();
-        if (const auto e = mission::planeRoutingError(a, m_doc->mission().options.planner, who);
-            !e.empty())
-            errors << QString::fromStdString(e).toHtmlEscaped();
-        if (const auto e = mission::corridorPlaneError(m_doc->mission(), a, who); !e.empty())
-            errors << QString::fromStdString(e).toHtmlEscaped();
-        if (const auto e = mission::cameraTiltError(m_doc->mission(), a, who); !e.empty())
-            errors << QString::fromStdString(e).toHtmlEscaped();
-        text = text.toHtmlEscaped().replace(QLatin1Char('\n'), QStringLiteral("<br>"));
-        if (!errors.isEmpty())
-            text += QStringLiteral("<br><span style='color:#b00020; font-weight:bold'>%1</span>")
-                        .arg(tr("Not plannable: %1").arg(errors.join(QStringLiteral("; "))));
-    } else {
-        text = tr("Set an altitude or a GSD.");
-    }
-    m_footprint->setText(text);
+    m_footprint->setText(footprintText(a, alt));
     fitHeight(m_footprint, m_altitude->width());
     m_updating = false;
+}
+
+// The Footprint line: the photo's footprint and spacings as the mission points the camera, and in
+// red whatever keeps the aircraft from being planned; or what it lacks to have one.
+QString AircraftPanel::footprintText(const mission::AircraftConfig& a,
+                                     std::optional<double> alt) const {
+    if (!alt)
+        return tr("Set an altitude or a GSD.");
+    QString text;
+    // The camera as the mission points it: oblique photos see the ground ahead.
+    const double tilt = m_doc->mission().options.cameraTiltDeg;
+    auto fp = sensor::effectiveFootprint(mission::pointedCamera(a, m_doc->mission().options),
+                                         *alt, a.overlap);
+    if (fp) {
+        text = tr("%1 × %2 m per photo\ntrack spacing %3 m, photo every %4 m")
+                   .arg(fp->real.longSideM, 0, 'f', 1)
+                   .arg(fp->real.shortSideM, 0, 'f', 1)
+                   .arg(fp->acrossM, 0, 'f', 1)
+                   .arg(fp->alongM, 0, 'f', 1);
+        if (tilt > 0)
+            text += tr("\ncamera tilted %1°: photos centred %2 m ahead")
+                        .arg(tilt, 0, 'f', 0)
+                        .arg(fp->real.aheadM, 0, 'f', 1);
+    } else {
+        text = QString::fromStdString(fp.error().message);
+    }
+    // A value from a mission file can be out of limits too: say so in red, it will not be planned.
+    QStringList errors;
+    for (const auto& e : mission::altitudeErrors(m_doc->mission(), a, *alt)) errors << QString::fromStdString(e).toHtmlEscaped();
+    // A plane's figures, and whether the mission's planner plans for a plane, the same way.
+    const std::string who = mission::aircraftLabel(a.name);
+    for (const auto& e : mission::planeErrors(a, who))
+        errors << QString::fromStdString(e).toHtmlEscaped();
+    if (const auto e = mission::planeRoutingError(a, m_doc->mission().options.planner, who);
+        !e.empty())
+        errors << QString::fromStdString(e).toHtmlEscaped();
+    if (const auto e = mission::corridorPlaneError(m_doc->mission(), a, who); !e.empty())
+        errors << QString::fromStdString(e).toHtmlEscaped();
+    if (const auto e = mission::cameraTiltError(m_doc->mission(), a, who); !e.empty())
+        errors << QString::fromStdString(e).toHtmlEscaped();
+    text = text.toHtmlEscaped().replace(QLatin1Char('\n'), QStringLiteral("<br>"));
+    if (!errors.isEmpty())
+        text += QStringLiteral("<br><span style='color:#b00020; font-weight:bold'>%1</span>")
+                    .arg(tr("Not plannable: %1").arg(errors.join(QStringLiteral("; "))));
+    return text;
 }
 
 } // namespace pf::ui

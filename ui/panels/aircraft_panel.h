@@ -60,6 +60,8 @@ public:
 private:
     void refreshList();
     void refreshForm(bool keepError = false);
+    // The Footprint line of aircraft `a` at `alt` (HTML).
+    QString footprintText(const mission::AircraftConfig& a, std::optional<double> alt) const;
     // Shows the plane's figures for a plane, hides them for a multirotor.
     void showPlaneRows(bool plane);
     void buildList();
