@@ -444,12 +444,12 @@ Status expandTriggered(std::vector<route::Waypoint>& out, std::vector<bool>& pho
 } // namespace
 
 std::optional<double> cameraTiltFromItems(const std::vector<MissionItem>& items) {
-    for (const auto& it : items) {
-        if (it.command != mav::kDoMountControl && it.command != mav::kDoGimbalManagerPitchYaw)
-            continue;
-        return cameraTiltFromPitch(it.params[0]); // param 1: the pitch, negative down
-    }
-    return std::nullopt;
+    const auto gimbal = std::find_if(items.begin(), items.end(), [](const MissionItem& it) {
+        return it.command == mav::kDoMountControl || it.command == mav::kDoGimbalManagerPitchYaw;
+    });
+    if (gimbal == items.end())
+        return std::nullopt;
+    return cameraTiltFromPitch(gimbal->params[0]); // param 1: the pitch, negative down
 }
 
 std::optional<fleet::AircraftKind> kindFromItems(const std::vector<MissionItem>& items) {

@@ -106,7 +106,9 @@ Result<MissionPlan> planMission(const Mission& given, Progress* progress) {
     // A traced boundary of many thousand vertices is planned simplified (simplify_input.h), and the
     // plan says so. Every camera is pointed as the mission says (oblique.h): the footprints
     // planned, balanced and checked are those of the photos taken.
-    const InputSimplification simple = simplifyInput(withPointedCameras(given));
+    const InputSimplification simple = given.options.cameraTiltDeg == 0.0
+                                           ? simplifyInput(given) // no copy made to point nothing
+                                           : simplifyInput(withPointedCameras(given));
     if (!simple.error.empty())
         return makeError(ErrorCode::TooLarge, simple.error);
     const Mission& m = simple.mission;
